@@ -1,0 +1,69 @@
+//! Errors of the Rust API. The C boundary maps each to one negative `cncrot_status`.
+
+use core::fmt;
+
+/// Why a computation was refused. Inputs are never modified when an error is returned.
+///
+/// ```
+/// use cncrot::{AxisCode, Error};
+/// assert_eq!(AxisCode::new(0b01_01_11), Err(Error::BadSequence)); // Z, X, X: X repeated
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Error {
+    /// A number was NaN or infinite.
+    NotFinite,
+    /// A 0/1 flag had another value.
+    BadFlag,
+    /// An axis-sequence code outside 0..=63, or with an axis equal to the one before it.
+    BadSequence,
+    /// A decomposition target with fewer than three rotations.
+    IncompleteSequence,
+    /// A matrix that is not a rotation: not orthonormal within [`crate::ROTATION_TOLERANCE`],
+    /// a reflection, or a frame whose last row is not `0 0 0 1`.
+    NotARotation,
+    /// [`crate::nearest_rotation`]: the matrix is singular or nearest to a reflection.
+    Degenerate,
+    /// A parameter outside its documented domain (a value other than the allowed ones).
+    BadArgument,
+    /// The requested capability needs something this build does not have (CYCLE600 head
+    /// positioning needs the machine kinematics).
+    NotAvailable,
+    /// CYCLE600: the accessory name is not in the head table.
+    UnknownHead,
+    /// A name longer than its fixed-size field.
+    NameTooLong,
+    /// HEAD_DEF text that could not be read; the line number is reported separately.
+    Parse,
+    /// A fixed-capacity table is full.
+    TableFull,
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.message())
+    }
+}
+
+impl Error {
+    /// A short English description, the same text `cncrot_status_str` returns.
+    pub const fn message(self) -> &'static str {
+        match self {
+            Error::NotFinite => "a number is NaN or infinite",
+            Error::BadFlag => "a flag is neither 0 nor 1",
+            Error::BadSequence => "axis-sequence code outside 0..63 or with a repeated axis",
+            Error::IncompleteSequence => "decomposition needs a sequence of three rotations",
+            Error::NotARotation => "matrix is not a rotation (not orthonormal, or a reflection)",
+            Error::Degenerate => "matrix is singular or nearest to a reflection",
+            Error::BadArgument => "parameter outside its allowed values",
+            Error::NotAvailable => "not available: needs the machine kinematics",
+            Error::UnknownHead => "accessory name not found in the head table",
+            Error::NameTooLong => "name longer than its field",
+            Error::Parse => "HEAD_DEF text could not be read",
+            Error::TableFull => "head table is full",
+        }
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for Error {}

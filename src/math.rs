@@ -1,0 +1,225 @@
+//! The one module through which all floating-point functions are called.
+//!
+//! With the `std` feature the platform's libm is used (glibc's `atan2` is the fastest
+//! measured here); without it the pure-Rust `libm` crate, so the crate needs nothing from a
+//! C library. Everything else in the crate calls these functions, never `f64` methods that
+//! need `std`, so that switching the feature switches every computation.
+
+#[cfg(feature = "std")]
+mod imp {
+    #[inline]
+    pub fn sin(x: f64) -> f64 {
+        x.sin()
+    }
+    #[inline]
+    pub fn cos(x: f64) -> f64 {
+        x.cos()
+    }
+    #[inline]
+    pub fn atan2(y: f64, x: f64) -> f64 {
+        y.atan2(x)
+    }
+    #[inline]
+    pub fn sqrt(x: f64) -> f64 {
+        x.sqrt()
+    }
+    #[inline]
+    pub fn fmod(x: f64, y: f64) -> f64 {
+        x % y
+    }
+    #[inline]
+    pub fn round(x: f64) -> f64 {
+        x.round()
+    }
+}
+
+#[cfg(not(feature = "std"))]
+mod imp {
+    #[inline]
+    pub fn sin(x: f64) -> f64 {
+        libm::sin(x)
+    }
+    #[inline]
+    pub fn cos(x: f64) -> f64 {
+        libm::cos(x)
+    }
+    #[inline]
+    pub fn atan2(y: f64, x: f64) -> f64 {
+        libm::atan2(y, x)
+    }
+    #[inline]
+    pub fn sqrt(x: f64) -> f64 {
+        libm::sqrt(x)
+    }
+    #[inline]
+    pub fn fmod(x: f64, y: f64) -> f64 {
+        libm::fmod(x, y)
+    }
+    #[inline]
+    pub fn round(x: f64) -> f64 {
+        libm::round(x)
+    }
+}
+
+pub use imp::{atan2, sqrt};
+use imp::{cos, fmod, round, sin};
+
+/// `|x|` without `std` (clears the sign bit).
+#[inline]
+pub fn abs(x: f64) -> f64 {
+    f64::from_bits(x.to_bits() & !(1u64 << 63))
+}
+
+/// Degrees per radian, correctly rounded (the constant `f64::to_degrees` uses); with it
+/// `atan2` results of exactly ±π/2 and π convert to exactly ±90 and 180.
+const DEG_PER_RAD: f64 = 57.295_779_513_082_32;
+const RAD_PER_DEG: f64 = core::f64::consts::PI / 180.0;
+
+/// Converts radians to degrees.
+#[inline]
+pub fn to_degrees(rad: f64) -> f64 {
+    rad * DEG_PER_RAD
+}
+
+/// Sine and cosine of an angle in degrees, exact where the answer is exact.
+///
+/// The argument is reduced in degrees, where the reduction is exact (`fmod` and the
+/// subtraction of a nearby multiple of 90 lose no bits), so multiples of 90° of any size give
+/// exact 0 and ±1 and the radian argument passed to `sin`/`cos` never exceeds 45°.
+#[inline]
+pub fn sin_cos_deg(deg: f64) -> (f64, f64) {
+    let mut r = fmod(deg, 360.0);
+    if r > 180.0 {
+        r -= 360.0;
+    } else if r < -180.0 {
+        r += 360.0;
+    }
+    let q = round(r / 90.0);
+    let rest = r - 90.0 * q;
+    let (s, c) = if rest == 0.0 {
+        (0.0, 1.0)
+    } else {
+        let rad = rest * RAD_PER_DEG;
+        (sin(rad), cos(rad))
+    };
+    // `+ 0.0` turns -0 into +0 so that no caller ever sees a signed zero.
+    let (s, c) = match q as i32 {
+        1 => (c, -s),
+        2 | -2 => (-s, -c),
+        -1 => (-c, s),
+        _ => (s, c),
+    };
+    (s + 0.0, c + 0.0)
+}
+
+/// Brings an angle in degrees into (-180, 180], never -0.
+#[inline]
+pub fn wrap_deg(deg: f64) -> f64 {
+    let mut r = fmod(deg, 360.0);
+    if r > 180.0 {
+        r -= 360.0;
+    } else if r <= -180.0 {
+        r += 360.0;
+    }
+    r + 0.0
+}
+
+/// `atan2` in degrees, in (-180, 180], never -0.
+///
+/// The radian `atan2` is only ever asked for an angle within 0..45°, where its result
+/// carries at most 1.1e-16 rad of rounding; the quadrant is then added in degrees. Calling
+/// `atan2` directly and converting would round twice at up to 4.4e-16 rad near 180°, which
+/// alone would break the 1e-15 reconstruction goal.
+#[inline]
+pub fn atan2_deg(y: f64, x: f64) -> f64 {
+    let (ax, ay) = (abs(x), abs(y));
+    let upper = if ay <= ax {
+        let t = to_degrees(atan2(ay, ax));
+        if x >= 0.0 {
+            t
+        } else {
+            180.0 - t
+        }
+    } else {
+        let t = to_degrees(atan2(ax, ay));
+        if x >= 0.0 {
+            90.0 - t
+        } else {
+            90.0 + t
+        }
+    };
+    // (-0, negative x) is 180 like (+0, negative x): the range is (-180, 180].
+    if y < 0.0 && upper != 180.0 {
+        -upper + 0.0
+    } else {
+        upper + 0.0
+    }
+}
+
+/// Whole turns (multiples of 360°) that bring `angle` nearest to `reference`.
+#[inline]
+pub fn turns_toward(angle: f64, reference: f64) -> f64 {
+    360.0 * round((reference - angle) / 360.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn right_angles_are_exact() {
+        // Values are the exact trigonometric results, written by hand.
+        let cases = [
+            (0.0, 0.0, 1.0),
+            (90.0, 1.0, 0.0),
+            (180.0, 0.0, -1.0),
+            (-90.0, -1.0, 0.0),
+            (-180.0, 0.0, -1.0),
+            (270.0, -1.0, 0.0),
+            (-270.0, 1.0, 0.0),
+            (450.0, 1.0, 0.0),
+            (360.0, 0.0, 1.0),
+            (-720.0, 0.0, 1.0),
+            (1e6 * 360.0 + 90.0, 1.0, 0.0),
+        ];
+        for (deg, s, c) in cases {
+            let (gs, gc) = sin_cos_deg(deg);
+            assert_eq!((gs, gc), (s, c), "{deg}");
+            assert!(gs.is_sign_positive() || gs != 0.0);
+            assert!(gc.is_sign_positive() || gc != 0.0);
+        }
+    }
+
+    #[test]
+    fn general_angles_match_radian_trig() {
+        let mut deg = -1000.0;
+        while deg < 1000.0 {
+            let (s, c) = sin_cos_deg(deg);
+            let rad = deg.to_radians();
+            assert!(
+                (s - rad.sin()).abs() < 2e-15 && (c - rad.cos()).abs() < 2e-15,
+                "{deg}"
+            );
+            deg += 7.3;
+        }
+    }
+
+    #[test]
+    fn atan2_deg_range() {
+        assert_eq!(atan2_deg(0.0, -1.0), 180.0);
+        assert_eq!(atan2_deg(-0.0, -1.0), 180.0);
+        assert_eq!(atan2_deg(1.0, 0.0), 90.0);
+        assert_eq!(atan2_deg(-1.0, 0.0), -90.0);
+        assert!(atan2_deg(-0.0, 1.0).is_sign_positive());
+    }
+
+    #[test]
+    fn wrap_and_turns() {
+        assert_eq!(wrap_deg(-180.0), 180.0);
+        assert_eq!(wrap_deg(540.0), 180.0);
+        assert_eq!(wrap_deg(-190.0), 170.0);
+        assert!(wrap_deg(-360.0).is_sign_positive());
+        // Sinumerik: computed 10°, specified 750° -> 730° (dialects.md worked numbers).
+        assert_eq!(10.0 + turns_toward(10.0, 750.0), 730.0);
+    }
+}

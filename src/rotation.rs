@@ -1,0 +1,471 @@
+//! Rotation matrices: composition from angles, decomposition into angles for all 24
+//! conventions, conversion, validation, additive rotations and rotating vectors.
+//!
+//! Matrices are row-major `[[f64; 3]; 3]` (`m[i-1][j-1]` is the paper's `A_ij`), the layout
+//! of the C boundary's `double[9]`. Angles are in degrees.
+
+use crate::math::{self, atan2_deg, sin_cos_deg, sqrt, wrap_deg};
+use crate::{Axis, AxisCode, Convention, Error, Kind, Sequence};
+
+/// A 3x3 matrix, row-major: `m[i][j]` is row `i`, column `j` (0-based).
+pub type Matrix = [[f64; 3]; 3];
+
+/// A 3-vector.
+pub type Vector = [f64; 3];
+
+/// The identity matrix.
+pub const IDENTITY: Matrix = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+
+/// How far from orthonormal a matrix may be and still be accepted as a rotation:
+/// the largest element of `MᵀM − I`. Matrices printed to four decimals, like the paper's,
+/// stay below 2e-4; anything more distorted (raw probe data) must go through
+/// [`nearest_rotation`] deliberately.
+pub const ROTATION_TOLERANCE: f64 = 1e-3;
+
+/// Below this norm of the first-angle pair (`|cos θ2|` for Tait-Bryan, `|sin θ2|` for proper
+/// Euler) a decomposition is treated as singular. Measured: with it the reconstruction error
+/// stays below 1e-15 on both sides of the threshold (see `tests/accuracy.rs`).
+const SINGULAR_NORM: f64 = 2.0 * f64::EPSILON;
+
+/// Angles of a rotation in one convention.
+///
+/// ```
+/// use cncrot::{angles_from_matrix, matrix_from_angles, Convention, Kind, Sequence};
+/// let conv = Convention::new(Kind::Intrinsic, Sequence::ZYX);
+/// let m = matrix_from_angles(Kind::Intrinsic, Sequence::ZYX.into(), [40.0, 90.0, 10.0]);
+/// let d = angles_from_matrix(conv, &m).unwrap();
+/// // Singular: only θ1 - θ3 is determined, and θ3 = 0 by rule (SINUMERIK reads back 30, 90, 0).
+/// assert!(d.singular);
+/// assert!((d.angles[0] - 30.0).abs() < 1e-12 && d.angles[1] == 90.0 && d.angles[2] == 0.0);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Decomposition {
+    /// θ1, θ2, θ3 in degrees, in rotation order (the angle of the first rotation first).
+    pub angles: [f64; 3],
+    /// The middle angle is at its singular value (θ2 = ±90° Tait-Bryan, 0°/180° proper
+    /// Euler): only θ1 ± θ3 is determined and θ3 was set to 0.
+    pub singular: bool,
+}
+
+/// The rotation about one axis by an angle in degrees (active, right-handed).
+///
+/// ```
+/// use cncrot::{elementary, Axis};
+/// assert_eq!(elementary(Axis::Z, 90.0), [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]);
+/// ```
+pub fn elementary(axis: Axis, deg: f64) -> Matrix {
+    let (s, c) = sin_cos_deg(deg);
+    let n = -s + 0.0;
+    match axis {
+        Axis::X => [[1.0, 0.0, 0.0], [0.0, c, n], [0.0, s, c]],
+        Axis::Y => [[c, 0.0, s], [0.0, 1.0, 0.0], [n, 0.0, c]],
+        Axis::Z => [[c, n, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]],
+    }
+}
+
+/// Matrix product `a · b`.
+#[inline]
+pub fn mul(a: &Matrix, b: &Matrix) -> Matrix {
+    let mut r = [[0.0; 3]; 3];
+    for (ri, ai) in r.iter_mut().zip(a) {
+        for (j, rij) in ri.iter_mut().enumerate() {
+            *rij = ai[0] * b[0][j] + ai[1] * b[1][j] + ai[2] * b[2][j] + 0.0;
+        }
+    }
+    r
+}
+
+/// The transpose, which for a rotation is its inverse.
+#[inline]
+pub fn transpose(m: &Matrix) -> Matrix {
+    [
+        [m[0][0], m[1][0], m[2][0]],
+        [m[0][1], m[1][1], m[2][1]],
+        [m[0][2], m[1][2], m[2][2]],
+    ]
+}
+
+/// The rotation matrix of three angles (degrees) in a convention.
+///
+/// Intrinsic: `R = R_a1(θ1)·R_a2(θ2)·R_a3(θ3)`; extrinsic: `R = R_a3(θ3)·R_a2(θ2)·R_a1(θ1)`.
+/// Slots whose code pair is `00` are skipped (their angle is ignored). Multiples of 90°
+/// give exact 0 and ±1. Non-finite angles give non-finite elements (the C boundary refuses
+/// them before calling).
+///
+/// ```
+/// use cncrot::{matrix_from_angles, Kind, Sequence};
+/// // Paper, Example 2: extrinsic X, Y, Z = 30°, 45°, 60°.
+/// let m = matrix_from_angles(Kind::Extrinsic, Sequence::XYZ.into(), [30.0, 45.0, 60.0]);
+/// assert!((m[0][0] - 0.3536).abs() < 1e-4 && (m[2][0] + 0.7071).abs() < 1e-4);
+/// ```
+pub fn matrix_from_angles(kind: Kind, code: AxisCode, angles_deg: [f64; 3]) -> Matrix {
+    let mut r = IDENTITY;
+    for (axis, angle) in code.axes().into_iter().zip(angles_deg) {
+        if let Some(axis) = axis {
+            let e = elementary(axis, angle);
+            r = match kind {
+                Kind::Intrinsic => mul(&r, &e),
+                Kind::Extrinsic => mul(&e, &r),
+            };
+        }
+    }
+    r
+}
+
+/// Checks that `m` is a rotation: finite, `max |MᵀM − I| ≤ ROTATION_TOLERANCE`, `det > 0`.
+///
+/// ```
+/// use cncrot::{check_rotation, Error, IDENTITY};
+/// assert_eq!(check_rotation(&IDENTITY), Ok(()));
+/// let mirror = [[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// assert_eq!(check_rotation(&mirror), Err(Error::NotARotation));
+/// ```
+pub fn check_rotation(m: &Matrix) -> Result<(), Error> {
+    if !m.iter().flatten().all(|x| x.is_finite()) {
+        return Err(Error::NotFinite);
+    }
+    if orthonormality_error(m) > ROTATION_TOLERANCE || determinant(m) <= 0.0 {
+        return Err(Error::NotARotation);
+    }
+    Ok(())
+}
+
+/// `max |MᵀM − I|` over all elements.
+pub fn orthonormality_error(m: &Matrix) -> f64 {
+    let mut worst: f64 = 0.0;
+    for i in 0..3 {
+        for j in 0..3 {
+            let dot = m[0][i] * m[0][j] + m[1][i] * m[1][j] + m[2][i] * m[2][j];
+            let target = if i == j { 1.0 } else { 0.0 };
+            let e = math::abs(dot - target);
+            // NaN-propagating max: a NaN element must not look orthonormal.
+            if e > worst || e.is_nan() {
+                worst = e;
+            }
+        }
+    }
+    worst
+}
+
+/// The determinant.
+pub fn determinant(m: &Matrix) -> f64 {
+    m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+        - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+        + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+}
+
+/// The nearest rotation (in the Frobenius norm) to a nearly orthonormal matrix, such as one
+/// built from probe measurements: the orthogonal polar factor, by Newton's iteration
+/// `X ← (X + X⁻ᵀ)/2`, which converges quadratically.
+///
+/// Refuses ([`Error::Degenerate`]) a matrix that is singular or has a negative determinant
+/// (its nearest orthogonal matrix is a reflection), and non-finite input
+/// ([`Error::NotFinite`]).
+///
+/// ```
+/// use cncrot::{nearest_rotation, orthonormality_error};
+/// let measured = [[1.0, 0.001, 0.0], [-0.001, 1.0, 0.0], [0.0, 0.0, 1.0002]];
+/// let r = nearest_rotation(&measured).unwrap();
+/// assert!(orthonormality_error(&r) < 1e-15);
+/// ```
+pub fn nearest_rotation(m: &Matrix) -> Result<Matrix, Error> {
+    if !m.iter().flatten().all(|x| x.is_finite()) {
+        return Err(Error::NotFinite);
+    }
+    // Scale to unit determinant first: Newton's iteration then starts close to its fixed
+    // point whatever the input's scale, and a huge or tiny matrix cannot overflow.
+    let scale = m.iter().flatten().fold(0.0f64, |a, &x| a.max(math::abs(x)));
+    if scale == 0.0 {
+        return Err(Error::Degenerate);
+    }
+    let mut x = m.map(|row| row.map(|v| v / scale));
+    for _ in 0..64 {
+        let det = determinant(&x);
+        if !(det > 1e-12) {
+            return Err(Error::Degenerate);
+        }
+        let inv_t = cofactor(&x).map(|row| row.map(|v| v / det));
+        let mut change: f64 = 0.0;
+        let mut next = x;
+        for i in 0..3 {
+            for j in 0..3 {
+                next[i][j] = 0.5 * (x[i][j] + inv_t[i][j]);
+                change = change.max(math::abs(next[i][j] - x[i][j]));
+            }
+        }
+        x = next;
+        if change <= 4.0 * f64::EPSILON {
+            return Ok(x.map(|row| row.map(|v| v + 0.0)));
+        }
+    }
+    Err(Error::Degenerate)
+}
+
+/// The cofactor matrix: `det(M) · M⁻ᵀ`.
+fn cofactor(m: &Matrix) -> Matrix {
+    let c =
+        |r0: usize, r1: usize, c0: usize, c1: usize| m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0];
+    [
+        [c(1, 2, 1, 2), -c(1, 2, 0, 2), c(1, 2, 0, 1)],
+        [-c(0, 2, 1, 2), c(0, 2, 0, 2), -c(0, 2, 0, 1)],
+        [c(0, 1, 1, 2), -c(0, 1, 0, 2), c(0, 1, 0, 1)],
+    ]
+}
+
+/// The angles of a rotation matrix in a convention, in the canonical ranges: θ1, θ3 in
+/// (-180°, 180°], θ2 in [-90°, 90°] (Tait-Bryan) or [0°, 180°] (proper Euler).
+///
+/// The matrix is checked with [`check_rotation`] first. At the singular middle angle
+/// θ3 = 0, θ1 carries the whole free rotation and [`Decomposition::singular`] is set; the
+/// result is still an exact decomposition.
+///
+/// ```
+/// use cncrot::{angles_from_matrix, matrix_from_angles, Convention, Kind, Sequence};
+/// // Paper, Example 2: extrinsic XYZ (30, 45, 60) as intrinsic Z, X', Y''.
+/// let m = matrix_from_angles(Kind::Extrinsic, Sequence::XYZ.into(), [30.0, 45.0, 60.0]);
+/// let d = angles_from_matrix(Convention::new(Kind::Intrinsic, Sequence::ZXY), &m).unwrap();
+/// assert!((d.angles[0] - 37.7923).abs() < 1e-4);
+/// assert!((d.angles[1] - 20.7048).abs() < 1e-4);
+/// assert!((d.angles[2] - 49.1066).abs() < 1e-4);
+/// ```
+pub fn angles_from_matrix(conv: Convention, m: &Matrix) -> Result<Decomposition, Error> {
+    check_rotation(m)?;
+    Ok(decompose(conv, m))
+}
+
+/// [`angles_from_matrix`] without the rotation check, for callers that built `m`
+/// themselves. Never panics; a matrix that is not a rotation gives meaningless angles.
+pub fn decompose(conv: Convention, m: &Matrix) -> Decomposition {
+    // An extrinsic sequence is the intrinsic reversed sequence with the angles reversed, so
+    // one algorithm serves all 24 conventions. The singular rule zeroes the convention's own
+    // third angle, which is the reversed sequence's first.
+    let (seq, zero_first) = match conv.kind {
+        Kind::Intrinsic => (conv.sequence, false),
+        Kind::Extrinsic => (conv.sequence.reversed(), true),
+    };
+    let (mut a, singular) = match seq {
+        Sequence::XYZ => tait_bryan::<0, 1, 2>(m, zero_first),
+        Sequence::XZY => tait_bryan::<0, 2, 1>(m, zero_first),
+        Sequence::YXZ => tait_bryan::<1, 0, 2>(m, zero_first),
+        Sequence::YZX => tait_bryan::<1, 2, 0>(m, zero_first),
+        Sequence::ZXY => tait_bryan::<2, 0, 1>(m, zero_first),
+        Sequence::ZYX => tait_bryan::<2, 1, 0>(m, zero_first),
+        Sequence::XYX => proper_euler::<0, 1, 2>(m, zero_first),
+        Sequence::XZX => proper_euler::<0, 2, 1>(m, zero_first),
+        Sequence::YXY => proper_euler::<1, 0, 2>(m, zero_first),
+        Sequence::YZY => proper_euler::<1, 2, 0>(m, zero_first),
+        Sequence::ZXZ => proper_euler::<2, 0, 1>(m, zero_first),
+        Sequence::ZYZ => proper_euler::<2, 1, 0>(m, zero_first),
+    };
+    if conv.kind == Kind::Extrinsic {
+        a.swap(0, 2);
+    }
+    Decomposition {
+        angles: a,
+        singular,
+    }
+}
+
+/// Intrinsic `R = R_I(a)·R_J(b)·R_K(c)`, `I, J, K` all different.
+///
+/// With `e` the parity of (I, J, K): `R_IK = e·sin b`, `(R_II, R_IJ) = cos b·(cos c, -e sin c)`,
+/// `(R_JK, R_KK) = cos b·(-e sin a, cos a)`. The middle angle comes from `atan2` against the
+/// norm of its row (never `asin`), the first from column K, and the third from the matrix
+/// de-rotated by the first, `R_I(a)ᵀ·R = R_J(b)·R_K(c)`, whose row J is `(e sin c, cos c)`:
+/// the third angle then absorbs any error of the first, so the reconstruction stays exact
+/// near the singularity where the first angle is ill-conditioned.
+#[inline(always)]
+fn tait_bryan<const I: usize, const J: usize, const K: usize>(
+    m: &Matrix,
+    zero_first: bool,
+) -> ([f64; 3], bool) {
+    let e = if (I + 1) % 3 == J { 1.0 } else { -1.0 };
+    let sa = -e * m[J][K];
+    let ca = m[K][K];
+    let n1 = sqrt(sa * sa + ca * ca);
+    if n1 > SINGULAR_NORM {
+        let b = atan2_deg(e * m[I][K], sqrt(m[I][I] * m[I][I] + m[I][J] * m[I][J]));
+        // (sa, ca) are cos b times the sine and cosine of a; atan2 needs no normalisation.
+        let sc = e * ca * m[J][I] + sa * m[K][I];
+        let cc = ca * m[J][J] + e * sa * m[K][J];
+        ([atan2_deg(sa, ca), b, atan2_deg(sc, cc)], false)
+    } else {
+        let b = if e * m[I][K] >= 0.0 { 90.0 } else { -90.0 };
+        if zero_first {
+            // R = R_J(b)·R_K(c): row J is (e sin c, cos c) at (I, J).
+            ([0.0, b, atan2_deg(e * m[J][I], m[J][J])], true)
+        } else {
+            // R = R_I(a)·R_J(b): column J is (cos a, e sin a) at (J, K).
+            ([atan2_deg(e * m[K][J], m[J][J]), b, 0.0], true)
+        }
+    }
+}
+
+/// Intrinsic `R = R_I(a)·R_J(b)·R_I(c)`, K the remaining axis, `e` the parity of (I, J, K).
+///
+/// `R_II = cos b`, `(R_IJ, R_IK) = sin b·(sin c, e cos c)`, `(R_JI, R_KI) = sin b·(sin a,
+/// -e cos a)`; de-rotated, `R_I(a)ᵀ·R = R_J(b)·R_I(c)` has row J `(cos c, -e sin c)` at (J, K).
+#[inline(always)]
+fn proper_euler<const I: usize, const J: usize, const K: usize>(
+    m: &Matrix,
+    zero_first: bool,
+) -> ([f64; 3], bool) {
+    let e = if (I + 1) % 3 == J { 1.0 } else { -1.0 };
+    let sa = m[J][I];
+    let ca = -e * m[K][I];
+    let n1 = sqrt(sa * sa + ca * ca);
+    if n1 > SINGULAR_NORM {
+        let b = atan2_deg(sqrt(m[I][J] * m[I][J] + m[I][K] * m[I][K]), m[I][I]);
+        let cc = ca * m[J][J] + e * sa * m[K][J];
+        let sc = -e * ca * m[J][K] - sa * m[K][K];
+        ([atan2_deg(sa, ca), b, atan2_deg(sc, cc)], false)
+    } else {
+        let b = if m[I][I] >= 0.0 { 0.0 } else { 180.0 };
+        if zero_first {
+            // R = R_J(b)·R_I(c): row J is (cos c, -e sin c) at (J, K).
+            ([0.0, b, atan2_deg(-e * m[J][K], m[J][J])], true)
+        } else {
+            // R = R_I(a)·R_J(b): column J is (cos a, e sin a) at (J, K).
+            ([atan2_deg(e * m[K][J], m[J][J]), b, 0.0], true)
+        }
+    }
+}
+
+/// The other decomposition of the same rotation: `(θ1+180°, 180°−θ2, θ3+180°)` for
+/// Tait-Bryan, `(θ1+180°, −θ2, θ3+180°)` for proper Euler, θ1 and θ3 wrapped into
+/// (-180°, 180°]. Its middle angle lies outside the canonical range (|θ2| ≥ 90° resp.
+/// θ2 ≤ 0°). At a singular decomposition it is another member of the same family.
+///
+/// ```
+/// use cncrot::{second_solution, Decomposition, Sequence};
+/// let d = Decomposition { angles: [10.0, 20.0, 30.0], singular: false };
+/// assert_eq!(second_solution(Sequence::XYZ, d).angles, [-170.0, 160.0, -150.0]);
+/// assert_eq!(second_solution(Sequence::ZXZ, d).angles, [-170.0, -20.0, -150.0]);
+/// ```
+pub fn second_solution(sequence: Sequence, d: Decomposition) -> Decomposition {
+    let [a, b, c] = d.angles;
+    let b2 = if sequence.is_proper_euler() {
+        -b + 0.0
+    } else {
+        wrap_deg(180.0 - b)
+    };
+    Decomposition {
+        angles: [wrap_deg(a + 180.0), b2, wrap_deg(c + 180.0)],
+        singular: d.singular,
+    }
+}
+
+/// Of the two decompositions of `m`, each angle shifted by whole turns, the one nearest to
+/// `reference` (least sum of squared differences; on a tie the canonical one). Use it to
+/// avoid needless swivel motion: the reference is the current position.
+///
+/// ```
+/// use cncrot::{closest_angles, matrix_from_angles, Convention, Kind, Sequence};
+/// let conv = Convention::new(Kind::Intrinsic, Sequence::ZXZ);
+/// let m = matrix_from_angles(Kind::Intrinsic, Sequence::ZXZ.into(), [10.0, 20.0, 30.0]);
+/// // Near the second solution (-170, -20, -150), and 360° further on θ3.
+/// let d = closest_angles(conv, &m, [-165.0, -15.0, 200.0]).unwrap();
+/// let expect = [-170.0, -20.0, 210.0];
+/// assert!(d.angles.iter().zip(expect).all(|(a, b)| (a - b).abs() < 1e-9), "{:?}", d.angles);
+/// ```
+pub fn closest_angles(
+    conv: Convention,
+    m: &Matrix,
+    reference: [f64; 3],
+) -> Result<Decomposition, Error> {
+    let first = angles_from_matrix(conv, m)?;
+    Ok(closest_of(conv.sequence, first, reference))
+}
+
+/// [`closest_angles`] for a decomposition already at hand.
+pub fn closest_of(sequence: Sequence, first: Decomposition, reference: [f64; 3]) -> Decomposition {
+    let unwind = |d: Decomposition| {
+        let mut out = d;
+        let mut dist = 0.0;
+        for k in 0..3 {
+            out.angles[k] = d.angles[k] + math::turns_toward(d.angles[k], reference[k]) + 0.0;
+            let diff = out.angles[k] - reference[k];
+            dist += diff * diff;
+        }
+        (out, dist)
+    };
+    let (a, da) = unwind(first);
+    let (b, db) = unwind(second_solution(sequence, first));
+    if db < da {
+        b
+    } else {
+        a
+    }
+}
+
+/// Converts angles from one convention to another (`from_code` may have `00` pairs).
+///
+/// ```
+/// use cncrot::{convert, AxisCode, Convention, Kind, Sequence};
+/// // Paper, Example 3: extrinsic X, Y, Z (30, 45, 60) as extrinsic Z, X, Y.
+/// let d = convert(Kind::Extrinsic, AxisCode::new(57).unwrap(), [30.0, 45.0, 60.0],
+///                 Convention::new(Kind::Extrinsic, Sequence::ZXY));
+/// assert!((d.angles[0] - 39.6392).abs() < 1e-4 && (d.angles[1] + 16.2799).abs() < 1e-4);
+/// ```
+pub fn convert(
+    from_kind: Kind,
+    from_code: AxisCode,
+    angles_deg: [f64; 3],
+    to: Convention,
+) -> Decomposition {
+    decompose(to, &matrix_from_angles(from_kind, from_code, angles_deg))
+}
+
+/// An additional rotation applied to an existing one: extrinsic (about the machine axes)
+/// multiplies from the left, `R_add·R_old`; intrinsic (about the rotated axes) from the
+/// right, `R_old·R_add`.
+///
+/// ```
+/// use cncrot::{add_rotation, elementary, Axis, Kind};
+/// let r = add_rotation(Kind::Intrinsic, &elementary(Axis::Z, 30.0), &elementary(Axis::Z, 15.0));
+/// let expect = elementary(Axis::Z, 45.0);
+/// assert!(r.iter().flatten().zip(expect.iter().flatten()).all(|(a, b)| (a - b).abs() < 1e-15));
+/// ```
+pub fn add_rotation(kind: Kind, old: &Matrix, add: &Matrix) -> Matrix {
+    match kind {
+        Kind::Extrinsic => mul(add, old),
+        Kind::Intrinsic => mul(old, add),
+    }
+}
+
+/// `R·v`: a vector given in the rotated system, in the original one (TwinCAT `CalcRot`).
+///
+/// ```
+/// use cncrot::{elementary, rotate, Axis};
+/// assert_eq!(rotate(&elementary(Axis::Z, 90.0), [1.0, 0.0, 0.0]), [0.0, 1.0, 0.0]);
+/// ```
+pub fn rotate(m: &Matrix, v: Vector) -> Vector {
+    m.map(|row| row[0] * v[0] + row[1] * v[1] + row[2] * v[2] + 0.0)
+}
+
+/// `Rᵀ·v`, the inverse rotation (TwinCAT `CalcInvRot`).
+///
+/// ```
+/// use cncrot::{elementary, rotate_inverse, Axis};
+/// // TwinCAT: after ROT Z45, CalcInvRot of (40, 10, 0) is (35.36, -21.21, 0).
+/// let v = rotate_inverse(&elementary(Axis::Z, 45.0), [40.0, 10.0, 0.0]);
+/// assert!((v[0] - 35.3553).abs() < 1e-4 && (v[1] + 21.2132).abs() < 1e-4);
+/// ```
+pub fn rotate_inverse(m: &Matrix, v: Vector) -> Vector {
+    rotate(&transpose(m), v)
+}
+
+/// The matrix as an `nalgebra` matrix, for Rust callers that work in nalgebra.
+///
+/// ```
+/// let m = cncrot::to_nalgebra(&cncrot::IDENTITY);
+/// assert_eq!(m, nalgebra::Matrix3::identity());
+/// ```
+pub fn to_nalgebra(m: &Matrix) -> nalgebra::Matrix3<f64> {
+    nalgebra::Matrix3::from_fn(|i, j| m[i][j])
+}
+
+/// An `nalgebra` matrix as a row-major matrix.
+pub fn from_nalgebra(m: &nalgebra::Matrix3<f64>) -> Matrix {
+    core::array::from_fn(|i| core::array::from_fn(|j| m[(i, j)]))
+}
