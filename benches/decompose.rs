@@ -1,1 +1,187 @@
-fn main() {}
+//! Composition, decomposition and conversion against nalgebra (`euler_angles_ordered`,
+//! `from_euler_angles`) and glam (`to_euler`, `from_euler`), in the same run; prints the
+//! ratios at the end. `cargo bench --bench decompose`.
+//!
+//! Each measurement covers a batch of 256 rotations (intrinsic Z, Y', X'', the convention
+//! all three libraries share), so the ratios are per rotation.
+
+#[path = "../tests/common/mod.rs"]
+mod common;
+
+use cncrot::{Convention, Kind, Sequence};
+use criterion::{black_box, criterion_group, Criterion, Throughput};
+use glam::{DMat3, DQuat, EulerRot};
+use nalgebra::{Matrix3, Rotation3, Unit, Vector3};
+
+const BATCH: usize = 256;
+
+fn inputs() -> (Vec<cncrot::Matrix>, Vec<[f64; 3]>) {
+    let mut rng = common::Rng::new(99);
+    let mats: Vec<_> = (0..BATCH).map(|_| rng.rotation()).collect();
+    let conv = Convention::new(Kind::Intrinsic, Sequence::ZYX);
+    let angles = mats
+        .iter()
+        .map(|m| cncrot::decompose(conv, m).angles)
+        .collect();
+    (mats, angles)
+}
+
+fn benches(c: &mut Criterion) {
+    let (mats, angles) = inputs();
+    let conv = Convention::new(Kind::Intrinsic, Sequence::ZYX);
+    let na: Vec<Rotation3<f64>> = mats
+        .iter()
+        .map(|m| Rotation3::from_matrix_unchecked(Matrix3::from_fn(|i, j| m[i][j])))
+        .collect();
+    let gl: Vec<DMat3> = mats
+        .iter()
+        .map(|m| DMat3::from_cols_array_2d(&cncrot::transpose(m)))
+        .collect();
+    let rad: Vec<[f64; 3]> = angles.iter().map(|a| a.map(f64::to_radians)).collect();
+    let axes = [Vector3::z_axis(), Vector3::y_axis(), Vector3::x_axis()];
+
+    let mut g = c.benchmark_group("decompose");
+    g.throughput(Throughput::Elements(BATCH as u64));
+    g.bench_function("cncrot", |b| {
+        b.iter(|| {
+            mats.iter()
+                .map(|m| cncrot::decompose(conv, black_box(m)).angles[0])
+                .sum::<f64>()
+        })
+    });
+    g.bench_function("nalgebra", |b| {
+        b.iter(|| {
+            na.iter()
+                .map(|r| black_box(r).euler_angles_ordered(axes, false).0[0])
+                .sum::<f64>()
+        })
+    });
+    g.bench_function("glam", |b| {
+        b.iter(|| {
+            gl.iter()
+                .map(|m| black_box(m).to_euler(EulerRot::ZYX).0)
+                .sum::<f64>()
+        })
+    });
+    g.finish();
+
+    let mut g = c.benchmark_group("compose");
+    g.throughput(Throughput::Elements(BATCH as u64));
+    g.bench_function("cncrot", |b| {
+        b.iter(|| {
+            angles
+                .iter()
+                .map(|a| {
+                    cncrot::matrix_from_angles(Kind::Intrinsic, Sequence::ZYX.into(), *black_box(a))
+                        [0][0]
+                })
+                .sum::<f64>()
+        })
+    });
+    g.bench_function("nalgebra", |b| {
+        b.iter(|| {
+            rad.iter()
+                .map(|a| {
+                    let a = black_box(a);
+                    let r = Rotation3::from_axis_angle(&Unit::new_unchecked(*axes[0]), a[0])
+                        * Rotation3::from_axis_angle(&axes[1], a[1])
+                        * Rotation3::from_axis_angle(&axes[2], a[2]);
+                    r[(0, 0)]
+                })
+                .sum::<f64>()
+        })
+    });
+    g.bench_function("glam", |b| {
+        b.iter(|| {
+            rad.iter()
+                .map(|a| {
+                    let a = black_box(a);
+                    DMat3::from_quat(DQuat::from_euler(EulerRot::ZYX, a[0], a[1], a[2]))
+                        .x_axis
+                        .x
+                })
+                .sum::<f64>()
+        })
+    });
+    g.finish();
+
+    // Conversion: extrinsic X, Y, Z angles to intrinsic Z, X', Y'' (the paper's Example 3).
+    let to = Convention::new(Kind::Intrinsic, Sequence::ZXY);
+    let mut g = c.benchmark_group("convert");
+    g.throughput(Throughput::Elements(BATCH as u64));
+    g.bench_function("cncrot", |b| {
+        b.iter(|| {
+            angles
+                .iter()
+                .map(|a| {
+                    cncrot::convert(Kind::Extrinsic, Sequence::XYZ.into(), *black_box(a), to).angles
+                        [0]
+                })
+                .sum::<f64>()
+        })
+    });
+    g.bench_function("nalgebra", |b| {
+        let ext = [Vector3::x_axis(), Vector3::y_axis(), Vector3::z_axis()];
+        let zxy = [Vector3::z_axis(), Vector3::x_axis(), Vector3::y_axis()];
+        b.iter(|| {
+            rad.iter()
+                .map(|a| {
+                    let a = black_box(a);
+                    let r = Rotation3::from_axis_angle(&ext[2], a[2])
+                        * Rotation3::from_axis_angle(&ext[1], a[1])
+                        * Rotation3::from_axis_angle(&ext[0], a[0]);
+                    r.euler_angles_ordered(zxy, false).0[0]
+                })
+                .sum::<f64>()
+        })
+    });
+    g.bench_function("glam", |b| {
+        b.iter(|| {
+            rad.iter()
+                .map(|a| {
+                    let a = black_box(a);
+                    DQuat::from_euler(EulerRot::ZYXEx, a[2], a[1], a[0])
+                        .to_euler(EulerRot::ZXY)
+                        .0
+                })
+                .sum::<f64>()
+        })
+    });
+    g.finish();
+}
+
+/// Mean time of one benchmark, read from criterion's own estimates file.
+fn mean_ns(group: &str, name: &str) -> Option<f64> {
+    let dir = std::env::var("CARGO_TARGET_DIR").unwrap_or_else(|_| "target".into());
+    let path = format!("{dir}/criterion/{group}/{name}/new/estimates.json");
+    let text = std::fs::read_to_string(path).ok()?;
+    let mean = &text[text.find("\"mean\"")?..];
+    let pe = &mean[mean.find("\"point_estimate\":")? + 17..];
+    let end = pe.find([',', '}'])?;
+    pe[..end].trim().parse().ok()
+}
+
+fn ratios() {
+    println!("\nper rotation (mean), and the peers' time relative to cncrot:");
+    for group in ["decompose", "compose", "convert"] {
+        let Some(own) = mean_ns(group, "cncrot") else {
+            continue;
+        };
+        let per = |t: f64| t / BATCH as f64;
+        let mut line = format!("  {group:<9} cncrot {:6.1} ns", per(own));
+        for peer in ["nalgebra", "glam"] {
+            if let Some(t) = mean_ns(group, peer) {
+                line += &format!("   {peer} {:6.1} ns (x{:.2})", per(t), t / own);
+            }
+        }
+        println!("{line}");
+    }
+}
+
+criterion_group!(all, benches);
+
+fn main() {
+    all();
+    Criterion::default().configure_from_args().final_summary();
+    ratios();
+}

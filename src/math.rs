@@ -88,11 +88,15 @@ pub fn to_degrees(rad: f64) -> f64 {
 /// exact 0 and ±1 and the radian argument passed to `sin`/`cos` never exceeds 45°.
 #[inline]
 pub fn sin_cos_deg(deg: f64) -> (f64, f64) {
-    let mut r = fmod(deg, 360.0);
-    if r > 180.0 {
-        r -= 360.0;
-    } else if r < -180.0 {
-        r += 360.0;
+    // fmod is slow and exact; most angles need no full-turn reduction at all.
+    let mut r = deg;
+    if abs(r) > 180.0 {
+        r = fmod(deg, 360.0);
+        if r > 180.0 {
+            r -= 360.0;
+        } else if r < -180.0 {
+            r += 360.0;
+        }
     }
     let q = round(r / 90.0);
     let rest = r - 90.0 * q;
@@ -133,27 +137,28 @@ pub fn wrap_deg(deg: f64) -> f64 {
 #[inline]
 pub fn atan2_deg(y: f64, x: f64) -> f64 {
     let (ax, ay) = (abs(x), abs(y));
-    let upper = if ay <= ax {
-        let t = to_degrees(atan2(ay, ax));
-        if x >= 0.0 {
-            t
-        } else {
-            180.0 - t
-        }
+    let swap = ay > ax;
+    let (num, den) = if swap { (ax, ay) } else { (ay, ax) };
+    let t = to_degrees(atan2(num, den));
+    // Branch-free selection of the octant (random quadrants would mispredict): the angle in
+    // the upper half plane is off + sign·t.
+    let west = x < 0.0;
+    let off = if swap {
+        90.0
+    } else if west {
+        180.0
     } else {
-        let t = to_degrees(atan2(ax, ay));
-        if x >= 0.0 {
-            90.0 - t
-        } else {
-            90.0 + t
-        }
+        0.0
     };
+    let sign = if swap == west { 1.0 } else { -1.0 };
+    let upper = off + sign * t;
     // (-0, negative x) is 180 like (+0, negative x): the range is (-180, 180].
-    if y < 0.0 && upper != 180.0 {
-        -upper + 0.0
+    let r = if y < 0.0 && upper != 180.0 {
+        -upper
     } else {
-        upper + 0.0
-    }
+        upper
+    };
+    r + 0.0
 }
 
 /// Whole turns (multiples of 360°) that bring `angle` nearest to `reference`.

@@ -102,14 +102,45 @@ pub fn matrix_from_angles(kind: Kind, code: AxisCode, angles_deg: [f64; 3]) -> M
     let mut r = IDENTITY;
     for (axis, angle) in code.axes().into_iter().zip(angles_deg) {
         if let Some(axis) = axis {
-            let e = elementary(axis, angle);
-            r = match kind {
-                Kind::Intrinsic => mul(&r, &e),
-                Kind::Extrinsic => mul(&e, &r),
-            };
+            let (s, c) = sin_cos_deg(angle);
+            match kind {
+                Kind::Intrinsic => turn_columns(&mut r, axis, s, c),
+                Kind::Extrinsic => turn_rows(&mut r, axis, s, c),
+            }
         }
     }
     r
+}
+
+/// The two axes turned by a rotation about `axis`, in right-handed order.
+#[inline(always)]
+fn plane(axis: Axis) -> (usize, usize) {
+    match axis {
+        Axis::X => (1, 2),
+        Axis::Y => (2, 0),
+        Axis::Z => (0, 1),
+    }
+}
+
+/// `r ← r·R_axis`: only the columns of the turned plane change (12 flops, not a 3x3
+/// product).
+#[inline(always)]
+fn turn_columns(r: &mut Matrix, axis: Axis, s: f64, c: f64) {
+    let (u, v) = plane(axis);
+    for row in r.iter_mut() {
+        let (a, b) = (row[u], row[v]);
+        row[u] = a * c + b * s + 0.0;
+        row[v] = b * c - a * s + 0.0;
+    }
+}
+
+/// `r ← R_axis·r`: only the rows of the turned plane change.
+#[inline(always)]
+fn turn_rows(r: &mut Matrix, axis: Axis, s: f64, c: f64) {
+    let (u, v) = plane(axis);
+    let (ru, rv) = (r[u], r[v]);
+    r[u] = core::array::from_fn(|k| c * ru[k] - s * rv[k] + 0.0);
+    r[v] = core::array::from_fn(|k| s * ru[k] + c * rv[k] + 0.0);
 }
 
 /// Checks that `m` is a rotation: finite, `max |MᵀM − I| ≤ ROTATION_TOLERANCE`, `det > 0`.
@@ -181,7 +212,7 @@ pub fn nearest_rotation(m: &Matrix) -> Result<Matrix, Error> {
     let mut x = m.map(|row| row.map(|v| v / scale));
     for _ in 0..64 {
         let det = determinant(&x);
-        if !(det > 1e-12) {
+        if det.is_nan() || det <= 1e-12 {
             return Err(Error::Degenerate);
         }
         let inv_t = cofactor(&x).map(|row| row.map(|v| v / det));
@@ -282,8 +313,7 @@ fn tait_bryan<const I: usize, const J: usize, const K: usize>(
     let e = if (I + 1) % 3 == J { 1.0 } else { -1.0 };
     let sa = -e * m[J][K];
     let ca = m[K][K];
-    let n1 = sqrt(sa * sa + ca * ca);
-    if n1 > SINGULAR_NORM {
+    if sa * sa + ca * ca > SINGULAR_NORM * SINGULAR_NORM {
         let b = atan2_deg(e * m[I][K], sqrt(m[I][I] * m[I][I] + m[I][J] * m[I][J]));
         // (sa, ca) are cos b times the sine and cosine of a; atan2 needs no normalisation.
         let sc = e * ca * m[J][I] + sa * m[K][I];
@@ -313,8 +343,7 @@ fn proper_euler<const I: usize, const J: usize, const K: usize>(
     let e = if (I + 1) % 3 == J { 1.0 } else { -1.0 };
     let sa = m[J][I];
     let ca = -e * m[K][I];
-    let n1 = sqrt(sa * sa + ca * ca);
-    if n1 > SINGULAR_NORM {
+    if sa * sa + ca * ca > SINGULAR_NORM * SINGULAR_NORM {
         let b = atan2_deg(sqrt(m[I][J] * m[I][J] + m[I][K] * m[I][K]), m[I][I]);
         let cc = ca * m[J][J] + e * sa * m[K][J];
         let sc = -e * ca * m[J][K] - sa * m[K][K];
@@ -382,10 +411,9 @@ pub fn closest_of(sequence: Sequence, first: Decomposition, reference: [f64; 3])
     let unwind = |d: Decomposition| {
         let mut out = d;
         let mut dist = 0.0;
-        for k in 0..3 {
-            out.angles[k] = d.angles[k] + math::turns_toward(d.angles[k], reference[k]) + 0.0;
-            let diff = out.angles[k] - reference[k];
-            dist += diff * diff;
+        for ((o, &a), &r) in out.angles.iter_mut().zip(&d.angles).zip(&reference) {
+            *o = a + math::turns_toward(a, r) + 0.0;
+            dist += (*o - r) * (*o - r);
         }
         (out, dist)
     };

@@ -1,0 +1,253 @@
+//! The C boundary. No mathematics here: every export validates its arguments, calls the
+//! Rust API and writes the results.
+//!
+//! The rules every export follows:
+//! - all pointers are checked for NULL first, then flags and codes, then every input float
+//!   for finiteness; the first failure is returned;
+//! - outputs are written only on success (status >= 0), and only after all computation, so
+//!   an output may alias an input;
+//! - nothing panics across the boundary: with `std` each body runs under `catch_unwind` and
+//!   a panic becomes `CNCROT_STATUS_INTERNAL`;
+//! - integers from C are validated, never transmuted into Rust enums.
+
+mod frame;
+mod rotation;
+
+pub use frame::*;
+pub use rotation::*;
+
+use crate::{Convention, Error, Kind};
+use core::ffi::c_char;
+
+/// Status of every `cncrot_` function: 0 success, positive success with a remark, negative
+/// an error (outputs untouched).
+#[allow(non_camel_case_types)]
+#[repr(i32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum cncrot_status {
+    /// Success.
+    Ok = 0,
+    /// Success; the decomposition is singular (only θ1 ± θ3 determined, θ3 set to 0).
+    Singular = 1,
+    /// A pointer argument is NULL.
+    NullPointer = -1,
+    /// A floating-point argument is NaN or infinite.
+    NotFinite = -2,
+    /// A 0/1 flag has another value.
+    BadFlag = -3,
+    /// An axis-sequence code is outside 0..63 or repeats an axis.
+    BadSequence = -4,
+    /// A decomposition target has fewer than three rotations.
+    IncompleteSequence = -5,
+    /// A matrix is not a rotation (see `CNCROT_ROTATION_TOLERANCE`) or a frame's last row is
+    /// not 0 0 0 1.
+    NotARotation = -6,
+    /// `cncrot_nearest_rotation`: singular matrix, or nearest to a reflection.
+    Degenerate = -7,
+    /// A parameter outside its allowed values.
+    BadArgument = -8,
+    /// Not available in this version (needs the machine kinematics).
+    NotAvailable = -9,
+    /// The accessory name is not in the head table.
+    UnknownHead = -10,
+    /// A name is longer than its field.
+    NameTooLong = -11,
+    /// HEAD_DEF text could not be read.
+    Parse = -12,
+    /// The head table is full.
+    TableFull = -13,
+    /// Internal failure (a caught panic): a bug in cncrot, please report it.
+    Internal = -100,
+}
+
+/// The tolerance of the rotation check: the largest element of `MᵀM − I` accepted.
+/// Matrices printed to four decimals stay below 2e-4; more distorted ones (raw probe data)
+/// must go through `cncrot_nearest_rotation` deliberately.
+pub const CNCROT_ROTATION_TOLERANCE: f64 = 1e-3;
+
+impl From<Error> for cncrot_status {
+    fn from(e: Error) -> cncrot_status {
+        match e {
+            Error::NotFinite => cncrot_status::NotFinite,
+            Error::BadFlag => cncrot_status::BadFlag,
+            Error::BadSequence => cncrot_status::BadSequence,
+            Error::IncompleteSequence => cncrot_status::IncompleteSequence,
+            Error::NotARotation => cncrot_status::NotARotation,
+            Error::Degenerate => cncrot_status::Degenerate,
+            Error::BadArgument => cncrot_status::BadArgument,
+            Error::NotAvailable => cncrot_status::NotAvailable,
+            Error::UnknownHead => cncrot_status::UnknownHead,
+            Error::NameTooLong => cncrot_status::NameTooLong,
+            Error::Parse => cncrot_status::Parse,
+            Error::TableFull => cncrot_status::TableFull,
+        }
+    }
+}
+
+/// The name and meaning of a status, as a static NUL-terminated string (never NULL;
+/// unknown values give "CNCROT_STATUS_UNKNOWN").
+///
+/// ```c
+/// int32_t s = cncrot_matrix_from_angles(1, 57, angles, m);
+/// if (s < 0) fprintf(stderr, "cncrot: %s\n", cncrot_status_str(s));
+/// ```
+#[no_mangle]
+pub extern "C" fn cncrot_status_str(status: i32) -> *const c_char {
+    let s: &'static core::ffi::CStr = match status {
+        0 => c"CNCROT_STATUS_OK: success",
+        1 => c"CNCROT_STATUS_SINGULAR: success; singular decomposition, only the sum or difference of the first and third angles is determined, the third was set to 0",
+        -1 => c"CNCROT_STATUS_NULL_POINTER: a pointer argument is NULL",
+        -2 => c"CNCROT_STATUS_NOT_FINITE: a number is NaN or infinite",
+        -3 => c"CNCROT_STATUS_BAD_FLAG: a flag is neither 0 nor 1",
+        -4 => c"CNCROT_STATUS_BAD_SEQUENCE: axis-sequence code outside 0..63 or with a repeated axis",
+        -5 => c"CNCROT_STATUS_INCOMPLETE_SEQUENCE: decomposition needs a sequence of three rotations",
+        -6 => c"CNCROT_STATUS_NOT_A_ROTATION: matrix is not a rotation (not orthonormal within 1e-3, a reflection, or a frame whose last row is not 0 0 0 1)",
+        -7 => c"CNCROT_STATUS_DEGENERATE: matrix is singular or nearest to a reflection",
+        -8 => c"CNCROT_STATUS_BAD_ARGUMENT: parameter outside its allowed values",
+        -9 => c"CNCROT_STATUS_NOT_AVAILABLE: not available: needs the machine kinematics",
+        -10 => c"CNCROT_STATUS_UNKNOWN_HEAD: accessory name not found in the head table",
+        -11 => c"CNCROT_STATUS_NAME_TOO_LONG: name longer than its field",
+        -12 => c"CNCROT_STATUS_PARSE: HEAD_DEF text could not be read",
+        -13 => c"CNCROT_STATUS_TABLE_FULL: head table is full",
+        -100 => c"CNCROT_STATUS_INTERNAL: internal failure (caught panic), please report",
+        _ => c"CNCROT_STATUS_UNKNOWN: not a cncrot status",
+    };
+    s.as_ptr()
+}
+
+type Outcome = Result<cncrot_status, cncrot_status>;
+
+/// Runs an export's body; with `std`, a panic becomes `Internal` instead of unwinding into C.
+#[inline(always)]
+fn guard(body: impl FnOnce() -> Outcome) -> i32 {
+    #[cfg(feature = "std")]
+    let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(body))
+        .unwrap_or(Err(cncrot_status::Internal));
+    #[cfg(not(feature = "std"))]
+    let outcome = body();
+    match outcome {
+        Ok(s) | Err(s) => s as i32,
+    }
+}
+
+fn status_of(singular: bool) -> cncrot_status {
+    if singular {
+        cncrot_status::Singular
+    } else {
+        cncrot_status::Ok
+    }
+}
+
+/// Fails with `NullPointer` when any pointer is NULL.
+fn non_null(ptrs: &[bool]) -> Result<(), cncrot_status> {
+    if ptrs.iter().any(|&is_null| is_null) {
+        Err(cncrot_status::NullPointer)
+    } else {
+        Ok(())
+    }
+}
+
+/// Reads `N` doubles and checks each for finiteness.
+///
+/// # Safety
+/// `p` is non-NULL and points to `N` readable doubles.
+unsafe fn read_finite<const N: usize>(p: *const f64) -> Result<[f64; N], cncrot_status> {
+    let mut v = [0.0; N];
+    for (k, x) in v.iter_mut().enumerate() {
+        *x = p.add(k).read_unaligned();
+        if !x.is_finite() {
+            return Err(cncrot_status::NotFinite);
+        }
+    }
+    Ok(v)
+}
+
+/// # Safety
+/// `p` is non-NULL and points to `N` writable doubles.
+unsafe fn write<const N: usize>(p: *mut f64, v: [f64; N]) {
+    for (k, x) in v.into_iter().enumerate() {
+        p.add(k).write_unaligned(x);
+    }
+}
+
+/// # Safety
+/// `p` is non-NULL and points to 9 readable doubles.
+unsafe fn read_matrix(p: *const f64) -> Result<crate::Matrix, cncrot_status> {
+    let v: [f64; 9] = read_finite(p)?;
+    Ok([[v[0], v[1], v[2]], [v[3], v[4], v[5]], [v[6], v[7], v[8]]])
+}
+
+/// # Safety
+/// `p` is non-NULL and points to 9 writable doubles.
+unsafe fn write_matrix(p: *mut f64, m: &crate::Matrix) {
+    write::<9>(p, core::array::from_fn(|k| m[k / 3][k % 3]));
+}
+
+fn kind(intrinsic: i32) -> Result<Kind, cncrot_status> {
+    Ok(Kind::from_flag(intrinsic)?)
+}
+
+fn convention(intrinsic: i32, sequence: i32) -> Result<Convention, cncrot_status> {
+    Ok(Convention::from_c(intrinsic, sequence)?)
+}
+
+#[cfg(all(test, feature = "std"))]
+mod tests {
+    /// The committed header is what cbindgen makes of the current sources.
+    #[test]
+    fn header_is_fresh() {
+        let generated = include_str!(concat!(env!("OUT_DIR"), "/cncrot.h"));
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/include/cncrot.h");
+        let committed = std::fs::read_to_string(path).unwrap_or_default();
+        assert!(
+            committed == generated,
+            "include/cncrot.h is stale: run `cargo build` and commit it"
+        );
+    }
+
+    #[test]
+    fn tolerance_constant_matches_the_rust_api() {
+        assert_eq!(super::CNCROT_ROTATION_TOLERANCE, crate::ROTATION_TOLERANCE);
+    }
+
+    #[test]
+    fn every_status_has_a_name() {
+        use super::cncrot_status as S;
+        let all = [
+            S::Ok,
+            S::Singular,
+            S::NullPointer,
+            S::NotFinite,
+            S::BadFlag,
+            S::BadSequence,
+            S::IncompleteSequence,
+            S::NotARotation,
+            S::Degenerate,
+            S::BadArgument,
+            S::NotAvailable,
+            S::UnknownHead,
+            S::NameTooLong,
+            S::Parse,
+            S::TableFull,
+            S::Internal,
+        ];
+        for s in all {
+            let text = unsafe { core::ffi::CStr::from_ptr(super::cncrot_status_str(s as i32)) };
+            let text = text.to_str().unwrap();
+            // The C name is derived independently from the Rust variant name.
+            let name: String = format!("{s:?}")
+                .chars()
+                .flat_map(|c| {
+                    let sep = c.is_uppercase().then_some('_');
+                    sep.into_iter().chain(c.to_uppercase())
+                })
+                .collect();
+            assert!(text.starts_with(&format!("CNCROT_STATUS{name}:")), "{text}");
+        }
+        let unknown = unsafe { core::ffi::CStr::from_ptr(super::cncrot_status_str(42)) };
+        assert!(unknown
+            .to_str()
+            .unwrap()
+            .starts_with("CNCROT_STATUS_UNKNOWN"));
+    }
+}
