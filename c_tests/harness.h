@@ -29,7 +29,7 @@ static int g_passed = 0, g_failed = 0;
           cncrot_status_str(s_), (int)(expected));                             \
   } while (0)
 
-static double max_abs_diff(const double *a, const double *b, int n) {
+static inline double max_abs_diff(const double *a, const double *b, int n) {
   double worst = 0.0;
   for (int k = 0; k < n; k++) {
     double d = fabs(a[k] - b[k]);
@@ -46,10 +46,10 @@ static double max_abs_diff(const double *a, const double *b, int n) {
   } while (0)
 
 /* Fills a buffer with a sentinel so that a test can prove it was not written. */
-static void fill_sentinel(double *p, int n) {
+static inline void fill_sentinel(double *p, int n) {
   for (int k = 0; k < n; k++) p[k] = -12345.678;
 }
-static int is_sentinel(const double *p, int n) {
+static inline int is_sentinel(const double *p, int n) {
   for (int k = 0; k < n; k++)
     if (p[k] != -12345.678) return 0;
   return 1;
@@ -57,7 +57,7 @@ static int is_sentinel(const double *p, int n) {
 
 /* xorshift64*: reproducible random inputs. */
 static uint64_t g_rng = 0x9E3779B97F4A7C15ull;
-static double rnd(double lo, double hi) {
+static inline double rnd(double lo, double hi) {
   g_rng ^= g_rng >> 12;
   g_rng ^= g_rng << 25;
   g_rng ^= g_rng >> 27;
@@ -65,7 +65,7 @@ static double rnd(double lo, double hi) {
   return lo + (hi - lo) * ((double)(r >> 11) / 9007199254740992.0);
 }
 
-static int finish(const char *name) {
+static inline int finish(const char *name) {
   printf("%s: %d passed, %d failed\n", name, g_passed, g_failed);
   return g_failed == 0 ? 0 : 1;
 }

@@ -16,6 +16,16 @@
 #define CNCROT_ROTATION_TOLERANCE 1e-3
 
 /**
+ * Size of a name field, including its terminating NUL: names have at most 31 bytes.
+ */
+#define CNCROT_NAME_SIZE 32
+
+/**
+ * How many accessories a `cncrot_head_table` holds.
+ */
+#define CNCROT_HEAD_TABLE_CAPACITY 16
+
+/**
  * Status of every `cncrot_` function: 0 success, positive success with a remark, negative
  * an error (outputs untouched).
  */
@@ -98,6 +108,103 @@ typedef int32_t cncrot_status;
 #endif // __STDC_VERSION__ >= 202311L
 #endif // __cplusplus
 
+/**
+ * One technological accessory of the HEAD_DEF cycle.
+ */
+typedef struct cncrot_head {
+  /**
+   * `_HEAD_NAME`, NUL-terminated.
+   */
+  char name[CNCROT_NAME_SIZE];
+  /**
+   * `_HEAD_ALLOWED` (0 or 1).
+   */
+  int32_t allowed;
+  /**
+   * Zero.
+   */
+  int32_t reserved;
+  /**
+   * `_DELTA_L1`, `_DELTA_L2`, `_DELTA_H1`.
+   */
+  double delta[3];
+  /**
+   * `_OFFS_L1_X`, `_OFFS_L1_Y`, `_OFFS_L2_X`, `_OFFS_L2_Y`, `_OFFS_H1_X`, `_OFFS_H1_Z`.
+   */
+  double offsets[6];
+} cncrot_head;
+
+/**
+ * A caller-owned, fixed-capacity table of accessories, filled by
+ * `cncrot_head_table_parse`. A zeroed table is empty.
+ */
+typedef struct cncrot_head_table {
+  /**
+   * How many entries of `heads` are used (0..16).
+   */
+  int32_t count;
+  /**
+   * Zero.
+   */
+  int32_t reserved;
+  /**
+   * The accessories.
+   */
+  struct cncrot_head heads[CNCROT_HEAD_TABLE_CAPACITY];
+} cncrot_head_table;
+
+/**
+ * CYCLE600's state, the controller's GUD block `MGUD_CYC600`: plain data, owned by the
+ * caller, that can be stored as bytes and restored after a restart. A zeroed struct is the
+ * valid initial state (no rotation yet). Its first six fields are the paper's results.
+ */
+typedef struct cncrot_cycle600_gud {
+  /**
+   * `_CYC600_1`: the accessory's name (`_MIHEAD`), NUL-terminated.
+   */
+  char cyc600_1[CNCROT_NAME_SIZE];
+  /**
+   * `_CYC600_2`: first output angle, degrees.
+   */
+  double cyc600_2;
+  /**
+   * `_CYC600_3`: second output angle, degrees.
+   */
+  double cyc600_3;
+  /**
+   * `_CYC600_4`: third output angle, degrees.
+   */
+  double cyc600_4;
+  /**
+   * `_CYC600_5`: `_INEXOUT` of the last call (1 intrinsic, 0 extrinsic).
+   */
+  int32_t cyc600_5;
+  /**
+   * `_CYC600_6`: `_BIN_OUT` of the last call.
+   */
+  int32_t cyc600_6;
+  /**
+   * The active frame, 4x4 row-major, translations included (`_ROT_AD` adds to it).
+   */
+  double frame[16];
+  /**
+   * 1 once a call has stored a result, 0 in the initial state (frame = identity).
+   */
+  int32_t active;
+  /**
+   * `_ROT_INV` of the last call, for the calling cycle.
+   */
+  int32_t rot_inv;
+  /**
+   * `_RETR_Z` of the last call, for the calling cycle.
+   */
+  int32_t retr_z;
+  /**
+   * Zero.
+   */
+  int32_t reserved;
+} cncrot_cycle600_gud;
+
 
 
 #ifdef __cplusplus
@@ -114,6 +221,83 @@ extern "C" {
  * ```
  */
 const char *cncrot_status_str(int32_t status);
+
+/**
+ * `sizeof(cncrot_cycle600_gud)` as the library sees it: compare with the caller's
+ * `sizeof` to detect a header/library mismatch before storing states.
+ */
+size_t cncrot_cycle600_gud_size(void);
+
+/**
+ * Reads the text of a HEAD_DEF cycle into `table`: per line an optional block number
+ * `N…`, then labels (`TZ7:`), `_HEAD_NAME="…"` (starts an accessory), `_HEAD_ALLOWED`,
+ * `_DELTA_L1/_L2/_H1`, `_OFFS_L1_X/_L1_Y/_L2_X/_L2_Y/_H1_X/_H1_Z` assignments,
+ * `GOTOF/GOTOB/GOTO …`, `RET`, `M17`, `M30`, comments after `;`. `text` holds `len` bytes
+ * (no terminating NUL needed).
+ *
+ * Returns 0 and writes the table, with `*error_line` = 0; or a negative status
+ * (`CNCROT_STATUS_PARSE` for an unknown or malformed line, `CNCROT_STATUS_NAME_TOO_LONG`,
+ * `CNCROT_STATUS_TABLE_FULL`) with the table untouched and the 1-based number of the
+ * offending line in `*error_line`. `error_line` may be NULL.
+ *
+ * # Safety
+ * `table` points to a writable `cncrot_head_table`, `text` to `len` readable bytes.
+ *
+ * ```c
+ * cncrot_head_table heads; int32_t line;
+ * if (cncrot_head_table_parse(&heads, text, strlen(text), &line) < 0) printf("line %d\n", line);
+ * ```
+ */
+int32_t cncrot_head_table_parse(struct cncrot_head_table *table,
+                                const char *text,
+                                size_t len,
+                                int32_t *error_line);
+
+/**
+ * CYCLE600 with the paper's 18 parameters in its order, after the caller's state `gud` and
+ * an optional head table `heads` (NULL: the name is only recorded; otherwise `_MIHEAD`
+ * must name one of its accessories).
+ *
+ * The input rotation (`_INEXIN`, `_BIN_IN`, `_ANG_1.._3`) with `_POS_*` before and
+ * `_POS_*_R` after it forms a frame; `_ROT_AD = 1` adds it to the frame stored in `gud`
+ * (intrinsic input on the right, extrinsic on the left). Its rotation is decomposed for
+ * `_INEXOUT`/`_BIN_OUT` into `cyc600_2..4`. `_SW_REC = 1` recalculates only; `_SW_REC = 0`
+ * (positioning the head) returns `CNCROT_STATUS_NOT_AVAILABLE`. `_ROT_INV` and `_RETR_Z`
+ * (0/1) are kept in `gud`.
+ *
+ * Returns 0 or `CNCROT_STATUS_SINGULAR` with `gud` updated; a negative status leaves
+ * `gud` exactly as it was (also for a corrupt `gud` or `heads`).
+ *
+ * # Safety
+ * `gud` points to a writable state, `mihead` to a NUL-terminated string (at most 31 bytes
+ * are used; at most 32 are read), `heads` to a table or is NULL.
+ *
+ * ```c
+ * cncrot_cycle600_gud gud = {0};   // paper, Example 3
+ * cncrot_cycle600(&gud, NULL, 0, "UFK600", 1, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0);
+ * // gud.cyc600_2..4 = 37.7923, 20.7048, 49.1066; gud.cyc600_5 = 1; gud.cyc600_6 = 39
+ * ```
+ */
+int32_t cncrot_cycle600(struct cncrot_cycle600_gud *gud,
+                        const struct cncrot_head_table *heads,
+                        int32_t inexin,
+                        const char *mihead,
+                        int32_t sw_rec,
+                        int32_t bin_in,
+                        double pos_x,
+                        double pos_y,
+                        double pos_z,
+                        double ang_1,
+                        double ang_2,
+                        double ang_3,
+                        double pos_x_r,
+                        double pos_y_r,
+                        double pos_z_r,
+                        int32_t inexout,
+                        int32_t bin_out,
+                        int32_t rot_ad,
+                        int32_t rot_inv,
+                        int32_t retr_z);
 
 /**
  * The frame `Trans(before)·Rot·Trans(after)` (CYCLE600 `_POS_*` / `_POS_*_R`, CYCLE800

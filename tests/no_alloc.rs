@@ -143,6 +143,76 @@ fn table() -> Vec<Call> {
             cncrot_frame_transform_point(IDF.as_ptr(), A.as_ptr(), p.as_mut_ptr());
             cncrot_frame_transform_point(IDF.as_ptr(), BAD.as_ptr(), p.as_mut_ptr());
         }),
+        ("cncrot_cycle600_gud_size", || {
+            let _ = cncrot_cycle600_gud_size();
+        }),
+        ("cncrot_head_table_parse", || unsafe {
+            let mut t: cncrot_head_table = std::mem::zeroed();
+            let mut line = 0;
+            let text = b"N1 _HEAD_NAME=\"IFVW207S\"\nN2 _DELTA_L1=540.735 _OFFS_H1_Z=0.247\n";
+            cncrot_head_table_parse(&mut t, text.as_ptr().cast(), text.len(), &mut line);
+            let bad = b"_HEAD_NAME=\"A\"\nDELTA_L2=1\n";
+            cncrot_head_table_parse(&mut t, bad.as_ptr().cast(), bad.len(), &mut line);
+        }),
+        ("cncrot_cycle600", || unsafe {
+            let mut gud: cncrot_cycle600_gud = std::mem::zeroed();
+            let mut t: cncrot_head_table = std::mem::zeroed();
+            let text = b"_HEAD_NAME=\"UFK600\"\n";
+            cncrot_head_table_parse(&mut t, text.as_ptr().cast(), text.len(), null_mut());
+            let name = c"UFK600".as_ptr();
+            cncrot_cycle600(
+                &mut gud, &t, 0, name, 1, 57, 0.0, 0.0, 0.0, 30.0, 45.0, 60.0, 0.0, 0.0, 0.0, 1,
+                39, 0, 0, 0,
+            );
+            cncrot_cycle600(
+                &mut gud, &t, 0, name, 1, 3, 1.0, 2.0, 3.0, 15.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, 27,
+                1, 0, 0,
+            );
+            cncrot_cycle600(
+                &mut gud,
+                &t,
+                0,
+                c"NOPE".as_ptr(),
+                1,
+                57,
+                0.0,
+                0.0,
+                0.0,
+                1.0,
+                2.0,
+                3.0,
+                0.0,
+                0.0,
+                0.0,
+                1,
+                39,
+                0,
+                0,
+                0,
+            );
+            cncrot_cycle600(
+                &mut gud,
+                null(),
+                0,
+                name,
+                0,
+                57,
+                0.0,
+                0.0,
+                0.0,
+                1.0,
+                2.0,
+                3.0,
+                0.0,
+                0.0,
+                0.0,
+                1,
+                39,
+                0,
+                0,
+                0,
+            );
+        }),
     ]
 }
 

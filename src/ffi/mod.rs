@@ -10,9 +10,11 @@
 //!   a panic becomes `CNCROT_STATUS_INTERNAL`;
 //! - integers from C are validated, never transmuted into Rust enums.
 
+mod cycle600;
 mod frame;
 mod rotation;
 
+pub use cycle600::*;
 pub use frame::*;
 pub use rotation::*;
 

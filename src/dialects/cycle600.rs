@@ -1,0 +1,143 @@
+//! CYCLE600, the paper's cycle: recalculates a rotation given about the machine or the
+//! workpiece axes, with translations before and after it, optionally added to the previous
+//! one, into the angles of another convention (for CYCLE800).
+//!
+//! The cycle works on a state that the caller owns and stores (the controller's GUD block):
+//! [`cycle600`] reads it and returns the next one, so on any error the caller's state is
+//! untouched.
+
+use super::head_def::{HeadTable, NAME_MAX};
+use crate::{angles_from_matrix, matrix_from_angles, AxisCode, Convention, Error, Frame, Kind};
+
+/// The paper's 18 documented parameters, in its order.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Call<'a> {
+    /// `_INEXIN`: 1 intrinsic, 0 extrinsic input rotation.
+    pub inexin: i32,
+    /// `_MIHEAD`: the accessory's name (at most 31 bytes).
+    pub mihead: &'a [u8],
+    /// `_SW_REC`: 1 recalculation only; 0 also positions the head (needs the kinematics).
+    pub sw_rec: i32,
+    /// `_BIN_IN`: axis-sequence code of the input rotation (`00` pairs allowed).
+    pub bin_in: i32,
+    /// `_POS_X`, `_POS_Y`, `_POS_Z`: translation before the rotation.
+    pub pos: [f64; 3],
+    /// `_ANG_1`, `_ANG_2`, `_ANG_3` in degrees.
+    pub ang: [f64; 3],
+    /// `_POS_X_R`, `_POS_Y_R`, `_POS_Z_R`: translation after the rotation.
+    pub pos_r: [f64; 3],
+    /// `_INEXOUT`: 1 intrinsic, 0 extrinsic output angles.
+    pub inexout: i32,
+    /// `_BIN_OUT`: one of the 12 three-rotation codes.
+    pub bin_out: i32,
+    /// `_ROT_AD`: 1 adds the rotation to the one stored by the previous call.
+    pub rot_ad: i32,
+    /// `_ROT_INV`: 1 use the inverse head position (kept for the calling cycle).
+    pub rot_inv: i32,
+    /// `_RETR_Z`: 1 retract before rotating (kept for the calling cycle).
+    pub retr_z: i32,
+}
+
+/// The results of a call: the paper's `_CYC600_2.._6`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Results {
+    /// `_CYC600_2.._4`: the output angles in rotation order.
+    pub angles: [f64; 3],
+    /// `_CYC600_5` (`_INEXOUT`) and `_CYC600_6` (`_BIN_OUT`).
+    pub convention: Convention,
+    /// The decomposition was singular (θ3 = 0 by rule).
+    pub singular: bool,
+}
+
+/// What CYCLE600 remembers between calls (and across a restart).
+///
+/// ```
+/// use cncrot::dialects::cycle600::{cycle600, Call, State};
+/// // Paper, Example 3, first call.
+/// let call = Call { inexin: 0, mihead: b"UFK600", sw_rec: 1, bin_in: 57, pos: [0.0; 3],
+///     ang: [30.0, 45.0, 60.0], pos_r: [0.0; 3], inexout: 1, bin_out: 39, rot_ad: 0,
+///     rot_inv: 0, retr_z: 0 };
+/// let s = cycle600(&State::default(), None, &call).unwrap();
+/// let r = s.results.unwrap();
+/// assert!((r.angles[0] - 37.7923).abs() < 1e-4 && (r.angles[2] - 49.1066).abs() < 1e-4);
+/// assert_eq!(s.name(), b"UFK600");
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct State {
+    /// `_CYC600_1`: the accessory's name, `name_len` bytes.
+    pub name: [u8; NAME_MAX],
+    /// Length of the name.
+    pub name_len: u8,
+    /// The results of the last call, `None` before the first.
+    pub results: Option<Results>,
+    /// The active frame (identity before the first call).
+    pub frame: Frame,
+    /// `_ROT_INV` of the last call.
+    pub rot_inv: bool,
+    /// `_RETR_Z` of the last call.
+    pub retr_z: bool,
+}
+
+impl State {
+    /// The accessory's name.
+    pub fn name(&self) -> &[u8] {
+        &self.name[..usize::from(self.name_len).min(NAME_MAX)]
+    }
+}
+
+fn flag(v: i32) -> Result<bool, Error> {
+    Ok(Kind::from_flag(v)? == Kind::Intrinsic)
+}
+
+/// One call of CYCLE600 on `state`; returns the next state.
+///
+/// The input frame is `Trans(pos)·R_in·Trans(pos_r)`. With `rot_ad = 1` it is added to the
+/// stored frame: on the right for an intrinsic input, on the left for an extrinsic one. Its
+/// rotation is decomposed for `inexout`/`bin_out`. With a head table, `mihead` must name one
+/// of its accessories ([`Error::UnknownHead`]); without one the name is only recorded.
+/// `sw_rec = 0` (positioning the head) returns [`Error::NotAvailable`] after validation.
+pub fn cycle600(state: &State, heads: Option<&HeadTable>, call: &Call) -> Result<State, Error> {
+    let kind_in = Kind::from_flag(call.inexin)?;
+    let recalc_only = flag(call.sw_rec)?;
+    let code_in = AxisCode::new(call.bin_in)?;
+    let out = Convention::from_c(call.inexout, call.bin_out)?;
+    let additive = flag(call.rot_ad)?;
+    let rot_inv = flag(call.rot_inv)?;
+    let retr_z = flag(call.retr_z)?;
+    let numbers = call.pos.iter().chain(&call.ang).chain(&call.pos_r);
+    if !numbers.into_iter().all(|x| x.is_finite()) {
+        return Err(Error::NotFinite);
+    }
+    if call.mihead.len() > NAME_MAX {
+        return Err(Error::NameTooLong);
+    }
+    if let Some(table) = heads {
+        table.find(call.mihead).ok_or(Error::UnknownHead)?;
+    }
+    if !recalc_only {
+        return Err(Error::NotAvailable);
+    }
+
+    let rotation = matrix_from_angles(kind_in, code_in, call.ang);
+    let input = Frame::with_translations(call.pos, rotation, call.pos_r);
+    let frame = match (additive, kind_in) {
+        (false, _) => input,
+        (true, Kind::Intrinsic) => state.frame.compose(&input),
+        (true, Kind::Extrinsic) => input.compose(&state.frame),
+    };
+    let d = angles_from_matrix(out, &frame.rotation)?;
+    let mut next = State {
+        name: [0; NAME_MAX],
+        name_len: call.mihead.len() as u8,
+        results: Some(Results {
+            angles: d.angles,
+            convention: out,
+            singular: d.singular,
+        }),
+        frame,
+        rot_inv,
+        retr_z,
+    };
+    next.name[..call.mihead.len()].copy_from_slice(call.mihead);
+    Ok(next)
+}

@@ -1,0 +1,4 @@
+//! Controller dialects: the commands of the controllers, on top of the rotation mathematics.
+
+pub mod cycle600;
+pub mod head_def;
