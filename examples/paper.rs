@@ -1,8 +1,7 @@
 //! The paper's Examples 2 and 3, computed by the library: `cargo run --release --example paper`.
 
-use cncrot::{
-    angles_from_matrix, convert, matrix_from_angles, AxisCode, Convention, Kind, Sequence,
-};
+use cncrot::dialects::cycle600::{cycle600, Call, State};
+use cncrot::{angles_from_matrix, matrix_from_angles, AxisCode, Convention, Kind, Sequence};
 
 fn main() {
     let probe = [30.0, 45.0, 60.0];
@@ -33,17 +32,30 @@ fn main() {
     println!("    (the paper prints -24.5939, 47.6633, 58.3301: its asin/atan formulas on the");
     println!("     rounded, slightly non-orthonormal matrix; the inputs carry +-5e-5)");
 
-    println!("Example 3: CYCLE600 recalculation (_SW_REC = 1) of the probe angles");
-    for (inexout, kind) in [(1, Kind::Intrinsic), (0, Kind::Extrinsic)] {
-        let d = convert(
-            Kind::Extrinsic,
-            xyz,
-            probe,
-            Convention::new(kind, Sequence::ZXY),
-        );
+    println!("Example 3: N120 CYCLE600(0, \"UFK600\", 1, 57, 0,0,0, 30,45,60, 0,0,0, _INEXOUT, 39, 0,0,0)");
+    for inexout in [1, 0] {
+        let call = Call {
+            inexin: 0,
+            mihead: b"UFK600",
+            sw_rec: 1,
+            bin_in: 57,
+            pos: [0.0; 3],
+            ang: probe,
+            pos_r: [0.0; 3],
+            inexout,
+            bin_out: 39,
+            rot_ad: 0,
+            rot_inv: 0,
+            retr_z: 0,
+        };
+        let gud = cycle600(&State::default(), None, &call).expect("valid call");
+        let r = gud.results.expect("stored");
         println!(
-            "  _INEXOUT = {inexout}, _BIN_OUT = 39: _CYC600_2.._4 = {}",
-            fmt(d.angles)
+            "  _INEXOUT = {inexout}: _CYC600_1 = \"{}\", _CYC600_2.._4 = {}, _CYC600_5 = {}, _CYC600_6 = {}",
+            String::from_utf8_lossy(gud.name()),
+            fmt(r.angles),
+            r.convention.kind.flag(),
+            r.convention.sequence.code()
         );
     }
 }

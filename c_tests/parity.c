@@ -1,0 +1,64 @@
+/* Writes the parity cases for the MATLAB/Octave suite: fixed inputs and the C library's
+ * outputs, every double as its 64-bit pattern in hex, so the MEX results can be compared
+ * bit for bit. Cases: all 24 conventions (random, near-singular and singular rotations),
+ * conversions, CYCLE600 calls. Usage: parity > cases.txt */
+#include <inttypes.h>
+#include "cncrot.h"
+#include "harness.h"
+
+static const int32_t CODES[12] = {57, 45, 54, 30, 39, 27, 25, 29, 38, 46, 55, 59};
+
+static void hex(double x) {
+  uint64_t u;
+  memcpy(&u, &x, sizeof u);
+  printf(" %016" PRIx64, u);
+}
+static void hexes(const double *x, int n) {
+  for (int k = 0; k < n; k++) hex(x[k]);
+}
+
+int main(void) {
+  for (int kind = 0; kind < 2; kind++)
+    for (int c = 0; c < 12; c++)
+      for (int v = 0; v < 4; v++) {
+        int proper = (CODES[c] & 3) == (CODES[c] >> 4);
+        double a[3] = {rnd(-180, 180), proper ? rnd(0, 180) : rnd(-90, 90), rnd(-180, 180)};
+        if (v == 1) a[1] = proper ? 1e-7 : 90 - 1e-9; /* near-singular */
+        if (v == 2) a[1] = proper ? 180 : -90;        /* singular */
+        if (v == 3) a[0] = 1e6 + rnd(0, 1);           /* huge angle */
+        double m[9], out[3];
+        cncrot_matrix_from_angles(kind, CODES[c], a, m);
+        printf("M %d %d", kind, CODES[c]);
+        hexes(a, 3);
+        hexes(m, 9);
+        printf("\n");
+        int32_t s = cncrot_angles_from_matrix(kind, CODES[c], m, out);
+        printf("A %d %d", kind, CODES[c]);
+        hexes(m, 9);
+        hexes(out, 3);
+        printf(" %d\n", s);
+        int32_t to = CODES[(c + 5 + v) % 12];
+        s = cncrot_convert(kind, CODES[c], a, 1 - kind, to, out);
+        printf("C %d %d", kind, CODES[c]);
+        hexes(a, 3);
+        printf(" %d %d", 1 - kind, to);
+        hexes(out, 3);
+        printf(" %d\n", s);
+      }
+  for (int k = 0; k < 24; k++) {
+    int32_t inexin = k % 2, inexout = (k / 2) % 2, bin_in = CODES[k % 12], bin_out = CODES[(k * 7) % 12];
+    double p[9] = {rnd(-500, 500), rnd(-500, 500), rnd(-500, 500), rnd(-180, 180), rnd(-90, 90),
+                   rnd(-180, 180), rnd(-50, 50), rnd(-50, 50), rnd(-50, 50)};
+    cncrot_cycle600_gud g;
+    memset(&g, 0, sizeof g);
+    int32_t s = cncrot_cycle600(&g, NULL, inexin, "UFK600", 1, bin_in, p[0], p[1], p[2], p[3], p[4], p[5],
+                                p[6], p[7], p[8], inexout, bin_out, 0, 0, 0);
+    printf("Y %d %d %d %d", inexin, bin_in, inexout, bin_out);
+    hexes(p, 9);
+    double r[3] = {g.cyc600_2, g.cyc600_3, g.cyc600_4};
+    hexes(r, 3);
+    hexes(g.frame, 16);
+    printf(" %d %d %d\n", g.cyc600_5, g.cyc600_6, s);
+  }
+  return 0;
+}

@@ -1,0 +1,111 @@
+function test_cncrot(cases_file)
+% TEST_CNCROT  The MATLAB/Octave suite: the paper's numbers, every error path, and parity
+% with the C library (cases_file, written by c_tests/parity.c) bit for bit.
+  passed = 0; failed = 0;
+  function check(ok, what)
+    if ok
+      passed = passed + 1;
+    else
+      failed = failed + 1;
+      fprintf(2, 'FAILED: %s\n', what);
+    end
+  end
+  function expect_error(id, f, what)
+    try
+      f();
+      check(false, [what ': no error']);
+    catch err
+      check(strcmp(err.identifier, id), sprintf('%s: got %s, expected %s', what, err.identifier, id));
+    end
+  end
+
+  % The paper's numbers (conventions.md).
+  R = cncrot_matrix(0, 57, [30 45 60]);
+  check(max(max(abs(R - [0.3536 -0.5732 0.7392; 0.6124 0.7392 0.2803; -0.7071 0.3536 0.6124]))) < 1e-4, 'Example 2 matrix');
+  check(max(abs(cncrot_angles(1, 39, R) - [37.7923 20.7048 49.1066])) < 1e-4, 'intrinsic 39');
+  check(max(abs(cncrot_convert(0, 57, [30 45 60], 1, 57) - [-24.5972 47.6632 58.3345])) < 1e-4, 'intrinsic 57');
+  check(max(abs(cncrot_convert(0, 57, [30 45 60], 0, 39) - [39.6392 -16.2799 50.3607])) < 1e-4, 'extrinsic 39');
+  gud = cycle600(0, 'UFK600', 1, 57, 0,0,0, 30,45,60, 0,0,0, 1, 39, 0,0,0);
+  check(strcmp(gud.CYC600_1, 'UFK600') && gud.CYC600_5 == 1 && gud.CYC600_6 == 39, 'Example 3 fields');
+  check(max(abs([gud.CYC600_2 gud.CYC600_3 gud.CYC600_4] - [37.7923 20.7048 49.1066])) < 1e-4, 'Example 3 first call');
+  gud = cycle600(0, 'UFK600', 1, 57, 0,0,0, 30,45,60, 0,0,0, 0, 39, 0,0,0);
+  check(gud.CYC600_5 == 0 && max(abs([gud.CYC600_2 gud.CYC600_3 gud.CYC600_4] - [39.6392 -16.2799 50.3607])) < 1e-4, 'Example 3 second call');
+  % Batches and additive calls.
+  Rs = cncrot_matrix(1, 55, [10 20 30; 40 50 60]);
+  check(isequal(size(Rs), [3 3 2]) && isequal(Rs(:,:,2), cncrot_matrix(1, 55, [40 50 60])), 'batch');
+  [a, st] = cncrot_angles(1, 27, cncrot_matrix(1, 27, [40 90 10]));
+  check(st == 1 && max(abs(a - [30 90 0])) < 1e-12, 'singular status');
+  g1 = cycle600(1, 'H', 1, 1, 0,0,0, 30,0,0, 0,0,0, 1, 57, 0,0,0);
+  g2 = cycle600(1, 'H', 1, 2, 0,0,0, 45,0,0, 0,0,0, 1, 57, 1,0,0, g1);
+  g3 = cycle600(1, 'H', 1, 3, 0,0,0, 60,0,0, 0,0,0, 1, 57, 1,0,0, g2);
+  check(max(abs([g3.CYC600_2 g3.CYC600_3 g3.CYC600_4] - [30 45 60])) < 1e-12, 'additive calls');
+
+  % Error paths, with identifiers.
+  expect_error('cncrot:badFlag', @() cncrot_matrix(2, 57, [1 2 3]), 'flag');
+  expect_error('cncrot:badSequence', @() cncrot_matrix(1, 64, [1 2 3]), 'sequence 64');
+  expect_error('cncrot:badSequence', @() cncrot_matrix(1, 22, [1 2 3]), 'repeated axis');
+  expect_error('cncrot:notFinite', @() cncrot_matrix(1, 57, [1 NaN 3]), 'NaN');
+  expect_error('cncrot:notFinite', @() cncrot_convert(1, 57, [Inf 0 0], 0, 39), 'Inf');
+  expect_error('cncrot:incompleteSequence', @() cncrot_angles(1, 3, full(eye(3))), 'incomplete');
+  expect_error('cncrot:notARotation', @() cncrot_angles(1, 57, full(2 * eye(3))), 'not a rotation');
+  expect_error('cncrot:notARotation', @() cncrot_angles(1, 57, full(diag([1 1 -1]))), 'reflection');
+  expect_error('cncrot:badSize', @() cncrot_matrix(1, 57, [1 2]), 'angles size');
+  expect_error('cncrot:badSize', @() cncrot_angles(1, 57, full(eye(4))), 'matrix size');
+  expect_error('cncrot:badClass', @() cncrot_matrix(1, 57, single([1 2 3])), 'class');
+  expect_error('cncrot:badClass', @() cncrot_matrix(1, 57, 'abc'), 'char');
+  expect_error('cncrot:complex', @() cncrot_matrix(1, 57, [1i 2 3]), 'complex');
+  expect_error('cncrot:badArgument', @() cncrot_matrix(0.5, 57, [1 2 3]), 'non-integer flag');
+  expect_error('cncrot:nargin', @() cncrot_matrix(1, 57), 'nargin');
+  try
+    [p, q] = cncrot_matrix(1, 57, [1 2 3]); %#ok<ASGLU>
+    check(false, 'nargout: no error');
+  catch err
+    check(strcmp(err.identifier, 'cncrot:nargout'), ['nargout: got ' err.identifier]);
+  end
+  expect_error('cncrot:notAvailable', @() cycle600(0, 'H', 0, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'SW_REC 0');
+  expect_error('cncrot:nameTooLong', @() cycle600(0, repmat('A', 1, 40), 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'long name');
+  expect_error('cncrot:badClass', @() cycle600(0, 5, 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'name class');
+  expect_error('cncrot:badFlag', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,2,0), 'ROT_INV 2');
+  expect_error('cncrot:badClass', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 1,0,0, 7), 'previous gud');
+  bad = gud; bad.frame(1,1) = 5;
+  expect_error('cncrot:notARotation', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 1,0,0, bad), 'corrupt gud');
+
+  % Parity with the C harness, bit for bit.
+  fid = fopen(cases_file, 'r');
+  check(fid >= 0, 'cases file');
+  n = 0;
+  bits = @(x) lower(num2hex(x));
+  while true
+    line = fgetl(fid);
+    if ~ischar(line), break; end
+    t = strsplit(strtrim(line), ' ');
+    h = @(k) hex2num(t{k});
+    hv = @(k, m) arrayfun(@(j) hex2num(t{j}), k:k + m - 1);
+    same = @(x, k) all(arrayfun(@(j) strcmp(bits(x(j)), lower(t{k + j - 1})), 1:numel(x)));
+    switch t{1}
+      case 'M'
+        R = cncrot_matrix(str2double(t{2}), str2double(t{3}), hv(4, 3));
+        check(same(reshape(R.', 1, 9), 7), ['parity ' line]);
+      case 'A'
+        M = reshape(hv(4, 9), 3, 3).';
+        [a, st] = cncrot_angles(str2double(t{2}), str2double(t{3}), M);
+        check(same(a, 13) && st == str2double(t{16}), ['parity ' line]);
+      case 'C'
+        [a, st] = cncrot_convert(str2double(t{2}), str2double(t{3}), hv(4, 3), str2double(t{7}), str2double(t{8}));
+        check(same(a, 9) && st == str2double(t{12}), ['parity ' line]);
+      case 'Y'
+        p = hv(6, 9);
+        g = cycle600(str2double(t{2}), 'UFK600', 1, str2double(t{3}), p(1), p(2), p(3), p(4), p(5), p(6), ...
+                     p(7), p(8), p(9), str2double(t{4}), str2double(t{5}), 0, 0, 0);
+        check(same([g.CYC600_2 g.CYC600_3 g.CYC600_4], 15) && same(reshape(g.frame.', 1, 16), 18) ...
+              && g.CYC600_5 == str2double(t{34}) && g.CYC600_6 == str2double(t{35}), ['parity ' line]);
+    end
+    n = n + 1;
+  end
+  fclose(fid);
+  check(n >= 200, sprintf('parity cases read: %d', n));
+  fprintf('octave: %d passed, %d failed\n', passed, failed);
+  if failed > 0
+    error('cncrot:testsFailed', '%d MATLAB/Octave tests failed', failed);
+  end
+end
