@@ -275,14 +275,7 @@ pub unsafe extern "C" fn cncrot_rotate_vector(
     vector: *const f64,
     out: *mut f64,
 ) -> i32 {
-    guard(|| {
-        non_null(&[matrix.is_null(), vector.is_null(), out.is_null()])?;
-        let m = read_matrix(matrix)?;
-        let v = read_finite::<3>(vector)?;
-        crate::check_rotation(&m)?;
-        write(out, crate::rotate(&m, v));
-        Ok(cncrot_status::Ok)
-    })
+    rotate_export(matrix, vector, out, crate::rotate)
 }
 
 /// `Rᵀ·v`, the inverse rotation (TwinCAT `CalcInvRot`): after `ROT Z45`, (40, 10, 0)
@@ -301,12 +294,25 @@ pub unsafe extern "C" fn cncrot_rotate_vector_inverse(
     vector: *const f64,
     out: *mut f64,
 ) -> i32 {
+    rotate_export(matrix, vector, out, crate::rotate_inverse)
+}
+
+/// The body of both vector exports, which differ only in the operation.
+///
+/// # Safety
+/// As `cncrot_rotate_vector`.
+unsafe fn rotate_export(
+    matrix: *const f64,
+    vector: *const f64,
+    out: *mut f64,
+    op: fn(&crate::Matrix, crate::Vector) -> crate::Vector,
+) -> i32 {
     guard(|| {
         non_null(&[matrix.is_null(), vector.is_null(), out.is_null()])?;
         let m = read_matrix(matrix)?;
         let v = read_finite::<3>(vector)?;
         crate::check_rotation(&m)?;
-        write(out, crate::rotate_inverse(&m, v));
+        write(out, op(&m, v));
         Ok(cncrot_status::Ok)
     })
 }
