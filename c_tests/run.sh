@@ -1,29 +1,45 @@
 #!/usr/bin/env bash
 # Builds the C tests against the shared and the static library, with AddressSanitizer +
-# UndefinedBehaviorSanitizer, and under valgrind; checks that the header compiles as C99 and
-# as C++. Usage: c_tests/run.sh  (from anywhere; needs a C compiler and valgrind).
+# UndefinedBehaviorSanitizer, and under valgrind; then against the real-time build (`core`
+# only, panic = abort) whose symbols c_tests/symbols.sh checks; checks that the header
+# compiles as C99 and as C++. Usage: c_tests/run.sh  (from anywhere; needs a C compiler and
+# valgrind).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 build=c_tests/build
 mkdir -p "$build"
 CNCROT_FROZEN_HEADER=1 cargo build --release --quiet
+CNCROT_FROZEN_HEADER=1 cargo build --profile rt --no-default-features --lib --quiet
 lib=target/release
+rt=target/rt
 warn=(-Wall -Wextra -Werror -pedantic -Iinclude -Ic_tests)
 
 echo "== header compiles as C99 and C++"
 cc -std=c99 "${warn[@]}" -c c_tests/header_check.c -o "$build/header_c.o"
 c++ -std=c++11 "${warn[@]}" -x c++ -c c_tests/header_check.c -o "$build/header_cpp.o"
 
-tests=(test_core test_cycle600)
+echo "== exported and imported symbols"
 failed=0
+bash c_tests/symbols.sh "$lib" exports || failed=1
+bash c_tests/symbols.sh "$rt" core || failed=1
+# The check must be able to fail: the std build imports the allocator and the unwinder.
+if bash c_tests/symbols.sh "$lib" core >/dev/null; then
+  echo "symbols: the core check passed the std build, which needs malloc: the check is broken"
+  failed=1
+fi
+
+tests=(test_core test_cycle600)
 for t in "${tests[@]}"; do
   src=c_tests/$t.c
   cc -std=c99 -O1 -g "${warn[@]}" "$src" -L"$lib" -lcncrot -Wl,-rpath,"$root/$lib" -lm -o "$build/${t}_shared"
   cc -std=c99 -O1 -g "${warn[@]}" "$src" "$lib/libcncrot.a" -lm -lpthread -ldl -o "$build/${t}_static"
   cc -std=c99 -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer \
     "${warn[@]}" "$src" "$lib/libcncrot.a" -lm -lpthread -ldl -o "$build/${t}_asan"
-  for variant in shared static asan; do
+  # The real-time build needs no -lpthread/-ldl; -lm is for the test's own fabs.
+  cc -std=c99 -O1 -g "${warn[@]}" "$src" "$rt/libcncrot.a" -lm -o "$build/${t}_rt_static"
+  cc -std=c99 -O1 -g "${warn[@]}" "$src" -L"$rt" -lcncrot -Wl,-rpath,"$root/$rt" -lm -o "$build/${t}_rt_shared"
+  for variant in shared static asan rt_static rt_shared; do
     echo "== $t ($variant)"
     "$build/${t}_$variant" || failed=1
   done
@@ -31,5 +47,7 @@ for t in "${tests[@]}"; do
   valgrind -q --error-exitcode=99 --leak-check=full "$build/${t}_shared" || failed=1
   echo "== $t (static, valgrind)"
   valgrind -q --error-exitcode=99 --leak-check=full "$build/${t}_static" || failed=1
+  echo "== $t (real-time static, valgrind)"
+  valgrind -q --error-exitcode=99 --leak-check=full "$build/${t}_rt_static" || failed=1
 done
 exit $failed

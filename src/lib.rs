@@ -32,6 +32,8 @@ mod sequence;
 
 pub mod ffi;
 
+mod panic;
+
 pub use error::Error;
 pub use frame::Frame;
 pub use rotation::{
