@@ -26,8 +26,11 @@ echo "== cargo fmt --check"
 cargo fmt --check
 echo "== cargo clippy"
 cargo clippy --all-targets -- -D warnings
+cargo clippy --profile rt --lib --no-default-features -- -D warnings
 echo "== cargo test"
 cargo test
+echo "== no-panic proof"
+bash c_tests/no_panic.sh
 echo "== C harness"
 bash c_tests/run.sh
 if [ -f matlab/run_tests.sh ]; then

@@ -233,7 +233,9 @@ size_t cncrot_cycle600_gud_size(void);
  * `N…`, then labels (`TZ7:`), `_HEAD_NAME="…"` (starts an accessory), `_HEAD_ALLOWED`,
  * `_DELTA_L1/_L2/_H1`, `_OFFS_L1_X/_L1_Y/_L2_X/_L2_Y/_H1_X/_H1_Z` assignments,
  * `GOTOF/GOTOB/GOTO …`, `RET`, `M17`, `M30`, comments after `;`. `text` holds `len` bytes
- * (no terminating NUL needed).
+ * (no terminating NUL needed). Numbers are read exactly as `strtod` would, within up to 15
+ * significant digits (precisely: digits forming an integer up to 2^53, times 10^-22..10^22);
+ * others are refused with `CNCROT_STATUS_PARSE` rather than rounded twice.
  *
  * Returns 0 and writes the table, with `*error_line` = 0; or a negative status
  * (`CNCROT_STATUS_PARSE` for an unknown or malformed line, `CNCROT_STATUS_NAME_TOO_LONG`,

@@ -3,9 +3,11 @@
 //! With the `std` feature the platform's libm is used (glibc's `atan2` is the fastest
 //! measured here); without it the pure-Rust `libm` crate, so the crate needs nothing from a
 //! C library. Everything else in the crate calls these functions, never `f64` methods that
-//! need `std`, so that switching the feature switches every computation.
+//! need `std`, so that switching the feature switches every computation. The feature
+//! `pure-rust-math` selects the `libm` crate with `std` too: the no-panic proof, which needs
+//! unwinding and hence `std`, uses it to cover the real-time build's arithmetic.
 
-#[cfg(feature = "std")]
+#[cfg(all(feature = "std", not(feature = "pure-rust-math")))]
 mod imp {
     #[inline]
     pub fn sin(x: f64) -> f64 {
@@ -33,7 +35,7 @@ mod imp {
     }
 }
 
-#[cfg(not(feature = "std"))]
+#[cfg(any(not(feature = "std"), feature = "pure-rust-math"))]
 mod imp {
     #[inline]
     pub fn sin(x: f64) -> f64 {

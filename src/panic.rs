@@ -9,22 +9,44 @@
 #[cfg(all(not(feature = "std"), not(test)))]
 #[panic_handler]
 fn panic(_: &core::panic::PanicInfo) -> ! {
+    trap()
+}
+
+// SAFETY (all three): the instruction only raises the architecture's undefined-instruction or
+// breakpoint trap; it touches no memory.
+#[cfg(all(
+    not(feature = "std"),
+    not(test),
+    any(target_arch = "x86", target_arch = "x86_64")
+))]
+fn trap() -> ! {
+    unsafe { core::arch::asm!("ud2", options(nomem, nostack, noreturn)) }
+}
+
+#[cfg(all(not(feature = "std"), not(test), target_arch = "aarch64"))]
+fn trap() -> ! {
+    unsafe { core::arch::asm!("brk #0xc0de", options(nomem, nostack, noreturn)) }
+}
+
+#[cfg(all(not(feature = "std"), not(test), target_arch = "arm"))]
+fn trap() -> ! {
+    unsafe { core::arch::asm!("udf #0", options(nomem, nostack, noreturn)) }
+}
+
+/// Other architectures spin until the controller's watchdog stops the machine.
+#[cfg(all(
+    not(feature = "std"),
+    not(test),
+    not(any(
+        target_arch = "x86",
+        target_arch = "x86_64",
+        target_arch = "aarch64",
+        target_arch = "arm"
+    ))
+))]
+fn trap() -> ! {
     loop {
-        // SAFETY: each instruction only raises the architecture's undefined-instruction or
-        // breakpoint trap; it touches no memory.
-        #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-        unsafe {
-            core::arch::asm!("ud2", options(nomem, nostack, noreturn))
-        };
-        #[cfg(target_arch = "aarch64")]
-        unsafe {
-            core::arch::asm!("brk #0xc0de", options(nomem, nostack, noreturn))
-        };
-        #[cfg(target_arch = "arm")]
-        unsafe {
-            core::arch::asm!("udf #0", options(nomem, nostack, noreturn))
-        };
-        // Other architectures spin until the controller's watchdog stops the machine.
+        core::hint::spin_loop()
     }
 }
 

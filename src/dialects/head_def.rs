@@ -138,7 +138,7 @@ impl HeadTable {
                 .strip_prefix(b"\"")
                 .and_then(|v| v.strip_suffix(b"\""))
                 .ok_or(Error::Parse)?;
-            if name.is_empty() || name.contains(&b'"') || name.contains(&0) {
+            if name.is_empty() || name.iter().any(|&b| b == b'"' || b == 0) {
                 return Err(Error::Parse);
             }
             if name.len() > NAME_MAX {
@@ -155,25 +155,29 @@ impl HeadTable {
                 ..Head::default()
             };
             head.name[..name.len()].copy_from_slice(name);
-            self.heads[self.count] = head;
+            *self.heads.get_mut(self.count).ok_or(Error::TableFull)? = head;
             self.count += 1;
             return Ok(());
         }
         // A variable before the first _HEAD_NAME belongs to no accessory.
+        // `get_mut` rather than indexing: the index is sound by construction, and this keeps
+        // the parser provably free of panics (c_tests/no_panic.sh).
         let head = self.count.checked_sub(1).ok_or(Error::Parse)?;
-        let head = &mut self.heads[head];
+        let head = self.heads.get_mut(head).ok_or(Error::Parse)?;
         let v = number(value)?;
-        match k {
+        let slot = match k {
             0 => {
                 head.allowed = match v {
                     0.0 => false,
                     1.0 => true,
                     _ => return Err(Error::Parse),
-                }
+                };
+                return Ok(());
             }
-            1..=3 => head.delta[k - 1] = v,
-            _ => head.offsets[k - 4] = v,
-        }
+            1..=3 => head.delta.get_mut(k - 1),
+            _ => head.offsets.get_mut(k - 4),
+        };
+        *slot.ok_or(Error::Parse)? = v;
         Ok(())
     }
 }
@@ -187,20 +191,100 @@ fn is_label(token: &[u8]) -> bool {
     }
 }
 
-/// A finite decimal number; no `inf`/`nan`, which `str::parse` would accept.
-fn number(value: &[u8]) -> Result<f64, Error> {
-    let ok = !value.is_empty()
-        && value
-            .iter()
-            .all(|&b| b.is_ascii_digit() || matches!(b, b'.' | b'-' | b'+' | b'e' | b'E'));
-    let s = core::str::from_utf8(value).map_err(|_| Error::Parse)?;
-    match s.parse::<f64>() {
-        Ok(v) if ok && v.is_finite() => Ok(v),
-        _ => Err(Error::Parse),
+/// A decimal number `[+-]digits[.digits][(e|E)[+-]digits]`, correctly rounded.
+///
+/// Not `str::parse`: that is an opaque call into the precompiled `core` that the no-panic
+/// proof cannot see through (and it would accept `inf`/`nan`). This is Clinger's exact case:
+/// the significant digits form an integer `w ≤ 2^53` and the value is `w·10^e` with
+/// `|e| ≤ 22`, one correctly rounded multiplication or division of two exact doubles, hence
+/// bit-identical to `strtod`. Every length or offset of a machine (up to 15 significant
+/// digits) is in that case; anything else is refused with `Error::Parse` rather than
+/// rounded twice.
+pub(crate) fn number(text: &[u8]) -> Result<f64, Error> {
+    // 10^k, exact in binary64 for k <= 22.
+    const POWERS: [f64; 23] = [
+        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+        1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+    ];
+    const EXACT: u64 = 1 << 53;
+    let (negative, text) = match text.split_first() {
+        Some((b'-', rest)) => (true, rest),
+        Some((b'+', rest)) => (false, rest),
+        _ => (false, text),
+    };
+    let (digits, exponent) = match text.iter().position(|&b| b == b'e' || b == b'E') {
+        Some(p) => (&text[..p], Some(&text[p + 1..])),
+        None => (text, None),
+    };
+    // w = the digits without the point and without trailing zeros, which are counted in
+    // `zeros` so that "1.5000000000000000000000" does not overflow.
+    let (mut w, mut zeros, mut scale, mut any, mut point) = (0u64, 0i32, 0i32, false, false);
+    for &b in digits {
+        match b {
+            b'.' if !point => point = true,
+            b'0'..=b'9' => {
+                any = true;
+                scale = scale.saturating_sub(i32::from(point));
+                if b == b'0' {
+                    zeros = zeros.saturating_add(1);
+                } else if w == 0 {
+                    (w, zeros) = (u64::from(b - b'0'), 0);
+                } else {
+                    let shift = 10u64.checked_pow(zeros.unsigned_abs() + 1);
+                    w = shift
+                        .and_then(|s| w.checked_mul(s))
+                        .and_then(|v| v.checked_add(u64::from(b - b'0')))
+                        .filter(|&v| v <= EXACT)
+                        .ok_or(Error::Parse)?;
+                    zeros = 0;
+                }
+            }
+            _ => return Err(Error::Parse),
+        }
     }
+    if !any {
+        return Err(Error::Parse);
+    }
+    let mut e = if w == 0 {
+        0
+    } else {
+        zeros.saturating_add(scale)
+    };
+    if let Some(exp) = exponent {
+        let (sign, exp) = match exp.split_first() {
+            Some((b'-', rest)) => (-1, rest),
+            Some((b'+', rest)) => (1, rest),
+            _ => (1, exp),
+        };
+        if exp.is_empty() || !exp.iter().all(u8::is_ascii_digit) {
+            return Err(Error::Parse);
+        }
+        let n = exp.iter().fold(0i32, |n, &d| {
+            n.saturating_mul(10).saturating_add(i32::from(d - b'0'))
+        });
+        if w != 0 {
+            e = e.saturating_add(sign * n);
+        }
+    }
+    // w·10^e with e > 22 is still exact when w·10^(e-22) stays below 2^53.
+    if e > 22 {
+        w = 10u64
+            .checked_pow((e - 22).unsigned_abs())
+            .and_then(|s| w.checked_mul(s))
+            .filter(|&v| v <= EXACT)
+            .ok_or(Error::Parse)?;
+        e = 22;
+    }
+    let power = POWERS.get(e.unsigned_abs() as usize).ok_or(Error::Parse)?;
+    // `w as f64` is exact (w <= 2^53); one rounding follows. No -0: "-0" reads as 0.
+    let v = if e >= 0 {
+        w as f64 * power
+    } else {
+        w as f64 / power
+    };
+    Ok(if negative && w != 0 { -v } else { v })
 }
 
-/// Whitespace-separated tokens; a quoted string is one token with its quotes.
 struct Tokens<'a> {
     rest: &'a [u8],
 }
@@ -226,8 +310,10 @@ impl<'a> Tokens<'a> {
         if in_quotes {
             return Err(Error::Parse);
         }
-        self.rest = &s[end..];
-        Ok(Some(&s[..end]))
+        // `end <= s.len()` always; the checked form keeps the reader provably panic-free.
+        let (token, rest) = s.split_at_checked(end).unwrap_or((s, &[]));
+        self.rest = rest;
+        Ok(Some(token))
     }
 }
 
@@ -313,5 +399,83 @@ END:
                 line: CAPACITY + 1
             }
         );
+    }
+
+    #[test]
+    fn numbers_read_exactly_or_not_at_all() {
+        let exact: [(&[u8], f64); 14] = [
+            (b"540.735", 540.735),
+            (b"-0.041", -0.041),
+            (b"+7", 7.0),
+            (b"1e3", 1000.0),
+            (b"1.5E-3", 0.0015),
+            (b"0.0000001", 1e-7),
+            (b"123456789012345", 123456789012345.0),
+            (b"9007199254740992", 9007199254740992.0),
+            (b"1.5000000000000000000000000", 1.5),
+            (b"1e22", 1e22),
+            (b"1e23", 1e23),
+            (b"000.5", 0.5),
+            (b"5.", 5.0),
+            (b".5", 0.5),
+        ];
+        for (text, v) in exact {
+            assert_eq!(number(text).map(f64::to_bits), Ok(v.to_bits()), "{text:?}");
+        }
+        // No -0: the library never returns it.
+        assert_eq!(number(b"-0").map(f64::to_bits), Ok(0));
+        assert_eq!(number(b"-0.000e5").map(f64::to_bits), Ok(0));
+        let refused: [&[u8]; 14] = [
+            b"",
+            b".",
+            b"-",
+            b"1e",
+            b"e5",
+            b"1.2.3",
+            b"+-1",
+            b"inf",
+            b"nan",
+            b"1,5",
+            b"0x10",
+            b"9007199254740993", // more than 2^53: would need a second rounding
+            b"1e-23",            // 10^23 is not exact
+            b"1e400",
+        ];
+        for text in refused {
+            assert_eq!(number(text), Err(Error::Parse), "{text:?}");
+        }
+    }
+
+    /// Within its exact case the reader gives the bits `str::parse` (correctly rounded) gives.
+    #[test]
+    fn numbers_match_the_standard_parser() {
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = move |n: u64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state % n
+        };
+        for _ in 0..200_000 {
+            let digits = 1 + next(15) as usize;
+            let mut text = String::new();
+            if next(2) == 0 {
+                text.push('-');
+            }
+            let point = next(digits as u64 + 1) as usize;
+            for k in 0..digits {
+                if k == point {
+                    text.push('.');
+                }
+                text.push(char::from(b'0' + next(10) as u8));
+            }
+            if next(2) == 0 {
+                text.push_str(&format!("e{}", next(15) as i64 - 7));
+            }
+            let ours = number(text.as_bytes()).expect(&text);
+            let theirs: f64 = text.parse().unwrap();
+            let theirs = if theirs == 0.0 { 0.0 } else { theirs };
+            assert_eq!(ours.to_bits(), theirs.to_bits(), "{text}");
+        }
     }
 }

@@ -215,6 +215,7 @@ fn state_to_c(s: &State) -> cncrot_cycle600_gud {
 
 /// `sizeof(cncrot_cycle600_gud)` as the library sees it: compare with the caller's
 /// `sizeof` to detect a header/library mismatch before storing states.
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub extern "C" fn cncrot_cycle600_gud_size() -> usize {
     core::mem::size_of::<cncrot_cycle600_gud>()
@@ -224,7 +225,9 @@ pub extern "C" fn cncrot_cycle600_gud_size() -> usize {
 /// `N…`, then labels (`TZ7:`), `_HEAD_NAME="…"` (starts an accessory), `_HEAD_ALLOWED`,
 /// `_DELTA_L1/_L2/_H1`, `_OFFS_L1_X/_L1_Y/_L2_X/_L2_Y/_H1_X/_H1_Z` assignments,
 /// `GOTOF/GOTOB/GOTO …`, `RET`, `M17`, `M30`, comments after `;`. `text` holds `len` bytes
-/// (no terminating NUL needed).
+/// (no terminating NUL needed). Numbers are read exactly as `strtod` would, within up to 15
+/// significant digits (precisely: digits forming an integer up to 2^53, times 10^-22..10^22);
+/// others are refused with `CNCROT_STATUS_PARSE` rather than rounded twice.
 ///
 /// Returns 0 and writes the table, with `*error_line` = 0; or a negative status
 /// (`CNCROT_STATUS_PARSE` for an unknown or malformed line, `CNCROT_STATUS_NAME_TOO_LONG`,
@@ -238,6 +241,7 @@ pub extern "C" fn cncrot_cycle600_gud_size() -> usize {
 /// cncrot_head_table heads; int32_t line;
 /// if (cncrot_head_table_parse(&heads, text, strlen(text), &line) < 0) printf("line %d\n", line);
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_head_table_parse(
     table: *mut cncrot_head_table,
@@ -247,6 +251,11 @@ pub unsafe extern "C" fn cncrot_head_table_parse(
 ) -> i32 {
     guard(|| {
         non_null(&[table.is_null(), text.is_null()])?;
+        // No object is larger than isize::MAX bytes; a larger `len` is a caller's bug that
+        // `from_raw_parts` must not see.
+        if len > isize::MAX as usize {
+            return Err(cncrot_status::BadArgument);
+        }
         let bytes = core::slice::from_raw_parts(text.cast::<u8>(), len);
         let (status, line) = match HeadTable::parse(bytes) {
             Ok(t) => {
@@ -288,6 +297,7 @@ pub unsafe extern "C" fn cncrot_head_table_parse(
 /// cncrot_cycle600(&gud, NULL, 0, "UFK600", 1, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0);
 /// // gud.cyc600_2..4 = 37.7923, 20.7048, 49.1066; gud.cyc600_5 = 1; gud.cyc600_6 = 39
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_cycle600(
     gud: *mut cncrot_cycle600_gud,

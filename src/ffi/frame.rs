@@ -31,6 +31,7 @@ unsafe fn write_frame(p: *mut f64, f: &Frame) {
 /// double a[3] = {0, 0, 90}, p0[3] = {10, 0, 0}, p1[3] = {5, 0, 0}, f[16];
 /// cncrot_frame_from_angles(1, 57, a, p0, p1, f);   // origin at (10, 5, 0)
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_frame_from_angles(
     intrinsic: i32,
@@ -69,6 +70,7 @@ pub unsafe extern "C" fn cncrot_frame_from_angles(
 /// double a[3] = {90, 0, 0}, c[3] = {1, 0, 0}, f[16];
 /// cncrot_frame_about_point(1, 3, a, c, f);   // Z90 about (1, 0, 0)
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_frame_about_point(
     intrinsic: i32,
@@ -99,6 +101,7 @@ pub unsafe extern "C" fn cncrot_frame_about_point(
 /// ```c
 /// cncrot_frame_compose(f, f, f2);
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_frame_compose(a: *const f64, b: *const f64, out: *mut f64) -> i32 {
     guard(|| {
@@ -119,6 +122,7 @@ pub unsafe extern "C" fn cncrot_frame_compose(a: *const f64, b: *const f64, out:
 /// ```c
 /// cncrot_frame_inverse(f, finv);
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_frame_inverse(frame: *const f64, out: *mut f64) -> i32 {
     guard(|| {
@@ -139,6 +143,7 @@ pub unsafe extern "C" fn cncrot_frame_inverse(frame: *const f64, out: *mut f64) 
 /// double p[3] = {0, 0, 0}, q[3];
 /// cncrot_frame_transform_point(f, p, q);   // the frame's origin
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_frame_transform_point(
     frame: *const f64,

@@ -93,6 +93,7 @@ impl From<Error> for cncrot_status {
 /// int32_t s = cncrot_matrix_from_angles(1, 57, angles, m);
 /// if (s < 0) fprintf(stderr, "cncrot: %s\n", cncrot_status_str(s));
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub extern "C" fn cncrot_status_str(status: i32) -> *const c_char {
     let s: &'static core::ffi::CStr = match status {
@@ -120,12 +121,14 @@ pub extern "C" fn cncrot_status_str(status: i32) -> *const c_char {
 type Outcome = Result<cncrot_status, cncrot_status>;
 
 /// Runs an export's body; with `std`, a panic becomes `Internal` instead of unwinding into C.
+/// The no-panic proof (feature `no-panic-proof`) leaves out the boundary, so that a panic
+/// path inside the body reaches the `#[no_panic]` guard of the export and fails the link.
 #[inline(always)]
 fn guard(body: impl FnOnce() -> Outcome) -> i32 {
-    #[cfg(feature = "std")]
+    #[cfg(all(feature = "std", not(feature = "no-panic-proof")))]
     let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(body))
         .unwrap_or(Err(cncrot_status::Internal));
-    #[cfg(not(feature = "std"))]
+    #[cfg(any(not(feature = "std"), feature = "no-panic-proof"))]
     let outcome = body();
     match outcome {
         Ok(s) | Err(s) => s as i32,
@@ -191,6 +194,15 @@ fn kind(intrinsic: i32) -> Result<Kind, cncrot_status> {
 
 fn convention(intrinsic: i32, sequence: i32) -> Result<Convention, cncrot_status> {
     Ok(Convention::from_c(intrinsic, sequence)?)
+}
+
+/// Only in builds with the feature `no-panic-canary`: an export with a reachable panic (an
+/// index from C), on which `c_tests/no_panic.sh` shows that the proof fails.
+#[cfg(feature = "no-panic-canary")]
+#[no_panic::no_panic]
+#[no_mangle]
+pub extern "C" fn cncrot_no_panic_canary(index: usize) -> i32 {
+    [1, 2, 3][index]
 }
 
 #[cfg(all(test, feature = "std"))]

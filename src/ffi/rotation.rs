@@ -23,6 +23,7 @@ use crate::{AxisCode, Sequence};
 /// double a[3] = {30, 45, 60}, m[9];
 /// cncrot_matrix_from_angles(0, 57, a, m);   // paper, Example 2: m[0] = 0.3536
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_matrix_from_angles(
     intrinsic: i32,
@@ -58,6 +59,7 @@ pub unsafe extern "C" fn cncrot_matrix_from_angles(
 /// double out[3];
 /// int32_t s = cncrot_angles_from_matrix(1, 39, m, out);   // 37.7923, 20.7048, 49.1066
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_angles_from_matrix(
     intrinsic: i32,
@@ -87,6 +89,7 @@ pub unsafe extern "C" fn cncrot_angles_from_matrix(
 /// double in[3] = {30, 45, 60}, out[3];
 /// cncrot_convert(0, 57, in, 1, 39, out);   // paper, Example 3: 37.7923, 20.7048, 49.1066
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_convert(
     intrinsic_in: i32,
@@ -120,6 +123,7 @@ pub unsafe extern "C" fn cncrot_convert(
 /// double a[3] = {10, 20, 30};
 /// cncrot_second_solution(57, a, a);   // -170, 160, -150
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_second_solution(
     sequence: i32,
@@ -152,6 +156,7 @@ pub unsafe extern "C" fn cncrot_second_solution(
 /// double ref[3] = {-165, -15, 200}, out[3];
 /// cncrot_closest_angles(1, 55, m, ref, out);   // for m = ZXZ(10, 20, 30): -170, -20, 210
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_closest_angles(
     intrinsic: i32,
@@ -184,6 +189,7 @@ pub unsafe extern "C" fn cncrot_closest_angles(
 /// ```c
 /// if (cncrot_check_rotation(m) != 0) return -1;  // or cncrot_nearest_rotation, deliberately
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_check_rotation(matrix: *const f64) -> i32 {
     guard(|| {
@@ -206,6 +212,7 @@ pub unsafe extern "C" fn cncrot_check_rotation(matrix: *const f64) -> i32 {
 /// double measured[9] = {1, 0.001, 0, -0.001, 1, 0, 0, 0, 1.0002}, r[9];
 /// cncrot_nearest_rotation(measured, r);
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_nearest_rotation(
     matrix_in: *const f64,
@@ -233,6 +240,7 @@ pub unsafe extern "C" fn cncrot_nearest_rotation(
 /// double z15[3] = {15, 0, 0};
 /// cncrot_add_rotation(1, 3, z15, m, m);   // AROT Z15 on the active rotation m
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_add_rotation(
     intrinsic: i32,
@@ -269,6 +277,7 @@ pub unsafe extern "C" fn cncrot_add_rotation(
 /// double v[3] = {40, 10, 0}, out[3];
 /// cncrot_rotate_vector(m, v, out);
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_rotate_vector(
     matrix: *const f64,
@@ -288,6 +297,7 @@ pub unsafe extern "C" fn cncrot_rotate_vector(
 /// double v[3] = {40, 10, 0}, out[3];
 /// cncrot_rotate_vector_inverse(m, v, out);
 /// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_rotate_vector_inverse(
     matrix: *const f64,
@@ -305,7 +315,7 @@ unsafe fn rotate_export(
     matrix: *const f64,
     vector: *const f64,
     out: *mut f64,
-    op: fn(&crate::Matrix, crate::Vector) -> crate::Vector,
+    op: impl FnOnce(&crate::Matrix, crate::Vector) -> crate::Vector,
 ) -> i32 {
     guard(|| {
         non_null(&[matrix.is_null(), vector.is_null(), out.is_null()])?;
