@@ -93,6 +93,15 @@ static void singular_cases(void) {
         cncrot_matrix_from_angles(kind, CODES[c], out, m2);
         CHECK_NEAR(m2, m, 9, 1e-15);
       }
+  /* The second solution of a proper-Euler middle angle of 180 is 180 (never -180): every
+   * returned angle is in (-180, 180]. Found by the property tests. */
+  {
+    const double pe[3] = {10, 180, 30}, pe_second[3] = {-170, 180, -150};
+    double s[3];
+    CHECK_STATUS(cncrot_second_solution(25, pe, s), 0);
+    CHECK(s[0] == pe_second[0] && s[1] == pe_second[1] && s[2] == pe_second[2],
+          "second solution of XYX (10, 180, 30): %g %g %g", s[0], s[1], s[2]);
+  }
 }
 
 static void round_trips(void) {

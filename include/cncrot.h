@@ -455,7 +455,7 @@ int32_t cncrot_convert(int32_t intrinsic_in,
 /**
  * The other decomposition of the rotation given by `angles_in_deg`:
  * `(θ1+180, 180−θ2, θ3+180)` for Tait-Bryan, `(θ1+180, −θ2, θ3+180)` for proper Euler
- * sequences, θ1 and θ3 wrapped into (-180, 180]. The same for intrinsic and extrinsic.
+ * sequences, all three wrapped into (-180, 180]. The same for intrinsic and extrinsic.
  *
  * # Safety
  * `angles_in_deg` points to 3 readable, `angles_out_deg` to 3 writable doubles (or NULL:

@@ -361,9 +361,10 @@ fn proper_euler<const I: usize, const J: usize, const K: usize>(
 }
 
 /// The other decomposition of the same rotation: `(θ1+180°, 180°−θ2, θ3+180°)` for
-/// Tait-Bryan, `(θ1+180°, −θ2, θ3+180°)` for proper Euler, θ1 and θ3 wrapped into
+/// Tait-Bryan, `(θ1+180°, −θ2, θ3+180°)` for proper Euler, all three wrapped into
 /// (-180°, 180°]. Its middle angle lies outside the canonical range (|θ2| ≥ 90° resp.
-/// θ2 ≤ 0°). At a singular decomposition it is another member of the same family.
+/// θ2 ≤ 0°, where θ2 = 180° gives 180°, not -180°). At a singular decomposition it is
+/// another member of the same family.
 ///
 /// ```
 /// use cncrot::{second_solution, Decomposition, Sequence};
@@ -374,7 +375,7 @@ fn proper_euler<const I: usize, const J: usize, const K: usize>(
 pub fn second_solution(sequence: Sequence, d: Decomposition) -> Decomposition {
     let [a, b, c] = d.angles;
     let b2 = if sequence.is_proper_euler() {
-        -b + 0.0
+        wrap_deg(-b)
     } else {
         wrap_deg(180.0 - b)
     };

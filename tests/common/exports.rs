@@ -1,0 +1,393 @@
+//! One table with a call of every exported C function, on its success path, a remark path
+//! where there is one (singular) and error paths (NULL, NaN, bad codes, non-rotation). Each
+//! entry records the statuses and the output bytes in a fixed-size `Trace` (no allocation),
+//! so that `no_alloc.rs` can count allocations and `concurrency.rs` can compare results
+//! across threads with the same table. `declared_functions` lists the header's functions:
+//! a new export without an entry here fails both tests.
+#![allow(dead_code)]
+
+use cncrot::ffi::*;
+use std::ptr::{null, null_mut};
+
+/// Statuses and output bits, in call order; fixed capacity so recording never allocates.
+#[derive(Clone, PartialEq, Eq)]
+pub struct Trace {
+    words: [u64; 1024],
+    len: usize,
+}
+
+impl Trace {
+    pub fn new() -> Trace {
+        Trace {
+            words: [0; 1024],
+            len: 0,
+        }
+    }
+    pub fn word(&mut self, w: u64) {
+        assert!(self.len < self.words.len(), "Trace is full");
+        self.words[self.len] = w;
+        self.len += 1;
+    }
+    pub fn status(&mut self, s: i32) {
+        self.word(s as u64);
+    }
+    pub fn f64s(&mut self, v: &[f64]) {
+        for x in v {
+            self.word(x.to_bits());
+        }
+    }
+    /// The bytes of a plain C struct (no padding in cncrot's structs), 8 to a word.
+    pub fn bytes<T>(&mut self, v: &T) {
+        let p = (v as *const T).cast::<u8>();
+        // SAFETY: reads the object's own bytes.
+        let bytes = unsafe { std::slice::from_raw_parts(p, std::mem::size_of::<T>()) };
+        for chunk in bytes.chunks(8) {
+            let mut w = [0u8; 8];
+            w[..chunk.len()].copy_from_slice(chunk);
+            self.word(u64::from_le_bytes(w));
+        }
+    }
+    pub fn len(&self) -> usize {
+        self.len
+    }
+}
+
+impl std::fmt::Debug for Trace {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{:x?}", &self.words[..self.len])
+    }
+}
+
+const ID: [f64; 9] = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+const IDF: [f64; 16] = [
+    1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
+];
+const A: [f64; 3] = [30.0, 90.0, 60.0]; // singular for Tait-Bryan: exercises that branch too
+const BAD: [f64; 3] = [f64::NAN, 0.0, 0.0];
+
+pub type Call = (&'static str, fn(&mut Trace));
+
+/// Each entry calls its function on a success path, a singular or remark path where there
+/// is one, and error paths (NULL, NaN, bad codes, non-rotation).
+pub fn table() -> Vec<Call> {
+    vec![
+        ("cncrot_status_str", |t| {
+            for s in [-100, -13, -1, 0, 1, 7] {
+                t.word(cncrot_status_str(s) as u64);
+            }
+        }),
+        ("cncrot_matrix_from_angles", |t| unsafe {
+            let mut m = [0.0; 9];
+            t.status(cncrot_matrix_from_angles(1, 57, A.as_ptr(), m.as_mut_ptr()));
+            t.status(cncrot_matrix_from_angles(
+                1,
+                57,
+                BAD.as_ptr(),
+                m.as_mut_ptr(),
+            ));
+            t.status(cncrot_matrix_from_angles(3, 57, A.as_ptr(), m.as_mut_ptr()));
+            t.status(cncrot_matrix_from_angles(1, 57, null(), m.as_mut_ptr()));
+            t.f64s(&m);
+        }),
+        ("cncrot_angles_from_matrix", |t| unsafe {
+            let mut a = [0.0; 3];
+            let mut m = [0.0; 9];
+            t.status(cncrot_matrix_from_angles(1, 57, A.as_ptr(), m.as_mut_ptr()));
+            t.status(cncrot_angles_from_matrix(1, 57, m.as_ptr(), a.as_mut_ptr()));
+            t.status(cncrot_angles_from_matrix(
+                0,
+                25,
+                ID.as_ptr(),
+                a.as_mut_ptr(),
+            ));
+            t.status(cncrot_angles_from_matrix(1, 3, ID.as_ptr(), a.as_mut_ptr()));
+            t.status(cncrot_angles_from_matrix(
+                1,
+                57,
+                [2.0; 9].as_ptr(),
+                a.as_mut_ptr(),
+            ));
+            t.status(cncrot_angles_from_matrix(1, 57, ID.as_ptr(), null_mut()));
+            t.f64s(&a);
+            t.f64s(&m);
+        }),
+        ("cncrot_convert", |t| unsafe {
+            let mut a = [0.0; 3];
+            t.status(cncrot_convert(0, 57, A.as_ptr(), 1, 39, a.as_mut_ptr()));
+            t.status(cncrot_convert(0, 57, BAD.as_ptr(), 1, 39, a.as_mut_ptr()));
+            t.status(cncrot_convert(0, 57, A.as_ptr(), 1, 64, a.as_mut_ptr()));
+            t.f64s(&a);
+        }),
+        ("cncrot_second_solution", |t| unsafe {
+            let mut a = [0.0; 3];
+            t.status(cncrot_second_solution(57, A.as_ptr(), a.as_mut_ptr()));
+            t.status(cncrot_second_solution(3, A.as_ptr(), a.as_mut_ptr()));
+            t.f64s(&a);
+        }),
+        ("cncrot_closest_angles", |t| unsafe {
+            let mut a = [0.0; 3];
+            t.status(cncrot_closest_angles(
+                1,
+                55,
+                ID.as_ptr(),
+                A.as_ptr(),
+                a.as_mut_ptr(),
+            ));
+            t.status(cncrot_closest_angles(
+                1,
+                57,
+                ID.as_ptr(),
+                BAD.as_ptr(),
+                a.as_mut_ptr(),
+            ));
+            t.f64s(&a);
+        }),
+        ("cncrot_check_rotation", |t| unsafe {
+            t.status(cncrot_check_rotation(ID.as_ptr()));
+            t.status(cncrot_check_rotation([0.0; 9].as_ptr()));
+            t.status(cncrot_check_rotation(null()));
+        }),
+        ("cncrot_nearest_rotation", |t| unsafe {
+            let mut m = [0.0; 9];
+            let measured = [1.0, 0.001, 0.0, -0.001, 1.0, 0.0, 0.0, 0.0, 1.0002];
+            t.status(cncrot_nearest_rotation(measured.as_ptr(), m.as_mut_ptr()));
+            t.status(cncrot_nearest_rotation([0.0; 9].as_ptr(), m.as_mut_ptr()));
+            t.f64s(&m);
+        }),
+        ("cncrot_add_rotation", |t| unsafe {
+            let mut m = ID;
+            t.status(cncrot_add_rotation(
+                1,
+                57,
+                A.as_ptr(),
+                ID.as_ptr(),
+                m.as_mut_ptr(),
+            ));
+            t.status(cncrot_add_rotation(
+                0,
+                57,
+                A.as_ptr(),
+                [3.0; 9].as_ptr(),
+                m.as_mut_ptr(),
+            ));
+            t.f64s(&m);
+        }),
+        ("cncrot_rotate_vector", |t| unsafe {
+            let mut v = [0.0; 3];
+            t.status(cncrot_rotate_vector(
+                ID.as_ptr(),
+                A.as_ptr(),
+                v.as_mut_ptr(),
+            ));
+            t.status(cncrot_rotate_vector(
+                ID.as_ptr(),
+                BAD.as_ptr(),
+                v.as_mut_ptr(),
+            ));
+            t.f64s(&v);
+        }),
+        ("cncrot_rotate_vector_inverse", |t| unsafe {
+            let mut v = [0.0; 3];
+            t.status(cncrot_rotate_vector_inverse(
+                ID.as_ptr(),
+                A.as_ptr(),
+                v.as_mut_ptr(),
+            ));
+            t.status(cncrot_rotate_vector_inverse(
+                null(),
+                A.as_ptr(),
+                v.as_mut_ptr(),
+            ));
+            t.f64s(&v);
+        }),
+        ("cncrot_frame_from_angles", |t| unsafe {
+            let mut f = [0.0; 16];
+            t.status(cncrot_frame_from_angles(
+                1,
+                57,
+                A.as_ptr(),
+                A.as_ptr(),
+                A.as_ptr(),
+                f.as_mut_ptr(),
+            ));
+            t.status(cncrot_frame_from_angles(
+                1,
+                57,
+                A.as_ptr(),
+                BAD.as_ptr(),
+                A.as_ptr(),
+                f.as_mut_ptr(),
+            ));
+            t.f64s(&f);
+        }),
+        ("cncrot_frame_about_point", |t| unsafe {
+            let mut f = [0.0; 16];
+            t.status(cncrot_frame_about_point(
+                1,
+                57,
+                A.as_ptr(),
+                A.as_ptr(),
+                f.as_mut_ptr(),
+            ));
+            t.status(cncrot_frame_about_point(
+                2,
+                57,
+                A.as_ptr(),
+                A.as_ptr(),
+                f.as_mut_ptr(),
+            ));
+            t.f64s(&f);
+        }),
+        ("cncrot_frame_compose", |t| unsafe {
+            let mut f = [0.0; 16];
+            t.status(cncrot_frame_compose(
+                IDF.as_ptr(),
+                IDF.as_ptr(),
+                f.as_mut_ptr(),
+            ));
+            t.status(cncrot_frame_compose(
+                IDF.as_ptr(),
+                [0.0; 16].as_ptr(),
+                f.as_mut_ptr(),
+            ));
+            t.f64s(&f);
+        }),
+        ("cncrot_frame_inverse", |t| unsafe {
+            let mut f = [0.0; 16];
+            t.status(cncrot_frame_inverse(IDF.as_ptr(), f.as_mut_ptr()));
+            t.status(cncrot_frame_inverse(null(), f.as_mut_ptr()));
+            t.f64s(&f);
+        }),
+        ("cncrot_frame_transform_point", |t| unsafe {
+            let mut p = [0.0; 3];
+            t.status(cncrot_frame_transform_point(
+                IDF.as_ptr(),
+                A.as_ptr(),
+                p.as_mut_ptr(),
+            ));
+            t.status(cncrot_frame_transform_point(
+                IDF.as_ptr(),
+                BAD.as_ptr(),
+                p.as_mut_ptr(),
+            ));
+            t.f64s(&p);
+        }),
+        ("cncrot_cycle600_gud_size", |t| {
+            t.word(cncrot_cycle600_gud_size() as u64);
+        }),
+        ("cncrot_head_table_parse", |t| unsafe {
+            let mut table: cncrot_head_table = std::mem::zeroed();
+            let mut line = 0;
+            let text = b"N1 _HEAD_NAME=\"IFVW207S\"\nN2 _DELTA_L1=540.735 _OFFS_H1_Z=0.247\n";
+            t.status(cncrot_head_table_parse(
+                &mut table,
+                text.as_ptr().cast(),
+                text.len(),
+                &mut line,
+            ));
+            let bad = b"_HEAD_NAME=\"A\"\nDELTA_L2=1\n";
+            t.status(cncrot_head_table_parse(
+                &mut table,
+                bad.as_ptr().cast(),
+                bad.len(),
+                &mut line,
+            ));
+            t.bytes(&table);
+            t.word(line as u64);
+        }),
+        ("cncrot_cycle600", |t| unsafe {
+            let mut gud: cncrot_cycle600_gud = std::mem::zeroed();
+            let mut table: cncrot_head_table = std::mem::zeroed();
+            let text = b"_HEAD_NAME=\"UFK600\"\n";
+            t.status(cncrot_head_table_parse(
+                &mut table,
+                text.as_ptr().cast(),
+                text.len(),
+                null_mut(),
+            ));
+            let name = c"UFK600".as_ptr();
+            t.status(cncrot_cycle600(
+                &mut gud, &table, 0, name, 1, 57, 0.0, 0.0, 0.0, 30.0, 45.0, 60.0, 0.0, 0.0, 0.0,
+                1, 39, 0, 0, 0,
+            ));
+            t.status(cncrot_cycle600(
+                &mut gud, &table, 0, name, 1, 3, 1.0, 2.0, 3.0, 15.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0,
+                27, 1, 0, 0,
+            ));
+            t.status(cncrot_cycle600(
+                &mut gud,
+                &table,
+                0,
+                c"NOPE".as_ptr(),
+                1,
+                57,
+                0.0,
+                0.0,
+                0.0,
+                1.0,
+                2.0,
+                3.0,
+                0.0,
+                0.0,
+                0.0,
+                1,
+                39,
+                0,
+                0,
+                0,
+            ));
+            t.status(cncrot_cycle600(
+                &mut gud,
+                null(),
+                0,
+                name,
+                0,
+                57,
+                0.0,
+                0.0,
+                0.0,
+                1.0,
+                2.0,
+                3.0,
+                0.0,
+                0.0,
+                0.0,
+                1,
+                39,
+                0,
+                0,
+                0,
+            ));
+            t.bytes(&gud);
+            t.bytes(&table);
+        }),
+    ]
+}
+
+/// The functions `include/cncrot.h` declares.
+pub fn declared_functions() -> Vec<&'static str> {
+    let header = include_str!("../../include/cncrot.h");
+    let mut declared: Vec<&str> = header
+        .lines()
+        .filter(|l| !l.trim_start().starts_with('*') && !l.trim_start().starts_with("/*"))
+        .filter_map(|l| {
+            let start = l.find("cncrot_")?;
+            let rest = &l[start..];
+            let end = rest.find('(')?;
+            let name = &rest[..end];
+            name.chars()
+                .all(|c| c.is_ascii_alphanumeric() || c == '_')
+                .then_some(name)
+        })
+        .collect();
+    declared.sort_unstable();
+    declared.dedup();
+    declared
+}
+
+/// The names in `table()`, sorted.
+pub fn covered_functions() -> Vec<&'static str> {
+    let mut covered: Vec<&str> = table().iter().map(|(n, _)| *n).collect();
+    covered.sort_unstable();
+    covered
+}
