@@ -371,6 +371,19 @@ static void bad_inputs(void) {
   CHECK_STATUS(cncrot_check_rotation(outside), CNCROT_STATUS_NOT_A_ROTATION); /* 1.2e-3 */
   CHECK(CNCROT_ROTATION_TOLERANCE == 1e-3, "documented tolerance");
 
+  /* Finite inputs whose result overflows: a turn of 90 about Z around the point
+   * (1e308, 1e308, 0) moves the origin by (2e308, 0, 0), beyond DBL_MAX. Found by fuzzing. */
+  {
+    const double z90[3] = {90, 0, 0}, far[3] = {1e308, 1e308, 0}, big[3] = {1.5e308, 1.5e308, 0};
+    fill_sentinel(f, 16);
+    fill_sentinel(out, 3);
+    CHECK_STATUS(cncrot_frame_about_point(1, 3, z90, far, f), CNCROT_STATUS_OUT_OF_RANGE);
+    const double h = 0.70710678118654752440, r45[9] = {h, -h, 0, h, h, 0, 0, 0, 1};
+    CHECK_STATUS(cncrot_rotate_vector_inverse(r45, big, out), CNCROT_STATUS_OUT_OF_RANGE);
+    CHECK(is_sentinel(f, 16) && is_sentinel(out, 3), "overflowing results not written");
+    CHECK(strncmp(cncrot_status_str(-14), "CNCROT_STATUS_OUT_OF_RANGE", 26) == 0, "name");
+  }
+
   /* Every status has a name. */
   CHECK(strncmp(cncrot_status_str(0), "CNCROT_STATUS_OK", 16) == 0, "name");
   CHECK(strncmp(cncrot_status_str(-6), "CNCROT_STATUS_NOT_A_ROTATION", 28) == 0, "name");

@@ -96,6 +96,10 @@ enum cncrot_status
    */
   CNCROT_STATUS_TABLE_FULL = -13,
   /**
+   * A result would overflow (finite inputs too large, e.g. translations near `DBL_MAX`).
+   */
+  CNCROT_STATUS_OUT_OF_RANGE = -14,
+  /**
    * Internal failure (a caught panic): a bug in cncrot, please report it.
    */
   CNCROT_STATUS_INTERNAL = -100,

@@ -37,6 +37,9 @@ pub enum Error {
     Parse,
     /// A fixed-capacity table is full.
     TableFull,
+    /// A result is too large to represent (finite inputs whose result overflows, such as
+    /// translations near `f64::MAX`).
+    OutOfRange,
 }
 
 impl fmt::Display for Error {
@@ -61,6 +64,7 @@ impl Error {
             Error::NameTooLong => "name longer than its field",
             Error::Parse => "HEAD_DEF text could not be read",
             Error::TableFull => "head table is full",
+            Error::OutOfRange => "a result is too large to represent",
         }
     }
 }

@@ -80,6 +80,7 @@ static void raise_status(int32_t s, size_t row) {
     case CNCROT_STATUS_NAME_TOO_LONG: id = "cncrot:nameTooLong"; break;
     case CNCROT_STATUS_PARSE: id = "cncrot:parse"; break;
     case CNCROT_STATUS_TABLE_FULL: id = "cncrot:tableFull"; break;
+    case CNCROT_STATUS_OUT_OF_RANGE: id = "cncrot:outOfRange"; break;
     default: id = "cncrot:internal"; break;
   }
   mexErrMsgIdAndTxt(id, "row %lu: %s", (unsigned long)(row + 1), cncrot_status_str(s));

@@ -95,7 +95,8 @@ fn flag(v: i32) -> Result<bool, Error> {
 /// stored frame: on the right for an intrinsic input, on the left for an extrinsic one. Its
 /// rotation is decomposed for `inexout`/`bin_out`. With a head table, `mihead` must name one
 /// of its accessories ([`Error::UnknownHead`]); without one the name is only recorded.
-/// `sw_rec = 0` (positioning the head) returns [`Error::NotAvailable`] after validation.
+/// `sw_rec = 0` (positioning the head) returns [`Error::NotAvailable`] after validation; a
+/// frame that overflows (positions near `f64::MAX`) returns [`Error::OutOfRange`].
 pub fn cycle600(state: &State, heads: Option<&HeadTable>, call: &Call) -> Result<State, Error> {
     let kind_in = Kind::from_flag(call.inexin)?;
     let recalc_only = flag(call.sw_rec)?;
@@ -125,6 +126,12 @@ pub fn cycle600(state: &State, heads: Option<&HeadTable>, call: &Call) -> Result
         (true, Kind::Intrinsic) => state.frame.compose(&input),
         (true, Kind::Extrinsic) => input.compose(&state.frame),
     };
+    // Finite inputs can still overflow (positions near f64::MAX): such a frame is refused
+    // rather than stored.
+    let h = frame.to_homogeneous();
+    if !h.iter().flatten().all(|x| x.is_finite()) {
+        return Err(Error::OutOfRange);
+    }
     let d = angles_from_matrix(out, &frame.rotation)?;
     let mut next = State {
         name: [0; NAME_MAX],

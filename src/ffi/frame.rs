@@ -13,9 +13,9 @@ unsafe fn read_frame(p: *const f64) -> Result<Frame, cncrot_status> {
 
 /// # Safety
 /// `p` is non-NULL and points to 16 writable doubles.
-unsafe fn write_frame(p: *mut f64, f: &Frame) {
+unsafe fn write_frame(p: *mut f64, f: &Frame) -> Result<(), cncrot_status> {
     let h = f.to_homogeneous();
-    write::<16>(p, core::array::from_fn(|k| h[k / 4][k % 4]));
+    write::<16>(p, core::array::from_fn(|k| h[k / 4][k % 4]))
 }
 
 /// The frame `Trans(before)·Rot·Trans(after)` (CYCLE600 `_POS_*` / `_POS_*_R`, CYCLE800
@@ -54,7 +54,7 @@ pub unsafe extern "C" fn cncrot_frame_from_angles(
         let before = read_finite::<3>(before)?;
         let after = read_finite::<3>(after)?;
         let r = crate::matrix_from_angles(kind, code, angles);
-        write_frame(frame, &Frame::with_translations(before, r, after));
+        write_frame(frame, &Frame::with_translations(before, r, after))?;
         Ok(cncrot_status::Ok)
     })
 }
@@ -86,7 +86,7 @@ pub unsafe extern "C" fn cncrot_frame_about_point(
         let angles = read_finite::<3>(angles_deg)?;
         let center = read_finite::<3>(center)?;
         let r = crate::matrix_from_angles(kind, code, angles);
-        write_frame(frame, &Frame::about_point(r, center));
+        write_frame(frame, &Frame::about_point(r, center))?;
         Ok(cncrot_status::Ok)
     })
 }
@@ -108,7 +108,7 @@ pub unsafe extern "C" fn cncrot_frame_compose(a: *const f64, b: *const f64, out:
         non_null(&[a.is_null(), b.is_null(), out.is_null()])?;
         let fa = read_frame(a)?;
         let fb = read_frame(b)?;
-        write_frame(out, &fa.compose(&fb));
+        write_frame(out, &fa.compose(&fb))?;
         Ok(cncrot_status::Ok)
     })
 }
@@ -128,7 +128,7 @@ pub unsafe extern "C" fn cncrot_frame_inverse(frame: *const f64, out: *mut f64) 
     guard(|| {
         non_null(&[frame.is_null(), out.is_null()])?;
         let f = read_frame(frame)?;
-        write_frame(out, &f.inverse());
+        write_frame(out, &f.inverse())?;
         Ok(cncrot_status::Ok)
     })
 }
@@ -154,7 +154,7 @@ pub unsafe extern "C" fn cncrot_frame_transform_point(
         non_null(&[frame.is_null(), point.is_null(), out.is_null()])?;
         let f = read_frame(frame)?;
         let p = read_finite::<3>(point)?;
-        write(out, f.transform_point(p));
+        write(out, f.transform_point(p))?;
         Ok(cncrot_status::Ok)
     })
 }

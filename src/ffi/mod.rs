@@ -5,7 +5,8 @@
 //! - all pointers are checked for NULL first, then flags and codes, then every input float
 //!   for finiteness; the first failure is returned;
 //! - outputs are written only on success (status >= 0), and only after all computation, so
-//!   an output may alias an input;
+//!   an output may alias an input; a result that is not finite (finite inputs near
+//!   `DBL_MAX` can overflow) is not written but reported as `CNCROT_STATUS_OUT_OF_RANGE`;
 //! - nothing panics across the boundary: with `std` each body runs under `catch_unwind` and
 //!   a panic becomes `CNCROT_STATUS_INTERNAL`;
 //! - integers from C are validated, never transmuted into Rust enums.
@@ -58,6 +59,8 @@ pub enum cncrot_status {
     Parse = -12,
     /// The head table is full.
     TableFull = -13,
+    /// A result would overflow (finite inputs too large, e.g. translations near `DBL_MAX`).
+    OutOfRange = -14,
     /// Internal failure (a caught panic): a bug in cncrot, please report it.
     Internal = -100,
 }
@@ -82,6 +85,7 @@ impl From<Error> for cncrot_status {
             Error::NameTooLong => cncrot_status::NameTooLong,
             Error::Parse => cncrot_status::Parse,
             Error::TableFull => cncrot_status::TableFull,
+            Error::OutOfRange => cncrot_status::OutOfRange,
         }
     }
 }
@@ -112,6 +116,7 @@ pub extern "C" fn cncrot_status_str(status: i32) -> *const c_char {
         -11 => c"CNCROT_STATUS_NAME_TOO_LONG: name longer than its field",
         -12 => c"CNCROT_STATUS_PARSE: HEAD_DEF text could not be read",
         -13 => c"CNCROT_STATUS_TABLE_FULL: head table is full",
+        -14 => c"CNCROT_STATUS_OUT_OF_RANGE: a result is too large to represent",
         -100 => c"CNCROT_STATUS_INTERNAL: internal failure (caught panic), please report",
         _ => c"CNCROT_STATUS_UNKNOWN: not a cncrot status",
     };
@@ -167,12 +172,19 @@ unsafe fn read_finite<const N: usize>(p: *const f64) -> Result<[f64; N], cncrot_
     Ok(v)
 }
 
+/// Writes `N` results, or none when one of them is not finite (finite inputs can overflow:
+/// translations near `f64::MAX`), so that an output is either valid or untouched.
+///
 /// # Safety
 /// `p` is non-NULL and points to `N` writable doubles.
-unsafe fn write<const N: usize>(p: *mut f64, v: [f64; N]) {
+unsafe fn write<const N: usize>(p: *mut f64, v: [f64; N]) -> Result<(), cncrot_status> {
+    if !v.iter().all(|x| x.is_finite()) {
+        return Err(cncrot_status::OutOfRange);
+    }
     for (k, x) in v.into_iter().enumerate() {
         p.add(k).write_unaligned(x);
     }
+    Ok(())
 }
 
 /// # Safety
@@ -184,8 +196,8 @@ unsafe fn read_matrix(p: *const f64) -> Result<crate::Matrix, cncrot_status> {
 
 /// # Safety
 /// `p` is non-NULL and points to 9 writable doubles.
-unsafe fn write_matrix(p: *mut f64, m: &crate::Matrix) {
-    write::<9>(p, core::array::from_fn(|k| m[k / 3][k % 3]));
+unsafe fn write_matrix(p: *mut f64, m: &crate::Matrix) -> Result<(), cncrot_status> {
+    write::<9>(p, core::array::from_fn(|k| m[k / 3][k % 3]))
 }
 
 fn kind(intrinsic: i32) -> Result<Kind, cncrot_status> {
@@ -243,6 +255,7 @@ mod tests {
             S::NameTooLong,
             S::Parse,
             S::TableFull,
+            S::OutOfRange,
             S::Internal,
         ];
         for s in all {

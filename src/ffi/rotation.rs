@@ -37,7 +37,7 @@ pub unsafe extern "C" fn cncrot_matrix_from_angles(
         let code = AxisCode::new(sequence)?;
         let angles = read_finite::<3>(angles_deg)?;
         let m = crate::matrix_from_angles(kind, code, angles);
-        write_matrix(matrix, &m);
+        write_matrix(matrix, &m)?;
         Ok(cncrot_status::Ok)
     })
 }
@@ -72,7 +72,7 @@ pub unsafe extern "C" fn cncrot_angles_from_matrix(
         let conv = convention(intrinsic, sequence)?;
         let m = read_matrix(matrix)?;
         let d = crate::angles_from_matrix(conv, &m)?;
-        write(angles_deg, d.angles);
+        write(angles_deg, d.angles)?;
         Ok(status_of(d.singular))
     })
 }
@@ -106,7 +106,7 @@ pub unsafe extern "C" fn cncrot_convert(
         let to = convention(intrinsic_out, sequence_out)?;
         let angles = read_finite::<3>(angles_in_deg)?;
         let d = crate::convert(kind_in, code_in, angles, to);
-        write(angles_out_deg, d.angles);
+        write(angles_out_deg, d.angles)?;
         Ok(status_of(d.singular))
     })
 }
@@ -138,7 +138,7 @@ pub unsafe extern "C" fn cncrot_second_solution(
             angles,
             singular: false,
         };
-        write(angles_out_deg, crate::second_solution(seq, d).angles);
+        write(angles_out_deg, crate::second_solution(seq, d).angles)?;
         Ok(cncrot_status::Ok)
     })
 }
@@ -175,7 +175,7 @@ pub unsafe extern "C" fn cncrot_closest_angles(
         let m = read_matrix(matrix)?;
         let reference = read_finite::<3>(reference_deg)?;
         let d = crate::closest_angles(conv, &m, reference)?;
-        write(angles_deg, d.angles);
+        write(angles_deg, d.angles)?;
         Ok(status_of(d.singular))
     })
 }
@@ -222,7 +222,7 @@ pub unsafe extern "C" fn cncrot_nearest_rotation(
         non_null(&[matrix_in.is_null(), matrix_out.is_null()])?;
         let m = read_matrix(matrix_in)?;
         let r = crate::nearest_rotation(&m)?;
-        write_matrix(matrix_out, &r);
+        write_matrix(matrix_out, &r)?;
         Ok(cncrot_status::Ok)
     })
 }
@@ -261,7 +261,7 @@ pub unsafe extern "C" fn cncrot_add_rotation(
         let old = read_matrix(matrix_in)?;
         crate::check_rotation(&old)?;
         let add = crate::matrix_from_angles(kind, code, angles);
-        write_matrix(matrix_out, &crate::add_rotation(kind, &old, &add));
+        write_matrix(matrix_out, &crate::add_rotation(kind, &old, &add))?;
         Ok(cncrot_status::Ok)
     })
 }
@@ -322,7 +322,7 @@ unsafe fn rotate_export(
         let m = read_matrix(matrix)?;
         let v = read_finite::<3>(vector)?;
         crate::check_rotation(&m)?;
-        write(out, op(&m, v));
+        write(out, op(&m, v))?;
         Ok(cncrot_status::Ok)
     })
 }

@@ -1,0 +1,243 @@
+//! Every rotation and frame export with arguments made of arbitrary bytes: codes, flags,
+//! NaN/Inf/subnormal/huge doubles, NULL pointers, outputs aliasing inputs. No crash, no hang,
+//! no status outside the documented ones, outputs untouched on error and finite on success,
+//! composed and repaired matrices orthonormal.
+#![no_main]
+
+#[path = "input.rs"]
+mod input;
+
+use cncrot::ffi::*;
+use input::*;
+use libfuzzer_sys::fuzz_target;
+
+/// A matrix that is often a rotation (so that success paths are reached), sometimes a
+/// rotation with one element replaced, sometimes nine arbitrary doubles.
+fn matrix(inp: &mut Input) -> Box<[f64]> {
+    let mut m = buffer(9, 0.0);
+    let (kind, code, angles) = (inp.int(), inp.int(), inp.f64s::<3>());
+    // SAFETY: valid buffers of 3 and 9 doubles.
+    if unsafe { cncrot_matrix_from_angles(kind, code, angles.as_ptr(), m.as_mut_ptr()) } < 0 {
+        m.copy_from_slice(&[1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]);
+    }
+    match inp.u8() % 4 {
+        0 => {
+            let k = usize::from(inp.u8()) % 9;
+            m[k] = inp.f64();
+        }
+        1 => m.iter_mut().for_each(|x| *x = inp.f64()),
+        _ => {}
+    }
+    m
+}
+
+/// A frame that is often valid (built by cncrot), sometimes 16 arbitrary doubles.
+fn frame(inp: &mut Input) -> Box<[f64]> {
+    let mut f = buffer(16, 0.0);
+    let (kind, code) = (inp.int(), inp.int());
+    let (a, b, c) = (inp.f64s::<3>(), inp.f64s::<3>(), inp.f64s::<3>());
+    // SAFETY: valid buffers.
+    let s = unsafe {
+        cncrot_frame_from_angles(
+            kind,
+            code,
+            a.as_ptr(),
+            b.as_ptr(),
+            c.as_ptr(),
+            f.as_mut_ptr(),
+        )
+    };
+    if s < 0 || inp.u8() % 4 == 0 {
+        f.iter_mut().for_each(|x| *x = inp.f64());
+    }
+    f
+}
+
+fn orthonormality(m: &[f64]) -> f64 {
+    let mut worst = 0.0f64;
+    for i in 0..3 {
+        for j in 0..3 {
+            let dot: f64 = (0..3).map(|k| m[3 * k + i] * m[3 * k + j]).sum();
+            worst = worst.max((dot - f64::from(u8::from(i == j))).abs());
+        }
+    }
+    worst
+}
+
+fuzz_target!(|data: &[u8]| {
+    let mut inp = Input(data);
+    let op = inp.u8() % 17;
+    let (n1, n2, n3, n4) = (inp.null(), inp.null(), inp.null(), inp.null());
+    // SAFETY (every call below): each pointer is NULL or a heap buffer of the documented size.
+    unsafe {
+        match op {
+            0 => {
+                let s = inp.u64() as i32;
+                assert!(!cncrot_status_str(s).is_null());
+            }
+            1 => {
+                let (kind, code, a) = (inp.int(), inp.int(), buffer_from(&inp.f64s::<3>()));
+                let mut m = buffer(9, SENTINEL);
+                let s = cncrot_matrix_from_angles(kind, code, ptr(&a, n1), ptr_mut(&mut m, n2));
+                check_outputs(s, &[&m]);
+                if s >= 0 {
+                    assert!(orthonormality(&m) <= 2e-15, "{:?}", &m[..]);
+                }
+            }
+            2 => {
+                let (kind, code, m) = (inp.int(), inp.int(), matrix(&mut inp));
+                let mut a = buffer(3, SENTINEL);
+                let s = cncrot_angles_from_matrix(kind, code, ptr(&m, n1), ptr_mut(&mut a, n2));
+                check_outputs(s, &[&a]);
+                if s >= 0 {
+                    assert!(a.iter().all(|x| *x > -180.0 && *x <= 180.0), "{:?}", &a[..]);
+                }
+            }
+            3 => {
+                let (k1, c1, a) = (inp.int(), inp.int(), buffer_from(&inp.f64s::<3>()));
+                let (k2, c2) = (inp.int(), inp.int());
+                let mut out = buffer(3, SENTINEL);
+                let s = cncrot_convert(k1, c1, ptr(&a, n1), k2, c2, ptr_mut(&mut out, n2));
+                check_outputs(s, &[&out]);
+            }
+            4 => {
+                let (code, a) = (inp.int(), inp.f64s::<3>());
+                // In place (documented as allowed) or into a separate buffer.
+                if n3 {
+                    let mut io = buffer_from(&a);
+                    let s = cncrot_second_solution(code, io.as_ptr(), io.as_mut_ptr());
+                    assert_known(s);
+                    if s < 0 {
+                        assert_eq!(bits(&io), bits(&a), "error changed the in-place buffer");
+                    }
+                } else {
+                    let a = buffer_from(&a);
+                    let mut out = buffer(3, SENTINEL);
+                    let s = cncrot_second_solution(code, ptr(&a, n1), ptr_mut(&mut out, n2));
+                    check_outputs(s, &[&out]);
+                }
+            }
+            5 => {
+                let (kind, code, m) = (inp.int(), inp.int(), matrix(&mut inp));
+                let r = buffer_from(&inp.f64s::<3>());
+                let mut out = buffer(3, SENTINEL);
+                let s = cncrot_closest_angles(
+                    kind,
+                    code,
+                    ptr(&m, n1),
+                    ptr(&r, n2),
+                    ptr_mut(&mut out, n3),
+                );
+                check_outputs(s, &[&out]);
+            }
+            6 => {
+                let m = matrix(&mut inp);
+                assert_known(cncrot_check_rotation(ptr(&m, n1)));
+            }
+            7 => {
+                let m = matrix(&mut inp);
+                let mut out = buffer(9, SENTINEL);
+                let s = cncrot_nearest_rotation(ptr(&m, n1), ptr_mut(&mut out, n2));
+                check_outputs(s, &[&out]);
+                if s >= 0 {
+                    assert!(orthonormality(&out) <= 2e-15, "{:?}", &out[..]);
+                }
+            }
+            8 => {
+                let (kind, code, a) = (inp.int(), inp.int(), buffer_from(&inp.f64s::<3>()));
+                let old = matrix(&mut inp);
+                let mut out = buffer(9, SENTINEL);
+                let s = cncrot_add_rotation(
+                    kind,
+                    code,
+                    ptr(&a, n1),
+                    ptr(&old, n2),
+                    ptr_mut(&mut out, n3),
+                );
+                check_outputs(s, &[&out]);
+            }
+            9 | 10 => {
+                let f = if op == 9 {
+                    cncrot_rotate_vector
+                } else {
+                    cncrot_rotate_vector_inverse
+                };
+                let (m, v) = (matrix(&mut inp), inp.f64s::<3>());
+                if n4 {
+                    let mut io = buffer_from(&v);
+                    let s = f(ptr(&m, n1), io.as_ptr(), io.as_mut_ptr());
+                    assert_known(s);
+                    if s < 0 {
+                        assert_eq!(bits(&io), bits(&v), "error changed the in-place buffer");
+                    }
+                } else {
+                    let v = buffer_from(&v);
+                    let mut out = buffer(3, SENTINEL);
+                    let s = f(ptr(&m, n1), ptr(&v, n2), ptr_mut(&mut out, n3));
+                    check_outputs(s, &[&out]);
+                }
+            }
+            11 => {
+                let (kind, code) = (inp.int(), inp.int());
+                let (a, b, c) = (inp.f64s::<3>(), inp.f64s::<3>(), inp.f64s::<3>());
+                let (a, b, c) = (buffer_from(&a), buffer_from(&b), buffer_from(&c));
+                let mut f = buffer(16, SENTINEL);
+                let s = cncrot_frame_from_angles(
+                    kind,
+                    code,
+                    ptr(&a, n1),
+                    ptr(&b, n2),
+                    ptr(&c, n3),
+                    ptr_mut(&mut f, n4),
+                );
+                check_outputs(s, &[&f]);
+            }
+            12 => {
+                let (kind, code) = (inp.int(), inp.int());
+                let (a, p) = (buffer_from(&inp.f64s::<3>()), buffer_from(&inp.f64s::<3>()));
+                let mut f = buffer(16, SENTINEL);
+                let s = cncrot_frame_about_point(
+                    kind,
+                    code,
+                    ptr(&a, n1),
+                    ptr(&p, n2),
+                    ptr_mut(&mut f, n3),
+                );
+                check_outputs(s, &[&f]);
+            }
+            13 => {
+                let (a, b) = (frame(&mut inp), frame(&mut inp));
+                let mut out = buffer(16, SENTINEL);
+                let s = cncrot_frame_compose(ptr(&a, n1), ptr(&b, n2), ptr_mut(&mut out, n3));
+                check_outputs(s, &[&out]);
+            }
+            14 => {
+                let f = frame(&mut inp);
+                let mut out = buffer(16, SENTINEL);
+                let s = cncrot_frame_inverse(ptr(&f, n1), ptr_mut(&mut out, n2));
+                check_outputs(s, &[&out]);
+            }
+            15 => {
+                let (f, p) = (frame(&mut inp), buffer_from(&inp.f64s::<3>()));
+                let mut out = buffer(3, SENTINEL);
+                let s =
+                    cncrot_frame_transform_point(ptr(&f, n1), ptr(&p, n2), ptr_mut(&mut out, n3));
+                check_outputs(s, &[&out]);
+            }
+            _ => {
+                assert_eq!(
+                    cncrot_cycle600_gud_size(),
+                    core::mem::size_of::<cncrot_cycle600_gud>()
+                );
+            }
+        }
+    }
+});
+
+fn buffer_from(v: &[f64]) -> Box<[f64]> {
+    v.to_vec().into_boxed_slice()
+}
+
+fn bits(v: &[f64]) -> Vec<u64> {
+    v.iter().map(|x| x.to_bits()).collect()
+}
