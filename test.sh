@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Runs every test of cncrot: formatting, clippy, the Rust tests (unit, integration, doc,
-# header freshness, no-allocation), the C harness (shared and static library, ASan+UBSan,
-# valgrind, header as C99 and C++) and the MATLAB/Octave suite.
-# Installs what the tests need (C compiler, valgrind, GNU Octave) with apt-get when missing.
+# header freshness, no-allocation, property and concurrency tests), the no-panic proof, the C
+# harness (shared and static library, ASan+UBSan, valgrind, header as C99 and C++, the
+# real-time build and its symbols), the system-call check of the timing benchmark, every
+# fuzz target for 20 s, and the MATLAB/Octave suite.
+# Installs what the tests need (C compiler, valgrind, strace, GNU Octave, cargo-fuzz) when
+# missing. Long runs (fuzzing for 10 minutes a target, timing over 10^7 calls): .ci/long-runs
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -10,6 +13,7 @@ need=()
 command -v cc >/dev/null || need+=(gcc)
 command -v c++ >/dev/null || need+=(g++)
 command -v valgrind >/dev/null || need+=(valgrind)
+command -v strace >/dev/null || need+=(strace)
 command -v mkoctfile >/dev/null || need+=(octave liboctave-dev)
 if [ ${#need[@]} -gt 0 ]; then
   echo "== installing ${need[*]}"
@@ -24,15 +28,23 @@ export CNCROT_FROZEN_HEADER=1
 
 echo "== cargo fmt --check"
 cargo fmt --check
+cargo fmt --check --manifest-path fuzz/Cargo.toml
 echo "== cargo clippy"
 cargo clippy --all-targets -- -D warnings
+cargo clippy --all-targets --features no-panic-proof,pure-rust-math -- -D warnings
 cargo clippy --profile rt --lib --no-default-features -- -D warnings
+cargo clippy --manifest-path fuzz/Cargo.toml --all-targets -- -D warnings
 echo "== cargo test"
 cargo test
 echo "== no-panic proof"
 bash c_tests/no_panic.sh
 echo "== C harness"
 bash c_tests/run.sh
+echo "== no system calls on the hot path"
+bash benches/syscalls.sh
+bash benches/syscalls.sh pure-rust-math
+echo "== fuzzing (20 s per target)"
+bash fuzz/run.sh 20
 if [ -f matlab/run_tests.sh ]; then
   echo "== MATLAB/Octave"
   bash matlab/run_tests.sh

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Checks the symbols of a built library pair (libcncrot.a and libcncrot.so in DIR).
+# Checks the symbols of a built library pair (libcncrot.a and libcncrot.so in DIR; the
+# archive alone for targets without shared libraries).
 #   c_tests/symbols.sh DIR exports   the .so exports exactly the functions of include/cncrot.h
 #   c_tests/symbols.sh DIR core      also: the .a and .so need nothing from the host but the
 #                                    memory functions below: no allocator, no unwinder, no
@@ -18,9 +19,16 @@ forbidden='malloc|calloc|realloc|free|__rust_alloc|__rust_dealloc|__rust_realloc
 bad=0
 
 declared=$(grep -oE '\bcncrot_[a-z0-9_]+\(' "$root/include/cncrot.h" | tr -d '(' | sort -u)
-exported=$(nm -D --defined-only "$so" | awk '{print $3}' | sort -u)
+# Targets without shared libraries (bare metal: aarch64-unknown-none) have only the archive.
+has_so=0
+[ -f "$so" ] && has_so=1
+if [ $has_so -eq 1 ]; then
+  exported=$(nm -D --defined-only "$so" | awk '{print $3}' | sort -u)
+else
+  exported=$(readelf -sW "$a" 2>/dev/null | awk '$7!="UND" && $5=="GLOBAL" && $6=="DEFAULT" && $8 ~ /^cncrot_/ {print $8}' | sort -u)
+fi
 if [ "$declared" != "$exported" ]; then
-  echo "symbols: $so exports differ from the functions of include/cncrot.h:"
+  echo "symbols: $dir exports differ from the functions of include/cncrot.h:"
   diff <(echo "$declared") <(echo "$exported") | sed 's/^/  /' || true
   bad=1
 fi
@@ -28,7 +36,8 @@ fi
 if [ "$mode" = core ]; then
   # Strong undefined symbols of the shared library (weak ones belong to the C runtime's
   # start files and may stay unresolved).
-  so_needs=$(nm -D --undefined-only "$so" | awk '$1=="U"{print $2}' | sort -u)
+  so_needs=""
+  [ $has_so -eq 1 ] && so_needs=$(nm -D --undefined-only "$so" | awk '$1=="U"{print $2}' | sort -u)
   # An archive needs what one member leaves undefined and no member defines.
   members=$(readelf -sW "$a" 2>/dev/null)
   a_undef=$(awk '$7=="UND" && $8!="" {print $8}' <<<"$members" | sort -u)
@@ -50,7 +59,7 @@ if [ "$mode" = core ]; then
       bad=1
     fi
   done
-  echo "symbols: libcncrot.so needs from the host: $(echo $so_needs)"
+  [ $has_so -eq 1 ] && echo "symbols: libcncrot.so needs from the host: $(echo $so_needs)"
   echo "symbols: libcncrot.a needs from the host: $(echo $a_needs)"
 fi
 [ $bad -eq 0 ] && echo "symbols ($mode): $dir ok"

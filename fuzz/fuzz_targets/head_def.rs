@@ -27,8 +27,11 @@ fuzz_target!(|data: &[u8]| {
         text.len()
     };
     // SAFETY: all-0x5A bytes form a valid (if odd) table; it must survive an error.
-    let mut table: Box<cncrot_head_table> =
-        Box::new(unsafe { std::mem::transmute([0x5Au8; size_of::<cncrot_head_table>()]) });
+    let mut table: Box<cncrot_head_table> = Box::new(unsafe {
+        std::mem::transmute::<[u8; size_of::<cncrot_head_table>()], cncrot_head_table>(
+            [0x5Au8; size_of::<cncrot_head_table>()],
+        )
+    });
     let before = as_bytes(&*table);
     let mut line = -7;
     let line_ptr = if mode & 2 == 2 {

@@ -63,7 +63,7 @@ impl Input<'_> {
 
     /// True for a NULL pointer, one time in sixteen.
     pub fn null(&mut self) -> bool {
-        self.u8() % 16 == 0
+        self.u8().is_multiple_of(16)
     }
 
     pub fn is_empty(&self) -> bool {

@@ -47,7 +47,7 @@ fn frame(inp: &mut Input) -> Box<[f64]> {
             f.as_mut_ptr(),
         )
     };
-    if s < 0 || inp.u8() % 4 == 0 {
+    if s < 0 || inp.u8().is_multiple_of(4) {
         f.iter_mut().for_each(|x| *x = inp.f64());
     }
     f

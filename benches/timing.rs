@@ -1,0 +1,455 @@
+//! The timing a controller cares about: the distribution, not only the mean, of each hot
+//! exported C function, call by call, per input class (random, exact right angles, singular,
+//! near-singular, huge angles such as 1e6°). Prints median, p99, p99.99, maximum, max/median
+//! and each class's median relative to the function's random class (goal: at most 2×).
+//!
+//! `cargo bench --bench timing` (10^7 calls per function and class; `-- --calls N` for
+//! fewer), `--features pure-rust-math` for the real-time build's arithmetic (libm crate).
+//! Each call is timed alone with the time-stamp counter (x86_64; elsewhere the monotonic
+//! clock, coarser); the cost of an empty measurement is subtracted. Samples go into a
+//! fixed histogram allocated before the loop, so the measurement itself allocates nothing
+//! and makes no system call: `benches/syscalls.sh` checks that with strace.
+
+#[path = "../tests/common/mod.rs"]
+mod common;
+
+use cncrot::ffi::*;
+use cncrot::{matrix_from_angles, AxisCode, Convention, Kind, Sequence};
+use common::Rng;
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+/// Histogram buckets of one tick; slower calls are counted in `over` with their maximum.
+const BUCKETS: usize = 1 << 16;
+/// Inputs per class, cycled through (fits in L1/L2 like a controller's working set).
+const POOL: usize = 1024;
+
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn ticks() -> u64 {
+    // lfence on both sides: the counter is read after the previous instructions completed
+    // and before the next ones start.
+    use core::arch::x86_64::{_mm_lfence, _rdtsc};
+    unsafe {
+        _mm_lfence();
+        let t = _rdtsc();
+        _mm_lfence();
+        t
+    }
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+#[inline(always)]
+fn ticks() -> u64 {
+    use std::sync::OnceLock;
+    static START: OnceLock<Instant> = OnceLock::new();
+    START.get_or_init(Instant::now).elapsed().as_nanos() as u64
+}
+
+/// Nanoseconds per tick, from the tick count over 200 ms of the monotonic clock.
+fn ns_per_tick() -> f64 {
+    let (t0, i0) = (ticks(), Instant::now());
+    while i0.elapsed() < Duration::from_millis(200) {}
+    let (t1, dt) = (ticks(), i0.elapsed());
+    dt.as_nanos() as f64 / (t1 - t0) as f64
+}
+
+struct Histogram {
+    counts: Vec<u64>,
+    over: u64,
+    max: u64,
+    n: u64,
+}
+
+impl Histogram {
+    fn new() -> Histogram {
+        Histogram {
+            counts: vec![0; BUCKETS],
+            over: 0,
+            max: 0,
+            n: 0,
+        }
+    }
+    fn clear(&mut self) {
+        self.counts.iter_mut().for_each(|c| *c = 0);
+        (self.over, self.max, self.n) = (0, 0, 0);
+    }
+    #[inline(always)]
+    fn add(&mut self, t: u64) {
+        self.n += 1;
+        self.max = self.max.max(t);
+        match self.counts.get_mut(t as usize) {
+            Some(c) => *c += 1,
+            None => self.over += 1,
+        }
+    }
+    /// The smallest t with at least fraction `q` of the samples at or below it.
+    fn quantile(&self, q: f64) -> u64 {
+        let want = (q * self.n as f64).ceil().max(1.0) as u64;
+        let mut seen = 0;
+        for (t, &c) in self.counts.iter().enumerate() {
+            seen += c;
+            if seen >= want {
+                return t as u64;
+            }
+        }
+        self.max
+    }
+}
+
+/// Times `calls` calls of `f` on the inputs in turn, each call alone.
+fn measure<T>(
+    h: &mut Histogram,
+    calls: usize,
+    overhead: u64,
+    inputs: &[T],
+    f: &mut impl FnMut(&T) -> i32,
+) {
+    h.clear();
+    for k in 0..calls {
+        let x = &inputs[k % inputs.len()];
+        let t0 = ticks();
+        let s = f(x);
+        let t1 = ticks();
+        black_box(s);
+        h.add((t1 - t0).saturating_sub(overhead));
+    }
+}
+
+struct Row {
+    function: &'static str,
+    class: &'static str,
+    median: f64,
+    p99: f64,
+    p9999: f64,
+    max: f64,
+    base: f64,
+}
+
+fn main() {
+    let calls: usize = std::env::args()
+        .skip_while(|a| a != "--calls")
+        .nth(1)
+        .map(|n| n.parse().expect("--calls N"))
+        .unwrap_or(10_000_000);
+    let ns = ns_per_tick();
+    let mut h = Histogram::new();
+    // The cost of the measurement alone: the median of empty measurements.
+    measure(&mut h, 1_000_000, 0, &[0u8], &mut |_| 0);
+    let overhead = h.quantile(0.5);
+    // The clock's resolution: the smallest step between two different readings (a virtual
+    // machine may advance the time-stamp counter in steps).
+    let resolution = (0..10_000)
+        .map(|_| {
+            let t0 = ticks();
+            let mut t1 = ticks();
+            while t1 == t0 {
+                t1 = ticks();
+            }
+            t1 - t0
+        })
+        .min()
+        .unwrap_or(1);
+
+    let mut rng = Rng::new(2026);
+    let conv = Convention::new(Kind::Intrinsic, Sequence::ZXY); // CYCLE800's Z, X', Y''
+    let code = i32::from(conv.sequence.code());
+    let flat = |m: cncrot::Matrix| -> [f64; 9] { core::array::from_fn(|i| m[i / 3][i % 3]) };
+    let pool =
+        |f: &mut dyn FnMut() -> [f64; 3]| -> Vec<[f64; 3]> { (0..POOL).map(|_| f()).collect() };
+    let angle_classes: Vec<(&str, Vec<[f64; 3]>)> = vec![
+        (
+            "random",
+            pool(&mut || [0; 3].map(|_| rng.range(-180.0, 180.0))),
+        ),
+        (
+            "right angles",
+            pool(&mut || [0; 3].map(|_| 90.0 * (rng.next_u64() % 8) as f64 - 360.0)),
+        ),
+        (
+            "huge (1e6 deg)",
+            pool(&mut || [0; 3].map(|_| rng.range(-1e6, 1e6))),
+        ),
+    ];
+    let mat = |a: &[f64; 3]| {
+        flat(matrix_from_angles(
+            Kind::Intrinsic,
+            AxisCode::from(conv.sequence),
+            *a,
+        ))
+    };
+    let matrix_classes: Vec<(&str, Vec<[f64; 9]>)> = vec![
+        ("random", (0..POOL).map(|_| flat(rng.rotation())).collect()),
+        (
+            "singular",
+            (0..POOL)
+                .map(|_| flat(rng.near_singular(conv, 0.0)))
+                .collect(),
+        ),
+        (
+            "near-singular 1e-9",
+            (0..POOL)
+                .map(|_| flat(rng.near_singular(conv, 1e-9)))
+                .collect(),
+        ),
+        (
+            "near-singular 1e-15",
+            (0..POOL)
+                .map(|_| flat(rng.near_singular(conv, 1e-15)))
+                .collect(),
+        ),
+        (
+            "from huge angles",
+            angle_classes[2].1.iter().map(mat).collect(),
+        ),
+    ];
+    let noisy = |rng: &mut Rng, scale: f64| -> Vec<[f64; 9]> {
+        (0..POOL)
+            .map(|_| flat(rng.rotation()).map(|x| x + scale * rng.range(-1.0, 1.0)))
+            .collect()
+    };
+    let nearest_classes: Vec<(&str, Vec<[f64; 9]>)> = vec![
+        ("exact rotation", matrix_classes[0].1.clone()),
+        ("noise 1e-6", noisy(&mut rng, 1e-6)),
+        ("noise 1e-3", noisy(&mut rng, 1e-3)),
+        ("noise 1e-1", noisy(&mut rng, 1e-1)),
+    ];
+    let frames: Vec<[f64; 16]> = (0..POOL)
+        .map(|_| {
+            let m = rng.rotation();
+            let t = [0; 3].map(|_| rng.range(-500.0, 500.0));
+            core::array::from_fn(|k| match (k / 4, k % 4) {
+                (3, 3) => 1.0,
+                (3, _) => 0.0,
+                (i, 3) => t[i],
+                (i, j) => m[i][j],
+            })
+        })
+        .collect();
+    let frame_pairs: Vec<([f64; 16], [f64; 16])> = (0..POOL)
+        .map(|k| (frames[k], frames[(k * 7 + 3) % POOL]))
+        .collect();
+
+    let mut rows: Vec<Row> = Vec::new();
+    let report =
+        |function: &'static str, class: &'static str, h: &Histogram, rows: &mut Vec<Row>| {
+            let t = |q: f64| h.quantile(q) as f64 * ns;
+            let base = rows
+                .iter()
+                .find(|r| r.function == function)
+                .map_or(t(0.5), |r| r.median);
+            rows.push(Row {
+                function,
+                class,
+                median: t(0.5),
+                p99: t(0.99),
+                p9999: t(0.9999),
+                max: h.max as f64 * ns,
+                base,
+            });
+            let r = rows.last().unwrap();
+            println!(
+                "{:<30} {:<20} {:>8.1} {:>8.1} {:>9.1} {:>10.1} {:>8.1} {:>7.2}{}",
+                r.function,
+                r.class,
+                r.median,
+                r.p99,
+                r.p9999,
+                r.max,
+                r.max / r.median,
+                r.median / r.base,
+                if r.median > 2.0 * r.base {
+                    "  > 2x: GOAL MISSED"
+                } else {
+                    ""
+                }
+            );
+        };
+
+    println!("cncrot timing distribution: {calls} calls per row, ns per call (measurement overhead of {:.1} ns subtracted)", overhead as f64 * ns);
+    println!(
+        "math: {}",
+        if cfg!(feature = "pure-rust-math") {
+            "pure-Rust libm (the real-time build's arithmetic)"
+        } else {
+            "platform libm (std build)"
+        }
+    );
+    println!(
+        "machine: {}; clock resolution {:.1} ns",
+        cpu_name(),
+        resolution as f64 * ns
+    );
+    println!(
+        "{:<30} {:<20} {:>8} {:>8} {:>9} {:>10} {:>8} {:>7}",
+        "function", "input class", "median", "p99", "p99.99", "max", "max/med", "class"
+    );
+    let mut out9 = [0.0; 9];
+    let mut out3 = [0.0; 3];
+    let mut out16 = [0.0; 16];
+    for (class, inputs) in &angle_classes {
+        measure(&mut h, calls, overhead, inputs, &mut |a| unsafe {
+            cncrot_matrix_from_angles(1, code, a.as_ptr(), out9.as_mut_ptr())
+        });
+        report("cncrot_matrix_from_angles", class, &h, &mut rows);
+    }
+    for (class, inputs) in &matrix_classes {
+        measure(&mut h, calls, overhead, inputs, &mut |m| unsafe {
+            cncrot_angles_from_matrix(1, code, m.as_ptr(), out3.as_mut_ptr())
+        });
+        report("cncrot_angles_from_matrix", class, &h, &mut rows);
+    }
+    for (class, inputs) in &angle_classes {
+        measure(&mut h, calls, overhead, inputs, &mut |a| unsafe {
+            cncrot_convert(0, 57, a.as_ptr(), 1, code, out3.as_mut_ptr())
+        });
+        report("cncrot_convert", class, &h, &mut rows);
+    }
+    let reference = [10.0, 20.0, 30.0];
+    for (class, inputs) in &matrix_classes {
+        measure(&mut h, calls, overhead, inputs, &mut |m| unsafe {
+            cncrot_closest_angles(1, code, m.as_ptr(), reference.as_ptr(), out3.as_mut_ptr())
+        });
+        report("cncrot_closest_angles", class, &h, &mut rows);
+    }
+    for (class, inputs) in &nearest_classes {
+        measure(&mut h, calls, overhead, inputs, &mut |m| unsafe {
+            cncrot_nearest_rotation(m.as_ptr(), out9.as_mut_ptr())
+        });
+        report("cncrot_nearest_rotation", class, &h, &mut rows);
+    }
+    measure(
+        &mut h,
+        calls,
+        overhead,
+        &matrix_classes[0].1,
+        &mut |m| unsafe { cncrot_check_rotation(m.as_ptr()) },
+    );
+    report("cncrot_check_rotation", "random", &h, &mut rows);
+    measure(
+        &mut h,
+        calls,
+        overhead,
+        &matrix_classes[0].1,
+        &mut |m| unsafe { cncrot_rotate_vector(m.as_ptr(), reference.as_ptr(), out3.as_mut_ptr()) },
+    );
+    report("cncrot_rotate_vector", "random", &h, &mut rows);
+    for (class, inputs) in &angle_classes {
+        measure(&mut h, calls, overhead, inputs, &mut |a| unsafe {
+            cncrot_add_rotation(
+                1,
+                code,
+                a.as_ptr(),
+                matrix_classes[0].1[0].as_ptr(),
+                out9.as_mut_ptr(),
+            )
+        });
+        report("cncrot_add_rotation", class, &h, &mut rows);
+    }
+    measure(
+        &mut h,
+        calls,
+        overhead,
+        &frame_pairs,
+        &mut |(a, b)| unsafe { cncrot_frame_compose(a.as_ptr(), b.as_ptr(), out16.as_mut_ptr()) },
+    );
+    report("cncrot_frame_compose", "random", &h, &mut rows);
+    measure(&mut h, calls, overhead, &frames, &mut |f| unsafe {
+        cncrot_frame_inverse(f.as_ptr(), out16.as_mut_ptr())
+    });
+    report("cncrot_frame_inverse", "random", &h, &mut rows);
+    measure(&mut h, calls, overhead, &frames, &mut |f| unsafe {
+        cncrot_frame_transform_point(f.as_ptr(), reference.as_ptr(), out3.as_mut_ptr())
+    });
+    report("cncrot_frame_transform_point", "random", &h, &mut rows);
+    for (class, inputs) in &angle_classes {
+        // CYCLE600 recalculation (paper, Example 3 with these angles), then the additive call.
+        let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
+        let name = c"UFK600";
+        measure(&mut h, calls, overhead, inputs, &mut |a| unsafe {
+            cncrot_cycle600(
+                &mut gud,
+                std::ptr::null(),
+                0,
+                name.as_ptr(),
+                1,
+                57,
+                1.0,
+                2.0,
+                3.0,
+                a[0],
+                a[1],
+                a[2],
+                4.0,
+                5.0,
+                6.0,
+                1,
+                39,
+                0,
+                0,
+                0,
+            )
+        });
+        report("cncrot_cycle600", class, &h, &mut rows);
+    }
+    {
+        let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
+        let name = c"UFK600";
+        measure(
+            &mut h,
+            calls,
+            overhead,
+            &angle_classes[0].1,
+            &mut |a| unsafe {
+                cncrot_cycle600(
+                    &mut gud,
+                    std::ptr::null(),
+                    1,
+                    name.as_ptr(),
+                    1,
+                    57,
+                    0.0,
+                    0.0,
+                    0.0,
+                    a[0],
+                    a[1],
+                    a[2],
+                    0.0,
+                    0.0,
+                    0.0,
+                    1,
+                    39,
+                    1,
+                    0,
+                    0,
+                )
+            },
+        );
+        report("cncrot_cycle600", "additive (_ROT_AD=1)", &h, &mut rows);
+    }
+    if std::env::args().any(|a| a == "--syscall-canary") {
+        // For benches/syscalls.sh: a row that does make a system call per call, to show
+        // that the check sees one.
+        measure(&mut h, calls, overhead, &[0u8], &mut |_| {
+            std::thread::yield_now();
+            0
+        });
+        report("sched_yield (canary)", "-", &h, &mut rows);
+    }
+    let worst = rows.iter().map(|r| r.median / r.base).fold(0.0, f64::max);
+    println!("worst class median / random median: {worst:.2} (goal: at most 2)");
+    black_box((out3, out9, out16));
+}
+
+fn cpu_name() -> String {
+    let cpus = std::fs::read_to_string("/proc/cpuinfo").unwrap_or_default();
+    let model = cpus
+        .lines()
+        .find(|l| l.starts_with("model name"))
+        .and_then(|l| l.split(':').nth(1))
+        .unwrap_or("unknown")
+        .trim()
+        .to_string();
+    let n = cpus.lines().filter(|l| l.starts_with("processor")).count();
+    format!("{model}, {n} logical CPUs")
+}
