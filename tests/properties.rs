@@ -6,6 +6,7 @@
 mod common;
 
 use cncrot::dialects::cycle600::{cycle600, Call, State};
+use cncrot::dialects::head_def::HeadTable;
 use cncrot::{
     add_rotation, angles_from_matrix, closest_angles, convert, decompose, determinant,
     matrix_from_angles, nearest_rotation, orthonormality_error, rotate, rotate_inverse,
@@ -207,5 +208,46 @@ proptest! {
         let d2 = decompose(c, &m2);
         prop_assert_eq!(d1.angles.map(f64::to_bits), d2.angles.map(f64::to_bits));
         prop_assert_eq!(d1.singular, d2.singular);
+    }
+
+    #[test]
+    fn head_def_text_reads_back_what_was_written(
+        heads in proptest::collection::vec(
+            (
+                proptest::collection::vec(proptest::sample::select(b"ABCXYZ019_".to_vec()), 1..=31),
+                0i32..=1,
+                proptest::array::uniform9(-1_000_000_000i64..1_000_000_000),
+            ),
+            0..=16,
+        ),
+    ) {
+        // Lengths and offsets in micrometres, written in millimetres as a setup sheet would.
+        let keys = ["_DELTA_L1", "_DELTA_L2", "_DELTA_H1", "_OFFS_L1_X", "_OFFS_L1_Y",
+                    "_OFFS_L2_X", "_OFFS_L2_Y", "_OFFS_H1_X", "_OFFS_H1_Z"];
+        // Names are unique in a table: keep the first of each.
+        let mut unique: Vec<&(Vec<u8>, i32, [i64; 9])> = Vec::new();
+        for h in &heads {
+            if !unique.iter().any(|u| u.0 == h.0) {
+                unique.push(h);
+            }
+        }
+        let mut text = String::from("N10 TZ7:\n");
+        for (n, (name, allowed, values)) in unique.iter().enumerate() {
+            let name = String::from_utf8_lossy(name);
+            text += &format!("N{} _HEAD_NAME=\"{name}\" _HEAD_ALLOWED={allowed} ; head {n}\n", 20 + n);
+            for (key, v) in keys.iter().zip(values) {
+                text += &format!("{key}={}\n", *v as f64 / 1000.0);
+            }
+        }
+        text += "GOTOF END\nEND:\nM17\n";
+        let table = HeadTable::parse(text.as_bytes()).unwrap();
+        prop_assert_eq!(table.count, unique.len());
+        for (name, allowed, values) in unique {
+            let h = table.find(name).unwrap();
+            prop_assert_eq!(h.allowed, *allowed == 1);
+            let read: Vec<f64> = h.delta.iter().chain(&h.offsets).copied().collect();
+            let expect: Vec<f64> = values.iter().map(|v| *v as f64 / 1000.0).collect();
+            prop_assert_eq!(read, expect);
+        }
     }
 }
