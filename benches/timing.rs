@@ -213,6 +213,23 @@ fn main() {
         ("noise 1e-6", noisy(&mut rng, 1e-6)),
         ("noise 1e-3", noisy(&mut rng, 1e-3)),
         ("noise 1e-1", noisy(&mut rng, 1e-1)),
+        // A rotation with one axis squashed to 1e-6 of its length: the slowest convergence
+        // of the polar iteration that is still not refused as degenerate.
+        (
+            "ill-conditioned 1e-6",
+            (0..POOL)
+                .map(|_| {
+                    flat(rng.rotation())
+                        .map(|x| x)
+                        .iter()
+                        .enumerate()
+                        .map(|(k, x)| if k % 3 == 2 { x * 1e-6 } else { *x })
+                        .collect::<Vec<_>>()
+                        .try_into()
+                        .unwrap()
+                })
+                .collect(),
+        ),
     ];
     let frames: Vec<[f64; 16]> = (0..POOL)
         .map(|_| {

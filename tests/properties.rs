@@ -156,6 +156,18 @@ proptest! {
     }
 
     #[test]
+    fn nearest_rotation_recovers_the_polar_factor(c in convention(), a in angles(), k in 0usize..3, squash in -6.0..0.0f64) {
+        // M = R·diag(…, s, …) with s in [1e-6, 1]: its orthogonal polar factor is R itself,
+        // and well determined (sensitivity 2/(σi + σj) <= 2), however small s is.
+        let r = matrix_from_angles(c.kind, code(c), a);
+        let s = 10f64.powf(squash);
+        let m: Matrix = core::array::from_fn(|i| core::array::from_fn(|j| if j == k { r[i][j] * s } else { r[i][j] }));
+        let p = nearest_rotation(&m).unwrap();
+        assert_rotation(&p)?;
+        prop_assert!(max_diff(&p, &r) <= 4e-15, "{:e}", max_diff(&p, &r));
+    }
+
+    #[test]
     fn frames_invert_and_compose(c in convention(), a in angles(), b in angles(), t1 in vector(), t2 in vector(), p in vector()) {
         let f = Frame::with_translations(t1, matrix_from_angles(c.kind, code(c), a), t2);
         let g = Frame::about_point(matrix_from_angles(c.kind, code(c), b), t2);
