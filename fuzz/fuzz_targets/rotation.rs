@@ -102,20 +102,7 @@ fuzz_target!(|data: &[u8]| {
             }
             4 => {
                 let (code, a) = (inp.int(), inp.f64s::<3>());
-                // In place (documented as allowed) or into a separate buffer.
-                if n3 {
-                    let mut io = buffer_from(&a);
-                    let s = cncrot_second_solution(code, io.as_ptr(), io.as_mut_ptr());
-                    assert_known(s);
-                    if s < 0 {
-                        assert_eq!(bits(&io), bits(&a), "error changed the in-place buffer");
-                    }
-                } else {
-                    let a = buffer_from(&a);
-                    let mut out = buffer(3, SENTINEL);
-                    let s = cncrot_second_solution(code, ptr(&a, n1), ptr_mut(&mut out, n2));
-                    check_outputs(s, &[&out]);
-                }
+                in_place_or_apart(n3, a, n1, n2, |i, o| cncrot_second_solution(code, i, o));
             }
             5 => {
                 let (kind, code, m) = (inp.int(), inp.int(), matrix(&mut inp));
@@ -163,19 +150,7 @@ fuzz_target!(|data: &[u8]| {
                     cncrot_rotate_vector_inverse
                 };
                 let (m, v) = (matrix(&mut inp), inp.f64s::<3>());
-                if n4 {
-                    let mut io = buffer_from(&v);
-                    let s = f(ptr(&m, n1), io.as_ptr(), io.as_mut_ptr());
-                    assert_known(s);
-                    if s < 0 {
-                        assert_eq!(bits(&io), bits(&v), "error changed the in-place buffer");
-                    }
-                } else {
-                    let v = buffer_from(&v);
-                    let mut out = buffer(3, SENTINEL);
-                    let s = f(ptr(&m, n1), ptr(&v, n2), ptr_mut(&mut out, n3));
-                    check_outputs(s, &[&out]);
-                }
+                in_place_or_apart(n4, v, n2, n3, |i, o| f(ptr(&m, n1), i, o));
             }
             11 => {
                 let (kind, code) = (inp.int(), inp.int());
@@ -233,6 +208,30 @@ fuzz_target!(|data: &[u8]| {
         }
     }
 });
+
+/// Calls `f(input, output)` with one buffer for both (documented as allowed) or with two;
+/// an error must leave the buffers as they were.
+fn in_place_or_apart(
+    in_place: bool,
+    v: [f64; 3],
+    null_in: bool,
+    null_out: bool,
+    f: impl Fn(*const f64, *mut f64) -> i32,
+) {
+    if in_place {
+        let mut io = buffer_from(&v);
+        let s = f(io.as_ptr(), io.as_mut_ptr());
+        assert_known(s);
+        if s < 0 {
+            assert_eq!(bits(&io), bits(&v), "error changed the in-place buffer");
+        }
+    } else {
+        let v = buffer_from(&v);
+        let mut out = buffer(3, SENTINEL);
+        let s = f(ptr(&v, null_in), ptr_mut(&mut out, null_out));
+        check_outputs(s, &[&out]);
+    }
+}
 
 fn buffer_from(v: &[f64]) -> Box<[f64]> {
     v.to_vec().into_boxed_slice()
