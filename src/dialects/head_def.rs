@@ -285,6 +285,7 @@ pub(crate) fn number(text: &[u8]) -> Result<f64, Error> {
     Ok(if negative && w != 0 { -v } else { v })
 }
 
+/// Whitespace-separated tokens; a quoted string is one token with its quotes.
 struct Tokens<'a> {
     rest: &'a [u8],
 }

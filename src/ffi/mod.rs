@@ -7,8 +7,9 @@
 //! - outputs are written only on success (status >= 0), and only after all computation, so
 //!   an output may alias an input; a result that is not finite (finite inputs near
 //!   `DBL_MAX` can overflow) is not written but reported as `CNCROT_STATUS_OUT_OF_RANGE`;
-//! - nothing panics across the boundary: with `std` each body runs under `catch_unwind` and
-//!   a panic becomes `CNCROT_STATUS_INTERNAL`;
+//! - nothing panics: `c_tests/no_panic.sh` proves that no export contains a reachable panic
+//!   (each carries `#[no_panic]` under the feature `no-panic-proof`); with `std` each body
+//!   also runs under `catch_unwind`, and a panic would become `CNCROT_STATUS_INTERNAL`;
 //! - integers from C are validated, never transmuted into Rust enums.
 
 mod cycle600;
