@@ -66,6 +66,7 @@ function test_cncrot(cases_file)
   expect_error('cncrot:nameTooLong', @() cycle600(0, repmat('A', 1, 40), 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'long name');
   expect_error('cncrot:badClass', @() cycle600(0, 5, 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'name class');
   expect_error('cncrot:badFlag', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,2,0), 'ROT_INV 2');
+  expect_error('cncrot:outOfRange', @() cycle600(0, 'H', 1, 57, 1e308,0,0, 0,0,0, 1e308,0,0, 1, 39, 0,0,0), 'overflowing frame');
   expect_error('cncrot:badClass', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 1,0,0, 7), 'previous gud');
   bad = gud; bad.frame(1,1) = 5;
   expect_error('cncrot:notARotation', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 1,0,0, bad), 'corrupt gud');
