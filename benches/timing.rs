@@ -109,11 +109,17 @@ fn measure<T>(
     for k in 0..calls {
         let x = &inputs[k % inputs.len()];
         let t0 = ticks();
-        let s = f(x);
+        let s = one_call(f, x);
         let t1 = ticks();
         black_box(s);
         h.add((t1 - t0).saturating_sub(overhead));
     }
+}
+
+/// One call, never inlined: benches/instructions.sh counts the instructions inside it.
+#[inline(never)]
+fn one_call<T>(f: &mut impl FnMut(&T) -> i32, x: &T) -> i32 {
+    f(x)
 }
 
 struct Row {
@@ -132,10 +138,18 @@ fn main() {
         .nth(1)
         .map(|n| n.parse().expect("--calls N"))
         .unwrap_or(10_000_000);
+    // `--only "FUNCTION/CLASS"` runs that row alone (benches/instructions.sh counts its
+    // instructions under callgrind); the other rows get no calls and are not printed.
+    let only: Option<String> = std::env::args().skip_while(|a| a != "--only").nth(1);
+    let n = |function: &str, class: &str| match &only {
+        Some(row) if *row != format!("{function}/{class}") => 0,
+        _ => calls,
+    };
     let ns = ns_per_tick();
     let mut h = Histogram::new();
     // The cost of the measurement alone: the median of empty measurements.
-    measure(&mut h, 1_000_000, 0, &[0u8], &mut |_| 0);
+    let calibration = if only.is_some() { 1000 } else { 1_000_000 };
+    measure(&mut h, calibration, 0, &[0u8], &mut |_| 0);
     let overhead = h.quantile(0.5);
     // The clock's resolution: the smallest step between two different readings (a virtual
     // machine may advance the time-stamp counter in steps).
@@ -250,6 +264,9 @@ fn main() {
     let mut rows: Vec<Row> = Vec::new();
     let report =
         |function: &'static str, class: &'static str, h: &Histogram, rows: &mut Vec<Row>| {
+            if h.n == 0 {
+                return;
+            }
             let t = |q: f64| h.quantile(q) as f64 * ns;
             let base = rows
                 .iter()
@@ -303,45 +320,73 @@ fn main() {
     );
     // The environment's own outliers: the same measurement around no call at all. Its
     // p99.99 and maximum are what interrupts and the hypervisor add to any row.
-    measure(&mut h, calls, overhead, &[0u8], &mut |_| 0);
+    measure(
+        &mut h,
+        n("(no call: the measurement)", "-"),
+        overhead,
+        &[0u8],
+        &mut |_| 0,
+    );
     report("(no call: the measurement)", "-", &h, &mut rows);
     let mut out9 = [0.0; 9];
     let mut out3 = [0.0; 3];
     let mut out16 = [0.0; 16];
     for (class, inputs) in &angle_classes {
-        measure(&mut h, calls, overhead, inputs, &mut |a| unsafe {
-            cncrot_matrix_from_angles(1, code, a.as_ptr(), out9.as_mut_ptr())
-        });
+        measure(
+            &mut h,
+            n("cncrot_matrix_from_angles", class),
+            overhead,
+            inputs,
+            &mut |a| unsafe { cncrot_matrix_from_angles(1, code, a.as_ptr(), out9.as_mut_ptr()) },
+        );
         report("cncrot_matrix_from_angles", class, &h, &mut rows);
     }
     for (class, inputs) in &matrix_classes {
-        measure(&mut h, calls, overhead, inputs, &mut |m| unsafe {
-            cncrot_angles_from_matrix(1, code, m.as_ptr(), out3.as_mut_ptr())
-        });
+        measure(
+            &mut h,
+            n("cncrot_angles_from_matrix", class),
+            overhead,
+            inputs,
+            &mut |m| unsafe { cncrot_angles_from_matrix(1, code, m.as_ptr(), out3.as_mut_ptr()) },
+        );
         report("cncrot_angles_from_matrix", class, &h, &mut rows);
     }
     for (class, inputs) in &angle_classes {
-        measure(&mut h, calls, overhead, inputs, &mut |a| unsafe {
-            cncrot_convert(0, 57, a.as_ptr(), 1, code, out3.as_mut_ptr())
-        });
+        measure(
+            &mut h,
+            n("cncrot_convert", class),
+            overhead,
+            inputs,
+            &mut |a| unsafe { cncrot_convert(0, 57, a.as_ptr(), 1, code, out3.as_mut_ptr()) },
+        );
         report("cncrot_convert", class, &h, &mut rows);
     }
     let reference = [10.0, 20.0, 30.0];
     for (class, inputs) in &matrix_classes {
-        measure(&mut h, calls, overhead, inputs, &mut |m| unsafe {
-            cncrot_closest_angles(1, code, m.as_ptr(), reference.as_ptr(), out3.as_mut_ptr())
-        });
+        measure(
+            &mut h,
+            n("cncrot_closest_angles", class),
+            overhead,
+            inputs,
+            &mut |m| unsafe {
+                cncrot_closest_angles(1, code, m.as_ptr(), reference.as_ptr(), out3.as_mut_ptr())
+            },
+        );
         report("cncrot_closest_angles", class, &h, &mut rows);
     }
     for (class, inputs) in &nearest_classes {
-        measure(&mut h, calls, overhead, inputs, &mut |m| unsafe {
-            cncrot_nearest_rotation(m.as_ptr(), out9.as_mut_ptr())
-        });
+        measure(
+            &mut h,
+            n("cncrot_nearest_rotation", class),
+            overhead,
+            inputs,
+            &mut |m| unsafe { cncrot_nearest_rotation(m.as_ptr(), out9.as_mut_ptr()) },
+        );
         report("cncrot_nearest_rotation", class, &h, &mut rows);
     }
     measure(
         &mut h,
-        calls,
+        n("cncrot_check_rotation", "random"),
         overhead,
         &matrix_classes[0].1,
         &mut |m| unsafe { cncrot_check_rotation(m.as_ptr()) },
@@ -349,68 +394,90 @@ fn main() {
     report("cncrot_check_rotation", "random", &h, &mut rows);
     measure(
         &mut h,
-        calls,
+        n("cncrot_rotate_vector", "random"),
         overhead,
         &matrix_classes[0].1,
         &mut |m| unsafe { cncrot_rotate_vector(m.as_ptr(), reference.as_ptr(), out3.as_mut_ptr()) },
     );
     report("cncrot_rotate_vector", "random", &h, &mut rows);
     for (class, inputs) in &angle_classes {
-        measure(&mut h, calls, overhead, inputs, &mut |a| unsafe {
-            cncrot_add_rotation(
-                1,
-                code,
-                a.as_ptr(),
-                matrix_classes[0].1[0].as_ptr(),
-                out9.as_mut_ptr(),
-            )
-        });
+        measure(
+            &mut h,
+            n("cncrot_add_rotation", class),
+            overhead,
+            inputs,
+            &mut |a| unsafe {
+                cncrot_add_rotation(
+                    1,
+                    code,
+                    a.as_ptr(),
+                    matrix_classes[0].1[0].as_ptr(),
+                    out9.as_mut_ptr(),
+                )
+            },
+        );
         report("cncrot_add_rotation", class, &h, &mut rows);
     }
     measure(
         &mut h,
-        calls,
+        n("cncrot_frame_compose", "random"),
         overhead,
         &frame_pairs,
         &mut |(a, b)| unsafe { cncrot_frame_compose(a.as_ptr(), b.as_ptr(), out16.as_mut_ptr()) },
     );
     report("cncrot_frame_compose", "random", &h, &mut rows);
-    measure(&mut h, calls, overhead, &frames, &mut |f| unsafe {
-        cncrot_frame_inverse(f.as_ptr(), out16.as_mut_ptr())
-    });
+    measure(
+        &mut h,
+        n("cncrot_frame_inverse", "random"),
+        overhead,
+        &frames,
+        &mut |f| unsafe { cncrot_frame_inverse(f.as_ptr(), out16.as_mut_ptr()) },
+    );
     report("cncrot_frame_inverse", "random", &h, &mut rows);
-    measure(&mut h, calls, overhead, &frames, &mut |f| unsafe {
-        cncrot_frame_transform_point(f.as_ptr(), reference.as_ptr(), out3.as_mut_ptr())
-    });
+    measure(
+        &mut h,
+        n("cncrot_frame_transform_point", "random"),
+        overhead,
+        &frames,
+        &mut |f| unsafe {
+            cncrot_frame_transform_point(f.as_ptr(), reference.as_ptr(), out3.as_mut_ptr())
+        },
+    );
     report("cncrot_frame_transform_point", "random", &h, &mut rows);
     for (class, inputs) in &angle_classes {
         // CYCLE600 recalculation (paper, Example 3 with these angles), then the additive call.
         let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
         let name = c"UFK600";
-        measure(&mut h, calls, overhead, inputs, &mut |a| unsafe {
-            cncrot_cycle600(
-                &mut gud,
-                std::ptr::null(),
-                0,
-                name.as_ptr(),
-                1,
-                57,
-                1.0,
-                2.0,
-                3.0,
-                a[0],
-                a[1],
-                a[2],
-                4.0,
-                5.0,
-                6.0,
-                1,
-                39,
-                0,
-                0,
-                0,
-            )
-        });
+        measure(
+            &mut h,
+            n("cncrot_cycle600", class),
+            overhead,
+            inputs,
+            &mut |a| unsafe {
+                cncrot_cycle600(
+                    &mut gud,
+                    std::ptr::null(),
+                    0,
+                    name.as_ptr(),
+                    1,
+                    57,
+                    1.0,
+                    2.0,
+                    3.0,
+                    a[0],
+                    a[1],
+                    a[2],
+                    4.0,
+                    5.0,
+                    6.0,
+                    1,
+                    39,
+                    0,
+                    0,
+                    0,
+                )
+            },
+        );
         report("cncrot_cycle600", class, &h, &mut rows);
     }
     {
@@ -418,7 +485,7 @@ fn main() {
         let name = c"UFK600";
         measure(
             &mut h,
-            calls,
+            n("cncrot_cycle600", "additive (_ROT_AD=1)"),
             overhead,
             &angle_classes[0].1,
             &mut |a| unsafe {
@@ -451,10 +518,16 @@ fn main() {
     if std::env::args().any(|a| a == "--syscall-canary") {
         // For benches/syscalls.sh: a row that does make a system call per call, to show
         // that the check sees one.
-        measure(&mut h, calls, overhead, &[0u8], &mut |_| {
-            std::thread::yield_now();
-            0
-        });
+        measure(
+            &mut h,
+            n("sched_yield (canary)", "-"),
+            overhead,
+            &[0u8],
+            &mut |_| {
+                std::thread::yield_now();
+                0
+            },
+        );
         report("sched_yield (canary)", "-", &h, &mut rows);
     }
     let worst = rows
