@@ -184,6 +184,10 @@ fn main() {
             "huge (1e6 deg)",
             pool(&mut || [0; 3].map(|_| rng.range(-1e6, 1e6))),
         ),
+        (
+            "extreme (to 1e308)",
+            pool(&mut || [0; 3].map(|_| rng.range(-1.0, 1.0) * 10f64.powf(rng.range(0.0, 308.0)))),
+        ),
     ];
     let mat = |a: &[f64; 3]| {
         flat(matrix_from_angles(

@@ -93,7 +93,7 @@ pub fn sin_cos_deg(deg: f64) -> (f64, f64) {
     // fmod is slow and exact; most angles need no full-turn reduction at all.
     let mut r = deg;
     if abs(r) > 180.0 {
-        r = fmod(deg, 360.0);
+        r = rem360(deg);
         if r > 180.0 {
             r -= 360.0;
         } else if r < -180.0 {
@@ -118,10 +118,44 @@ pub fn sin_cos_deg(deg: f64) -> (f64, f64) {
     (s + 0.0, c + 0.0)
 }
 
+/// `fmod(x, 360)`, exactly, in bounded time: the sign of `x`, magnitude below 360.
+///
+/// `fmod`'s cost grows with the exponent of `x` (2.2× the instructions of a whole
+/// `cncrot_matrix_from_angles` at 1.8e308°). At or above 2^53 every double is an integer
+/// `m·2^k` (m < 2^53), and `(m mod 360)·(2^k mod 360) mod 360` is exact integer arithmetic;
+/// `2^k mod 360` repeats with period 12 from k = 3 on (360 = 8·45, and 2 has order 12
+/// modulo 45), so it is a table lookup.
+#[inline]
+pub fn rem360(x: f64) -> f64 {
+    const TWO_53: f64 = 9_007_199_254_740_992.0;
+    if abs(x) < TWO_53 {
+        return fmod(x, 360.0);
+    }
+    // 2^k mod 360 for k = 3 + j, j = 0..12 (k = 3..14): 8, 16, 32, 64, 128, 256, 152, 304,
+    // 248, 136, 272, 184; then it repeats.
+    const POW2_MOD_360: [u64; 12] = [8, 16, 32, 64, 128, 256, 152, 304, 248, 136, 272, 184];
+    let bits = x.to_bits();
+    let exponent = ((bits >> 52) & 0x7ff) as i64 - 1075; // x = m·2^exponent
+    let m = (bits & ((1u64 << 52) - 1)) | (1u64 << 52);
+    // |x| >= 2^53 makes exponent >= 1; finite x makes it at most 971.
+    let k = exponent.max(1) as u64;
+    let p = match k {
+        1 => 2,
+        2 => 4,
+        _ => POW2_MOD_360[((k - 3) % 12) as usize],
+    };
+    let r = ((m % 360) * p % 360) as f64;
+    if x < 0.0 {
+        -r
+    } else {
+        r
+    }
+}
+
 /// Brings an angle in degrees into (-180, 180], never -0.
 #[inline]
 pub fn wrap_deg(deg: f64) -> f64 {
-    let mut r = fmod(deg, 360.0);
+    let mut r = rem360(deg);
     if r > 180.0 {
         r -= 360.0;
     } else if r <= -180.0 {
@@ -172,6 +206,36 @@ pub fn turns_toward(angle: f64, reference: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn rem360_is_fmod_exactly() {
+        // fmod is exact, so the two must agree bit for bit, across the whole range.
+        let mut special = vec![
+            0.0,
+            360.0,
+            -360.0,
+            9_007_199_254_740_992.0,  // 2^53
+            -9_007_199_254_740_994.0, // -(2^53 + 2)
+            1.8014398509481984e16,    // 2^54
+            f64::MAX,
+            -f64::MAX,
+            1e300,
+            1e6,
+        ];
+        special.extend((0..1024).map(|k| 2f64.powi(k)));
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        for _ in 0..200_000 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            // Any finite double: random sign, exponent and mantissa bits.
+            let x = f64::from_bits(state & !(0x7ffu64 << 52) | ((state >> 11) % 2047) << 52);
+            special.push(x);
+        }
+        for x in special {
+            assert_eq!(rem360(x).to_bits(), fmod(x, 360.0).to_bits(), "{x:e}");
+        }
+    }
 
     #[test]
     fn right_angles_are_exact() {
