@@ -237,14 +237,12 @@ fn main() {
             "ill-conditioned 1e-6",
             (0..POOL)
                 .map(|_| {
-                    flat(rng.rotation())
-                        .map(|x| x)
-                        .iter()
-                        .enumerate()
-                        .map(|(k, x)| if k % 3 == 2 { x * 1e-6 } else { *x })
-                        .collect::<Vec<_>>()
-                        .try_into()
-                        .unwrap()
+                    let mut m = flat(rng.rotation());
+                    // The third column: elements 2, 5 and 8 of the row-major matrix.
+                    for k in [2, 5, 8] {
+                        m[k] *= 1e-6;
+                    }
+                    m
                 })
                 .collect(),
         ),
