@@ -118,15 +118,30 @@ static void heads_and_invalid(void) {
   /* Finite positions whose frame overflows (1e308 + 1e308): refused, not stored. */
   CHECK_STATUS(CALL(&gud, &heads, 0, "UFK600", 1, 57, 1e308, 0, 0, 0, 0, 0, 1e308, 0, 0, 1, 39, 0), CNCROT_STATUS_OUT_OF_RANGE);
   CHECK(memcmp(&gud, &saved, sizeof gud) == 0, "state untouched by every invalid call");
-  /* A corrupt state is refused and left alone. */
+  /* A corrupt state is refused and left alone: an edited field fails the checksum. */
   cncrot_cycle600_gud corrupt = saved;
   corrupt.frame[0] = 2.0;
   cncrot_cycle600_gud corrupt_copy = corrupt;
-  CHECK_STATUS(CALL(&corrupt, NULL, 0, "UFK600", 1, 57, 0, 0, 0, 1, 2, 3, 0, 0, 0, 1, 39, 1), CNCROT_STATUS_NOT_A_ROTATION);
+  CHECK_STATUS(CALL(&corrupt, NULL, 0, "UFK600", 1, 57, 0, 0, 0, 1, 2, 3, 0, 0, 0, 1, 39, 1), CNCROT_STATUS_BAD_STATE);
   CHECK(memcmp(&corrupt, &corrupt_copy, sizeof corrupt) == 0, "corrupt state untouched");
   corrupt = saved;
-  corrupt.active = 7;
-  CHECK_STATUS(CALL(&corrupt, NULL, 0, "UFK600", 1, 57, 0, 0, 0, 1, 2, 3, 0, 0, 0, 1, 39, 1), CNCROT_STATUS_BAD_ARGUMENT);
+  corrupt.active = 0; /* "inactive" no longer hides a stored rotation */
+  CHECK_STATUS(CALL(&corrupt, NULL, 0, "UFK600", 1, 57, 0, 0, 0, 1, 2, 3, 0, 0, 0, 1, 39, 1), CNCROT_STATUS_BAD_STATE);
+  CHECK(saved.format == CNCROT_CYCLE600_GUD_FORMAT && saved.checksum != 0, "format %u", saved.format);
+  CHECK(strncmp(cncrot_status_str(-15), "CNCROT_STATUS_BAD_STATE", 23) == 0, "name");
+  /* Every single-bit flip of a valid state, and of the zeroed initial state, is refused. */
+  cncrot_cycle600_gud zero;
+  memset(&zero, 0, sizeof zero);
+  const cncrot_cycle600_gud *bases[2] = {&saved, &zero};
+  int accepted = 0;
+  for (int b = 0; b < 2; b++) {
+    for (size_t bit = 0; bit < 8 * sizeof saved; bit++) {
+      cncrot_cycle600_gud flipped = *bases[b];
+      ((unsigned char *)&flipped)[bit / 8] ^= (unsigned char)(1u << (bit % 8));
+      if (CALL(&flipped, NULL, 0, "UFK600", 1, 57, 0, 0, 0, 1, 2, 3, 0, 0, 0, 1, 39, 1) != CNCROT_STATUS_BAD_STATE) accepted++;
+    }
+  }
+  CHECK(accepted == 0, "%d single-bit flips accepted", accepted);
 }
 
 static void save_and_restore(void) {

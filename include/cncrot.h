@@ -9,6 +9,20 @@
 #include <stdint.h>
 
 /**
+ * The largest element magnitude [`check_rotation`] looks at further. Within the tolerance
+ * every element is below `sqrt(1 + ROTATION_TOLERANCE)` ≈ 1.0005; 2 leaves room and keeps
+ * every product in the check far from overflow.
+ */
+#define ELEMENT_MAX 2.0
+
+/**
+ * The magnitude from which [`closest_angles`] refuses a result: 2^16 = 65 536° (182
+ * turns). Below it doubles are spaced at most 7.3e-12° apart, so the returned angle is
+ * the exact `θ + k·360°` to within 3.7e-12° (6.4e-14 rad).
+ */
+#define CLOSEST_MAX 65536.0
+
+/**
  * The tolerance of the rotation check: the largest element of `MᵀM − I` accepted.
  * Matrices printed to four decimals stay below 2e-4; more distorted ones (raw probe data)
  * must go through `cncrot_nearest_rotation` deliberately.
@@ -24,6 +38,11 @@
  * How many accessories a `cncrot_head_table` holds.
  */
 #define CNCROT_HEAD_TABLE_CAPACITY 16
+
+/**
+ * The value of `cncrot_cycle600_gud::format` in every state this version writes.
+ */
+#define CNCROT_CYCLE600_GUD_FORMAT 1127624753
 
 /**
  * Status of every `cncrot_` function: 0 success, positive success with a remark, negative
@@ -100,6 +119,12 @@ enum cncrot_status
    */
   CNCROT_STATUS_OUT_OF_RANGE = -14,
   /**
+   * A restored `cncrot_cycle600_gud` is not one this library wrote: its format field or
+   * checksum is wrong (storage corruption, an edited field, another version), or it is
+   * neither all zero bytes nor well-formed.
+   */
+  CNCROT_STATUS_BAD_STATE = -15,
+  /**
    * Internal failure (a caught panic): a bug in cncrot, please report it.
    */
   CNCROT_STATUS_INTERNAL = -100,
@@ -161,10 +186,19 @@ typedef struct cncrot_head_table {
  * CYCLE600's state, the controller's GUD block `MGUD_CYC600`: plain data, owned by the
  * caller, that can be stored as bytes and restored after a restart. A zeroed struct is the
  * valid initial state (no rotation yet). Its first six fields are the paper's results.
+ *
+ * Layout (216 bytes, no padding, native byte order): `cyc600_1` at 0, `cyc600_2..4` at
+ * 32/40/48, `cyc600_5`/`cyc600_6` at 56/60, `frame` at 64, `active` 192, `rot_inv` 196,
+ * `retr_z` 200, `reserved` 204, `format` 208, `checksum` 212. A state is accepted on entry
+ * only if it is all zero bytes (the initial state) or has `format` =
+ * `CNCROT_CYCLE600_GUD_FORMAT`, `checksum` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes
+ * 0..212, and well-formed fields; anything else is `CNCROT_STATUS_BAD_STATE`. So every
+ * single-bit flip, random bytes and an edited field are refused, and a state is never
+ * half-used. Treat it as opaque: to change it, call `cncrot_cycle600`.
  */
 typedef struct cncrot_cycle600_gud {
   /**
-   * `_CYC600_1`: the accessory's name (`_MIHEAD`), NUL-terminated.
+   * `_CYC600_1`: the accessory's name (`_MIHEAD`), NUL-terminated, zero-filled after.
    */
   char cyc600_1[CNCROT_NAME_SIZE];
   /**
@@ -207,6 +241,14 @@ typedef struct cncrot_cycle600_gud {
    * Zero.
    */
   int32_t reserved;
+  /**
+   * `CNCROT_CYCLE600_GUD_FORMAT` once a call has stored a result; 0 in the initial state.
+   */
+  uint32_t format;
+  /**
+   * CRC-32 of the 212 bytes before it; 0 in the initial state.
+   */
+  uint32_t checksum;
 } cncrot_cycle600_gud;
 
 

@@ -38,8 +38,12 @@ pub enum Error {
     /// A fixed-capacity table is full.
     TableFull,
     /// A result is too large to represent (finite inputs whose result overflows, such as
-    /// translations near `f64::MAX`).
+    /// translations near `f64::MAX`), or an angle too large to denote the rotation to the
+    /// library's accuracy.
     OutOfRange,
+    /// A stored CYCLE600 state that this library did not write as it is: corrupted in
+    /// storage, edited, or from a version with another layout.
+    BadState,
 }
 
 impl fmt::Display for Error {
@@ -65,6 +69,9 @@ impl Error {
             Error::Parse => "HEAD_DEF text could not be read",
             Error::TableFull => "head table is full",
             Error::OutOfRange => "a result is too large to represent",
+            Error::BadState => {
+                "stored CYCLE600 state is corrupt, edited or from another version (format or checksum)"
+            }
         }
     }
 }

@@ -4,7 +4,9 @@
 //! (`X Y Z`, `U V W`) all define `T = Trans(p_before)·Rot·Trans(p_after)`: a point `q` of the
 //! new system lies at `p_before + R·(p_after + q)` in the old one.
 
-use crate::rotation::{check_rotation, mul, rotate, transpose, Matrix, Vector, IDENTITY};
+use crate::rotation::{
+    check_rotation, mul, reorthonormalize, rotate, transpose, Matrix, Vector, IDENTITY,
+};
 use crate::Error;
 
 /// A rigid transformation `p ↦ R·p + t`, as the 4x4 matrix `[R t; 0 0 0 1]`.
@@ -73,6 +75,8 @@ impl Frame {
     }
 
     /// `self · other`: `other` expressed in the system of `self` (`R1·R2`, `t1 + R1·t2`).
+    /// The rotation is brought back to orthonormal (to 2 ulp), so that chains of any
+    /// length do not drift.
     ///
     /// ```
     /// use cncrot::{elementary, Axis, Frame};
@@ -85,12 +89,14 @@ impl Frame {
     pub fn compose(&self, other: &Frame) -> Frame {
         let r1t2 = rotate(&self.rotation, other.translation);
         Frame {
-            rotation: mul(&self.rotation, &other.rotation),
+            rotation: reorthonormalize(&mul(&self.rotation, &other.rotation)),
             translation: core::array::from_fn(|k| self.translation[k] + r1t2[k] + 0.0),
         }
     }
 
-    /// The inverse frame: `[Rᵀ, −Rᵀ·t]`.
+    /// The inverse frame: `[Rᵀ, −Rᵀ·t]`, with `R` first brought to orthonormal (to 2 ulp; a
+    /// rotation accepted within the tolerance is otherwise not exactly inverted by its
+    /// transpose). Never -0.
     ///
     /// ```
     /// use cncrot::{elementary, Axis, Frame};
@@ -98,7 +104,7 @@ impl Frame {
     /// assert_eq!(f.compose(&f.inverse()).translation, [0.0; 3]);
     /// ```
     pub fn inverse(&self) -> Frame {
-        let rt = transpose(&self.rotation);
+        let rt = transpose(&reorthonormalize(&self.rotation));
         let t = rotate(&rt, self.translation);
         Frame {
             rotation: rt,

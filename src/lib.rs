@@ -23,6 +23,7 @@
 #![cfg_attr(not(feature = "std"), no_std)]
 #![deny(missing_docs)]
 
+mod checksum;
 pub mod dialects;
 mod error;
 mod frame;
@@ -34,12 +35,13 @@ pub mod ffi;
 
 mod panic;
 
+pub use checksum::crc32;
 pub use error::Error;
 pub use frame::Frame;
 pub use rotation::{
     add_rotation, angles_from_matrix, check_rotation, closest_angles, closest_of, convert,
     decompose, determinant, elementary, from_nalgebra, matrix_from_angles, mul, nearest_rotation,
     orthonormality_error, rotate, rotate_inverse, second_solution, to_nalgebra, transpose,
-    Decomposition, Matrix, Vector, IDENTITY, ROTATION_TOLERANCE,
+    Decomposition, Matrix, Vector, CLOSEST_MAX, ELEMENT_MAX, IDENTITY, ROTATION_TOLERANCE,
 };
 pub use sequence::{Axis, AxisCode, Convention, Kind, Sequence};

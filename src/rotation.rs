@@ -145,23 +145,45 @@ fn turn_rows(r: &mut Matrix, axis: Axis, s: f64, c: f64) {
 
 /// Checks that `m` is a rotation: finite, `max |MᵀM − I| ≤ ROTATION_TOLERANCE`, `det > 0`.
 ///
+/// Every comparison is written so that NaN refuses, and the check cannot overflow: a
+/// rotation's elements lie in [-1, 1] (within the tolerance, below `sqrt(1 + 1e-3)`), so a
+/// matrix with an element beyond [`ELEMENT_MAX`] is refused before `MᵀM` is formed, where
+/// huge elements would give `∞ − ∞ = NaN`.
+///
 /// ```
 /// use cncrot::{check_rotation, Error, IDENTITY};
 /// assert_eq!(check_rotation(&IDENTITY), Ok(()));
 /// let mirror = [[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 /// assert_eq!(check_rotation(&mirror), Err(Error::NotARotation));
+/// // Orthogonal, but scaled by 1.4e155: MᵀM overflows; still refused.
+/// let huge = [[1e155, -1e155, 0.0], [1e155, 1e155, 0.0], [0.0, 0.0, 1.0]];
+/// assert_eq!(check_rotation(&huge), Err(Error::NotARotation));
 /// ```
 pub fn check_rotation(m: &Matrix) -> Result<(), Error> {
     if !m.iter().flatten().all(|x| x.is_finite()) {
         return Err(Error::NotFinite);
     }
-    if orthonormality_error(m) > ROTATION_TOLERANCE || determinant(m) <= 0.0 {
+    if !m.iter().flatten().all(|&x| math::abs(x) <= ELEMENT_MAX) {
         return Err(Error::NotARotation);
     }
-    Ok(())
+    let error = orthonormality_error(m);
+    let det = determinant(m);
+    // Written as "accept only if": a NaN makes both comparisons false and refuses.
+    if error <= ROTATION_TOLERANCE && det > 0.0 {
+        Ok(())
+    } else {
+        Err(Error::NotARotation)
+    }
 }
 
-/// `max |MᵀM − I|` over all elements.
+/// The largest element magnitude [`check_rotation`] looks at further. Within the tolerance
+/// every element is below `sqrt(1 + ROTATION_TOLERANCE)` ≈ 1.0005; 2 leaves room and keeps
+/// every product in the check far from overflow.
+pub const ELEMENT_MAX: f64 = 2.0;
+
+/// `max |MᵀM − I|` over all elements; NaN when any element product is NaN (huge elements
+/// whose products overflow with opposite signs), so that callers comparing it with `<=`
+/// refuse such a matrix.
 pub fn orthonormality_error(m: &Matrix) -> f64 {
     let mut worst: f64 = 0.0;
     for i in 0..3 {
@@ -169,13 +191,55 @@ pub fn orthonormality_error(m: &Matrix) -> f64 {
             let dot = m[0][i] * m[0][j] + m[1][i] * m[1][j] + m[2][i] * m[2][j];
             let target = if i == j { 1.0 } else { 0.0 };
             let e = math::abs(dot - target);
-            // NaN-propagating max: a NaN element must not look orthonormal.
-            if e > worst || e.is_nan() {
-                worst = e;
+            // A NaN must not be lost in the maximum (`max` would drop it).
+            if e.is_nan() {
+                return f64::NAN;
             }
+            worst = worst.max(e);
         }
     }
     worst
+}
+
+/// Brings a matrix that is already close to a rotation (as [`check_rotation`] accepts)
+/// back to orthonormal, so that chains of products (additive rotations, composed frames)
+/// do not drift: each product adds a few ulp to `|MᵀM − I|`, which a million-step chain
+/// turns into 1e-12.
+///
+/// One Newton–Schulz step `X ← X + X·(I − XᵀX)/2` converges quadratically to the nearest
+/// rotation (the orthogonal polar factor): from a deviation `δ` it leaves about `1.5·δ²`. A
+/// matrix within 2 ulp of orthonormal is returned unchanged (so exact matrices, and the
+/// products of exact rotations, stay bit for bit what they were); otherwise steps are taken
+/// until it is, at most four, which is enough from anything `check_rotation` accepts (and
+/// from the product of two such matrices: 3e-3 → 1e-5 → 3e-10 → rounding).
+pub(crate) fn reorthonormalize(m: &Matrix) -> Matrix {
+    let mut x = *m;
+    for _ in 0..4 {
+        let mut residual = [[0.0; 3]; 3];
+        let mut worst: f64 = 0.0;
+        let mut finite = true;
+        for (i, row) in residual.iter_mut().enumerate() {
+            for (j, r) in row.iter_mut().enumerate() {
+                let dot = x[0][i] * x[0][j] + x[1][i] * x[1][j] + x[2][i] * x[2][j];
+                let target = if i == j { 1.0 } else { 0.0 };
+                *r = target - dot;
+                worst = worst.max(math::abs(*r));
+                finite &= r.is_finite();
+            }
+        }
+        // The callers have refused non-finite input, so `finite` holds; were it not to, the
+        // matrix is returned as it is rather than made worse.
+        if worst <= 2.0 * f64::EPSILON || !finite {
+            break;
+        }
+        let correction = mul(&x, &residual);
+        for (xr, cr) in x.iter_mut().zip(&correction) {
+            for (v, c) in xr.iter_mut().zip(cr) {
+                *v += 0.5 * c;
+            }
+        }
+    }
+    x.map(|row| row.map(|v| v + 0.0))
 }
 
 /// The determinant.
@@ -376,7 +440,8 @@ fn proper_euler<const I: usize, const J: usize, const K: usize>(
 /// Tait-Bryan, `(θ1+180°, −θ2, θ3+180°)` for proper Euler, all three wrapped into
 /// (-180°, 180°]. Its middle angle lies outside the canonical range (|θ2| ≥ 90° resp.
 /// θ2 ≤ 0°, where θ2 = 180° gives 180°, not -180°). At a singular decomposition it is
-/// another member of the same family.
+/// another member of the same family. Angles of any size are accepted: each is reduced
+/// exactly into (-180°, 180°] first, as [`matrix_from_angles`] reduces it.
 ///
 /// ```
 /// use cncrot::{second_solution, Decomposition, Sequence};
@@ -385,7 +450,8 @@ fn proper_euler<const I: usize, const J: usize, const K: usize>(
 /// assert_eq!(second_solution(Sequence::ZXZ, d).angles, [-170.0, -20.0, -150.0]);
 /// ```
 pub fn second_solution(sequence: Sequence, d: Decomposition) -> Decomposition {
-    let [a, b, c] = d.angles;
+    // Reduced first: `θ + 180` of a huge θ (from 2^55° on) would round to another rotation.
+    let [a, b, c] = d.angles.map(wrap_deg);
     let b2 = if sequence.is_proper_euler() {
         wrap_deg(-b)
     } else {
@@ -401,14 +467,20 @@ pub fn second_solution(sequence: Sequence, d: Decomposition) -> Decomposition {
 /// `reference` (least sum of squared differences; on a tie the canonical one). Use it to
 /// avoid needless swivel motion: the reference is the current position.
 ///
+/// A result angle of magnitude [`CLOSEST_MAX`] or more is refused with
+/// [`Error::OutOfRange`]: there doubles are spaced 1.5e-11° or more apart, so the angle
+/// could no longer denote the rotation to the library's accuracy (a reference of 1e15°
+/// would be off by 0.06°).
+///
 /// ```
-/// use cncrot::{closest_angles, matrix_from_angles, Convention, Kind, Sequence};
+/// use cncrot::{closest_angles, matrix_from_angles, Convention, Error, Kind, Sequence};
 /// let conv = Convention::new(Kind::Intrinsic, Sequence::ZXZ);
 /// let m = matrix_from_angles(Kind::Intrinsic, Sequence::ZXZ.into(), [10.0, 20.0, 30.0]);
 /// // Near the second solution (-170, -20, -150), and 360° further on θ3.
 /// let d = closest_angles(conv, &m, [-165.0, -15.0, 200.0]).unwrap();
 /// let expect = [-170.0, -20.0, 210.0];
 /// assert!(d.angles.iter().zip(expect).all(|(a, b)| (a - b).abs() < 1e-9), "{:?}", d.angles);
+/// assert_eq!(closest_angles(conv, &m, [1e15, 0.0, 0.0]), Err(Error::OutOfRange));
 /// ```
 pub fn closest_angles(
     conv: Convention,
@@ -416,26 +488,44 @@ pub fn closest_angles(
     reference: [f64; 3],
 ) -> Result<Decomposition, Error> {
     let first = angles_from_matrix(conv, m)?;
-    Ok(closest_of(conv.sequence, first, reference))
+    closest_of(conv.sequence, first, reference)
 }
 
-/// [`closest_angles`] for a decomposition already at hand.
-pub fn closest_of(sequence: Sequence, first: Decomposition, reference: [f64; 3]) -> Decomposition {
+/// The magnitude from which [`closest_angles`] refuses a result: 2^16 = 65 536° (182
+/// turns). Below it doubles are spaced at most 7.3e-12° apart, so the returned angle is
+/// the exact `θ + k·360°` to within 3.7e-12° (6.4e-14 rad).
+pub const CLOSEST_MAX: f64 = 65_536.0;
+
+/// [`closest_angles`] for a decomposition already at hand (its angles may be of any size;
+/// they are reduced exactly first).
+pub fn closest_of(
+    sequence: Sequence,
+    first: Decomposition,
+    reference: [f64; 3],
+) -> Result<Decomposition, Error> {
+    let first = Decomposition {
+        angles: first.angles.map(wrap_deg),
+        ..first
+    };
     let unwind = |d: Decomposition| {
         let mut out = d;
         let mut dist = 0.0;
+        let mut fits = true;
         for ((o, &a), &r) in out.angles.iter_mut().zip(&d.angles).zip(&reference) {
             *o = a + math::turns_toward(a, r) + 0.0;
             dist += (*o - r) * (*o - r);
+            // Written so that NaN or ∞ (a reference near f64::MAX) refuses.
+            fits &= math::abs(*o) < CLOSEST_MAX;
         }
-        (out, dist)
+        (out, dist, fits)
     };
-    let (a, da) = unwind(first);
-    let (b, db) = unwind(second_solution(sequence, first));
-    if db < da {
-        b
+    let (a, da, a_fits) = unwind(first);
+    let (b, db, b_fits) = unwind(second_solution(sequence, first));
+    let (best, fits) = if db < da { (b, b_fits) } else { (a, a_fits) };
+    if fits {
+        Ok(best)
     } else {
-        a
+        Err(Error::OutOfRange)
     }
 }
 
@@ -459,7 +549,8 @@ pub fn convert(
 
 /// An additional rotation applied to an existing one: extrinsic (about the machine axes)
 /// multiplies from the left, `R_add·R_old`; intrinsic (about the rotated axes) from the
-/// right, `R_old·R_add`.
+/// right, `R_old·R_add`. The product is brought back to orthonormal (to 2 ulp), so a chain
+/// of any length does not drift away from a rotation.
 ///
 /// ```
 /// use cncrot::{add_rotation, elementary, Axis, Kind};
@@ -468,10 +559,11 @@ pub fn convert(
 /// assert!(r.iter().flatten().zip(expect.iter().flatten()).all(|(a, b)| (a - b).abs() < 1e-15));
 /// ```
 pub fn add_rotation(kind: Kind, old: &Matrix, add: &Matrix) -> Matrix {
-    match kind {
+    let product = match kind {
         Kind::Extrinsic => mul(add, old),
         Kind::Intrinsic => mul(old, add),
-    }
+    };
+    reorthonormalize(&product)
 }
 
 /// `R·v`: a vector given in the rotated system, in the original one (TwinCAT `CalcRot`).

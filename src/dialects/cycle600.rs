@@ -6,7 +6,7 @@
 //! [`cycle600`] reads it and returns the next one, so on any error the caller's state is
 //! untouched.
 
-use super::head_def::{HeadTable, NAME_MAX};
+use super::head_def::{valid_name, HeadTable, NAME_MAX};
 use crate::{angles_from_matrix, matrix_from_angles, AxisCode, Convention, Error, Frame, Kind};
 
 /// The paper's 18 documented parameters, in its order.
@@ -85,6 +85,20 @@ impl State {
     }
 }
 
+/// Where CYCLE600 looks `_MIHEAD` up: a [`HeadTable`], or a table in another layout (the C
+/// boundary reads the caller's table in place, so that a call costs the same whatever the
+/// table holds).
+pub trait HeadLookup {
+    /// Whether an accessory of that name is defined; an error when its entry is corrupt.
+    fn contains(&self, name: &[u8]) -> Result<bool, Error>;
+}
+
+impl HeadLookup for HeadTable {
+    fn contains(&self, name: &[u8]) -> Result<bool, Error> {
+        Ok(self.find(name).is_some())
+    }
+}
+
 fn flag(v: i32) -> Result<bool, Error> {
     Ok(Kind::from_flag(v)? == Kind::Intrinsic)
 }
@@ -96,8 +110,19 @@ fn flag(v: i32) -> Result<bool, Error> {
 /// rotation is decomposed for `inexout`/`bin_out`. With a head table, `mihead` must name one
 /// of its accessories ([`Error::UnknownHead`]); without one the name is only recorded.
 /// `sw_rec = 0` (positioning the head) returns [`Error::NotAvailable`] after validation; a
-/// frame that overflows (positions near `f64::MAX`) returns [`Error::OutOfRange`].
+/// frame that overflows (positions near `f64::MAX`) returns [`Error::OutOfRange`]. The name
+/// must be printable ASCII without spaces or quotes ([`valid_name`]; empty is allowed
+/// without a table), else [`Error::BadArgument`].
 pub fn cycle600(state: &State, heads: Option<&HeadTable>, call: &Call) -> Result<State, Error> {
+    cycle600_in(state, heads.map(|t| t as &dyn HeadLookup), call)
+}
+
+/// [`cycle600`] with the accessories looked up through any [`HeadLookup`].
+pub fn cycle600_in(
+    state: &State,
+    heads: Option<&dyn HeadLookup>,
+    call: &Call,
+) -> Result<State, Error> {
     let kind_in = Kind::from_flag(call.inexin)?;
     let recalc_only = flag(call.sw_rec)?;
     let code_in = AxisCode::new(call.bin_in)?;
@@ -112,8 +137,13 @@ pub fn cycle600(state: &State, heads: Option<&HeadTable>, call: &Call) -> Result
     if call.mihead.len() > NAME_MAX {
         return Err(Error::NameTooLong);
     }
+    if !(call.mihead.is_empty() || valid_name(call.mihead)) {
+        return Err(Error::BadArgument);
+    }
     if let Some(table) = heads {
-        table.find(call.mihead).ok_or(Error::UnknownHead)?;
+        if !table.contains(call.mihead)? {
+            return Err(Error::UnknownHead);
+        }
     }
     if !recalc_only {
         return Err(Error::NotAvailable);
@@ -133,6 +163,11 @@ pub fn cycle600(state: &State, heads: Option<&HeadTable>, call: &Call) -> Result
         return Err(Error::OutOfRange);
     }
     let d = angles_from_matrix(out, &frame.rotation)?;
+    // Nothing non-finite is ever stored (a decomposition of a checked rotation is finite;
+    // this keeps it so whatever changes above).
+    if !d.angles.iter().all(|x| x.is_finite()) {
+        return Err(Error::OutOfRange);
+    }
     let mut next = State {
         name: [0; NAME_MAX],
         name_len: call.mihead.len() as u8,

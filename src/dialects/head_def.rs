@@ -79,6 +79,8 @@ const KEYS: [&[u8]; 11] = [
     b"_OFFS_H1_Z",
     b"_HEAD_NAME",
 ];
+/// The index of `_HEAD_NAME` in `KEYS`.
+const NAME_KEY: usize = 10;
 
 impl HeadTable {
     /// Looks an accessory up by its exact name.
@@ -90,8 +92,24 @@ impl HeadTable {
 
     /// Reads HEAD_DEF text. Every accessory starts with `_HEAD_NAME="…"`; the variables
     /// after it belong to it. Errors name the 1-based line.
+    ///
+    /// Read as a SINUMERIK control reads a part program: keywords, addresses and variable
+    /// names in any case (`_head_name`, `n10`, `gotof`; the name inside the quotes is
+    /// compared exactly); a UTF-8 byte-order mark before the first line is skipped; a block
+    /// marked for skipping (`/`, `/0` … `/9` before the block) is read as executed, as with
+    /// the skip levels off, the control's default; reading ends with the block that ends
+    /// the program (`M30`, `M17`, `M2`, `M02`, `RET`), as execution does: what follows is
+    /// not read. Jumps (`GOTOF`, `GOTOB`, `GOTO`) are not followed: the text is a list of
+    /// definitions.
+    ///
+    /// ```
+    /// use cncrot::dialects::head_def::HeadTable;
+    /// let t = HeadTable::parse(b"n10 _head_name=\"A\"\n/N20 M30\n_HEAD_NAME=\"B\"\n").unwrap();
+    /// assert!(t.find(b"A").is_some() && t.find(b"B").is_none());
+    /// ```
     pub fn parse(text: &[u8]) -> Result<HeadTable, ParseError> {
         let mut table = HeadTable::default();
+        let text = text.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(text);
         for (index, raw) in text.split(|&b| b == b'\n').enumerate() {
             let fail = |error| ParseError {
                 error,
@@ -101,26 +119,36 @@ impl HeadTable {
                 Some(p) => &raw[..p],
                 None => raw,
             };
-            let mut tokens = Tokens { rest: line };
+            let mut tokens = Tokens {
+                rest: skip_mark(line),
+            };
             let mut first = true;
+            let mut end = false;
             while let Some(token) = tokens.next().map_err(|_| fail(Error::Parse))? {
                 let is_block_number = first
                     && token.len() > 1
-                    && token[0] == b'N'
+                    && token[0].eq_ignore_ascii_case(&b'N')
                     && token[1..].iter().all(u8::is_ascii_digit);
                 first = false;
                 if is_block_number {
                     continue;
                 }
-                if matches!(token, b"GOTOF" | b"GOTOB" | b"GOTO") {
+                if is_one_of(token, &[b"GOTOF", b"GOTOB", b"GOTO"]) {
                     // The jump target is the rest of the line.
                     tokens.rest = &[];
                     continue;
                 }
-                if matches!(token, b"RET" | b"M17" | b"M30") || is_label(token) {
+                if is_one_of(token, &[b"RET", b"M17", b"M30", b"M2", b"M02"]) {
+                    end = true;
+                    continue;
+                }
+                if is_label(token) {
                     continue;
                 }
                 table.assign(token).map_err(fail)?;
+            }
+            if end {
+                break;
             }
         }
         Ok(table)
@@ -131,18 +159,18 @@ impl HeadTable {
         let (key, value) = (&token[..eq], &token[eq + 1..]);
         let k = KEYS
             .iter()
-            .position(|&known| known == key)
+            .position(|&known| known.eq_ignore_ascii_case(key))
             .ok_or(Error::Parse)?;
-        if key == b"_HEAD_NAME" {
+        if k == NAME_KEY {
             let name = value
                 .strip_prefix(b"\"")
                 .and_then(|v| v.strip_suffix(b"\""))
                 .ok_or(Error::Parse)?;
-            if name.is_empty() || name.iter().any(|&b| b == b'"' || b == 0) {
-                return Err(Error::Parse);
-            }
             if name.len() > NAME_MAX {
                 return Err(Error::NameTooLong);
+            }
+            if !valid_name(name) {
+                return Err(Error::Parse);
             }
             if self.find(name).is_some() {
                 return Err(Error::Parse);
@@ -180,6 +208,38 @@ impl HeadTable {
         *slot.ok_or(Error::Parse)? = v;
         Ok(())
     }
+}
+
+/// Whether `name` can name an accessory: 1 to 31 printable ASCII characters other than the
+/// space and the quote. A control character (a tab, the CR of a CRLF file inside the
+/// quotes), a space (invisible when `_MIHEAD` is typed) or a byte outside ASCII (the
+/// control's character set is not UTF-8) would make a name that a CYCLE600 call cannot
+/// reliably match, so such names are refused rather than stored.
+///
+/// ```
+/// use cncrot::dialects::head_def::valid_name;
+/// assert!(valid_name(b"IFVW207S") && valid_name(b"UFK_600-A"));
+/// assert!(!valid_name(b"") && !valid_name(b"MY HEAD") && !valid_name(b"A\r"));
+/// ```
+pub fn valid_name(name: &[u8]) -> bool {
+    (1..=NAME_MAX).contains(&name.len()) && name.iter().all(|&b| b.is_ascii_graphic() && b != b'"')
+}
+
+/// The line without a block-skip mark (`/` or `/0` … `/9` before the block).
+fn skip_mark(line: &[u8]) -> &[u8] {
+    let start = line
+        .iter()
+        .position(|b| !b.is_ascii_whitespace())
+        .unwrap_or(line.len());
+    match line.get(start..) {
+        Some([b'/', d, rest @ ..]) if d.is_ascii_digit() => rest,
+        Some([b'/', rest @ ..]) => rest,
+        _ => line,
+    }
+}
+
+fn is_one_of(token: &[u8], words: &[&[u8]]) -> bool {
+    words.iter().any(|w| w.eq_ignore_ascii_case(token))
 }
 
 fn is_label(token: &[u8]) -> bool {
@@ -384,6 +444,52 @@ END:
                 core::str::from_utf8(text)
             );
         }
+    }
+
+    /// The choices "as the control reads a part program", one by one.
+    #[test]
+    fn read_as_the_control_reads_it() {
+        // A UTF-8 byte-order mark (an editor on Windows) is skipped.
+        let t = HeadTable::parse(b"\xEF\xBB\xBFN10 _HEAD_NAME=\"A\"\n").unwrap();
+        assert!(t.find(b"A").is_some());
+        // Keywords in any case; the name itself is compared exactly.
+        let t =
+            HeadTable::parse(b"n10 tz7:\n_head_name=\"Ab\" _Delta_L1=2\ngotof end\nm17\n").unwrap();
+        assert_eq!(t.find(b"Ab").unwrap().delta[0], 2.0);
+        assert!(t.find(b"AB").is_none());
+        // A block marked for skipping is read as executed (skip levels off).
+        let t = HeadTable::parse(b"/N10 _HEAD_NAME=\"A\"\n/3 N20 _DELTA_L2=5\n / _DELTA_H1=6\n")
+            .unwrap();
+        assert_eq!(t.find(b"A").unwrap().delta, [0.0, 5.0, 6.0]);
+        // Reading ends with the block that ends the program; that block itself is read.
+        for end in ["M30", "RET", "M17", "M2", "M02", "m30"] {
+            let text =
+                format!("_HEAD_NAME=\"A\"\nN90 _DELTA_L1=1 {end}\n_HEAD_NAME=\"B\"\nGARBAGE\n");
+            let t = HeadTable::parse(text.as_bytes()).unwrap();
+            assert_eq!((t.count, t.find(b"A").unwrap().delta[0]), (1, 1.0), "{end}");
+        }
+        // Names: printable ASCII, no spaces, no control characters, nothing outside ASCII.
+        for bad in [
+            &b"\"MY HEAD\""[..],
+            b"\"A\tB\"",
+            b"\"A\rB\"",
+            b"\"\xC3\x84\"",
+            b"\"\xFF\"",
+        ] {
+            let mut text = b"_HEAD_NAME=".to_vec();
+            text.extend_from_slice(bad);
+            assert_eq!(
+                HeadTable::parse(&text).map(|t| t.count),
+                Err(ParseError {
+                    error: Error::Parse,
+                    line: 1
+                }),
+                "{bad:?}"
+            );
+        }
+        // A CRLF file: the CR ends the line, not the name.
+        let t = HeadTable::parse(b"_HEAD_NAME=\"A\"\r\n_DELTA_L1=3\r\n").unwrap();
+        assert_eq!(t.find(b"A").unwrap().delta[0], 3.0);
     }
 
     #[test]

@@ -2,9 +2,9 @@
 //! is validated when read (a state restored from storage may be corrupt).
 
 use super::{cncrot_status, guard, non_null};
-use crate::dialects::cycle600::{self, Call, Results, State};
-use crate::dialects::head_def::{Head, HeadTable, CAPACITY, NAME_MAX};
-use crate::{Convention, Error, Frame};
+use crate::dialects::cycle600::{self, Call, HeadLookup, Results, State};
+use crate::dialects::head_def::{valid_name, HeadTable, CAPACITY, NAME_MAX};
+use crate::{crc32, Convention, Error, Frame};
 use core::ffi::c_char;
 
 /// Size of a name field, including its terminating NUL: names have at most 31 bytes.
@@ -12,14 +12,26 @@ pub const CNCROT_NAME_SIZE: usize = 32;
 /// How many accessories a `cncrot_head_table` holds.
 pub const CNCROT_HEAD_TABLE_CAPACITY: usize = 16;
 
+/// The value of `cncrot_cycle600_gud::format` in every state this version writes.
+pub const CNCROT_CYCLE600_GUD_FORMAT: u32 = 0x4336_3031;
+
 /// CYCLE600's state, the controller's GUD block `MGUD_CYC600`: plain data, owned by the
 /// caller, that can be stored as bytes and restored after a restart. A zeroed struct is the
 /// valid initial state (no rotation yet). Its first six fields are the paper's results.
+///
+/// Layout (216 bytes, no padding, native byte order): `cyc600_1` at 0, `cyc600_2..4` at
+/// 32/40/48, `cyc600_5`/`cyc600_6` at 56/60, `frame` at 64, `active` 192, `rot_inv` 196,
+/// `retr_z` 200, `reserved` 204, `format` 208, `checksum` 212. A state is accepted on entry
+/// only if it is all zero bytes (the initial state) or has `format` =
+/// `CNCROT_CYCLE600_GUD_FORMAT`, `checksum` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes
+/// 0..212, and well-formed fields; anything else is `CNCROT_STATUS_BAD_STATE`. So every
+/// single-bit flip, random bytes and an edited field are refused, and a state is never
+/// half-used. Treat it as opaque: to change it, call `cncrot_cycle600`.
 #[allow(non_camel_case_types)]
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct cncrot_cycle600_gud {
-    /// `_CYC600_1`: the accessory's name (`_MIHEAD`), NUL-terminated.
+    /// `_CYC600_1`: the accessory's name (`_MIHEAD`), NUL-terminated, zero-filled after.
     pub cyc600_1: [c_char; CNCROT_NAME_SIZE],
     /// `_CYC600_2`: first output angle, degrees.
     pub cyc600_2: f64,
@@ -41,6 +53,24 @@ pub struct cncrot_cycle600_gud {
     pub retr_z: i32,
     /// Zero.
     pub reserved: i32,
+    /// `CNCROT_CYCLE600_GUD_FORMAT` once a call has stored a result; 0 in the initial state.
+    pub format: u32,
+    /// CRC-32 of the 212 bytes before it; 0 in the initial state.
+    pub checksum: u32,
+}
+
+/// The bytes the checksum covers: everything before it.
+const CHECKED: usize = core::mem::offset_of!(cncrot_cycle600_gud, checksum);
+const GUD_SIZE: usize = core::mem::size_of::<cncrot_cycle600_gud>();
+// No padding anywhere (every byte is a field's, so every byte is covered), and the layout
+// the documentation states.
+const _: () = assert!(CHECKED == 212 && GUD_SIZE == 216);
+
+/// The state's bytes.
+fn gud_bytes(g: &cncrot_cycle600_gud) -> &[u8; GUD_SIZE] {
+    // SAFETY: a plain repr(C) struct of integers and doubles without padding (asserted
+    // above): all of its bytes are initialised, and u8 has no alignment requirement.
+    unsafe { &*(g as *const cncrot_cycle600_gud).cast::<[u8; GUD_SIZE]>() }
 }
 
 /// One technological accessory of the HEAD_DEF cycle.
@@ -103,32 +133,46 @@ fn bit(v: i32) -> Result<bool, Error> {
     }
 }
 
-fn table_from_c(t: &cncrot_head_table) -> Result<HeadTable, Error> {
-    let count = usize::try_from(t.count).map_err(|_| Error::BadArgument)?;
-    if count > CAPACITY {
-        return Err(Error::BadArgument);
-    }
-    let mut table = HeadTable {
-        count,
-        ..HeadTable::default()
-    };
-    for (h, c) in table.heads.iter_mut().zip(&t.heads).take(count) {
-        let (name, len) = field_name(&c.name, Error::BadArgument)?;
-        if !c.delta.iter().chain(&c.offsets).all(|x| x.is_finite()) {
-            return Err(Error::NotFinite);
+/// The caller's head table, read in place: a lookup checks the count and the entry it
+/// finds, nothing else, so a call costs the same whatever the table holds.
+struct CHeads<'a>(&'a cncrot_head_table);
+
+impl HeadLookup for CHeads<'_> {
+    fn contains(&self, name: &[u8]) -> Result<bool, Error> {
+        let t = self.0;
+        let count = usize::try_from(t.count)
+            .ok()
+            .filter(|&c| c <= CAPACITY)
+            .ok_or(Error::BadArgument)?;
+        if t.reserved != 0 {
+            return Err(Error::BadArgument);
         }
-        *h = Head {
-            name,
-            len: len as u8,
-            allowed: bit(c.allowed)?,
-            delta: c.delta,
-            offsets: c.offsets,
-        };
+        for h in t.heads.iter().take(count) {
+            // A match is the name's bytes followed by the NUL; an entry without a NUL in
+            // its field never matches.
+            let matches = h.name.get(name.len()) == Some(&0)
+                && h.name.iter().zip(name).all(|(&c, &n)| c as u8 == n);
+            if matches {
+                bit(h.allowed)?;
+                if h.reserved != 0 {
+                    return Err(Error::BadArgument);
+                }
+                if !h.delta.iter().chain(&h.offsets).all(|x| x.is_finite()) {
+                    return Err(Error::NotFinite);
+                }
+                return Ok(true);
+            }
+        }
+        Ok(false)
     }
-    Ok(table)
 }
 
-fn table_to_c(t: &HeadTable) -> cncrot_head_table {
+/// Writes the parsed table into the caller's, entry by entry (no second full copy on the
+/// stack).
+///
+/// # Safety
+/// `out` is non-NULL and points to a writable `cncrot_head_table`.
+unsafe fn write_table(out: *mut cncrot_head_table, t: &HeadTable) {
     let empty = cncrot_head {
         name: [0; CNCROT_NAME_SIZE],
         allowed: 0,
@@ -136,53 +180,69 @@ fn table_to_c(t: &HeadTable) -> cncrot_head_table {
         delta: [0.0; 3],
         offsets: [0.0; 6],
     };
-    let mut c = cncrot_head_table {
-        count: t.count as i32,
-        reserved: 0,
-        heads: [empty; CNCROT_HEAD_TABLE_CAPACITY],
-    };
-    for (c, h) in c.heads.iter_mut().zip(&t.heads).take(t.count) {
-        *c = cncrot_head {
-            name: to_field(h.name()),
-            allowed: h.allowed as i32,
-            delta: h.delta,
-            offsets: h.offsets,
-            ..empty
+    let count = t.count.min(CAPACITY);
+    core::ptr::addr_of_mut!((*out).count).write_unaligned(count as i32);
+    core::ptr::addr_of_mut!((*out).reserved).write_unaligned(0);
+    let heads = core::ptr::addr_of_mut!((*out).heads).cast::<cncrot_head>();
+    for k in 0..CNCROT_HEAD_TABLE_CAPACITY {
+        let entry = match t.heads.get(k) {
+            Some(h) if k < count => cncrot_head {
+                name: to_field(h.name()),
+                allowed: h.allowed as i32,
+                delta: h.delta,
+                offsets: h.offsets,
+                ..empty
+            },
+            _ => empty,
         };
+        heads.add(k).write_unaligned(entry);
     }
-    c
 }
 
+/// The state in a stored `cncrot_cycle600_gud`, or `BadState` unless it is the initial
+/// state (all zero bytes) or one this library wrote (format, checksum, and well-formed).
 fn state_from_c(g: &cncrot_cycle600_gud) -> Result<State, Error> {
-    let (name, len) = field_name(&g.cyc600_1, Error::BadArgument)?;
-    let (results, frame) = if bit(g.active)? {
-        let h: [[f64; 4]; 4] =
-            core::array::from_fn(|i| core::array::from_fn(|j| g.frame[4 * i + j]));
-        let frame = Frame::from_homogeneous(&h)?;
-        let convention =
-            Convention::from_c(g.cyc600_5, g.cyc600_6).map_err(|_| Error::BadArgument)?;
-        let angles = [g.cyc600_2, g.cyc600_3, g.cyc600_4];
-        if !angles.iter().all(|x| x.is_finite()) {
-            return Err(Error::NotFinite);
-        }
-        (
-            Some(Results {
-                angles,
-                convention,
-                singular: false,
-            }),
-            frame,
-        )
-    } else {
-        (None, Frame::IDENTITY)
-    };
-    Ok(State {
+    let bytes = gud_bytes(g);
+    if g.format == 0 {
+        return if bytes.iter().all(|&b| b == 0) {
+            Ok(State::default())
+        } else {
+            Err(Error::BadState)
+        };
+    }
+    if g.format != CNCROT_CYCLE600_GUD_FORMAT || g.checksum != crc32(&bytes[..CHECKED]) {
+        return Err(Error::BadState);
+    }
+    // A state with a right checksum was written by this library; reading it strictly all
+    // the same refuses the one random state in 2^32 whose checksum matches by chance.
+    decode(g).ok_or(Error::BadState)
+}
+
+fn decode(g: &cncrot_cycle600_gud) -> Option<State> {
+    let (name, len) = field_name(&g.cyc600_1, Error::BadState).ok()?;
+    let zero_filled = g.cyc600_1.iter().skip(len).all(|&c| c == 0);
+    let name_ok = len == 0 || valid_name(name.get(..len)?);
+    if !zero_filled || !name_ok || g.active != 1 || g.reserved != 0 {
+        return None;
+    }
+    let h: [[f64; 4]; 4] = core::array::from_fn(|i| core::array::from_fn(|j| g.frame[4 * i + j]));
+    let frame = Frame::from_homogeneous(&h).ok()?;
+    let convention = Convention::from_c(g.cyc600_5, g.cyc600_6).ok()?;
+    let angles = [g.cyc600_2, g.cyc600_3, g.cyc600_4];
+    if !angles.iter().all(|x| x.is_finite()) {
+        return None;
+    }
+    Some(State {
         name,
         name_len: len as u8,
-        results,
+        results: Some(Results {
+            angles,
+            convention,
+            singular: false,
+        }),
         frame,
-        rot_inv: bit(g.rot_inv)?,
-        retr_z: bit(g.retr_z)?,
+        rot_inv: bit(g.rot_inv).ok()?,
+        retr_z: bit(g.retr_z).ok()?,
     })
 }
 
@@ -198,7 +258,7 @@ fn state_to_c(s: &State) -> cncrot_cycle600_gud {
         ),
         None => ([0.0; 3], (0, 0)),
     };
-    cncrot_cycle600_gud {
+    let mut g = cncrot_cycle600_gud {
         cyc600_1: to_field(s.name()),
         cyc600_2: angles[0],
         cyc600_3: angles[1],
@@ -210,7 +270,11 @@ fn state_to_c(s: &State) -> cncrot_cycle600_gud {
         rot_inv: s.rot_inv as i32,
         retr_z: s.retr_z as i32,
         reserved: 0,
-    }
+        format: CNCROT_CYCLE600_GUD_FORMAT,
+        checksum: 0,
+    };
+    g.checksum = crc32(&gud_bytes(&g)[..CHECKED]);
+    g
 }
 
 /// `sizeof(cncrot_cycle600_gud)` as the library sees it: compare with the caller's
@@ -259,7 +323,7 @@ pub unsafe extern "C" fn cncrot_head_table_parse(
         let bytes = core::slice::from_raw_parts(text.cast::<u8>(), len);
         let (status, line) = match HeadTable::parse(bytes) {
             Ok(t) => {
-                table.write_unaligned(table_to_c(&t));
+                write_table(table, &t);
                 (cncrot_status::Ok, 0)
             }
             Err(e) => (
@@ -334,11 +398,15 @@ pub unsafe extern "C" fn cncrot_cycle600(
             }
         }
         let len = len.ok_or(cncrot_status::NameTooLong)?;
-        let table = if heads.is_null() {
-            None
-        } else {
-            Some(table_from_c(&heads.read_unaligned())?)
-        };
+        // The table is read in place (only the entry that matches), so it must be aligned
+        // like the C type; a misaligned pointer is refused rather than read.
+        if heads.align_offset(core::mem::align_of::<cncrot_head_table>()) != 0 {
+            return Err(cncrot_status::BadArgument);
+        }
+        // SAFETY: NULL gives None; otherwise aligned (checked) and, as the caller
+        // guarantees, pointing to a table, whose integer and double fields are valid for
+        // every bit pattern.
+        let lookup = heads.as_ref().map(CHeads);
         let state = state_from_c(&gud.read_unaligned())?;
         let call = Call {
             inexin,
@@ -354,7 +422,8 @@ pub unsafe extern "C" fn cncrot_cycle600(
             rot_inv,
             retr_z,
         };
-        let next = cycle600::cycle600(&state, table.as_ref(), &call)?;
+        let heads = lookup.as_ref().map(|l| l as &dyn HeadLookup);
+        let next = cycle600::cycle600_in(&state, heads, &call)?;
         gud.write_unaligned(state_to_c(&next));
         let singular = next.results.is_some_and(|r| r.singular);
         Ok(super::status_of(singular))

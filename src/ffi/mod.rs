@@ -62,6 +62,10 @@ pub enum cncrot_status {
     TableFull = -13,
     /// A result would overflow (finite inputs too large, e.g. translations near `DBL_MAX`).
     OutOfRange = -14,
+    /// A restored `cncrot_cycle600_gud` is not one this library wrote: its format field or
+    /// checksum is wrong (storage corruption, an edited field, another version), or it is
+    /// neither all zero bytes nor well-formed.
+    BadState = -15,
     /// Internal failure (a caught panic): a bug in cncrot, please report it.
     Internal = -100,
 }
@@ -87,6 +91,7 @@ impl From<Error> for cncrot_status {
             Error::Parse => cncrot_status::Parse,
             Error::TableFull => cncrot_status::TableFull,
             Error::OutOfRange => cncrot_status::OutOfRange,
+            Error::BadState => cncrot_status::BadState,
         }
     }
 }
@@ -118,6 +123,7 @@ pub extern "C" fn cncrot_status_str(status: i32) -> *const c_char {
         -12 => c"CNCROT_STATUS_PARSE: HEAD_DEF text could not be read",
         -13 => c"CNCROT_STATUS_TABLE_FULL: head table is full",
         -14 => c"CNCROT_STATUS_OUT_OF_RANGE: a result is too large to represent",
+        -15 => c"CNCROT_STATUS_BAD_STATE: stored CYCLE600 state is corrupt, edited or from another version (format or checksum)",
         -100 => c"CNCROT_STATUS_INTERNAL: internal failure (caught panic), please report",
         _ => c"CNCROT_STATUS_UNKNOWN: not a cncrot status",
     };
@@ -257,6 +263,7 @@ mod tests {
             S::Parse,
             S::TableFull,
             S::OutOfRange,
+            S::BadState,
             S::Internal,
         ];
         for s in all {

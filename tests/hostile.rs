@@ -1,0 +1,813 @@
+//! Regression tests for what a hostile caller found (each failed before its fix): validation
+//! that NaN slipped through, non-finite or corrupt CYCLE600 states accepted, additive chains
+//! drifting away from orthonormal, huge angles giving another rotation, -0 from
+//! `frame_inverse`, the head table read whole on every call.
+//!
+//! Expected values come from an oracle independent of the library (double-double arithmetic
+//! for `MᵀM − I`, Rust's exact `%` for the reduction of angles) or from identities.
+
+use cncrot::ffi::*;
+use std::ptr::{null, null_mut};
+
+const NOT_A_ROTATION: i32 = cncrot_status::NotARotation as i32;
+const BAD_STATE: i32 = cncrot_status::BadState as i32;
+const OUT_OF_RANGE: i32 = cncrot_status::OutOfRange as i32;
+const UNKNOWN_HEAD: i32 = cncrot_status::UnknownHead as i32;
+const NOT_FINITE: i32 = cncrot_status::NotFinite as i32;
+const BAD_ARGUMENT: i32 = cncrot_status::BadArgument as i32;
+
+/// xorshift64: deterministic inputs, no dependency.
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.unit()
+    }
+    fn sign(&mut self) -> f64 {
+        if self.next() & 1 == 0 {
+            1.0
+        } else {
+            -1.0
+        }
+    }
+}
+
+fn matrix(intrinsic: i32, seq: i32, a: [f64; 3]) -> [f64; 9] {
+    let mut m = [0.0; 9];
+    assert_eq!(
+        unsafe { cncrot_matrix_from_angles(intrinsic, seq, a.as_ptr(), m.as_mut_ptr()) },
+        0
+    );
+    m
+}
+
+fn max_diff(a: &[f64], b: &[f64]) -> f64 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
+}
+
+// ---- the oracle: max |MᵀM − I| in double-double arithmetic ----------------------------
+
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+fn dd_add(x: (f64, f64), y: f64) -> (f64, f64) {
+    let (s, e) = two_sum(x.0, y);
+    let (hi, lo) = two_sum(s, e + x.1);
+    (hi, lo)
+}
+
+/// `max |MᵀM − I|` to about 1e-30 relative, for elements of magnitude at most 1.5 (larger
+/// ones make a column norm exceed 1.5 and the matrix is no rotation: `None`).
+fn oracle_error(m: &[f64; 9]) -> Option<f64> {
+    if m.iter().any(|x| x.abs() > 1.5 || x.is_nan()) {
+        return None;
+    }
+    let mut worst: f64 = 0.0;
+    for i in 0..3 {
+        for j in 0..3 {
+            let mut acc = (if i == j { -1.0 } else { 0.0 }, 0.0);
+            for k in 0..3 {
+                let (a, b) = (m[3 * k + i], m[3 * k + j]);
+                let p = a * b;
+                let e = a.mul_add(b, -p); // exact error of the product
+                acc = dd_add(acc, p);
+                acc = dd_add(acc, e);
+            }
+            worst = worst.max((acc.0 + acc.1).abs());
+        }
+    }
+    Some(worst)
+}
+
+fn det(m: &[f64; 9]) -> f64 {
+    m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6])
+        + m[2] * (m[3] * m[7] - m[4] * m[6])
+}
+
+/// What the oracle says of `m`: a rotation within the tolerance (with a margin either side
+/// for the rounding of the library's own check), clearly not one, or at the boundary.
+#[derive(PartialEq, Debug)]
+enum Verdict {
+    Rotation,
+    NotARotation,
+    Boundary,
+}
+
+fn verdict(m: &[f64; 9]) -> Verdict {
+    match oracle_error(m) {
+        None => Verdict::NotARotation,
+        Some(e) if e > CNCROT_ROTATION_TOLERANCE + 1e-15 => Verdict::NotARotation,
+        // Orthonormal within 1e-3 means |det| is within 1e-2 of 1: its sign is certain.
+        Some(_) if det(m) < 0.0 => Verdict::NotARotation,
+        Some(e) if e < CNCROT_ROTATION_TOLERANCE - 1e-15 => Verdict::Rotation,
+        Some(_) => Verdict::Boundary,
+    }
+}
+
+/// Matrices a hostile caller makes: rotations scaled by any power of two or ten, random
+/// elements of any magnitude, rotations perturbed up to and past the tolerance, with one
+/// element huge, tiny or subnormal, columns of mixed scale, reflections.
+fn hostile_matrix(rng: &mut Rng) -> [f64; 9] {
+    let r = matrix(
+        1,
+        57,
+        [
+            rng.range(-180.0, 180.0),
+            rng.range(-180.0, 180.0),
+            rng.range(-180.0, 180.0),
+        ],
+    );
+    match rng.next() % 8 {
+        0 => {
+            let s = 2f64.powi((rng.next() % 2098) as i32 - 1074);
+            r.map(|x| x * s)
+        }
+        1 => {
+            let s = 10f64.powf(rng.range(-320.0, 308.0));
+            r.map(|x| x * s)
+        }
+        2 => core::array::from_fn(|_| rng.sign() * 10f64.powf(rng.range(-330.0, 308.2))),
+        3 => {
+            let d = 10f64.powf(rng.range(-6.0, -2.0));
+            let mut m = r;
+            for x in &mut m {
+                *x += rng.range(-d, d);
+            }
+            m
+        }
+        4 => {
+            // One column scaled near the tolerance: |MᵀM − I| = |(1 + t)² − 1| on the diagonal.
+            let t = rng.range(-1.5e-3, 1.5e-3) / 2.0;
+            let c = (rng.next() % 3) as usize;
+            let mut m = r;
+            for k in 0..3 {
+                m[3 * k + c] *= 1.0 + t;
+            }
+            m
+        }
+        5 => {
+            let mut m = r;
+            let v = [1e300, 1e155, 1e-300, 4.9e-324, f64::MAX, 1.0 + 1e-3, 2.0];
+            m[(rng.next() % 9) as usize] = rng.sign() * v[(rng.next() % v.len() as u64) as usize];
+            m
+        }
+        6 => {
+            // Two columns of a rotation, the third of another scale.
+            let s = 10f64.powf(rng.range(-200.0, 200.0));
+            let c = (rng.next() % 3) as usize;
+            let mut m = r;
+            for k in 0..3 {
+                m[3 * k + c] *= s;
+            }
+            m
+        }
+        _ => {
+            let mut m = r;
+            let c = (rng.next() % 3) as usize;
+            for k in 0..3 {
+                m[3 * k + c] = -m[3 * k + c];
+            }
+            m
+        }
+    }
+}
+
+#[test]
+fn check_rotation_accepts_no_non_rotation_against_a_double_double_oracle() {
+    let mut rng = Rng(0x5DEE_CE66_D1CE_4E5B);
+    let (mut accepted, mut refused, mut boundary) = (0, 0, 0);
+    for _ in 0..200_000 {
+        let m = hostile_matrix(&mut rng);
+        let s = unsafe { cncrot_check_rotation(m.as_ptr()) };
+        match verdict(&m) {
+            Verdict::Rotation => {
+                assert_eq!(s, 0, "a rotation refused: {m:?}");
+                accepted += 1;
+            }
+            Verdict::NotARotation => {
+                assert_eq!(s, NOT_A_ROTATION, "{m:?}");
+                refused += 1;
+            }
+            Verdict::Boundary => boundary += 1,
+        }
+    }
+    // The generator reaches both sides (a test that cannot fail is a defect).
+    assert!(
+        accepted > 10_000 && refused > 10_000,
+        "{accepted} {refused} {boundary}"
+    );
+}
+
+/// The issue's matrix: orthogonal columns of length 1.4e155, whose `MᵀM` overflows to
+/// `∞ − ∞ = NaN`. Every function that takes a rotation refuses it as not a rotation.
+#[test]
+fn a_matrix_whose_gram_matrix_overflows_is_refused_everywhere() {
+    let m = [1e155, -1e155, 0.0, 1e155, 1e155, 0.0, 0.0, 0.0, 1.0];
+    let f = [
+        1e155, -1e155, 0.0, 0.0, 1e155, 1e155, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
+    ];
+    let idf = [
+        1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
+    ];
+    let v = [1.0, 2.0, 3.0];
+    let sentinel = -12345.0;
+    let mut out3 = [sentinel; 3];
+    let mut out9 = [sentinel; 9];
+    let mut out16 = [sentinel; 16];
+    let nar = NOT_A_ROTATION;
+    unsafe {
+        assert_eq!(cncrot_check_rotation(m.as_ptr()), nar);
+        assert_eq!(
+            cncrot_angles_from_matrix(1, 57, m.as_ptr(), out3.as_mut_ptr()),
+            nar
+        );
+        assert_eq!(
+            cncrot_closest_angles(1, 57, m.as_ptr(), v.as_ptr(), out3.as_mut_ptr()),
+            nar
+        );
+        assert_eq!(
+            cncrot_rotate_vector(m.as_ptr(), v.as_ptr(), out3.as_mut_ptr()),
+            nar
+        );
+        assert_eq!(
+            cncrot_rotate_vector_inverse(m.as_ptr(), v.as_ptr(), out3.as_mut_ptr()),
+            nar
+        );
+        assert_eq!(
+            cncrot_add_rotation(1, 57, v.as_ptr(), m.as_ptr(), out9.as_mut_ptr()),
+            nar
+        );
+        assert_eq!(cncrot_frame_inverse(f.as_ptr(), out16.as_mut_ptr()), nar);
+        assert_eq!(
+            cncrot_frame_compose(f.as_ptr(), idf.as_ptr(), out16.as_mut_ptr()),
+            nar
+        );
+        assert_eq!(
+            cncrot_frame_compose(idf.as_ptr(), f.as_ptr(), out16.as_mut_ptr()),
+            nar
+        );
+        assert_eq!(
+            cncrot_frame_transform_point(f.as_ptr(), v.as_ptr(), out3.as_mut_ptr()),
+            nar
+        );
+    }
+    assert!(out3
+        .iter()
+        .chain(&out9)
+        .chain(&out16)
+        .all(|&x| x == sentinel));
+}
+
+// ---- CYCLE600 states --------------------------------------------------------------------
+
+fn call(gud: *mut cncrot_cycle600_gud, heads: *const cncrot_head_table, rot_ad: i32) -> i32 {
+    unsafe {
+        cncrot_cycle600(
+            gud,
+            heads,
+            0,
+            c"UFK600".as_ptr(),
+            1,
+            57,
+            1.0,
+            2.0,
+            3.0,
+            30.0,
+            45.0,
+            60.0,
+            0.0,
+            0.0,
+            0.0,
+            1,
+            39,
+            rot_ad,
+            0,
+            0,
+        )
+    }
+}
+
+fn bytes_of(g: &cncrot_cycle600_gud) -> Vec<u8> {
+    let p = (g as *const cncrot_cycle600_gud).cast::<u8>();
+    unsafe { std::slice::from_raw_parts(p, size_of::<cncrot_cycle600_gud>()) }.to_vec()
+}
+
+fn from_bytes(b: &[u8]) -> cncrot_cycle600_gud {
+    assert_eq!(b.len(), size_of::<cncrot_cycle600_gud>());
+    unsafe { std::ptr::read_unaligned(b.as_ptr().cast()) }
+}
+
+/// Re-seals a state as the library would: format and CRC-32 over the 212 bytes before the
+/// checksum. The CRC here is written out bit by bit, independently of the library's table.
+fn sealed(mut g: cncrot_cycle600_gud) -> cncrot_cycle600_gud {
+    g.format = CNCROT_CYCLE600_GUD_FORMAT;
+    let bytes = bytes_of(&g);
+    let mut c = !0u32;
+    for &b in &bytes[..212] {
+        c ^= u32::from(b);
+        for _ in 0..8 {
+            c = if c & 1 != 0 {
+                (c >> 1) ^ 0xEDB8_8320
+            } else {
+                c >> 1
+            };
+        }
+    }
+    g.checksum = !c;
+    g
+}
+
+fn valid_state() -> cncrot_cycle600_gud {
+    let mut g: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
+    assert_eq!(call(&mut g, null(), 0), 0);
+    assert_eq!(call(&mut g, null(), 1), 0);
+    g
+}
+
+#[test]
+fn the_documented_layout_and_checksum() {
+    let g = valid_state();
+    assert_eq!(size_of::<cncrot_cycle600_gud>(), 216);
+    assert_eq!(cncrot_cycle600_gud_size(), 216);
+    assert_eq!(std::mem::offset_of!(cncrot_cycle600_gud, frame), 64);
+    assert_eq!(std::mem::offset_of!(cncrot_cycle600_gud, format), 208);
+    assert_eq!(std::mem::offset_of!(cncrot_cycle600_gud, checksum), 212);
+    // What the library wrote is what an independent CRC-32 gives.
+    assert_eq!(bytes_of(&sealed(g)), bytes_of(&g));
+    assert_eq!(g.active, 1);
+}
+
+#[test]
+fn every_single_bit_flip_of_a_state_is_refused_and_leaves_it_untouched() {
+    let zero: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
+    for base in [valid_state(), zero] {
+        let bytes = bytes_of(&base);
+        for bit in 0..8 * bytes.len() {
+            let mut b = bytes.clone();
+            b[bit / 8] ^= 1 << (bit % 8);
+            let mut g = from_bytes(&b);
+            assert_eq!(call(&mut g, null(), 1), BAD_STATE, "bit {bit}");
+            assert_eq!(bytes_of(&g), b, "bit {bit}: state changed");
+        }
+    }
+}
+
+#[test]
+fn random_states_are_refused() {
+    let mut rng = Rng(0xC0FF_EE00_1234_5678);
+    for k in 0..100_000 {
+        let b: Vec<u8> = (0..216).map(|_| rng.next() as u8).collect();
+        let mut g = from_bytes(&b);
+        if k % 2 == 0 {
+            // With the right format and checksum but random fields: only a well-formed state
+            // may pass, and a random one is not.
+            g = sealed(g);
+        }
+        let before = bytes_of(&g);
+        assert_eq!(call(&mut g, null(), 1), BAD_STATE);
+        assert_eq!(bytes_of(&g), before);
+    }
+}
+
+/// A correctly sealed state whose frame has the overflowing shape: refused, never turned
+/// into NaN angles stored with status 0.
+#[test]
+fn a_sealed_state_with_an_overflowing_frame_is_refused() {
+    let mut g = valid_state();
+    g.frame[..3].copy_from_slice(&[1e155, -1e155, 0.0]);
+    g.frame[4..7].copy_from_slice(&[1e155, 1e155, 0.0]);
+    let mut g = sealed(g);
+    let before = bytes_of(&g);
+    assert_eq!(call(&mut g, null(), 1), BAD_STATE);
+    assert_eq!(bytes_of(&g), before);
+}
+
+#[test]
+fn an_inactive_flag_does_not_hide_a_stored_rotation() {
+    let mut g = valid_state();
+    g.active = 0;
+    let mut g = sealed(g);
+    assert_eq!(call(&mut g, null(), 1), BAD_STATE);
+}
+
+// ---- chains -----------------------------------------------------------------------------
+
+const CHAIN: usize = 1_000_000;
+
+#[test]
+fn a_million_additive_rotations_stay_orthonormal() {
+    let mut rng = Rng(0x1234_5678_9ABC_DEF1);
+    let mut m = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+    let mut worst: f64 = 0.0;
+    for k in 0..CHAIN {
+        let a = [
+            rng.range(-5.0, 5.0),
+            rng.range(-5.0, 5.0),
+            rng.range(-5.0, 5.0),
+        ];
+        let s = unsafe {
+            cncrot_add_rotation((k % 2) as i32, 57, a.as_ptr(), m.as_ptr(), m.as_mut_ptr())
+        };
+        assert_eq!(s, 0);
+        if k % 1000 == 999 {
+            worst = worst.max(oracle_error(&m).unwrap());
+        }
+    }
+    assert!(worst <= 1e-15, "{worst:e}");
+}
+
+#[test]
+fn a_million_additive_cycle600_calls_stay_orthonormal() {
+    let mut rng = Rng(0x0F0F_1234_5678_9ABC);
+    let mut g: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
+    let mut worst: f64 = 0.0;
+    for k in 0..CHAIN {
+        let s = unsafe {
+            cncrot_cycle600(
+                &mut g,
+                null(),
+                (k % 2) as i32,
+                c"H".as_ptr(),
+                1,
+                57,
+                0.0,
+                0.0,
+                0.0,
+                rng.range(-5.0, 5.0),
+                rng.range(-5.0, 5.0),
+                rng.range(-5.0, 5.0),
+                0.0,
+                0.0,
+                0.0,
+                1,
+                39,
+                1,
+                0,
+                0,
+            )
+        };
+        assert!(s >= 0);
+        if k % 1000 == 999 {
+            let r: [f64; 9] = core::array::from_fn(|i| g.frame[4 * (i / 3) + i % 3]);
+            worst = worst.max(oracle_error(&r).unwrap());
+        }
+    }
+    assert!(worst <= 1e-15, "{worst:e}");
+}
+
+/// Composing and inverting frames also re-orthonormalises: a chain of composed frames does
+/// not drift either.
+#[test]
+fn composed_frames_stay_orthonormal() {
+    let mut rng = Rng(0xABCD_EF01_2345_6789);
+    let mut f = [
+        1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
+    ];
+    for _ in 0..100_000 {
+        let a = [rng.range(-5.0, 5.0), rng.range(-5.0, 5.0), 0.0];
+        let mut step = [0.0; 16];
+        unsafe {
+            assert_eq!(
+                cncrot_frame_from_angles(
+                    1,
+                    57,
+                    a.as_ptr(),
+                    a.as_ptr(),
+                    a.as_ptr(),
+                    step.as_mut_ptr()
+                ),
+                0
+            );
+            assert_eq!(
+                cncrot_frame_compose(f.as_ptr(), step.as_ptr(), f.as_mut_ptr()),
+                0
+            );
+        }
+    }
+    let r: [f64; 9] = core::array::from_fn(|i| f[4 * (i / 3) + i % 3]);
+    assert!(oracle_error(&r).unwrap() <= 1e-15);
+}
+
+/// A matrix accepted at the edge of the tolerance comes out of `add_rotation` as an
+/// orthonormal one (the nearest rotation), not with its distortion carried along.
+#[test]
+#[allow(clippy::approx_constant)] // the paper's printed digits
+fn additive_rotation_of_a_four_decimal_matrix_is_orthonormal() {
+    // The paper's 4-decimal matrix (extrinsic X, Y, Z = 30, 45, 60).
+    let m = [
+        0.3536, -0.5732, 0.7392, 0.6124, 0.7392, 0.2803, -0.7071, 0.3536, 0.6124,
+    ];
+    assert!(oracle_error(&m).unwrap() > 1e-5);
+    let mut out = [0.0; 9];
+    let z = [0.0, 0.0, 0.0];
+    assert_eq!(
+        unsafe { cncrot_add_rotation(1, 57, z.as_ptr(), m.as_ptr(), out.as_mut_ptr()) },
+        0
+    );
+    assert!(oracle_error(&out).unwrap() <= 1e-15);
+    assert!(max_diff(&out, &m) < 1e-4);
+}
+
+// ---- huge angles ------------------------------------------------------------------------
+
+/// Angles of every magnitude up to f64::MAX, with the values where rounding bites.
+fn huge_angle(rng: &mut Rng) -> f64 {
+    let special = [
+        f64::MAX,
+        2f64.powi(55),
+        2f64.powi(55) + 8.0,
+        2f64.powi(53) + 2.0,
+        1e15,
+        1e300,
+        65_535.0,
+        65_536.0,
+        180.0,
+        -180.0,
+        0.0,
+    ];
+    match rng.next() % 4 {
+        0 => rng.sign() * special[(rng.next() % special.len() as u64) as usize],
+        _ => rng.sign() * 10f64.powf(rng.range(-3.0, 308.25)).min(f64::MAX),
+    }
+}
+
+/// Rust's `%` is C's `fmod`: exact, and independent of the library's own reduction.
+fn reduce(a: [f64; 3]) -> [f64; 3] {
+    a.map(|x| x % 360.0)
+}
+
+const CODES: [i32; 12] = [57, 45, 54, 30, 39, 27, 25, 29, 38, 46, 55, 59];
+
+#[test]
+fn every_export_that_takes_angles_gives_the_reduced_rotation_or_refuses() {
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    let r0 = matrix(1, 57, [10.0, 20.0, 30.0]);
+    for _ in 0..20_000 {
+        let a = [
+            huge_angle(&mut rng),
+            huge_angle(&mut rng),
+            huge_angle(&mut rng),
+        ];
+        let red = reduce(a);
+        let intrinsic = (rng.next() % 2) as i32;
+        let code = CODES[(rng.next() % 12) as usize];
+        let mut out = [0.0; 3];
+        let mut exp = [0.0; 3];
+        unsafe {
+            // Composition: bit for bit the matrix of the exactly reduced angles.
+            assert_eq!(
+                matrix(intrinsic, code, a),
+                matrix(intrinsic, code, red),
+                "{a:?}"
+            );
+            // Conversion: the same.
+            let s = cncrot_convert(intrinsic, code, a.as_ptr(), 1, 39, out.as_mut_ptr());
+            let t = cncrot_convert(intrinsic, code, red.as_ptr(), 1, 39, exp.as_mut_ptr());
+            assert_eq!((s, out.map(f64::to_bits)), (t, exp.map(f64::to_bits)));
+            // The second solution denotes the same rotation.
+            assert_eq!(
+                cncrot_second_solution(code, a.as_ptr(), out.as_mut_ptr()),
+                0
+            );
+            let d = max_diff(&matrix(intrinsic, code, out), &matrix(intrinsic, code, red));
+            assert!(d <= 4e-15, "second solution of {a:?}: {d:e}");
+            // Closest angles to a huge reference: the rotation, or OUT_OF_RANGE.
+            let m = matrix(intrinsic, code, red);
+            let s =
+                cncrot_closest_angles(intrinsic, code, m.as_ptr(), a.as_ptr(), out.as_mut_ptr());
+            if a.iter().all(|x| x.abs() < 65_000.0) {
+                assert!(s >= 0, "{a:?} refused");
+            }
+            if s >= 0 {
+                let d = max_diff(&matrix(intrinsic, code, out), &m);
+                assert!(d <= 2e-13, "closest to {a:?}: {out:?} off by {d:e}");
+                for (o, r) in out.iter().zip(&a) {
+                    assert!((o - r).abs() <= 360.0, "{o} far from {r}");
+                }
+            } else {
+                assert_eq!(s, OUT_OF_RANGE);
+            }
+            // Additive rotation and frames: bit for bit those of the reduced angles.
+            let (mut m1, mut m2) = ([0.0; 9], [0.0; 9]);
+            cncrot_add_rotation(intrinsic, code, a.as_ptr(), r0.as_ptr(), m1.as_mut_ptr());
+            cncrot_add_rotation(intrinsic, code, red.as_ptr(), r0.as_ptr(), m2.as_mut_ptr());
+            assert_eq!(m1, m2);
+            let p = [1.0, 2.0, 3.0];
+            let (mut f1, mut f2) = ([0.0; 16], [0.0; 16]);
+            cncrot_frame_from_angles(
+                intrinsic,
+                code,
+                a.as_ptr(),
+                p.as_ptr(),
+                p.as_ptr(),
+                f1.as_mut_ptr(),
+            );
+            cncrot_frame_from_angles(
+                intrinsic,
+                code,
+                red.as_ptr(),
+                p.as_ptr(),
+                p.as_ptr(),
+                f2.as_mut_ptr(),
+            );
+            assert_eq!(f1, f2);
+            cncrot_frame_about_point(intrinsic, code, a.as_ptr(), p.as_ptr(), f1.as_mut_ptr());
+            cncrot_frame_about_point(intrinsic, code, red.as_ptr(), p.as_ptr(), f2.as_mut_ptr());
+            assert_eq!(f1, f2);
+            // CYCLE600: the stored state of the reduced angles.
+            let (mut g1, mut g2): (cncrot_cycle600_gud, cncrot_cycle600_gud) =
+                (std::mem::zeroed(), std::mem::zeroed());
+            for (g, x) in [(&mut g1, a), (&mut g2, red)] {
+                cncrot_cycle600(
+                    g,
+                    null(),
+                    intrinsic,
+                    c"H".as_ptr(),
+                    1,
+                    code,
+                    0.0,
+                    0.0,
+                    0.0,
+                    x[0],
+                    x[1],
+                    x[2],
+                    0.0,
+                    0.0,
+                    0.0,
+                    1,
+                    39,
+                    0,
+                    0,
+                    0,
+                );
+            }
+            assert_eq!(bytes_of(&g1), bytes_of(&g2));
+        }
+    }
+}
+
+/// The issue's cases, by hand.
+#[test]
+fn huge_references_and_second_solutions() {
+    let m = matrix(1, 57, [10.0, 20.0, 30.0]);
+    let mut out = [7.0; 3];
+    unsafe {
+        for r in [1e15, f64::MAX, -f64::MAX, 70_000.0] {
+            let reference = [r, 0.0, 0.0];
+            let s = cncrot_closest_angles(1, 57, m.as_ptr(), reference.as_ptr(), out.as_mut_ptr());
+            assert_eq!(s, OUT_OF_RANGE, "{r:e}");
+            assert_eq!(out, [7.0; 3]);
+        }
+        // 2^55 ≡ 2^55 mod 360 = 128 (2^k mod 360 has period 12 from k = 3: 2^7 = 128);
+        // its second solution's first angle is 128 + 180 = 308 ≡ -52.
+        let a = [2f64.powi(55), 0.0, 0.0];
+        assert_eq!(cncrot_second_solution(57, a.as_ptr(), out.as_mut_ptr()), 0);
+        assert_eq!(out, [-52.0, 180.0, 180.0]);
+    }
+}
+
+// ---- small ones -------------------------------------------------------------------------
+
+#[test]
+fn frame_inverse_never_returns_negative_zero() {
+    // A valid frame with -0 elements (Z by 90° written with -0 where 0 stands).
+    let f = [
+        -0.0, -1.0, -0.0, 0.0, 1.0, -0.0, -0.0, -0.0, -0.0, -0.0, 1.0, -0.0, 0.0, 0.0, 0.0, 1.0,
+    ];
+    let mut out = [9.0; 16];
+    assert_eq!(
+        unsafe { cncrot_frame_inverse(f.as_ptr(), out.as_mut_ptr()) },
+        0
+    );
+    assert!(
+        out.iter().all(|x| x.to_bits() != (-0.0f64).to_bits()),
+        "{out:?}"
+    );
+    assert_eq!(out[1], 1.0);
+    assert_eq!(out[4], -1.0);
+}
+
+// ---- the head table ---------------------------------------------------------------------
+
+fn full_table() -> cncrot_head_table {
+    let mut text = String::new();
+    for k in 0..16 {
+        text.push_str(&format!("_HEAD_NAME=\"H{k}\" _DELTA_L1={k}\n"));
+    }
+    let mut t: cncrot_head_table = unsafe { std::mem::zeroed() };
+    let s =
+        unsafe { cncrot_head_table_parse(&mut t, text.as_ptr().cast(), text.len(), null_mut()) };
+    assert_eq!(s, 0);
+    t
+}
+
+fn call_head(t: *const cncrot_head_table, name: &std::ffi::CStr) -> i32 {
+    let mut g: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
+    unsafe {
+        cncrot_cycle600(
+            &mut g,
+            t,
+            0,
+            name.as_ptr(),
+            1,
+            57,
+            0.0,
+            0.0,
+            0.0,
+            1.0,
+            2.0,
+            3.0,
+            0.0,
+            0.0,
+            0.0,
+            1,
+            39,
+            0,
+            0,
+            0,
+        )
+    }
+}
+
+#[test]
+fn the_head_table_is_read_in_place_entry_by_entry() {
+    let t = full_table();
+    assert_eq!(call_head(&t, c"H15"), 0);
+    assert_eq!(call_head(&t, c"H16"), UNKNOWN_HEAD);
+    // Only the entry that matches is checked: a corrupt other entry does not matter, a
+    // corrupt matching one is refused.
+    let mut c = t;
+    c.heads[3].delta[0] = f64::NAN;
+    assert_eq!(call_head(&c, c"H15"), 0);
+    assert_eq!(call_head(&c, c"H3"), NOT_FINITE);
+    c.heads[3].allowed = 2;
+    assert_eq!(call_head(&c, c"H3"), BAD_ARGUMENT);
+    let mut c = t;
+    c.count = 17;
+    assert_eq!(call_head(&c, c"H0"), BAD_ARGUMENT);
+    c.count = -1;
+    assert_eq!(call_head(&c, c"H0"), BAD_ARGUMENT);
+    // A name field without its NUL never matches (and is never read past its 32 bytes).
+    let mut c = t;
+    c.heads[0].name = [b'A' as std::ffi::c_char; 32];
+    assert_eq!(call_head(&c, c"H0"), UNKNOWN_HEAD);
+    // A misaligned table is refused, not read.
+    let mut buf = vec![0u8; size_of::<cncrot_head_table>() + 8];
+    let p = buf.as_mut_ptr();
+    let off = p.align_offset(8) + 1;
+    unsafe {
+        std::ptr::copy_nonoverlapping(
+            (&t as *const cncrot_head_table).cast(),
+            p.add(off),
+            size_of::<cncrot_head_table>(),
+        )
+    };
+    let misaligned = unsafe { p.add(off) }.cast::<cncrot_head_table>();
+    assert_eq!(call_head(misaligned, c"H15"), BAD_ARGUMENT);
+}
+
+#[test]
+fn names_must_be_printable_ascii_without_spaces() {
+    let mut g: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
+    for bad in [c"MY HEAD", c"A\tB", c"A\r", c"\xC3\x84"] {
+        let s = unsafe {
+            cncrot_cycle600(
+                &mut g,
+                null(),
+                0,
+                bad.as_ptr(),
+                1,
+                57,
+                0.0,
+                0.0,
+                0.0,
+                1.0,
+                2.0,
+                3.0,
+                0.0,
+                0.0,
+                0.0,
+                1,
+                39,
+                0,
+                0,
+                0,
+            )
+        };
+        assert_eq!(s, BAD_ARGUMENT, "{bad:?}");
+    }
+}
