@@ -23,6 +23,8 @@ echo "== exported and imported symbols"
 failed=0
 bash c_tests/symbols.sh "$lib" exports || failed=1
 bash c_tests/symbols.sh "$rt" core || failed=1
+echo "== worst-case stack of every export"
+bash c_tests/stack.sh || failed=1
 # The check must be able to fail: the std build imports the allocator and the unwinder.
 if bash c_tests/symbols.sh "$lib" core >/dev/null; then
   echo "symbols: the core check passed the std build, which needs malloc: the check is broken"

@@ -26,6 +26,13 @@ fn from_bytes<T: Copy>(inp: &mut Input) -> T {
     }
 }
 
+/// The state with the format and checksum a state written by the library carries.
+fn sealed(mut g: cncrot_cycle600_gud) -> cncrot_cycle600_gud {
+    g.format = CNCROT_CYCLE600_GUD_FORMAT;
+    g.checksum = cncrot::crc32(&as_bytes(&g)[..212]);
+    g
+}
+
 fn as_bytes<T>(v: &T) -> Vec<u8> {
     // SAFETY: reads the object's own bytes.
     unsafe { std::slice::from_raw_parts((v as *const T).cast::<u8>(), size_of::<T>()).to_vec() }
@@ -76,6 +83,9 @@ fuzz_target!(|data: &[u8]| {
     let mut inp = Input(data);
     let mut gud: Box<cncrot_cycle600_gud> = match inp.u8() % 4 {
         0 => Box::new(from_bytes(&mut inp)),
+        // Arbitrary fields with the right format and checksum, so that the checks behind
+        // the checksum are reached too.
+        1 => Box::new(sealed(from_bytes(&mut inp))),
         // SAFETY: zeroed is the documented initial state.
         _ => Box::new(unsafe { zeroed() }),
     };
@@ -112,6 +122,7 @@ fuzz_target!(|data: &[u8]| {
         } else {
             let g = &*gud;
             assert_eq!(g.active, 1);
+            assert_eq!(as_bytes(&sealed(*g)), as_bytes(g), "state not sealed");
             assert!(g.cyc600_1.contains(&0), "name not terminated");
             assert!([g.cyc600_2, g.cyc600_3, g.cyc600_4]
                 .iter()

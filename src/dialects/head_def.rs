@@ -83,6 +83,18 @@ const KEYS: [&[u8]; 11] = [
 const NAME_KEY: usize = 10;
 
 impl HeadTable {
+    /// The empty table (the same as `HeadTable::default()`, usable in constants).
+    pub const EMPTY: HeadTable = HeadTable {
+        heads: [Head {
+            name: [0; NAME_MAX],
+            len: 0,
+            allowed: false,
+            delta: [0.0; 3],
+            offsets: [0.0; 6],
+        }; CAPACITY],
+        count: 0,
+    };
+
     /// Looks an accessory up by its exact name.
     pub fn find(&self, name: &[u8]) -> Option<&Head> {
         self.heads[..self.count.min(CAPACITY)]
@@ -109,6 +121,15 @@ impl HeadTable {
     /// ```
     pub fn parse(text: &[u8]) -> Result<HeadTable, ParseError> {
         let mut table = HeadTable::default();
+        table.read(text)?;
+        Ok(table)
+    }
+
+    /// [`HeadTable::parse`] into `self`, which must be empty; on an error it holds what was
+    /// read before the failing line. The C boundary fills one table in place this way
+    /// rather than moving a 1.8 KiB result around on the stack.
+    pub(crate) fn read(&mut self, text: &[u8]) -> Result<(), ParseError> {
+        let table = self;
         let text = text.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(text);
         for (index, raw) in text.split(|&b| b == b'\n').enumerate() {
             let fail = |error| ParseError {
@@ -151,7 +172,7 @@ impl HeadTable {
                 break;
             }
         }
-        Ok(table)
+        Ok(())
     }
 
     fn assign(&mut self, token: &[u8]) -> Result<(), Error> {

@@ -167,11 +167,29 @@ impl HeadLookup for CHeads<'_> {
     }
 }
 
+/// Parses into one table on the stack (1.8 KiB, filled in place), then writes it into the
+/// caller's only on success. Not inlined, so that no second table is laid out in the
+/// export's frame (stack bound of `cncrot_head_table_parse`).
+///
+/// # Safety
+/// `out` is non-NULL and points to a writable `cncrot_head_table`.
+#[inline(never)]
+unsafe fn parse_into(
+    out: *mut cncrot_head_table,
+    text: &[u8],
+) -> Result<(), crate::dialects::head_def::ParseError> {
+    let mut t = HeadTable::EMPTY;
+    t.read(text)?;
+    write_table(out, &t);
+    Ok(())
+}
+
 /// Writes the parsed table into the caller's, entry by entry (no second full copy on the
 /// stack).
 ///
 /// # Safety
 /// `out` is non-NULL and points to a writable `cncrot_head_table`.
+#[inline(never)]
 unsafe fn write_table(out: *mut cncrot_head_table, t: &HeadTable) {
     let empty = cncrot_head {
         name: [0; CNCROT_NAME_SIZE],
@@ -197,6 +215,25 @@ unsafe fn write_table(out: *mut cncrot_head_table, t: &HeadTable) {
         };
         heads.add(k).write_unaligned(entry);
     }
+}
+
+/// Reads the caller's state. Not inlined: the copy of the stored bytes lives in this frame
+/// only, which is gone before the cycle computes (stack bound of `cncrot_cycle600`).
+///
+/// # Safety
+/// `gud` is non-NULL and points to a readable `cncrot_cycle600_gud`.
+#[inline(never)]
+unsafe fn load(gud: *const cncrot_cycle600_gud) -> Result<State, Error> {
+    state_from_c(&gud.read_unaligned())
+}
+
+/// Writes the next state; not inlined for the same reason as [`load`].
+///
+/// # Safety
+/// `gud` is non-NULL and points to a writable `cncrot_cycle600_gud`.
+#[inline(never)]
+unsafe fn store(gud: *mut cncrot_cycle600_gud, s: &State) {
+    gud.write_unaligned(state_to_c(s));
 }
 
 /// The state in a stored `cncrot_cycle600_gud`, or `BadState` unless it is the initial
@@ -321,11 +358,8 @@ pub unsafe extern "C" fn cncrot_head_table_parse(
             return Err(cncrot_status::BadArgument);
         }
         let bytes = core::slice::from_raw_parts(text.cast::<u8>(), len);
-        let (status, line) = match HeadTable::parse(bytes) {
-            Ok(t) => {
-                write_table(table, &t);
-                (cncrot_status::Ok, 0)
-            }
+        let (status, line) = match parse_into(table, bytes) {
+            Ok(()) => (cncrot_status::Ok, 0),
             Err(e) => (
                 cncrot_status::from(e.error),
                 i32::try_from(e.line).unwrap_or(i32::MAX),
@@ -407,7 +441,7 @@ pub unsafe extern "C" fn cncrot_cycle600(
         // guarantees, pointing to a table, whose integer and double fields are valid for
         // every bit pattern.
         let lookup = heads.as_ref().map(CHeads);
-        let state = state_from_c(&gud.read_unaligned())?;
+        let state = load(gud)?;
         let call = Call {
             inexin,
             mihead: &name[..len],
@@ -424,7 +458,7 @@ pub unsafe extern "C" fn cncrot_cycle600(
         };
         let heads = lookup.as_ref().map(|l| l as &dyn HeadLookup);
         let next = cycle600::cycle600_in(&state, heads, &call)?;
-        gud.write_unaligned(state_to_c(&next));
+        store(gud, &next);
         let singular = next.results.is_some_and(|r| r.singular);
         Ok(super::status_of(singular))
     })

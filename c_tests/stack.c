@@ -1,0 +1,164 @@
+/* Worst-case stack use of every exported function, measured on a painted stack.
+ *
+ * Each function runs (through makecontext/swapcontext) on a stack of its own that was
+ * filled with a pattern; afterwards the deepest byte that no longer holds the pattern gives
+ * the stack the call used. The calls cover the success, remark and error paths; the inputs
+ * and outputs are globals, so the wrapper's own frame is a few words, and the empty
+ * wrapper's use is subtracted. Usage: stack LIMIT_HOT LIMIT_SETUP; prints a table and exits
+ * 1 if a hot-path function needs more than LIMIT_HOT bytes or a setup function (HEAD_DEF
+ * parsing) more than LIMIT_SETUP. Not built with sanitizers (they change frames). */
+#define _XOPEN_SOURCE 700
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <ucontext.h>
+#include "cncrot.h"
+
+#define STACK_BYTES (256 * 1024)
+#define PAINT 0xA5
+
+static unsigned char stack_mem[STACK_BYTES] __attribute__((aligned(64)));
+static ucontext_t caller, callee;
+static void (*current)(void);
+static volatile int sink;
+
+static void trampoline(void) { current(); }
+
+static size_t used_by(void (*f)(void)) {
+  memset(stack_mem, PAINT, sizeof stack_mem);
+  if (getcontext(&callee) != 0) abort();
+  callee.uc_stack.ss_sp = stack_mem;
+  callee.uc_stack.ss_size = sizeof stack_mem;
+  callee.uc_link = &caller;
+  current = f;
+  makecontext(&callee, trampoline, 0);
+  if (swapcontext(&caller, &callee) != 0) abort();
+  size_t k = 0;
+  while (k < sizeof stack_mem && stack_mem[k] == PAINT) k++;
+  return sizeof stack_mem - k;
+}
+
+static const double A[3] = {30, 90, 60}, B[3] = {10, 20, 30}, HUGE_A[3] = {1e300, -1e15, 7e20};
+static const double NAN_A[3] = {0, 0, 0}; /* set to NaN in main */
+static double nan_a[3];
+static const double ID[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+static const double MEASURED[9] = {1, 0.001, 0, -0.001, 1, 0, 0, 0, 1.0002};
+static const double ILL[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1e-6};
+static const double IDF[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+static double m[9], out3[3], f[16], f2[16];
+static cncrot_head_table table;
+static cncrot_cycle600_gud gud;
+static int32_t line;
+static const char HEADS[] =
+    "N830 TZ7:\nN840 _HEAD_NAME=\"IFVW207S\"\nN850 _HEAD_ALLOWED=1\n"
+    "N860 _DELTA_L1=540.735 _DELTA_L2=250.049\nN870 _DELTA_H1=200.007\n"
+    "N880 _OFFS_L1_X=0.024 _OFFS_L1_Y=0.032\nN890 _OFFS_L2_X=0.011 _OFFS_L2_Y=-0.041\n"
+    "N900 _OFFS_H1_X=0.335 _OFFS_H1_Z=0.247 ; tool side\nN910 GOTOF END\n"
+    "_HEAD_NAME=\"H1\"\n_HEAD_NAME=\"H2\"\n_HEAD_NAME=\"H3\"\n_HEAD_NAME=\"H4\"\n"
+    "_HEAD_NAME=\"H5\"\n_HEAD_NAME=\"H6\"\n_HEAD_NAME=\"H7\"\n_HEAD_NAME=\"H8\"\n"
+    "_HEAD_NAME=\"H9\"\n_HEAD_NAME=\"H10\"\n_HEAD_NAME=\"H11\"\n_HEAD_NAME=\"H12\"\n"
+    "_HEAD_NAME=\"H13\"\n_HEAD_NAME=\"H14\"\n_HEAD_NAME=\"UFK600\"\nEND:\nM17\n";
+
+static void none(void) {}
+/* The canary: a frame of 4 KiB, which the measurement must see. */
+static void big_frame(void) {
+  volatile unsigned char buf[4096];
+  for (size_t k = 0; k < sizeof buf; k++) buf[k] = (unsigned char)k;
+  sink += buf[100];
+}
+static void status_str(void) { sink += cncrot_status_str(-15)[0] + cncrot_status_str(42)[0]; }
+static void matrix_from_angles(void) {
+  sink += cncrot_matrix_from_angles(1, 57, A, m) + cncrot_matrix_from_angles(0, 27, HUGE_A, m) +
+          cncrot_matrix_from_angles(1, 57, nan_a, m) + cncrot_matrix_from_angles(1, 64, A, m);
+}
+static void angles_from_matrix(void) {
+  sink += cncrot_angles_from_matrix(1, 57, ID, out3) + cncrot_angles_from_matrix(0, 25, MEASURED, out3) +
+          cncrot_angles_from_matrix(1, 57, ILL, out3);
+}
+static void convert(void) {
+  sink += cncrot_convert(0, 57, A, 1, 39, out3) + cncrot_convert(0, 57, HUGE_A, 1, 55, out3) +
+          cncrot_convert(0, 57, nan_a, 1, 39, out3);
+}
+static void second_solution(void) {
+  sink += cncrot_second_solution(57, HUGE_A, out3) + cncrot_second_solution(55, B, out3);
+}
+static void closest_angles(void) {
+  sink += cncrot_closest_angles(1, 55, ID, B, out3) + cncrot_closest_angles(1, 57, MEASURED, HUGE_A, out3);
+}
+static void check_rotation(void) { sink += cncrot_check_rotation(ID) + cncrot_check_rotation(ILL); }
+static void nearest_rotation(void) {
+  sink += cncrot_nearest_rotation(MEASURED, m) + cncrot_nearest_rotation(ILL, m);
+}
+static void add_rotation(void) {
+  sink += cncrot_add_rotation(1, 57, A, MEASURED, m) + cncrot_add_rotation(0, 57, HUGE_A, ID, m);
+}
+static void rotate_vector(void) { sink += cncrot_rotate_vector(MEASURED, A, out3) + cncrot_rotate_vector(ILL, A, out3); }
+static void rotate_vector_inverse(void) { sink += cncrot_rotate_vector_inverse(MEASURED, A, out3); }
+static void frame_from_angles(void) { sink += cncrot_frame_from_angles(1, 57, A, B, HUGE_A, f); }
+static void frame_about_point(void) { sink += cncrot_frame_about_point(1, 57, A, B, f); }
+static void frame_compose(void) {
+  cncrot_frame_from_angles(1, 57, A, B, B, f2);
+  sink += cncrot_frame_compose(f2, f2, f) + cncrot_frame_compose(IDF, f2, f);
+}
+static void frame_inverse(void) { sink += cncrot_frame_inverse(f2, f); }
+static void frame_transform_point(void) { sink += cncrot_frame_transform_point(f2, A, out3); }
+static void cycle600_gud_size(void) { sink += (int)cncrot_cycle600_gud_size(); }
+static void head_table_parse(void) {
+  static const char bad[] = "_HEAD_NAME=\"A\"\nDELTA_L2=1\n";
+  sink += cncrot_head_table_parse(&table, HEADS, sizeof HEADS - 1, &line) +
+          cncrot_head_table_parse(&table, bad, sizeof bad - 1, &line);
+}
+static void cycle600(void) {
+  memset(&gud, 0, sizeof gud);
+  sink += cncrot_cycle600(&gud, &table, 0, "UFK600", 1, 57, 1, 2, 3, 30, 45, 60, 4, 5, 6, 1, 39, 0, 0, 0);
+  sink += cncrot_cycle600(&gud, &table, 1, "UFK600", 1, 57, 1, 2, 3, 30, 90, 60, 4, 5, 6, 0, 55, 1, 1, 1);
+  sink += cncrot_cycle600(&gud, NULL, 1, "IFVW207S", 0, 57, 1, 2, 3, 30, 90, 60, 4, 5, 6, 0, 55, 1, 1, 1);
+  sink += cncrot_cycle600(&gud, &table, 1, "NOPE", 1, 57, 1, 2, 3, 30, 90, 60, 4, 5, 6, 0, 55, 1, 1, 1);
+}
+
+struct entry {
+  const char *name;
+  void (*f)(void);
+  int setup; /* 1: setup-time (not on a real-time cycle's hot path) */
+};
+#define E(n, s) {"cncrot_" #n, n, s}
+static const struct entry ENTRIES[] = {
+    E(status_str, 0),        E(matrix_from_angles, 0), E(angles_from_matrix, 0),
+    E(convert, 0),           E(second_solution, 0),    E(closest_angles, 0),
+    E(check_rotation, 0),    E(nearest_rotation, 0),   E(add_rotation, 0),
+    E(rotate_vector, 0),     E(rotate_vector_inverse, 0), E(frame_from_angles, 0),
+    E(frame_about_point, 0), E(frame_compose, 0),      E(frame_inverse, 0),
+    E(frame_transform_point, 0), E(cycle600_gud_size, 0), E(head_table_parse, 1),
+    E(cycle600, 0),
+};
+
+int main(int argc, char **argv) {
+  if (argc != 3) {
+    fprintf(stderr, "usage: stack LIMIT_HOT LIMIT_SETUP\n");
+    return 2;
+  }
+  long limit_hot = atol(argv[1]), limit_setup = atol(argv[2]);
+  (void)NAN_A;
+  nan_a[0] = strtod("nan", NULL);
+  size_t base = used_by(none);
+  int failed = 0;
+  size_t n = sizeof ENTRIES / sizeof ENTRIES[0];
+  printf("stack bytes beyond an empty call (%zu bytes), limits %ld hot path / %ld setup:\n", base,
+         limit_hot, limit_setup);
+  for (size_t k = 0; k < n; k++) {
+    size_t used = used_by(ENTRIES[k].f) - base;
+    long limit = ENTRIES[k].setup ? limit_setup : limit_hot;
+    int over = (long)used > limit;
+    failed |= over;
+    printf("%s %-32s %6zu%s\n", over ? "OVER" : "    ", ENTRIES[k].name, used,
+           ENTRIES[k].setup ? "  (setup)" : "");
+  }
+  /* The measurement must be able to fail: a function with a 4 KiB frame is seen. */
+  size_t canary = used_by(big_frame) - base;
+  if (canary < 4096) {
+    printf("stack: the canary's 4096-byte frame measured %zu: the measurement is broken\n", canary);
+    failed = 1;
+  }
+  printf("stack: %s\n", failed ? "FAILED" : "ok");
+  return failed;
+}
