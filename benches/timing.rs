@@ -517,6 +517,58 @@ fn main() {
         );
         report("cncrot_cycle600", "additive (_ROT_AD=1)", &h, &mut rows);
     }
+    {
+        // With a full head table whose last entry is the one named: the lookup reads the
+        // table in place, so this costs about what a call without a table costs.
+        let mut text = String::new();
+        for k in 0..15 {
+            text.push_str(&format!("_HEAD_NAME=\"HEAD{k}\" _DELTA_L1={k}\n"));
+        }
+        text.push_str("_HEAD_NAME=\"UFK600\" _DELTA_L1=540.735\n");
+        let mut table: cncrot_head_table = unsafe { std::mem::zeroed() };
+        let parsed = unsafe {
+            cncrot_head_table_parse(
+                &mut table,
+                text.as_ptr().cast(),
+                text.len(),
+                std::ptr::null_mut(),
+            )
+        };
+        assert_eq!((parsed, table.count), (0, 16));
+        let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
+        let name = c"UFK600";
+        measure(
+            &mut h,
+            n("cncrot_cycle600", "16 heads, last named"),
+            overhead,
+            &angle_classes[0].1,
+            &mut |a| unsafe {
+                cncrot_cycle600(
+                    &mut gud,
+                    &table,
+                    0,
+                    name.as_ptr(),
+                    1,
+                    57,
+                    1.0,
+                    2.0,
+                    3.0,
+                    a[0],
+                    a[1],
+                    a[2],
+                    4.0,
+                    5.0,
+                    6.0,
+                    1,
+                    39,
+                    0,
+                    0,
+                    0,
+                )
+            },
+        );
+        report("cncrot_cycle600", "16 heads, last named", &h, &mut rows);
+    }
     if std::env::args().any(|a| a == "--syscall-canary") {
         // For benches/syscalls.sh: a row that does make a system call per call, to show
         // that the check sees one.
