@@ -3,8 +3,11 @@
 %                  POS_X_R, POS_Y_R, POS_Z_R, INEXOUT, BIN_OUT, ROT_AD, ROT_INV, RETR_Z)
 %   gud = cycle600(..., previous_gud)   % ROT_AD = 1 adds to previous_gud's frame
 %   The 18 parameters of the paper in its order (_INEXIN ... _RETR_Z); MIHEAD is a char
-%   array. gud has fields CYC600_1 (name), CYC600_2..4 (angles, degrees), CYC600_5
-%   (_INEXOUT), CYC600_6 (_BIN_OUT), frame (4-by-4, translations included), ROT_INV, RETR_Z.
+%   row vector of printable ASCII without spaces (at most 31 characters). gud has fields
+%   CYC600_1 (name), CYC600_2..4 (angles, degrees), CYC600_5 (_INEXOUT), CYC600_6
+%   (_BIN_OUT), frame (4-by-4, translations included), ROT_INV, RETR_Z and CHECKSUM (the
+%   CRC-32 of the state). Pass gud back unchanged: an edited field no longer matches
+%   CHECKSUM and raises cncrot:badState, as a corrupt stored state does.
 %   SW_REC = 0 (positioning the head) raises cncrot:notAvailable.
 %
 %   Example (the paper's Example 3):

@@ -9,25 +9,29 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   size_t n = rows3_arg(prhs[2], "angles_in");
   int32_t ko = integer_arg(prhs[3], "intrinsic_out");
   int32_t so = integer_arg(prhs[4], "sequence_out");
-  const double *in = mxGetDoubles(prhs[2]);
+  const double *in = real_data(prhs[2], "angles_in");
+  int32_t status;
+  if (n == 0) {
+    double zero[3] = {0, 0, 0}, b[3];
+    status = cncrot_convert(ki, si, zero, ko, so, b);
+    if (status < 0) raise_status(status, -1, 0);
+  }
   mxArray *out = mxCreateDoubleMatrix(n, 3, mxREAL);
   mxArray *st = mxCreateDoubleMatrix(n, 1, mxREAL);
   double *o = mxGetDoubles(out), *s = mxGetDoubles(st);
-  int32_t status = 0;
   size_t k;
   for (k = 0; k < n; k++) {
     double a[3] = {in[k], in[k + n], in[k + 2 * n]}, b[3];
     status = cncrot_convert(ki, si, a, ko, so, b);
-    if (status < 0) break;
+    if (status < 0) {
+      mxDestroyArray(out);
+      mxDestroyArray(st);
+      raise_status(status, (long)k, n);
+    }
     o[k] = b[0];
     o[k + n] = b[1];
     o[k + 2 * n] = b[2];
     s[k] = status;
-  }
-  if (status < 0) {
-    mxDestroyArray(out);
-    mxDestroyArray(st);
-    raise_status(status, k);
   }
   plhs[0] = out;
   if (nlhs > 1) plhs[1] = st; else mxDestroyArray(st);

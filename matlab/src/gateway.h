@@ -1,51 +1,91 @@
 /* Shared by the MEX gateways: argument checks and the mapping of library statuses to MATLAB
  * error identifiers. Errors are raised only here in the gateway, never while the library
- * is running: every library call has returned before mexErrMsgIdAndTxt is reached. */
+ * is running: every library call has returned before mexErrMsgIdAndTxt is reached.
+ * Argument checks here are about MATLAB's types and shapes; the values (flags, codes,
+ * finiteness, rotations) are the library's to judge. */
 #ifndef CNCROT_GATEWAY_H
 #define CNCROT_GATEWAY_H
 
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 #include "mex.h"
 #include "cncrot.h"
 
-static void require_real_double(const mxArray *a, const char *what) {
-  if (!mxIsDouble(a) || mxIsSparse(a)) mexErrMsgIdAndTxt("cncrot:badClass", "%s must be a double array", what);
+/* The data of a full real double array of any storage class MATLAB or Octave makes.
+ * Octave 7 keeps ranges (1:3), diagonal (eye(3)) and permutation matrices in compact forms
+ * whose interleaved-complex accessor mxGetDoubles aborts the whole session (mex.cc:2380);
+ * its classic accessor mxGetPr returns the full data for the same objects. MATLAB has no
+ * such objects and gets the accessor of its current API. build_mex.m defines CNCROT_OCTAVE. */
+static const double *real_data(const mxArray *a, const char *what) {
+  if (!mxIsDouble(a)) mexErrMsgIdAndTxt("cncrot:badClass", "%s must be a double array (got %s)", what, mxGetClassName(a));
+  if (mxIsSparse(a)) mexErrMsgIdAndTxt("cncrot:badClass", "%s must be a full double array, not sparse (use full())", what);
   if (mxIsComplex(a)) mexErrMsgIdAndTxt("cncrot:complex", "%s must be real", what);
-}
-
-/* A real double scalar holding an integer: flags and codes. Range checks are the library's. */
-static int32_t integer_arg(const mxArray *a, const char *what) {
-  require_real_double(a, what);
-  if (mxGetNumberOfElements(a) != 1) mexErrMsgIdAndTxt("cncrot:badSize", "%s must be a scalar", what);
-  double v = mxGetDoubles(a)[0];
-  if (!(v == floor(v)) || v < -2147483648.0 || v > 2147483647.0)
-    mexErrMsgIdAndTxt("cncrot:badArgument", "%s must be an integer", what);
-  return (int32_t)v;
+#ifdef CNCROT_OCTAVE
+  return mxGetPr(a);
+#else
+  return mxGetDoubles(a);
+#endif
 }
 
 static double scalar_arg(const mxArray *a, const char *what) {
-  require_real_double(a, what);
+  const double *d = real_data(a, what);
   if (mxGetNumberOfElements(a) != 1) mexErrMsgIdAndTxt("cncrot:badSize", "%s must be a scalar", what);
-  return mxGetDoubles(a)[0];
+  return d[0];
 }
 
-/* N×3 real double; returns N. */
+/* A real double scalar holding an integer: flags and codes. Integers beyond int32 are
+ * passed on saturated (no flag or code is that large), so that the library names the error
+ * (bad flag, bad sequence) rather than the gateway calling 2^31 "not an integer". */
+static int32_t integer_arg(const mxArray *a, const char *what) {
+  double v = scalar_arg(a, what);
+  if (!(v == floor(v))) mexErrMsgIdAndTxt("cncrot:badArgument", "%s must be an integer (got %g)", what, v);
+  if (v < -2147483648.0) return INT32_MIN;
+  if (v > 2147483647.0) return INT32_MAX;
+  return (int32_t)v;
+}
+
+/* N-by-3 real double (N >= 0; [] is accepted as 0-by-3); returns N. */
 static size_t rows3_arg(const mxArray *a, const char *what) {
-  require_real_double(a, what);
-  if (mxGetNumberOfDimensions(a) != 2 || mxGetN(a) != 3 || mxGetM(a) == 0)
-    mexErrMsgIdAndTxt("cncrot:badSize", "%s must be N-by-3", what);
+  (void)real_data(a, what);
+  if (mxGetNumberOfDimensions(a) == 2 && mxGetM(a) == 0 && (mxGetN(a) == 3 || mxGetN(a) == 0)) return 0;
+  if (mxGetNumberOfDimensions(a) != 2 || mxGetN(a) != 3) {
+    const mwSize *d = mxGetDimensions(a);
+    mexErrMsgIdAndTxt("cncrot:badSize", "%s must be N-by-3 (got %d-by-%d%s)", what, (int)d[0], (int)d[1],
+                      mxGetNumberOfDimensions(a) > 2 ? "-by-..." : "");
+  }
   return mxGetM(a);
 }
 
-/* 3×3 or 3×3×N real double; returns N. */
+/* 3-by-3 or 3-by-3-by-N real double (N >= 0; [] is accepted as none); returns N. */
 static size_t matrices_arg(const mxArray *a, const char *what) {
-  require_real_double(a, what);
+  (void)real_data(a, what);
   const mwSize *d = mxGetDimensions(a);
   mwSize nd = mxGetNumberOfDimensions(a);
-  if (nd > 3 || d[0] != 3 || d[1] != 3 || mxGetNumberOfElements(a) == 0)
+  if (nd == 2 && d[0] == 0 && d[1] == 0) return 0;
+  if (nd > 3 || d[0] != 3 || d[1] != 3)
     mexErrMsgIdAndTxt("cncrot:badSize", "%s must be 3-by-3 or 3-by-3-by-N", what);
   return nd == 3 ? d[2] : 1;
+}
+
+/* A name: a char row vector (or empty), copied into `out` NUL-terminated. The library
+ * judges the characters and the length (it reads at most 32 bytes: a longer name arrives
+ * as 32 bytes without NUL and is refused as too long). Characters outside ASCII become a
+ * byte the library refuses; an embedded NUL would cut the name silently, so it is refused
+ * here. */
+static void name_arg(const mxArray *a, const char *what, char out[33]) {
+  if (!mxIsChar(a)) mexErrMsgIdAndTxt("cncrot:badClass", "%s must be a char row vector (got %s)", what, mxGetClassName(a));
+  size_t n = mxGetNumberOfElements(a);
+  if (n > 0 && (mxGetNumberOfDimensions(a) != 2 || mxGetM(a) != 1))
+    mexErrMsgIdAndTxt("cncrot:badSize", "%s must be a char row vector, not a char matrix", what);
+  const mxChar *c = mxGetChars(a);
+  size_t k;
+  for (k = 0; k < n && k < 32; k++) {
+    unsigned v = (unsigned)c[k];
+    if (v == 0) mexErrMsgIdAndTxt("cncrot:badArgument", "%s contains a NUL character", what);
+    out[k] = (char)(v > 127 ? 0x80 : v);
+  }
+  out[k] = '\0';
 }
 
 static void check_nargs(int nrhs, int lo, int hi, int nlhs, int out_hi) {
@@ -63,15 +103,18 @@ static void to_col_major(const double *row, double *col) {
     for (int j = 0; j < 3; j++) col[i + 3 * j] = row[3 * i + j];
 }
 
-/* Raises the MATLAB error of a negative status (after the library has returned). */
-static void raise_status(int32_t s, size_t row) {
+/* Raises the MATLAB error of a negative status (after the library has returned). `row` is
+ * the 0-based row of a batch, or -1: it is named only for statuses that belong to one row
+ * (a value, not a flag or a code) in a batch of more than one. */
+static void raise_status(int32_t s, long row, size_t n) {
   const char *id;
+  int per_row = 1;
   switch (s) {
     case CNCROT_STATUS_NULL_POINTER: id = "cncrot:nullPointer"; break;
     case CNCROT_STATUS_NOT_FINITE: id = "cncrot:notFinite"; break;
-    case CNCROT_STATUS_BAD_FLAG: id = "cncrot:badFlag"; break;
-    case CNCROT_STATUS_BAD_SEQUENCE: id = "cncrot:badSequence"; break;
-    case CNCROT_STATUS_INCOMPLETE_SEQUENCE: id = "cncrot:incompleteSequence"; break;
+    case CNCROT_STATUS_BAD_FLAG: id = "cncrot:badFlag"; per_row = 0; break;
+    case CNCROT_STATUS_BAD_SEQUENCE: id = "cncrot:badSequence"; per_row = 0; break;
+    case CNCROT_STATUS_INCOMPLETE_SEQUENCE: id = "cncrot:incompleteSequence"; per_row = 0; break;
     case CNCROT_STATUS_NOT_A_ROTATION: id = "cncrot:notARotation"; break;
     case CNCROT_STATUS_DEGENERATE: id = "cncrot:degenerate"; break;
     case CNCROT_STATUS_BAD_ARGUMENT: id = "cncrot:badArgument"; break;
@@ -81,9 +124,12 @@ static void raise_status(int32_t s, size_t row) {
     case CNCROT_STATUS_PARSE: id = "cncrot:parse"; break;
     case CNCROT_STATUS_TABLE_FULL: id = "cncrot:tableFull"; break;
     case CNCROT_STATUS_OUT_OF_RANGE: id = "cncrot:outOfRange"; break;
+    case CNCROT_STATUS_BAD_STATE: id = "cncrot:badState"; break;
     default: id = "cncrot:internal"; break;
   }
-  mexErrMsgIdAndTxt(id, "row %lu: %s", (unsigned long)(row + 1), cncrot_status_str(s));
+  if (per_row && row >= 0 && n > 1)
+    mexErrMsgIdAndTxt(id, "row %ld: %s", row + 1, cncrot_status_str(s));
+  mexErrMsgIdAndTxt(id, "%s", cncrot_status_str(s));
 }
 
 #endif

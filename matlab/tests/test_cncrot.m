@@ -46,11 +46,11 @@ function test_cncrot(cases_file)
   expect_error('cncrot:badSequence', @() cncrot_matrix(1, 22, [1 2 3]), 'repeated axis');
   expect_error('cncrot:notFinite', @() cncrot_matrix(1, 57, [1 NaN 3]), 'NaN');
   expect_error('cncrot:notFinite', @() cncrot_convert(1, 57, [Inf 0 0], 0, 39), 'Inf');
-  expect_error('cncrot:incompleteSequence', @() cncrot_angles(1, 3, full(eye(3))), 'incomplete');
-  expect_error('cncrot:notARotation', @() cncrot_angles(1, 57, full(2 * eye(3))), 'not a rotation');
-  expect_error('cncrot:notARotation', @() cncrot_angles(1, 57, full(diag([1 1 -1]))), 'reflection');
+  expect_error('cncrot:incompleteSequence', @() cncrot_angles(1, 3, eye(3)), 'incomplete');
+  expect_error('cncrot:notARotation', @() cncrot_angles(1, 57, 2 * eye(3)), 'not a rotation');
+  expect_error('cncrot:notARotation', @() cncrot_angles(1, 57, diag([1 1 -1])), 'reflection');
   expect_error('cncrot:badSize', @() cncrot_matrix(1, 57, [1 2]), 'angles size');
-  expect_error('cncrot:badSize', @() cncrot_angles(1, 57, full(eye(4))), 'matrix size');
+  expect_error('cncrot:badSize', @() cncrot_angles(1, 57, eye(4)), 'matrix size');
   expect_error('cncrot:badClass', @() cncrot_matrix(1, 57, single([1 2 3])), 'class');
   expect_error('cncrot:badClass', @() cncrot_matrix(1, 57, 'abc'), 'char');
   expect_error('cncrot:complex', @() cncrot_matrix(1, 57, [1i 2 3]), 'complex');
@@ -69,7 +69,84 @@ function test_cncrot(cases_file)
   expect_error('cncrot:outOfRange', @() cycle600(0, 'H', 1, 57, 1e308,0,0, 0,0,0, 1e308,0,0, 1, 39, 0,0,0), 'overflowing frame');
   expect_error('cncrot:badClass', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 1,0,0, 7), 'previous gud');
   bad = gud; bad.frame(1,1) = 5;
-  expect_error('cncrot:notARotation', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 1,0,0, bad), 'corrupt gud');
+  expect_error('cncrot:badState', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 1,0,0, bad), 'corrupt gud');
+  bad = gud; bad.CYC600_2 = bad.CYC600_2 + 1e-12;
+  expect_error('cncrot:badState', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 1,0,0, bad), 'edited angle');
+  bad = gud; bad.CHECKSUM = bad.CHECKSUM + 1;
+  expect_error('cncrot:badState', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 1,0,0, bad), 'edited checksum');
+  bad = rmfield(gud, 'CHECKSUM');
+  expect_error('cncrot:badState', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 1,0,0, bad), 'no checksum');
+  bad = gud; bad.CYC600_1 = 42;
+  expect_error('cncrot:badClass', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 1,0,0, bad), 'numeric CYC600_1');
+
+  % Every class of double array Octave makes, in every MEX function: ranges, diagonal and
+  % permutation matrices (compact objects in Octave), sparse, empty, 3-D.
+  P = eye(3)([2 3 1], :);
+  check(isequal(cncrot_matrix(1, 57, 0:30:60), cncrot_matrix(1, 57, [0 30 60])), 'range angles');
+  check(isequal(cncrot_matrix(1:1, 57:57, [1 2 3]), cncrot_matrix(1, 57, [1 2 3])), 'range scalars');
+  check(isequal(cncrot_convert(0, 57, 1:3, 1, 39), cncrot_convert(0, 57, [1 2 3], 1, 39)), 'range convert');
+  check(isequal(cncrot_angles(1, 57, eye(3)), [0 0 0]), 'diagonal R');
+  check(isequal(cncrot_angles(1, 57, eye(3) * 1), [0 0 0]), 'diagonal times 1');
+  check(isequal(cncrot_angles(1, 57, P), cncrot_angles(1, 57, full(P))), 'permutation R');
+  [~, ~, Plu] = lu(magic(3));
+  check(isequal(cncrot_angles(1, 27, Plu' * Plu), [0 0 0]), 'lu permutation product');
+  expect_error('cncrot:notARotation', @() cncrot_angles(1, 57, Plu * diag([1 1 -1]) * Plu'), 'permutation reflection');
+  expect_error('cncrot:badClass', @() cncrot_angles(1, 57, sparse(eye(3))), 'sparse R');
+  expect_error('cncrot:badClass', @() cncrot_matrix(1, 57, sparse([1 2 3])), 'sparse angles');
+  expect_error('cncrot:badClass', @() cncrot_convert(0, 57, sparse([1 2 3]), 1, 39), 'sparse convert');
+  expect_error('cncrot:badClass', @() cncrot_matrix(sparse(1), 57, [1 2 3]), 'sparse flag');
+  expect_error('cncrot:badClass', @() cncrot_matrix(int32(1), 57, [1 2 3]), 'int32 flag');
+  expect_error('cncrot:badClass', @() cncrot_matrix(true, 57, [1 2 3]), 'logical flag');
+  expect_error('cncrot:badClass', @() cncrot_matrix(1, 57, int8([1 2 3])), 'int8 angles');
+  check(isequal(size(cncrot_matrix(1, 57, zeros(0, 3))), [3 3 0]), 'empty angles');
+  check(isequal(size(cncrot_matrix(1, 57, [])), [3 3 0]), '[] angles');
+  check(isequal(size(cncrot_convert(0, 57, zeros(0, 3), 1, 39)), [0 3]), 'empty convert');
+  [ea, es] = cncrot_angles(1, 57, zeros(3, 3, 0));
+  check(isequal(size(ea), [0 3]) && isequal(size(es), [0 1]), 'empty R');
+  check(isequal(size(cncrot_angles(1, 57, [])), [0 3]), '[] R');
+  expect_error('cncrot:badFlag', @() cncrot_matrix(2, 57, zeros(0, 3)), 'empty input still checks the flag');
+  expect_error('cncrot:badSequence', @() cncrot_angles(1, 64, zeros(3, 3, 0)), 'empty input still checks the code');
+  expect_error('cncrot:badSize', @() cncrot_matrix(1, 57, zeros(3, 0)), '3-by-0 angles');
+  expect_error('cncrot:badSize', @() cncrot_matrix(1, 57, ones(1, 3, 2)), '3-D angles');
+  expect_error('cncrot:badSize', @() cncrot_convert(0, 57, ones(2, 3, 2), 1, 39), '3-D convert');
+  R3 = cat(3, eye(3), P);
+  check(isequal(size(cncrot_angles(1, 57, R3)), [2 3]), '3-D R');
+  expect_error('cncrot:badSize', @() cncrot_angles(1, 57, ones(3, 3, 2, 2)), '4-D R');
+  g = cycle600(0:0, 'UFK600', 1:1, 57, 0,0,0, 0:0,45,60, 0,0,0, 1, 39, 0,0,0);
+  check(isequal(g.CYC600_1, 'UFK600'), 'cycle600 with range scalars');
+  g2 = g; g2.frame = eye(4);
+  expect_error('cncrot:badState', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 1,0,0, g2), 'gud frame eye(4)');
+  expect_error('cncrot:badClass', @() cycle600(0, 'H', 1, 57, sparse(0),0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'sparse position');
+
+  % Input edges: names, integers beyond int32, rows named only where they mean something.
+  expect_error('cncrot:badArgument', @() cycle600(0, ['AB' char(0) 'CD'], 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'NUL in name');
+  expect_error('cncrot:badSize', @() cycle600(0, ['AB'; 'CD'], 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'char matrix name');
+  expect_error('cncrot:badArgument', @() cycle600(0, 'MY HEAD', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'space in name');
+  expect_error('cncrot:nameTooLong', @() cycle600(0, repmat('A', 1, 32), 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), '32 characters');
+  g = cycle600(0, repmat('A', 1, 31), 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0);
+  check(numel(g.CYC600_1) == 31, '31 characters');
+  g = cycle600(0, '', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0);
+  check(isempty(g.CYC600_1), 'empty name');
+  expect_error('cncrot:badFlag', @() cncrot_matrix(2^31, 57, [1 2 3]), 'flag 2^31');
+  expect_error('cncrot:badSequence', @() cncrot_matrix(1, -2^40, [1 2 3]), 'code -2^40');
+  expect_error('cncrot:badArgument', @() cncrot_matrix(NaN, 57, [1 2 3]), 'NaN flag');
+  messages = {};
+  function remember(f)
+    try
+      f();
+    catch err
+      messages{end + 1} = err.message;
+    end
+  end
+  remember(@() cncrot_matrix(2, 57, [1 2 3; 4 5 6]));
+  remember(@() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,2,0));
+  remember(@() cncrot_matrix(1, 57, [1 2 3; 4 NaN 6]));
+  remember(@() cncrot_matrix(1, 57, [1 NaN 3]));
+  check(numel(messages) == 4, 'four errors');
+  check(isempty(strfind(messages{1}, 'row')), ['flag error names no row: ' messages{1}]);
+  check(isempty(strfind(messages{2}, 'row')), ['cycle600 error names no row: ' messages{2}]);
+  check(~isempty(strfind(messages{3}, 'row 2:')), ['batch error names its row: ' messages{3}]);
+  check(isempty(strfind(messages{4}, 'row')), ['single-row error names no row: ' messages{4}]);
 
   % Parity with the C harness, bit for bit.
   fid = fopen(cases_file, 'r');
