@@ -278,8 +278,11 @@ size_t cncrot_cycle600_gud_size(void);
  * Reads the text of a HEAD_DEF cycle into `table`: per line an optional block number
  * `N…`, then labels (`TZ7:`), `_HEAD_NAME="…"` (starts an accessory), `_HEAD_ALLOWED`,
  * `_DELTA_L1/_L2/_H1`, `_OFFS_L1_X/_L1_Y/_L2_X/_L2_Y/_H1_X/_H1_Z` assignments,
- * `GOTOF/GOTOB/GOTO …`, `RET`, `M17`, `M30`, comments after `;`. `text` holds `len` bytes
- * (no terminating NUL needed). Numbers are read exactly as `strtod` would, within up to 15
+ * `GOTOF/GOTOB/GOTO …`, comments after `;`, read as a SINUMERIK control reads them:
+ * keywords in any case, a UTF-8 byte-order mark skipped, block-skip marks (`/`, `/0`..`/9`)
+ * read as executed, reading ended by the block with `M30`, `M17`, `M2`, `M02` or `RET`.
+ * Names are 1 to 31 printable ASCII characters without spaces or quotes. `text` holds
+ * `len` bytes (no terminating NUL needed). Numbers are read exactly as `strtod` would, within up to 15
  * significant digits (precisely: digits forming an integer up to 2^53, times 10^-22..10^22);
  * others are refused with `CNCROT_STATUS_PARSE` rather than rounded twice.
  *
@@ -311,14 +314,20 @@ int32_t cncrot_head_table_parse(struct cncrot_head_table *table,
  * (intrinsic input on the right, extrinsic on the left). Its rotation is decomposed for
  * `_INEXOUT`/`_BIN_OUT` into `cyc600_2..4`. `_SW_REC = 1` recalculates only; `_SW_REC = 0`
  * (positioning the head) returns `CNCROT_STATUS_NOT_AVAILABLE`. `_ROT_INV` and `_RETR_Z`
- * (0/1) are kept in `gud`.
+ * (0/1) are kept in `gud`. The stored rotation is kept orthonormal however many additive
+ * calls follow. `_MIHEAD` is printable ASCII without spaces or quotes, or empty without a
+ * table (`CNCROT_STATUS_BAD_ARGUMENT` otherwise). The table is read in place: only its
+ * count and the entry that matches are checked.
  *
- * Returns 0 or `CNCROT_STATUS_SINGULAR` with `gud` updated; a negative status leaves
- * `gud` exactly as it was (also for a corrupt `gud` or `heads`).
+ * Returns 0 or `CNCROT_STATUS_SINGULAR` with `gud` updated (and sealed with its format and
+ * checksum); a negative status leaves `gud` exactly as it was: `CNCROT_STATUS_BAD_STATE`
+ * for a `gud` that is neither zeroed nor one this library wrote (see
+ * `cncrot_cycle600_gud`), `CNCROT_STATUS_BAD_ARGUMENT` for a corrupt or misaligned table.
  *
  * # Safety
  * `gud` points to a writable state, `mihead` to a NUL-terminated string (at most 31 bytes
- * are used; at most 32 are read), `heads` to a table or is NULL.
+ * are used; at most 32 are read), `heads` to a table (aligned as `cncrot_head_table`) or is
+ * NULL.
  *
  * ```c
  * cncrot_cycle600_gud gud = {0};   // paper, Example 3
@@ -390,6 +399,7 @@ int32_t cncrot_frame_about_point(int32_t intrinsic,
 
 /**
  * `out = a·b`: frame `b` given in the system of frame `a` (chaining `AROT`-like offsets).
+ * The rotation part is brought back to orthonormal (to 2 ulp), so chains do not drift.
  * Both inputs must be frames: rotation part a rotation, last row exactly 0 0 0 1.
  *
  * # Safety
@@ -403,7 +413,7 @@ int32_t cncrot_frame_about_point(int32_t intrinsic,
 int32_t cncrot_frame_compose(const double *a, const double *b, double *out);
 
 /**
- * The inverse frame `[Rᵀ, −Rᵀ·t]`.
+ * The inverse frame `[Rᵀ, −Rᵀ·t]`, `R` first brought to orthonormal (to 2 ulp); never -0.
  *
  * # Safety
  * `frame` points to 16 readable, `out` to 16 writable doubles (or NULL: error); they may be
@@ -502,6 +512,7 @@ int32_t cncrot_convert(int32_t intrinsic_in,
  * The other decomposition of the rotation given by `angles_in_deg`:
  * `(θ1+180, 180−θ2, θ3+180)` for Tait-Bryan, `(θ1+180, −θ2, θ3+180)` for proper Euler
  * sequences, all three wrapped into (-180, 180]. The same for intrinsic and extrinsic.
+ * Input angles of any size are reduced exactly first.
  *
  * # Safety
  * `angles_in_deg` points to 3 readable, `angles_out_deg` to 3 writable doubles (or NULL:
@@ -520,7 +531,9 @@ int32_t cncrot_second_solution(int32_t sequence,
  * Of the two decompositions of `matrix`, each angle shifted by whole turns, the one nearest
  * to `reference_deg` (least sum of squared differences; ties go to the canonical one):
  * pass the current axis positions to avoid needless swivel motion. Status as
- * `cncrot_angles_from_matrix`.
+ * `cncrot_angles_from_matrix`; `CNCROT_STATUS_OUT_OF_RANGE` when a result angle would be
+ * 65536 degrees or more (a reference that far away: doubles there no longer denote the
+ * rotation to 6e-14 rad).
  *
  * # Safety
  * `matrix` points to 9 and `reference_deg` to 3 readable doubles, `angles_deg` to 3
@@ -570,7 +583,9 @@ int32_t cncrot_nearest_rotation(const double *matrix_in, double *matrix_out);
  * Applies an additional rotation (angles in a convention, like `cncrot_matrix_from_angles`)
  * to an existing rotation matrix: extrinsic (`intrinsic` = 0, about the machine axes)
  * multiplies from the left, `R_add·R_old`; intrinsic from the right, `R_old·R_add`
- * (TwinCAT/SINUMERIK `AROT`, CYCLE600 `_ROT_AD`). `matrix_in` must be a rotation.
+ * (TwinCAT/SINUMERIK `AROT`, CYCLE600 `_ROT_AD`). `matrix_in` must be a rotation. The
+ * result is brought back to orthonormal (to 2 ulp), so chains of any length in place do
+ * not drift.
  *
  * # Safety
  * `angles_deg` points to 3 and `matrix_in` to 9 readable doubles, `matrix_out` to 9

@@ -325,8 +325,11 @@ pub extern "C" fn cncrot_cycle600_gud_size() -> usize {
 /// Reads the text of a HEAD_DEF cycle into `table`: per line an optional block number
 /// `N…`, then labels (`TZ7:`), `_HEAD_NAME="…"` (starts an accessory), `_HEAD_ALLOWED`,
 /// `_DELTA_L1/_L2/_H1`, `_OFFS_L1_X/_L1_Y/_L2_X/_L2_Y/_H1_X/_H1_Z` assignments,
-/// `GOTOF/GOTOB/GOTO …`, `RET`, `M17`, `M30`, comments after `;`. `text` holds `len` bytes
-/// (no terminating NUL needed). Numbers are read exactly as `strtod` would, within up to 15
+/// `GOTOF/GOTOB/GOTO …`, comments after `;`, read as a SINUMERIK control reads them:
+/// keywords in any case, a UTF-8 byte-order mark skipped, block-skip marks (`/`, `/0`..`/9`)
+/// read as executed, reading ended by the block with `M30`, `M17`, `M2`, `M02` or `RET`.
+/// Names are 1 to 31 printable ASCII characters without spaces or quotes. `text` holds
+/// `len` bytes (no terminating NUL needed). Numbers are read exactly as `strtod` would, within up to 15
 /// significant digits (precisely: digits forming an integer up to 2^53, times 10^-22..10^22);
 /// others are refused with `CNCROT_STATUS_PARSE` rather than rounded twice.
 ///
@@ -381,14 +384,20 @@ pub unsafe extern "C" fn cncrot_head_table_parse(
 /// (intrinsic input on the right, extrinsic on the left). Its rotation is decomposed for
 /// `_INEXOUT`/`_BIN_OUT` into `cyc600_2..4`. `_SW_REC = 1` recalculates only; `_SW_REC = 0`
 /// (positioning the head) returns `CNCROT_STATUS_NOT_AVAILABLE`. `_ROT_INV` and `_RETR_Z`
-/// (0/1) are kept in `gud`.
+/// (0/1) are kept in `gud`. The stored rotation is kept orthonormal however many additive
+/// calls follow. `_MIHEAD` is printable ASCII without spaces or quotes, or empty without a
+/// table (`CNCROT_STATUS_BAD_ARGUMENT` otherwise). The table is read in place: only its
+/// count and the entry that matches are checked.
 ///
-/// Returns 0 or `CNCROT_STATUS_SINGULAR` with `gud` updated; a negative status leaves
-/// `gud` exactly as it was (also for a corrupt `gud` or `heads`).
+/// Returns 0 or `CNCROT_STATUS_SINGULAR` with `gud` updated (and sealed with its format and
+/// checksum); a negative status leaves `gud` exactly as it was: `CNCROT_STATUS_BAD_STATE`
+/// for a `gud` that is neither zeroed nor one this library wrote (see
+/// `cncrot_cycle600_gud`), `CNCROT_STATUS_BAD_ARGUMENT` for a corrupt or misaligned table.
 ///
 /// # Safety
 /// `gud` points to a writable state, `mihead` to a NUL-terminated string (at most 31 bytes
-/// are used; at most 32 are read), `heads` to a table or is NULL.
+/// are used; at most 32 are read), `heads` to a table (aligned as `cncrot_head_table`) or is
+/// NULL.
 ///
 /// ```c
 /// cncrot_cycle600_gud gud = {0};   // paper, Example 3

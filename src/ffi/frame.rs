@@ -92,6 +92,7 @@ pub unsafe extern "C" fn cncrot_frame_about_point(
 }
 
 /// `out = a·b`: frame `b` given in the system of frame `a` (chaining `AROT`-like offsets).
+/// The rotation part is brought back to orthonormal (to 2 ulp), so chains do not drift.
 /// Both inputs must be frames: rotation part a rotation, last row exactly 0 0 0 1.
 ///
 /// # Safety
@@ -113,7 +114,7 @@ pub unsafe extern "C" fn cncrot_frame_compose(a: *const f64, b: *const f64, out:
     })
 }
 
-/// The inverse frame `[Rᵀ, −Rᵀ·t]`.
+/// The inverse frame `[Rᵀ, −Rᵀ·t]`, `R` first brought to orthonormal (to 2 ulp); never -0.
 ///
 /// # Safety
 /// `frame` points to 16 readable, `out` to 16 writable doubles (or NULL: error); they may be

@@ -114,6 +114,7 @@ pub unsafe extern "C" fn cncrot_convert(
 /// The other decomposition of the rotation given by `angles_in_deg`:
 /// `(θ1+180, 180−θ2, θ3+180)` for Tait-Bryan, `(θ1+180, −θ2, θ3+180)` for proper Euler
 /// sequences, all three wrapped into (-180, 180]. The same for intrinsic and extrinsic.
+/// Input angles of any size are reduced exactly first.
 ///
 /// # Safety
 /// `angles_in_deg` points to 3 readable, `angles_out_deg` to 3 writable doubles (or NULL:
@@ -146,7 +147,9 @@ pub unsafe extern "C" fn cncrot_second_solution(
 /// Of the two decompositions of `matrix`, each angle shifted by whole turns, the one nearest
 /// to `reference_deg` (least sum of squared differences; ties go to the canonical one):
 /// pass the current axis positions to avoid needless swivel motion. Status as
-/// `cncrot_angles_from_matrix`.
+/// `cncrot_angles_from_matrix`; `CNCROT_STATUS_OUT_OF_RANGE` when a result angle would be
+/// 65536 degrees or more (a reference that far away: doubles there no longer denote the
+/// rotation to 6e-14 rad).
 ///
 /// # Safety
 /// `matrix` points to 9 and `reference_deg` to 3 readable doubles, `angles_deg` to 3
@@ -230,7 +233,9 @@ pub unsafe extern "C" fn cncrot_nearest_rotation(
 /// Applies an additional rotation (angles in a convention, like `cncrot_matrix_from_angles`)
 /// to an existing rotation matrix: extrinsic (`intrinsic` = 0, about the machine axes)
 /// multiplies from the left, `R_add·R_old`; intrinsic from the right, `R_old·R_add`
-/// (TwinCAT/SINUMERIK `AROT`, CYCLE600 `_ROT_AD`). `matrix_in` must be a rotation.
+/// (TwinCAT/SINUMERIK `AROT`, CYCLE600 `_ROT_AD`). `matrix_in` must be a rotation. The
+/// result is brought back to orthonormal (to 2 ulp), so chains of any length in place do
+/// not drift.
 ///
 /// # Safety
 /// `angles_deg` points to 3 and `matrix_in` to 9 readable doubles, `matrix_out` to 9
