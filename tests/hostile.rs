@@ -274,21 +274,31 @@ fn a_matrix_whose_gram_matrix_overflows_is_refused_everywhere() {
 
 // ---- CYCLE600 states --------------------------------------------------------------------
 
-fn call(gud: *mut cncrot_cycle600_gud, heads: *const cncrot_head_table, rot_ad: i32) -> i32 {
+/// One CYCLE600 call with the parameters a test varies; positions (1, 2, 3) before the
+/// rotation, none after, output intrinsic Z, X', Y'' (39), `_ROT_INV` = `_RETR_Z` = 0.
+fn cycle(
+    gud: *mut cncrot_cycle600_gud,
+    heads: *const cncrot_head_table,
+    inexin: i32,
+    name: &std::ffi::CStr,
+    bin_in: i32,
+    ang: [f64; 3],
+    rot_ad: i32,
+) -> i32 {
     unsafe {
         cncrot_cycle600(
             gud,
             heads,
-            0,
-            c"UFK600".as_ptr(),
+            inexin,
+            name.as_ptr(),
             1,
-            57,
+            bin_in,
             1.0,
             2.0,
             3.0,
-            30.0,
-            45.0,
-            60.0,
+            ang[0],
+            ang[1],
+            ang[2],
             0.0,
             0.0,
             0.0,
@@ -299,6 +309,10 @@ fn call(gud: *mut cncrot_cycle600_gud, heads: *const cncrot_head_table, rot_ad: 
             0,
         )
     }
+}
+
+fn call(gud: *mut cncrot_cycle600_gud, heads: *const cncrot_head_table, rot_ad: i32) -> i32 {
+    cycle(gud, heads, 0, c"UFK600", 57, [30.0, 45.0, 60.0], rot_ad)
 }
 
 fn bytes_of(g: &cncrot_cycle600_gud) -> Vec<u8> {
@@ -436,30 +450,12 @@ fn a_million_additive_cycle600_calls_stay_orthonormal() {
     let mut g: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
     let mut worst: f64 = 0.0;
     for k in 0..CHAIN {
-        let s = unsafe {
-            cncrot_cycle600(
-                &mut g,
-                null(),
-                (k % 2) as i32,
-                c"H".as_ptr(),
-                1,
-                57,
-                0.0,
-                0.0,
-                0.0,
-                rng.range(-5.0, 5.0),
-                rng.range(-5.0, 5.0),
-                rng.range(-5.0, 5.0),
-                0.0,
-                0.0,
-                0.0,
-                1,
-                39,
-                1,
-                0,
-                0,
-            )
-        };
+        let a = [
+            rng.range(-5.0, 5.0),
+            rng.range(-5.0, 5.0),
+            rng.range(-5.0, 5.0),
+        ];
+        let s = cycle(&mut g, null(), (k % 2) as i32, c"H", 57, a, 1);
         assert!(s >= 0);
         if k % 1000 == 999 {
             let r: [f64; 9] = core::array::from_fn(|i| g.frame[4 * (i / 3) + i % 3]);
@@ -631,30 +627,8 @@ fn every_export_that_takes_angles_gives_the_reduced_rotation_or_refuses() {
             // CYCLE600: the stored state of the reduced angles.
             let (mut g1, mut g2): (cncrot_cycle600_gud, cncrot_cycle600_gud) =
                 (std::mem::zeroed(), std::mem::zeroed());
-            for (g, x) in [(&mut g1, a), (&mut g2, red)] {
-                cncrot_cycle600(
-                    g,
-                    null(),
-                    intrinsic,
-                    c"H".as_ptr(),
-                    1,
-                    code,
-                    0.0,
-                    0.0,
-                    0.0,
-                    x[0],
-                    x[1],
-                    x[2],
-                    0.0,
-                    0.0,
-                    0.0,
-                    1,
-                    39,
-                    0,
-                    0,
-                    0,
-                );
-            }
+            cycle(&mut g1, null(), intrinsic, c"H", code, a, 0);
+            cycle(&mut g2, null(), intrinsic, c"H", code, red, 0);
             assert_eq!(bytes_of(&g1), bytes_of(&g2));
         }
     }
@@ -717,30 +691,7 @@ fn full_table() -> cncrot_head_table {
 
 fn call_head(t: *const cncrot_head_table, name: &std::ffi::CStr) -> i32 {
     let mut g: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
-    unsafe {
-        cncrot_cycle600(
-            &mut g,
-            t,
-            0,
-            name.as_ptr(),
-            1,
-            57,
-            0.0,
-            0.0,
-            0.0,
-            1.0,
-            2.0,
-            3.0,
-            0.0,
-            0.0,
-            0.0,
-            1,
-            39,
-            0,
-            0,
-            0,
-        )
-    }
+    cycle(&mut g, t, 0, name, 57, [1.0, 2.0, 3.0], 0)
 }
 
 #[test]
@@ -784,30 +735,7 @@ fn the_head_table_is_read_in_place_entry_by_entry() {
 fn names_must_be_printable_ascii_without_spaces() {
     let mut g: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
     for bad in [c"MY HEAD", c"A\tB", c"A\r", c"\xC3\x84"] {
-        let s = unsafe {
-            cncrot_cycle600(
-                &mut g,
-                null(),
-                0,
-                bad.as_ptr(),
-                1,
-                57,
-                0.0,
-                0.0,
-                0.0,
-                1.0,
-                2.0,
-                3.0,
-                0.0,
-                0.0,
-                0.0,
-                1,
-                39,
-                0,
-                0,
-                0,
-            )
-        };
+        let s = cycle(&mut g, null(), 0, bad, 57, [1.0, 2.0, 3.0], 0);
         assert_eq!(s, BAD_ARGUMENT, "{bad:?}");
     }
 }
