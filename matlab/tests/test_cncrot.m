@@ -86,6 +86,9 @@ function test_cncrot(cases_file)
   check(isequal(cncrot_matrix(1:1, 57:57, [1 2 3]), cncrot_matrix(1, 57, [1 2 3])), 'range scalars');
   check(isequal(cncrot_convert(0, 57, 1:3, 1, 39), cncrot_convert(0, 57, [1 2 3], 1, 39)), 'range convert');
   check(isequal(cncrot_angles(1, 57, eye(3)), [0 0 0]), 'diagonal R');
+  check(isequal(cncrot_matrix(1, 57, eye(3)), cncrot_matrix(1, 57, full(eye(3)))), 'diagonal angles');
+  check(isequal(cncrot_convert(0, 57, P, 1, 39), cncrot_convert(0, 57, full(P), 1, 39)), 'permutation angles');
+  check(isequal(cncrot_convert(0, 57, diag([10 20 30]), 1, 39), cncrot_convert(0, 57, full(diag([10 20 30])), 1, 39)), 'diagonal convert');
   check(isequal(cncrot_angles(1, 57, eye(3) * 1), [0 0 0]), 'diagonal times 1');
   check(isequal(cncrot_angles(1, 57, P), cncrot_angles(1, 57, full(P))), 'permutation R');
   [~, ~, Plu] = lu(magic(3));
