@@ -2,3 +2,4 @@
 
 pub mod cycle600;
 pub mod head_def;
+pub mod sinumerik;
