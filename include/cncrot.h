@@ -138,6 +138,19 @@ typedef int32_t cncrot_status;
 #endif // __cplusplus
 
 /**
+ * A rigid transformation `p ↦ R·p + t`, as the 4x4 matrix `[R t; 0 0 0 1]`.
+ *
+ * ```
+ * use cncrot::{elementary, Axis, Frame};
+ * // TwinCAT: transRotZ(45) twice maps (30, 0, 0) to (0, 30, 0).
+ * let r = Frame::from_rotation(elementary(Axis::Z, 45.0));
+ * let p = r.compose(&r).transform_point([30.0, 0.0, 0.0]);
+ * assert!(p[0].abs() < 1e-12 && (p[1] - 30.0).abs() < 1e-12);
+ * ```
+ */
+typedef struct Frame Frame;
+
+/**
  * One technological accessory of the HEAD_DEF cycle.
  */
 typedef struct cncrot_head {
@@ -250,6 +263,12 @@ typedef struct cncrot_cycle600_gud {
    */
   uint32_t checksum;
 } cncrot_cycle600_gud;
+
+
+
+
+
+
 
 
 

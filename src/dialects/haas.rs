@@ -1,0 +1,113 @@
+//! Haas `G268`/`G269`: the tilted working plane with a sequence of fixed-axis rotations.
+//!
+//! Confidence as in [`crate::dialects::sinumerik`].
+
+use crate::{
+    angles_from_matrix, matrix_from_angles, AxisCode, Convention, Decomposition, Error, Frame,
+    Kind, Sequence, Vector,
+};
+
+/// The rotation order of a `Q` word: its three digits name the fixed axes in the order the
+/// rotations are made (1 = X with angle `I`, 2 = Y with `J`, 3 = Z with `K`), e.g. `Q123`:
+/// about X by I, then about the fixed Y by J, then about the fixed Z by K:
+/// `F = Rz(K)·Ry(J)·Rx(I)` [3rd: the main CAM post writes it so]. Only the six orders of the
+/// three axes are accepted ([`Error::BadSequence`]); Haas's default for a missing `Q` is not
+/// public, so `Q` is required here [choice].
+///
+/// ```
+/// use cncrot::dialects::haas::q_order;
+/// assert_eq!(q_order(123).unwrap().code(), 57); // X, Y, Z
+/// assert!(q_order(313).is_err());
+/// ```
+pub fn q_order(q: i32) -> Result<Sequence, Error> {
+    if !(111..=333).contains(&q) {
+        return Err(Error::BadSequence);
+    }
+    let digits = [q / 100, (q / 10) % 10, q % 10];
+    if !digits.iter().all(|d| (1..=3).contains(d)) {
+        return Err(Error::BadSequence);
+    }
+    let code = digits[0] + 4 * digits[1] + 16 * digits[2];
+    match Sequence::from_code(code)? {
+        s if !s.is_proper_euler() => Ok(s),
+        _ => Err(Error::BadSequence),
+    }
+}
+
+/// `G268 X Y Z I J K Q`: origin `X Y Z`, then the fixed-axis rotations of `Q` with each
+/// axis's own angle (I about X, J about Y, K about Z).
+///
+/// ```
+/// use cncrot::dialects::haas::g268;
+/// let f = g268([0.0; 3], [0.0, 0.0, 90.0], 123).unwrap();
+/// assert_eq!(f.rotation, cncrot::elementary(cncrot::Axis::Z, 90.0));
+/// ```
+pub fn g268(origin: Vector, ijk: [f64; 3], q: i32) -> Result<Frame, Error> {
+    let s = q_order(q)?;
+    let angles = s.axes().map(|a| ijk[a.index()]);
+    let r = matrix_from_angles(Kind::Extrinsic, AxisCode::from(s), angles);
+    Ok(Frame::with_translations(origin, r, [0.0; 3]))
+}
+
+/// `I, J, K` of a rotation for a `Q` order (the middle rotation's angle in [-90, 90]; at
+/// ±90 the last rotation's angle is 0, `singular`).
+pub fn g268_angles(m: &crate::Matrix, q: i32) -> Result<([f64; 3], bool), Error> {
+    let s = q_order(q)?;
+    let d: Decomposition = angles_from_matrix(Convention::new(Kind::Extrinsic, s), m)?;
+    let mut ijk = [0.0; 3];
+    for (a, v) in s.axes().iter().zip(d.angles) {
+        ijk[a.index()] = v;
+    }
+    Ok((ijk, d.singular))
+}
+
+/// `G269`: no tilted plane.
+pub const G269: Frame = Frame::IDENTITY;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{elementary, mul, Axis};
+
+    #[test]
+    fn q123_is_fixed_x_then_y_then_z() {
+        let f = g268([1.0, 2.0, 3.0], [10.0, 20.0, 30.0], 123).unwrap();
+        let expect = mul(
+            &mul(&elementary(Axis::Z, 30.0), &elementary(Axis::Y, 20.0)),
+            &elementary(Axis::X, 10.0),
+        );
+        let d = f.rotation.iter().flatten().zip(expect.iter().flatten());
+        assert!(d.map(|(a, b)| (a - b).abs()).fold(0.0, f64::max) < 1e-15);
+        assert_eq!(f.translation, [1.0, 2.0, 3.0]);
+        // Q321: fixed Z by K first, then Y by J, then X by I.
+        let g = g268([0.0; 3], [10.0, 20.0, 30.0], 321).unwrap();
+        let expect = mul(
+            &mul(&elementary(Axis::X, 10.0), &elementary(Axis::Y, 20.0)),
+            &elementary(Axis::Z, 30.0),
+        );
+        let d = g.rotation.iter().flatten().zip(expect.iter().flatten());
+        assert!(d.map(|(a, b)| (a - b).abs()).fold(0.0, f64::max) < 1e-15);
+    }
+
+    #[test]
+    fn every_order_round_trips_and_bad_orders_are_refused() {
+        for q in [123, 132, 213, 231, 312, 321] {
+            let f = g268([0.0; 3], [15.0, -40.0, 100.0], q).unwrap();
+            let (ijk, _) = g268_angles(&f.rotation, q).unwrap();
+            let back = g268([0.0; 3], ijk, q).unwrap();
+            let d = back
+                .rotation
+                .iter()
+                .flatten()
+                .zip(f.rotation.iter().flatten());
+            assert!(
+                d.map(|(a, b)| (a - b).abs()).fold(0.0, f64::max) < 2e-15,
+                "Q{q}"
+            );
+        }
+        for q in [0, 12, 113, 121, 124, 333, 1234, -123] {
+            assert_eq!(q_order(q), Err(Error::BadSequence), "Q{q}");
+        }
+        assert_eq!(G269, Frame::IDENTITY);
+    }
+}

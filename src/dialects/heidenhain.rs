@@ -1,0 +1,271 @@
+//! Heidenhain TNC: the tilted working plane `PLANE` in its forms `SPATIAL`, `EULER`,
+//! `VECTOR`, `POINTS`, `RELATIV` and `RESET`, and the inverse of each form that can express
+//! any plane (what a writer of a measured plane needs).
+//!
+//! Confidence as in [`crate::dialects::sinumerik`]: **[doc]**, **[3rd]**, **[derived]**,
+//! **[choice]**. `PLANE PROJECTED` (signs not verified) is not here yet.
+
+use crate::math::{abs, sqrt};
+use crate::{
+    angles_from_matrix, matrix_from_angles, Axis, Convention, Decomposition, Error, Frame, Kind,
+    Matrix, Sequence, Vector,
+};
+
+/// `PLANE SPATIAL SPA SPB SPC`: about the fixed machine axes, A then B then C [doc]:
+/// `F = Rz(SPC)·Ry(SPB)·Rx(SPA)` (extrinsic X, Y, Z, exactly the paper's probe angles).
+///
+/// ```
+/// use cncrot::dialects::heidenhain::spatial;
+/// // PLANE SPATIAL SPA45 SPB0 SPC90: F = [0 -0.707107 0.707107; 1 0 0; 0 0.707107 0.707107].
+/// let f = spatial([45.0, 0.0, 90.0]);
+/// assert!(f[0][0] == 0.0 && f[1][0] == 1.0 && (f[2][2] - 0.707107).abs() < 1e-6);
+/// ```
+pub fn spatial(spa_spb_spc: [f64; 3]) -> Matrix {
+    matrix_from_angles(Kind::Extrinsic, Sequence::XYZ.into(), spa_spb_spc)
+}
+
+/// `SPA, SPB, SPC` of a rotation: SPB in [-90, 90], SPA and SPC in (-180, 180]; at SPB = ±90
+/// only SPA ∓ SPC is determined and SPC = 0 (the last rotation's angle is the free one,
+/// `singular`) [choice: the control's own choice between the two solutions follows `SEQ`
+/// and the machine's axes; this is the canonical one].
+pub fn spatial_angles(m: &Matrix) -> Result<Decomposition, Error> {
+    angles_from_matrix(Convention::new(Kind::Extrinsic, Sequence::XYZ), m)
+}
+
+/// `PLANE EULER EULPR EULNU EULROT`: `F = Rz(EULPR)·Rx(EULNU)·Rz(EULROT)` (intrinsic Z, X', Z'')
+/// [doc].
+///
+/// ```
+/// use cncrot::dialects::heidenhain::euler;
+/// // PLANE EULER EULPR45 EULNU20 EULROT22: first row (0.406706, -0.880966, 0.241845).
+/// let f = euler([45.0, 20.0, 22.0]);
+/// assert!((f[0][0] - 0.406706).abs() < 1e-6 && (f[0][1] + 0.880966).abs() < 1e-6);
+/// ```
+pub fn euler(pr_nu_rot: [f64; 3]) -> Matrix {
+    matrix_from_angles(Kind::Intrinsic, Sequence::ZXZ.into(), pr_nu_rot)
+}
+
+/// `EULPR, EULNU, EULROT` of a rotation: EULNU in [0, 180]; at EULNU = 0 or 180 EULROT = 0.
+pub fn euler_angles(m: &Matrix) -> Result<Decomposition, Error> {
+    angles_from_matrix(Convention::new(Kind::Intrinsic, Sequence::ZXZ), m)
+}
+
+/// `PLANE VECTOR BX BY BZ NX NY NZ`: `N` is the new Z axis, `B` the new X axis; neither need
+/// be of unit length [doc]. The manual's own example is not orthogonal (B·N = -0.349) and
+/// the control's correction is not documented: `N` is kept and `B` projected onto the plane
+/// normal to it [choice]. A zero `N`, or `B` parallel to `N`, is refused
+/// ([`Error::Degenerate`]).
+///
+/// ```
+/// use cncrot::dialects::heidenhain::vector;
+/// let f = vector([1.0, 0.0, 0.5], [0.0, 0.0, 2.0]).unwrap(); // B tilted: only its X part counts
+/// assert_eq!(f, cncrot::IDENTITY);
+/// ```
+pub fn vector(b: Vector, n: Vector) -> Result<Matrix, Error> {
+    let z = unit(n)?;
+    let bz = dot(b, z);
+    let x = unit(core::array::from_fn(|k| b[k] - bz * z[k]))?;
+    // The projection leaves a component along z of the order of the rounding: one more
+    // step removes it, so that the columns are orthogonal to 1 ulp.
+    let xz = dot(x, z);
+    let x = unit(core::array::from_fn(|k| x[k] - xz * z[k]))?;
+    Ok(columns(x, cross(z, x), z))
+}
+
+/// `B` and `N` of a rotation (unit vectors: the new X and Z axes).
+pub fn vector_of(m: &Matrix) -> (Vector, Vector) {
+    ([m[0][0], m[1][0], m[2][0]], [m[0][2], m[1][2], m[2][2]])
+}
+
+/// `PLANE POINTS P1 P2 P3`: the new X axis from P1 to P2, the new Z axis
+/// `(P2 − P1) × (P3 − P1)` (so P3 lies on the positive-Y side), `Y = Z × X` [doc]; the frame's
+/// origin is not moved (the control tilts about the active datum) [doc]. Coincident or
+/// collinear points are refused ([`Error::Degenerate`]). Other controls' three-point rules
+/// (TwinCAT CNC turns the new Z to positive z) can give the opposite tool axis for the same
+/// points.
+///
+/// ```
+/// use cncrot::dialects::heidenhain::points;
+/// let f = points([0.0; 3], [1.0, 1.0, 0.0], [-1.0, 1.0, 0.0]).unwrap();
+/// assert!((f[0][0] - 0.5f64.sqrt()).abs() < 1e-15 && f[2][2] == 1.0);
+/// ```
+pub fn points(p1: Vector, p2: Vector, p3: Vector) -> Result<Matrix, Error> {
+    let a: Vector = core::array::from_fn(|k| p2[k] - p1[k]);
+    let b: Vector = core::array::from_fn(|k| p3[k] - p1[k]);
+    if !a.iter().chain(&b).all(|v| v.is_finite()) {
+        return Err(Error::OutOfRange);
+    }
+    let x = unit(a)?;
+    let c = cross(x, unit(b)?);
+    // Collinear within 1e-12 of the points' own distances (the sine of the angle at P1)
+    // [choice]: such a plane is not determined by the points.
+    let sine = sqrt(dot(c, c));
+    if sine <= 1e-12 || sine.is_nan() {
+        return Err(Error::Degenerate);
+    }
+    let z = unit(c)?;
+    Ok(columns(x, cross(z, x), z))
+}
+
+/// `PLANE RELATIV SPA|SPB|SPC angle`: one incremental spatial angle, about the axis of the
+/// plane already tilted: `F_new = F_active·R_axis(angle)` [derived].
+pub fn relativ(active: &Frame, axis: Axis, angle: f64) -> Frame {
+    active.compose(&Frame::from_rotation(crate::elementary(axis, angle)))
+}
+
+/// `PLANE RESET`: no tilt.
+pub const RESET: Frame = Frame::IDENTITY;
+
+fn dot(a: Vector, b: Vector) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn cross(a: Vector, b: Vector) -> Vector {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// `v / |v|`, scaled by its largest component first (no overflow, no underflow to zero);
+/// refuses a zero or non-finite vector.
+fn unit(v: Vector) -> Result<Vector, Error> {
+    if !v.iter().all(|x| x.is_finite()) {
+        return Err(Error::Degenerate);
+    }
+    let scale = v.iter().fold(0.0f64, |a, &x| a.max(abs(x)));
+    if scale <= 0.0 {
+        return Err(Error::Degenerate);
+    }
+    let w = v.map(|x| x / scale);
+    let n = sqrt(dot(w, w));
+    Ok(w.map(|x| x / n + 0.0))
+}
+
+fn columns(x: Vector, y: Vector, z: Vector) -> Matrix {
+    core::array::from_fn(|i| [x[i] + 0.0, y[i] + 0.0, z[i] + 0.0])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{elementary, mul};
+
+    fn close(a: &Matrix, b: &Matrix, tol: f64) -> bool {
+        a.iter()
+            .flatten()
+            .zip(b.iter().flatten())
+            .all(|(x, y)| (x - y).abs() <= tol)
+    }
+
+    /// The spec's worked numbers.
+    #[test]
+    #[allow(clippy::approx_constant)] // printed to six decimals
+    fn worked_numbers() {
+        let s = 0.5f64.sqrt();
+        assert!(close(
+            &spatial([45.0, 0.0, 90.0]),
+            &[[0.0, -s, s], [1.0, 0.0, 0.0], [0.0, s, s]],
+            1e-15
+        ));
+        assert!(close(
+            &spatial([27.0, 0.0, 45.0]),
+            &[
+                [0.707107, -0.630037, 0.321020],
+                [0.707107, 0.630037, -0.321020],
+                [0.0, 0.453990, 0.891007]
+            ],
+            5e-7
+        ));
+        assert!(close(
+            &euler([45.0, 20.0, 22.0]),
+            &[
+                [0.406706, -0.880966, 0.241845],
+                [0.904530, 0.351193, -0.241845],
+                [0.128123, 0.317116, 0.939693]
+            ],
+            5e-7
+        ));
+        // SPATIAL is the paper's probe convention: Rz(C)·Ry(B)·Rx(A).
+        let f = mul(
+            &mul(&elementary(Axis::Z, 60.0), &elementary(Axis::Y, 45.0)),
+            &elementary(Axis::X, 30.0),
+        );
+        assert!(close(&spatial([30.0, 45.0, 60.0]), &f, 1e-15));
+    }
+
+    #[test]
+    fn inverses() {
+        for a in [[30.0, 45.0, 60.0], [-120.0, 10.0, 170.0], [5.0, 90.0, 0.0]] {
+            let f = spatial(a);
+            let d = spatial_angles(&f).unwrap();
+            assert!(close(&spatial(d.angles), &f, 2e-15));
+            let g = euler(a);
+            let e = euler_angles(&g).unwrap();
+            assert!(close(&euler(e.angles), &g, 2e-15));
+            let (b, n) = vector_of(&f);
+            assert!(close(&vector(b, n).unwrap(), &f, 2e-15));
+            let o = [10.0, -20.0, 5.0];
+            let p2 = core::array::from_fn(|k| o[k] + 3.0 * b[k]);
+            let y = [f[0][1], f[1][1], f[2][1]];
+            let p3 = core::array::from_fn(|k| o[k] + 2.0 * y[k] - 7.0 * b[k]);
+            assert!(close(&points(o, p2, p3).unwrap(), &f, 1e-14));
+        }
+        // SPB = 90: SPC = 0, SPA carries the free angle.
+        let d = spatial_angles(&spatial([10.0, 90.0, 40.0])).unwrap();
+        assert!(d.singular && d.angles[1] == 90.0 && d.angles[2] == 0.0);
+    }
+
+    #[test]
+    fn vector_keeps_n_and_projects_b() {
+        // B not perpendicular to N: N kept, B's component along N dropped.
+        let n = [0.0, 0.0, 5.0];
+        let f = vector([2.0, 2.0, 9.0], n).unwrap();
+        let s = 0.5f64.sqrt();
+        assert!(close(
+            &f,
+            &[[s, -s, 0.0], [s, s, 0.0], [0.0, 0.0, 1.0]],
+            1e-15
+        ));
+        assert_eq!(vector([1.0, 0.0, 0.0], [0.0; 3]), Err(Error::Degenerate));
+        assert_eq!(
+            vector([0.0, 0.0, 3.0], [0.0, 0.0, 1.0]),
+            Err(Error::Degenerate)
+        );
+        assert_eq!(
+            vector([f64::NAN, 0.0, 0.0], [0.0, 0.0, 1.0]),
+            Err(Error::Degenerate)
+        );
+        // Huge and tiny inputs: scaled, not overflowed.
+        let f = vector([1e300, 0.0, 0.0], [0.0, 0.0, 1e-300]).unwrap();
+        assert_eq!(f, crate::IDENTITY);
+    }
+
+    #[test]
+    fn points_refuse_what_defines_no_plane() {
+        let o = [1.0, 2.0, 3.0];
+        assert_eq!(points(o, o, [0.0; 3]), Err(Error::Degenerate));
+        assert_eq!(points(o, [2.0, 2.0, 3.0], o), Err(Error::Degenerate));
+        assert_eq!(
+            points(o, [2.0, 2.0, 3.0], [5.0, 2.0, 3.0]),
+            Err(Error::Degenerate)
+        );
+        assert_eq!(
+            points([-f64::MAX, 0.0, 0.0], [f64::MAX, 0.0, 0.0], o),
+            Err(Error::OutOfRange)
+        );
+        // P3 on the negative-Y side turns Z' downwards.
+        let f = points([0.0; 3], [1.0, 0.0, 0.0], [0.0, -1.0, 0.0]).unwrap();
+        assert_eq!(f[2][2], -1.0);
+    }
+
+    #[test]
+    fn relativ_turns_about_the_tilted_axis() {
+        let active = Frame::from_rotation(spatial([0.0, 30.0, 0.0]));
+        let f = relativ(&active, Axis::X, 20.0);
+        let expect = mul(&elementary(Axis::Y, 30.0), &elementary(Axis::X, 20.0));
+        assert!(close(&f.rotation, &expect, 1e-15));
+        assert_eq!(RESET, Frame::IDENTITY);
+    }
+}

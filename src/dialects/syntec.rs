@@ -1,0 +1,234 @@
+//! Syntec `G158`: rotation modes 0 to 4 with the order code, `X Y Z` before and `U V W`
+//! after the rotation, and the `P` word that carries mode and order.
+//!
+//! Confidence as in [`crate::dialects::sinumerik`].
+
+use crate::math::{abs, sqrt};
+use crate::{matrix_from_angles, AxisCode, Error, Frame, Kind, Matrix, Sequence, Vector};
+
+/// How `G158` reads `A B C`: the rotation mode [doc].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mode {
+    /// 0: no rotation.
+    None,
+    /// 1: three rotations in the order code, each about the axes already turned ("the
+    /// rotation in the latter order is based on the last rotation") [doc]: intrinsic.
+    Order(AxisCode),
+    /// 2: the rotary-axis positions themselves (needs the machine's kinematics:
+    /// [`Error::NotAvailable`] until the library has them).
+    Direct,
+    /// 3: `A B C` is the tool direction, the new Z axis [doc].
+    Normal,
+    /// 4: projection angles [doc wording; signs are our reading, see [`rotation`]].
+    Projection,
+}
+
+/// What a `P` word says: the mode and order code, and whether it applies incrementally.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PWord {
+    /// The rotation mode with its order code.
+    pub mode: Mode,
+    /// Applied on the active plane (`P01…`) rather than replacing it (`P10…`).
+    pub incremental: bool,
+}
+
+impl PWord {
+    /// Decodes `P`: the last two digits are the order code, the digit before them the mode
+    /// [derived from the manual's four examples: `P10157` mode 1 order 57, `P10200`, `P10400`,
+    /// `P01159` mode 1 order 59 "increment and then turn"]; the leading digits `10` mean
+    /// absolute and `01` incremental (our reading of the same examples [choice]); other
+    /// leading digits are refused ([`Error::BadArgument`]). Mode 1 needs a three-rotation
+    /// or shorter valid order code ([`Error::BadSequence`]); the other modes ignore it.
+    ///
+    /// ```
+    /// use cncrot::dialects::syntec::{Mode, PWord};
+    /// let p = PWord::decode(10157).unwrap();
+    /// assert!(matches!(p.mode, Mode::Order(c) if c.code() == 57) && !p.incremental);
+    /// assert!(PWord::decode(1159).unwrap().incremental); // P01159
+    /// ```
+    pub fn decode(p: i32) -> Result<PWord, Error> {
+        if !(0..=99_999).contains(&p) {
+            return Err(Error::BadArgument);
+        }
+        let (lead, mode, order) = (p / 1000, (p / 100) % 10, p % 100);
+        let incremental = match lead {
+            10 => false,
+            1 => true,
+            _ => return Err(Error::BadArgument),
+        };
+        let mode = match mode {
+            0 => Mode::None,
+            1 => Mode::Order(AxisCode::new(order)?),
+            2 => Mode::Direct,
+            3 => Mode::Normal,
+            4 => Mode::Projection,
+            _ => return Err(Error::BadArgument),
+        };
+        Ok(PWord { mode, incremental })
+    }
+}
+
+/// The rotation of `A B C` in a mode.
+///
+/// - mode 3: the new Z is `(A, B, C)` normalised; the new X lies in the old XZ plane, as in
+///   mode 4: `X = (Y × Z)/|Y × Z|`, or the old X when Z is along Y [choice: the manual
+///   leaves the plane's turn about the tool open and says to turn it with another block];
+/// - mode 4: the new X lies in the old XZ plane at the angle A above the old XY plane, and
+///   the new XY plane makes the angle B with the old Y axis; C turns in the new XY plane
+///   [doc]: `F = Ry(−A)·Rx(B)·Rz(C)` [choice of signs: positive A lifts the new X towards +Z,
+///   positive B lifts the new Y towards +Z; unverified on a control].
+///
+/// ```
+/// use cncrot::dialects::syntec::{rotation, Mode};
+/// let f = rotation(Mode::Projection, [20.0, 0.0, 0.0]).unwrap();
+/// assert!((f[2][0] - 20f64.to_radians().sin()).abs() < 1e-15 && f[1][0] == 0.0);
+/// ```
+pub fn rotation(mode: Mode, abc: [f64; 3]) -> Result<Matrix, Error> {
+    match mode {
+        Mode::None => Ok(crate::IDENTITY),
+        Mode::Order(code) => Ok(matrix_from_angles(Kind::Intrinsic, code, abc)),
+        Mode::Direct => Err(Error::NotAvailable),
+        Mode::Normal => normal(abc),
+        Mode::Projection => Ok(matrix_from_angles(
+            Kind::Intrinsic,
+            Sequence::YXZ.into(),
+            [-abc[0], abc[1], abc[2]],
+        )),
+    }
+}
+
+/// The frame of a `G158` block: `Trans(X, Y, Z)·Rot·Trans(U, V, W)`, `U V W` in the rotated
+/// system [doc]; omitted words are 0. An incremental `P` applies it on the active plane,
+/// in its system (`active · call`) [derived].
+///
+/// ```
+/// use cncrot::dialects::syntec::{frame, PWord};
+/// // The manual's example: G158 L1 P10157 X2. Y0. Z10. A20 B20 C-30 U0 V10 W0.
+/// let f = frame(&cncrot::Frame::IDENTITY, PWord::decode(10157).unwrap(),
+///               [2.0, 0.0, 10.0], [20.0, 20.0, -30.0], [0.0, 10.0, 0.0]).unwrap();
+/// let r = cncrot::matrix_from_angles(cncrot::Kind::Intrinsic, cncrot::AxisCode::new(57).unwrap(),
+///                                    [20.0, 20.0, -30.0]);
+/// assert!((f.translation[0] - (2.0 + 10.0 * r[0][1])).abs() < 1e-12);
+/// ```
+pub fn frame(
+    active: &Frame,
+    p: PWord,
+    xyz: Vector,
+    abc: [f64; 3],
+    uvw: Vector,
+) -> Result<Frame, Error> {
+    let call = Frame::with_translations(xyz, rotation(p.mode, abc)?, uvw);
+    Ok(if p.incremental {
+        active.compose(&call)
+    } else {
+        call
+    })
+}
+
+fn normal(n: Vector) -> Result<Matrix, Error> {
+    if !n.iter().all(|x| x.is_finite()) {
+        return Err(Error::Degenerate);
+    }
+    let scale = n.iter().fold(0.0f64, |a, &x| a.max(abs(x)));
+    if scale <= 0.0 {
+        return Err(Error::Degenerate);
+    }
+    let w = n.map(|x| x / scale);
+    let len = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    let z = w.map(|x| x / len);
+    // Y × Z = (z_z, 0, −z_x): in the old XZ plane.
+    let h = sqrt(z[2] * z[2] + z[0] * z[0]);
+    let x = if h > 1e-12 {
+        [z[2] / h, 0.0, -z[0] / h]
+    } else {
+        [1.0, 0.0, 0.0]
+    };
+    let y = [
+        z[1] * x[2] - z[2] * x[1],
+        z[2] * x[0] - z[0] * x[2],
+        z[0] * x[1] - z[1] * x[0],
+    ];
+    Ok(core::array::from_fn(|i| {
+        [x[i] + 0.0, y[i] + 0.0, z[i] + 0.0]
+    }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn p_words_of_the_manual() {
+        assert_eq!(
+            PWord::decode(10200),
+            Ok(PWord {
+                mode: Mode::Direct,
+                incremental: false
+            })
+        );
+        assert_eq!(PWord::decode(10400).map(|p| p.mode), Ok(Mode::Projection));
+        let p = PWord::decode(1159).unwrap();
+        assert!(p.incremental && matches!(p.mode, Mode::Order(c) if c.code() == 59));
+        assert_eq!(PWord::decode(10122), Err(Error::BadSequence));
+        for bad in [157, 20157, 10557, -1, 100_000] {
+            assert_eq!(PWord::decode(bad), Err(Error::BadArgument), "P{bad}");
+        }
+        assert_eq!(
+            rotation(Mode::Direct, [0.0, 20.0, 45.0]),
+            Err(Error::NotAvailable)
+        );
+    }
+
+    #[test]
+    fn mode_4_geometry() {
+        // The new X in the old XZ plane at A above XY; the old Y at B from the new XY plane.
+        for (a, b, c) in [(20.0, 30.0, 0.0), (20.0, 30.0, 15.0), (-40.0, 10.0, 0.0)] {
+            let f = rotation(Mode::Projection, [a, b, c]).unwrap();
+            if c == 0.0 {
+                let x = [f[0][0], f[1][0], f[2][0]];
+                assert!(x[1].abs() < 1e-15);
+                assert!((x[2] - f64::to_radians(a).sin()).abs() < 1e-15);
+                // sin(angle between e_y and the new XY plane) = |Z'·e_y|.
+                assert!((f[1][2].abs() - f64::to_radians(b).sin()).abs() < 1e-15);
+            }
+            assert!(crate::orthonormality_error(&f) < 1e-15);
+        }
+    }
+
+    #[test]
+    fn mode_3_normal() {
+        let f = rotation(Mode::Normal, [0.0, 0.0, 5.0]).unwrap();
+        assert_eq!(f, crate::IDENTITY);
+        for n in [[1.0, 2.0, 3.0], [0.0, 1.0, 0.0], [-1.0, 0.0, -1.0]] {
+            let f = rotation(Mode::Normal, n).unwrap();
+            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            assert!((0..3).all(|i| (f[i][2] - n[i] / len).abs() < 1e-15));
+            assert!(f[1][0].abs() < 1e-15, "X' in the old XZ plane");
+            assert!(crate::orthonormality_error(&f) < 1e-15 && crate::determinant(&f) > 0.0);
+        }
+        assert_eq!(rotation(Mode::Normal, [0.0; 3]), Err(Error::Degenerate));
+    }
+
+    #[test]
+    fn incremental_applies_on_the_active_plane() {
+        let a = frame(
+            &Frame::IDENTITY,
+            PWord::decode(10157).unwrap(),
+            [0.0; 3],
+            [0.0, 20.0, 0.0],
+            [0.0; 3],
+        )
+        .unwrap();
+        let b = frame(
+            &a,
+            PWord::decode(1159).unwrap(),
+            [0.0; 3],
+            [10.0, 0.0, 0.0],
+            [0.0; 3],
+        )
+        .unwrap();
+        let expect = crate::mul(&a.rotation, &crate::elementary(crate::Axis::Z, 10.0));
+        let d = b.rotation.iter().flatten().zip(expect.iter().flatten());
+        assert!(d.map(|(x, y)| (x - y).abs()).fold(0.0, f64::max) < 1e-15);
+    }
+}

@@ -1,0 +1,130 @@
+//! Beckhoff TwinCAT NC I: `ROT`, `AROT`, their cancellation, and the vector functions
+//! `CalcRot`, `CalcInvRot`, `RotVec`.
+//!
+//! Confidence as in [`crate::dialects::sinumerik`]. TwinCAT CNC (the ISG kernel, another
+//! product) rotates negatively about Y in its YPR mode: this module is NC I only.
+
+use crate::{
+    angles_from_matrix, matrix_from_angles, rotate, rotate_inverse, Convention, Error, Kind,
+    Matrix, Sequence, Vector,
+};
+
+/// The rotation TwinCAT NC I keeps: the angles `[x, y, z]` of the last `ROT` plus every
+/// `AROT` since. The control keeps angles, not a matrix ("`CalcRot` rotates through the
+/// current rotation angle; the rotation angles had been determined by `ROT` or `AROT`"
+/// [doc]), so `AROT` adds to them [derived]. The default is no rotation.
+///
+/// ```
+/// use cncrot::dialects::twincat::Rotation;
+/// // The seed's example: ROT Z30, then AROT Z15, is a rotation of 45° about Z.
+/// let r = Rotation::default().rot([0.0, 0.0, 30.0]).arot([0.0, 0.0, 15.0]);
+/// assert_eq!(r.angles, [0.0, 0.0, 45.0]);
+/// // After ROT Z45, CalcInvRot of (40, 10, 0) is (35.36, -21.21, 0).
+/// let v = Rotation::default().rot([0.0, 0.0, 45.0]).calc_inv_rot([40.0, 10.0, 0.0]);
+/// assert!((v[0] - 35.3553).abs() < 1e-4 && (v[1] + 21.2132).abs() < 1e-4);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Rotation {
+    /// `x`, `y`, `z` in degrees, as programmed and added (not reduced).
+    pub angles: [f64; 3],
+}
+
+impl Rotation {
+    /// `ROT X Y Z`: replaces the rotation (omitted words are 0; `ROT` without words
+    /// cancels).
+    pub fn rot(self, xyz: [f64; 3]) -> Rotation {
+        Rotation { angles: xyz }
+    }
+
+    /// `AROT X Y Z`: adds to the active angles [derived].
+    pub fn arot(self, xyz: [f64; 3]) -> Rotation {
+        Rotation {
+            angles: core::array::from_fn(|k| self.angles[k] + xyz[k]),
+        }
+    }
+
+    /// The rotation matrix: about the global axes Z, then Y, then X, whatever the order of
+    /// the words [doc]: `F = Rx(x)·Ry(y)·Rz(z)`.
+    pub fn matrix(&self) -> Matrix {
+        matrix(self.angles)
+    }
+
+    /// `CalcRot`: the vector rotated by the active rotation, `F·v` [doc].
+    pub fn calc_rot(&self, v: Vector) -> Vector {
+        rotate(&self.matrix(), v)
+    }
+
+    /// `CalcInvRot`: turned back, `Fᵀ·v` ("the signs inverted, the order X, Y, Z") [doc].
+    pub fn calc_inv_rot(&self, v: Vector) -> Vector {
+        rotate_inverse(&self.matrix(), v)
+    }
+}
+
+/// `F = Rx(x)·Ry(y)·Rz(z)` for `[x, y, z]` (extrinsic Z, Y, X).
+pub fn matrix([x, y, z]: [f64; 3]) -> Matrix {
+    matrix_from_angles(Kind::Extrinsic, Sequence::ZYX.into(), [z, y, x])
+}
+
+/// `RotVec[x; y; z; α; β; γ]`: the vector rotated by the given angles in the order of `ROT`,
+/// without touching the active rotation [doc].
+pub fn rot_vec(v: Vector, xyz: [f64; 3]) -> Vector {
+    rotate(&matrix(xyz), v)
+}
+
+/// `[x, y, z]` for a `ROT` of a rotation: y in [-90, 90], x and z in (-180, 180]. At
+/// y = ±90 only one combination of x and z is determined: the last rotation's angle, x, is
+/// set to 0 and z carries it (`singular`), the library's rule in rotation order [choice].
+pub fn rot_angles(m: &Matrix) -> Result<([f64; 3], bool), Error> {
+    let d = angles_from_matrix(Convention::new(Kind::Extrinsic, Sequence::ZYX), m)?;
+    let [z, y, x] = d.angles;
+    Ok(([x, y, z], d.singular))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{elementary, mul, Axis};
+
+    #[test]
+    fn order_is_z_then_y_then_x_about_the_global_axes() {
+        let f = matrix([10.0, 20.0, 30.0]);
+        let expect = mul(
+            &mul(&elementary(Axis::X, 10.0), &elementary(Axis::Y, 20.0)),
+            &elementary(Axis::Z, 30.0),
+        );
+        let d = f
+            .iter()
+            .flatten()
+            .zip(expect.iter().flatten())
+            .map(|(a, b)| (a - b).abs());
+        assert!(d.fold(0.0, f64::max) < 1e-15);
+        // The frame's example of conventions.md: transRotZ(45) twice maps (30, 0, 0) to
+        // (0, 30, 0).
+        let r = Rotation::default()
+            .rot([0.0, 0.0, 45.0])
+            .arot([0.0, 0.0, 45.0]);
+        let p = r.calc_rot([30.0, 0.0, 0.0]);
+        assert!(p[0].abs() < 1e-14 && (p[1] - 30.0).abs() < 1e-14);
+        assert_eq!(
+            r.calc_inv_rot(p).map(|x| (x * 1e9).round() / 1e9),
+            [30.0, 0.0, 0.0]
+        );
+    }
+
+    #[test]
+    fn angles_round_trip_and_cancel() {
+        for a in [[10.0, 20.0, 30.0], [-170.0, 80.0, 5.0], [0.0, 90.0, 40.0]] {
+            let (b, _) = rot_angles(&matrix(a)).unwrap();
+            let d = matrix(b)
+                .iter()
+                .flatten()
+                .zip(matrix(a).iter().flatten())
+                .map(|(x, y)| (x - y).abs())
+                .fold(0.0, f64::max);
+            assert!(d < 2e-15, "{a:?} {b:?}");
+        }
+        let r = Rotation::default().rot([1.0, 2.0, 3.0]).rot([0.0; 3]);
+        assert_eq!(r.matrix(), crate::IDENTITY);
+        assert_eq!(rot_vec([1.0, 0.0, 0.0], [0.0, 0.0, 90.0]), [0.0, 1.0, 0.0]);
+    }
+}
