@@ -446,6 +446,49 @@ fn main() {
         },
     );
     report("cncrot_frame_transform_point", "random", &h, &mut rows);
+    // The dialects' forms: words to a frame and a frame to words, for the random angles
+    // (G68.2, the projection of CYCLE800, and PLANE POINTS, the form with the most work).
+    {
+        let random = &angle_classes[0].1;
+        let g68: Vec<[f64; 9]> = random
+            .iter()
+            .map(|a| [1.0, 2.0, 3.0, a[0], a[1], a[2], 0.0, 0.0, 0.0])
+            .collect();
+        let mut f = [0.0; 16];
+        let mut w = [0.0; 9];
+        for (class, form, selector, count) in [
+            ("G68.2", CNCROT_FORM_G68_2, 0, 6),
+            ("CYCLE800 projection", CNCROT_FORM_CYCLE800, 128 + 57, 9),
+            ("PLANE POINTS", CNCROT_FORM_PLANE_POINTS, 0, 9),
+        ] {
+            measure(
+                &mut h,
+                n("cncrot_form_frame", class),
+                overhead,
+                &g68,
+                &mut |x| unsafe {
+                    cncrot_form_frame(form, selector, x.as_ptr(), count, f.as_mut_ptr())
+                },
+            );
+            report("cncrot_form_frame", class, &h, &mut rows);
+        }
+        for (class, form, selector, count) in [
+            ("G68.2", CNCROT_FORM_G68_2, 0, 6),
+            ("CYCLE800 projection", CNCROT_FORM_CYCLE800, 128 + 57, 9),
+            ("G268 Q321", CNCROT_FORM_G268, 321, 6),
+        ] {
+            measure(
+                &mut h,
+                n("cncrot_form_values", class),
+                overhead,
+                &frames,
+                &mut |x| unsafe {
+                    cncrot_form_values(form, selector, x.as_ptr(), w.as_mut_ptr(), count)
+                },
+            );
+            report("cncrot_form_values", class, &h, &mut rows);
+        }
+    }
     for (class, inputs) in &angle_classes {
         // CYCLE600 recalculation (paper, Example 3 with these angles), then the additive call.
         let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };

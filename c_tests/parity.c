@@ -60,5 +60,35 @@ int main(void) {
     hexes(g.frame, 16);
     printf(" %d %d %d\n", g.cyc600_5, g.cyc600_6, s);
   }
+  /* The dialects' forms: words -> frame, and frame -> words. */
+  static const int32_t FORMS[][3] = {{CNCROT_FORM_CYCLE800, 57, 9},   {CNCROT_FORM_CYCLE800, 64, 9},
+                                     {CNCROT_FORM_CYCLE800, 185, 9},  {CNCROT_FORM_SINUMERIK_ROT, 1, 3},
+                                     {CNCROT_FORM_SINUMERIK_ROTS, 2, 2}, {CNCROT_FORM_PLANE_SPATIAL, 0, 3},
+                                     {CNCROT_FORM_PLANE_EULER, 0, 3}, {CNCROT_FORM_PLANE_VECTOR, 0, 6},
+                                     {CNCROT_FORM_PLANE_POINTS, 0, 9}, {CNCROT_FORM_G68_2, 0, 6},
+                                     {CNCROT_FORM_G158, 10157, 9},    {CNCROT_FORM_TWINCAT_ROT, 0, 3},
+                                     {CNCROT_FORM_G268, 321, 6}};
+  for (int k = 0; k < (int)(sizeof FORMS / sizeof FORMS[0]); k++)
+    for (int v = 0; v < 3; v++) {
+      int32_t form = FORMS[k][0], sel = FORMS[k][1];
+      size_t n = (size_t)FORMS[k][2];
+      double w[9], f[16], w2[9];
+      for (size_t j = 0; j < n; j++) w[j] = rnd(-170, 170);
+      if (cncrot_form_frame(form, sel, w, n, f) < 0) continue;
+      printf("F %d %d %d", form, sel, (int)n);
+      hexes(w, (int)n);
+      hexes(f, 16);
+      printf("\n");
+      if (form == CNCROT_FORM_SINUMERIK_ROTS) continue;
+      if (form == CNCROT_FORM_SINUMERIK_ROT || form == CNCROT_FORM_PLANE_SPATIAL || form == CNCROT_FORM_PLANE_EULER ||
+          form == CNCROT_FORM_PLANE_VECTOR || form == CNCROT_FORM_TWINCAT_ROT)
+        f[3] = f[7] = f[11] = 0;
+      int32_t s = cncrot_form_values(form, sel, f, w2, n);
+      if (s < 0) continue;
+      printf("V %d %d %d", form, sel, (int)n);
+      hexes(f, 16);
+      hexes(w2, (int)n);
+      printf(" %d\n", s);
+    }
   return 0;
 }

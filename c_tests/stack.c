@@ -108,6 +108,24 @@ static void head_table_parse(void) {
   sink += cncrot_head_table_parse(&table, HEADS, sizeof HEADS - 1, &line) +
           cncrot_head_table_parse(&table, bad, sizeof bad - 1, &line);
 }
+static void form_word_count(void) {
+  static size_t n;
+  sink += cncrot_form_word_count(CNCROT_FORM_G158, &n) + cncrot_form_word_count(0, &n);
+}
+static void form_frame(void) {
+  static const double g68[6] = {10, 0, 0, 30, 45, 60}, c800[9] = {1, 2, 3, 30, 20, 10, 4, 5, 6};
+  static const double pts[9] = {0, 0, 0, 1, 1, 0, -1, 1, 0};
+  sink += cncrot_form_frame(CNCROT_FORM_G68_2, 0, g68, 6, f) + cncrot_form_frame(CNCROT_FORM_CYCLE800, 128 + 57, c800, 9, f) +
+          cncrot_form_frame(CNCROT_FORM_PLANE_POINTS, 0, pts, 9, f) + cncrot_form_frame(CNCROT_FORM_G158, 10157, c800, 9, f) +
+          cncrot_form_frame(CNCROT_FORM_G268, 321, g68, 6, f) + cncrot_form_frame(CNCROT_FORM_PLANE_VECTOR, 0, g68, 6, f);
+}
+static void form_values(void) {
+  static double w[9];
+  cncrot_frame_from_angles(1, 57, A, B, B, f2);
+  sink += cncrot_form_values(CNCROT_FORM_CYCLE800, 128 + 57, f2, w, 9) + cncrot_form_values(CNCROT_FORM_G158, 10157, f2, w, 9) +
+          cncrot_form_values(CNCROT_FORM_PLANE_POINTS, 0, f2, w, 9) + cncrot_form_values(CNCROT_FORM_G268, 123, f2, w, 6) +
+          cncrot_form_values(CNCROT_FORM_SINUMERIK_ROT, 1, IDF, w, 3);
+}
 static void cycle600(void) {
   memset(&gud, 0, sizeof gud);
   sink += cncrot_cycle600(&gud, &table, 0, "UFK600", 1, 57, 1, 2, 3, 30, 45, 60, 4, 5, 6, 1, 39, 0, 0, 0);
@@ -129,7 +147,8 @@ static const struct entry ENTRIES[] = {
     E(rotate_vector, 0),     E(rotate_vector_inverse, 0), E(frame_from_angles, 0),
     E(frame_about_point, 0), E(frame_compose, 0),      E(frame_inverse, 0),
     E(frame_transform_point, 0), E(cycle600_gud_size, 0), E(head_table_parse, 1),
-    E(cycle600, 0),
+    E(cycle600, 0),          E(form_frame, 0),         E(form_values, 0),
+    E(form_word_count, 0),
 };
 
 int main(int argc, char **argv) {

@@ -9,20 +9,6 @@
 #include <stdint.h>
 
 /**
- * The largest element magnitude [`check_rotation`] looks at further. Within the tolerance
- * every element is below `sqrt(1 + ROTATION_TOLERANCE)` ≈ 1.0005; 2 leaves room and keeps
- * every product in the check far from overflow.
- */
-#define ELEMENT_MAX 2.0
-
-/**
- * The magnitude from which [`closest_angles`] refuses a result: 2^16 = 65 536° (182
- * turns). Below it doubles are spaced at most 7.3e-12° apart, so the returned angle is
- * the exact `θ + k·360°` to within 3.7e-12° (6.4e-14 rad).
- */
-#define CLOSEST_MAX 65536.0
-
-/**
  * The tolerance of the rotation check: the largest element of `MᵀM − I` accepted.
  * Matrices printed to four decimals stay below 2e-4; more distorted ones (raw probe data)
  * must go through `cncrot_nearest_rotation` deliberately.
@@ -43,6 +29,66 @@
  * The value of `cncrot_cycle600_gud::format` in every state this version writes.
  */
 #define CNCROT_CYCLE600_GUD_FORMAT 1127624753
+
+/**
+ * SINUMERIK `CYCLE800`: selector `_MODE`; words `_X0 _Y0 _Z0 _A _B _C _X1 _Y1 _Z1`.
+ */
+#define CNCROT_FORM_CYCLE800 1
+
+/**
+ * SINUMERIK `ROT`/`CROT`: selector 0 RPY, 1 Euler; words `X Y Z`.
+ */
+#define CNCROT_FORM_SINUMERIK_ROT 2
+
+/**
+ * SINUMERIK `ROTS` (frame only): selector 0 `X Y`, 1 `Y Z`, 2 `Z X`; the two angles.
+ */
+#define CNCROT_FORM_SINUMERIK_ROTS 3
+
+/**
+ * Heidenhain `PLANE SPATIAL`: selector 0; words `SPA SPB SPC`.
+ */
+#define CNCROT_FORM_PLANE_SPATIAL 4
+
+/**
+ * Heidenhain `PLANE EULER`: selector 0; words `EULPR EULNU EULROT`.
+ */
+#define CNCROT_FORM_PLANE_EULER 5
+
+/**
+ * Heidenhain `PLANE VECTOR`: selector 0; words `BX BY BZ NX NY NZ`.
+ */
+#define CNCROT_FORM_PLANE_VECTOR 6
+
+/**
+ * Heidenhain `PLANE POINTS`: selector 0; words `P1X P1Y P1Z P2X P2Y P2Z P3X P3Y P3Z`.
+ */
+#define CNCROT_FORM_PLANE_POINTS 7
+
+/**
+ * Fanuc-style `G68.2`: selector 0; words `X Y Z I J K`.
+ */
+#define CNCROT_FORM_G68_2 8
+
+/**
+ * Syntec `G158`: selector the `P` word; words `X Y Z A B C U V W`.
+ */
+#define CNCROT_FORM_G158 9
+
+/**
+ * Beckhoff TwinCAT NC I `ROT`: selector 0; words `X Y Z`.
+ */
+#define CNCROT_FORM_TWINCAT_ROT 10
+
+/**
+ * Haas `G268`: selector the `Q` word; words `X Y Z I J K`.
+ */
+#define CNCROT_FORM_G268 11
+
+/**
+ * The most words a form has (`count` is exactly the form's number of words).
+ */
+#define CNCROT_FORM_MAX_WORDS 9
 
 /**
  * Status of every `cncrot_` function: 0 success, positive success with a remark, negative
@@ -136,19 +182,6 @@ typedef enum cncrot_status cncrot_status;
 typedef int32_t cncrot_status;
 #endif // __STDC_VERSION__ >= 202311L
 #endif // __cplusplus
-
-/**
- * A rigid transformation `p ↦ R·p + t`, as the 4x4 matrix `[R t; 0 0 0 1]`.
- *
- * ```
- * use cncrot::{elementary, Axis, Frame};
- * // TwinCAT: transRotZ(45) twice maps (30, 0, 0) to (0, 30, 0).
- * let r = Frame::from_rotation(elementary(Axis::Z, 45.0));
- * let p = r.compose(&r).transform_point([30.0, 0.0, 0.0]);
- * assert!(p[0].abs() < 1e-12 && (p[1] - 30.0).abs() < 1e-12);
- * ```
- */
-typedef struct Frame Frame;
 
 /**
  * One technological accessory of the HEAD_DEF cycle.
@@ -268,10 +301,6 @@ typedef struct cncrot_cycle600_gud {
 
 
 
-
-
-
-
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -374,6 +403,77 @@ int32_t cncrot_cycle600(struct cncrot_cycle600_gud *gud,
                         int32_t rot_ad,
                         int32_t rot_inv,
                         int32_t retr_z);
+
+/**
+ * How many words a form has (the `count` that `cncrot_form_frame` and `cncrot_form_values`
+ * require), in `*count`. Returns 0, or `CNCROT_STATUS_BAD_ARGUMENT` for an unknown form
+ * (`*count` untouched).
+ *
+ * # Safety
+ * `count` points to a writable `size_t` (or NULL: error).
+ *
+ * ```c
+ * size_t n;
+ * cncrot_form_word_count(CNCROT_FORM_G68_2, &n);   // 6
+ * ```
+ */
+int32_t cncrot_form_word_count(int32_t form, size_t *count);
+
+/**
+ * The frame (4x4, row-major) of a tilted-plane command given as its form, its selector and
+ * its words (see the `CNCROT_FORM_*` constants for each form's selector and word order;
+ * omitted words are 0). `count` must be the form's number of words.
+ *
+ * Returns 0, or a negative status with `frame` untouched: `CNCROT_STATUS_BAD_ARGUMENT`
+ * (unknown form, wrong `count`, a selector the form does not have),
+ * `CNCROT_STATUS_BAD_SEQUENCE` (a bad order code in `_MODE`, `P` or `Q`),
+ * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_DEGENERATE` (a zero `PLANE VECTOR` normal,
+ * coincident or collinear `PLANE POINTS`), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes,
+ * which need the machine's kinematics), `CNCROT_STATUS_OUT_OF_RANGE`.
+ *
+ * # Safety
+ * `words` points to `count` readable doubles, `frame` to 16 writable doubles (or NULL:
+ * error).
+ *
+ * ```c
+ * double w[6] = {10, 0, 0, 0, 30, 0}, f[16];   // G68.2 X10 I0 J30 K0
+ * cncrot_form_frame(CNCROT_FORM_G68_2, 0, w, 6, f);
+ * ```
+ */
+int32_t cncrot_form_frame(int32_t form,
+                          int32_t selector,
+                          const double *words,
+                          size_t count,
+                          double *frame);
+
+/**
+ * The words of a tilted-plane form that give `frame` (the inverse of
+ * `cncrot_form_frame`): what a writer of a measured or converted plane needs. Angles in the
+ * dialect's canonical ranges; at the singular middle angle the free angle sits where that
+ * dialect's rule puts it and the status is `CNCROT_STATUS_SINGULAR`.
+ *
+ * Refused, with `words` untouched: `CNCROT_STATUS_BAD_ARGUMENT` for `ROTS` (not every
+ * plane is a projection), for a frame with an origin and a form without origin words
+ * (SINUMERIK `ROT`, `PLANE SPATIAL/EULER/VECTOR`, TwinCAT `ROT`: pass the rotation alone and
+ * the datum in the dialect's own command), for an incremental or mode-0 `G158` `P`;
+ * `CNCROT_STATUS_NOT_AVAILABLE` for direct modes; `CNCROT_STATUS_OUT_OF_RANGE` for a frame
+ * a projection mode cannot express; `CNCROT_STATUS_NOT_A_ROTATION` for a frame that is not
+ * one.
+ *
+ * # Safety
+ * `frame` points to 16 readable doubles, `words` to `count` writable doubles (or NULL:
+ * error).
+ *
+ * ```c
+ * double w[3];   // the PLANE SPATIAL angles of a measured plane f
+ * if (cncrot_form_values(CNCROT_FORM_PLANE_SPATIAL, 0, f, w, 3) >= 0) printf("SPA%.4f\n", w[0]);
+ * ```
+ */
+int32_t cncrot_form_values(int32_t form,
+                           int32_t selector,
+                           const double *frame,
+                           double *words,
+                           size_t count);
 
 /**
  * The frame `Trans(before)·Rot·Trans(after)` (CYCLE600 `_POS_*` / `_POS_*_R`, CYCLE800

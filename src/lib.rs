@@ -30,6 +30,7 @@ mod frame;
 mod math;
 mod rotation;
 mod sequence;
+mod vector;
 
 pub mod ffi;
 
@@ -45,3 +46,4 @@ pub use rotation::{
     Decomposition, Matrix, Vector, CLOSEST_MAX, ELEMENT_MAX, IDENTITY, ROTATION_TOLERANCE,
 };
 pub use sequence::{Axis, AxisCode, Convention, Kind, Sequence};
+pub use vector::{rotation_from_x_y, rotation_from_z_x, unit_vector, MIN_SINE};

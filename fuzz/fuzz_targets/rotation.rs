@@ -53,6 +53,32 @@ fn frame(inp: &mut Input) -> Box<[f64]> {
     f
 }
 
+/// A form, a selector and a word count: mostly a valid form with a selector it has and its
+/// own count, sometimes anything.
+fn form_args(inp: &mut Input) -> (i32, i32, usize) {
+    const SELECTORS: [i32; 20] = [
+        0, 1, 2, 57, 27, 55, 3, 64, 185, 158, 167, 192, 123, 321, 213, 10157, 10159, 10400, 10300,
+        1157,
+    ];
+    const COUNTS: [usize; 12] = [0, 9, 3, 2, 3, 3, 6, 9, 6, 9, 3, 6];
+    let form = match inp.u8() % 8 {
+        0 => inp.int(),
+        _ => i32::from(inp.u8() % 11) + 1,
+    };
+    let sel = match inp.u8() % 4 {
+        0 => inp.int(),
+        _ => SELECTORS[usize::from(inp.u8()) % SELECTORS.len()],
+    };
+    let count = match (
+        inp.u8() % 8,
+        usize::try_from(form).ok().and_then(|f| COUNTS.get(f)),
+    ) {
+        (0, _) | (_, None) => usize::from(inp.u8() % 12),
+        (_, Some(&c)) => c,
+    };
+    (form, sel, count)
+}
+
 fn orthonormality(m: &[f64]) -> f64 {
     let mut worst = 0.0f64;
     for i in 0..3 {
@@ -66,7 +92,7 @@ fn orthonormality(m: &[f64]) -> f64 {
 
 fuzz_target!(|data: &[u8]| {
     let mut inp = Input(data);
-    let op = inp.u8() % 17;
+    let op = inp.u8() % 20;
     let (n1, n2, n3, n4) = (inp.null(), inp.null(), inp.null(), inp.null());
     // SAFETY (every call below): each pointer is NULL or a heap buffer of the documented size.
     unsafe {
@@ -198,6 +224,64 @@ fuzz_target!(|data: &[u8]| {
                 let s =
                     cncrot_frame_transform_point(ptr(&f, n1), ptr(&p, n2), ptr_mut(&mut out, n3));
                 check_outputs(s, &[&out]);
+            }
+            16 => {
+                let (form, sel, count) = form_args(&mut inp);
+                let w: Vec<f64> = (0..count).map(|_| inp.f64()).collect();
+                let w = buffer_from(&w);
+                let mut f = buffer(16, SENTINEL);
+                let s = cncrot_form_frame(form, sel, ptr(&w, n1), count, ptr_mut(&mut f, n2));
+                check_outputs(s, &[&f]);
+                if s >= 0 {
+                    let r: Vec<f64> = (0..9).map(|k| f[4 * (k / 3) + k % 3]).collect();
+                    assert!(orthonormality(&r) <= 2e-15, "{:?}", &f[..]);
+                    assert_eq!(&f[12..], &[0.0, 0.0, 0.0, 1.0]);
+                }
+            }
+            17 => {
+                let (form, sel, count) = form_args(&mut inp);
+                let f = frame(&mut inp);
+                let mut w = buffer(count, SENTINEL);
+                let s = cncrot_form_values(form, sel, ptr(&f, n1), ptr_mut(&mut w, n2), count);
+                check_outputs(s, &[&w]);
+                // Read back, the words give the frame again (projection angles are
+                // ill-conditioned near a vertical first axis: not checked there).
+                let projection = form == CNCROT_FORM_CYCLE800 && (sel >> 6) == 2;
+                if s >= 0 && !projection {
+                    let mut g = buffer(16, 0.0);
+                    let t = cncrot_form_frame(form, sel, w.as_ptr(), count, g.as_mut_ptr());
+                    assert!(
+                        t >= 0,
+                        "words {:?} of {:?} do not read back: {t}",
+                        &w[..],
+                        &f[..]
+                    );
+                    for k in 0..12 {
+                        let tol = if k % 4 == 3 {
+                            1e-9 * (1.0 + f[k].abs())
+                        } else {
+                            1e-9
+                        };
+                        assert!(
+                            (g[k] - f[k]).abs() <= tol,
+                            "{k}: {:?} vs {:?}",
+                            &g[..],
+                            &f[..]
+                        );
+                    }
+                }
+            }
+            18 => {
+                let form = inp.int();
+                let mut n = usize::MAX;
+                let np = if n1 { std::ptr::null_mut() } else { &mut n as *mut usize };
+                let s = cncrot_form_word_count(form, np);
+                assert_known(s);
+                if s < 0 {
+                    assert_eq!(n, usize::MAX, "count written on error");
+                } else {
+                    assert!((2..=CNCROT_FORM_MAX_WORDS).contains(&n));
+                }
             }
             _ => {
                 assert_eq!(

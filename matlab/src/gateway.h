@@ -45,27 +45,41 @@ static int32_t integer_arg(const mxArray *a, const char *what) {
   return (int32_t)v;
 }
 
-/* N-by-3 real double (N >= 0; [] is accepted as 0-by-3); returns N. */
-static size_t rows3_arg(const mxArray *a, const char *what) {
+/* N-by-cols real double (N >= 0; [] is accepted as 0-by-cols); returns N. */
+static size_t rows_arg(const mxArray *a, const char *what, size_t cols) {
   (void)real_data(a, what);
-  if (mxGetNumberOfDimensions(a) == 2 && mxGetM(a) == 0 && (mxGetN(a) == 3 || mxGetN(a) == 0)) return 0;
-  if (mxGetNumberOfDimensions(a) != 2 || mxGetN(a) != 3) {
+  if (mxGetNumberOfDimensions(a) == 2 && mxGetM(a) == 0 && (mxGetN(a) == cols || mxGetN(a) == 0)) return 0;
+  if (mxGetNumberOfDimensions(a) != 2 || mxGetN(a) != cols) {
     const mwSize *d = mxGetDimensions(a);
-    mexErrMsgIdAndTxt("cncrot:badSize", "%s must be N-by-3 (got %d-by-%d%s)", what, (int)d[0], (int)d[1],
+    mexErrMsgIdAndTxt("cncrot:badSize", "%s must be N-by-%d (got %d-by-%d%s)", what, (int)cols, (int)d[0], (int)d[1],
                       mxGetNumberOfDimensions(a) > 2 ? "-by-..." : "");
   }
   return mxGetM(a);
 }
 
-/* 3-by-3 or 3-by-3-by-N real double (N >= 0; [] is accepted as none); returns N. */
-static size_t matrices_arg(const mxArray *a, const char *what) {
+static size_t rows3_arg(const mxArray *a, const char *what) { return rows_arg(a, what, 3); }
+
+/* n-by-n or n-by-n-by-N real double (N >= 0; [] is accepted as none); returns N. */
+static size_t squares_arg(const mxArray *a, const char *what, size_t n) {
   (void)real_data(a, what);
   const mwSize *d = mxGetDimensions(a);
   mwSize nd = mxGetNumberOfDimensions(a);
   if (nd == 2 && d[0] == 0 && d[1] == 0) return 0;
-  if (nd > 3 || d[0] != 3 || d[1] != 3)
-    mexErrMsgIdAndTxt("cncrot:badSize", "%s must be 3-by-3 or 3-by-3-by-N", what);
+  if (nd > 3 || d[0] != n || d[1] != n)
+    mexErrMsgIdAndTxt("cncrot:badSize", "%s must be %d-by-%d or %d-by-%d-by-N", what, (int)n, (int)n, (int)n, (int)n);
   return nd == 3 ? d[2] : 1;
+}
+
+static size_t matrices_arg(const mxArray *a, const char *what) { return squares_arg(a, what, 3); }
+
+static void raise_status(int32_t s, long row, size_t n);
+
+/* The number of words of a form (the library's table), or the form's error. */
+static size_t form_words(int32_t form) {
+  size_t count = 0;
+  int32_t s = cncrot_form_word_count(form, &count);
+  if (s < 0) raise_status(s, -1, 0);
+  return count;
 }
 
 /* A name: a char row vector (or empty), copied into `out` NUL-terminated. The library
@@ -117,8 +131,8 @@ static void raise_status(int32_t s, long row, size_t n) {
     case CNCROT_STATUS_INCOMPLETE_SEQUENCE: id = "cncrot:incompleteSequence"; per_row = 0; break;
     case CNCROT_STATUS_NOT_A_ROTATION: id = "cncrot:notARotation"; break;
     case CNCROT_STATUS_DEGENERATE: id = "cncrot:degenerate"; break;
-    case CNCROT_STATUS_BAD_ARGUMENT: id = "cncrot:badArgument"; break;
-    case CNCROT_STATUS_NOT_AVAILABLE: id = "cncrot:notAvailable"; break;
+    case CNCROT_STATUS_BAD_ARGUMENT: id = "cncrot:badArgument"; per_row = 0; break;
+    case CNCROT_STATUS_NOT_AVAILABLE: id = "cncrot:notAvailable"; per_row = 0; break;
     case CNCROT_STATUS_UNKNOWN_HEAD: id = "cncrot:unknownHead"; break;
     case CNCROT_STATUS_NAME_TOO_LONG: id = "cncrot:nameTooLong"; break;
     case CNCROT_STATUS_PARSE: id = "cncrot:parse"; break;

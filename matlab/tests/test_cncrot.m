@@ -151,6 +151,28 @@ function test_cncrot(cases_file)
   check(~isempty(strfind(messages{3}, 'row 2:')), ['batch error names its row: ' messages{3}]);
   check(isempty(strfind(messages{4}, 'row')), ['single-row error names no row: ' messages{4}]);
 
+  % The dialects' forms: the spec's worked number, batches, errors, empty input.
+  fm = cncrot_forms();
+  F = cncrot_form_frame(fm.PLANE_SPATIAL, 0, [45 0 90]);
+  check(max(max(abs(F(1:3, 1:3) - [0 -0.707107 0.707107; 1 0 0; 0 0.707107 0.707107]))) < 5e-7, 'PLANE SPATIAL 45 0 90');
+  F2 = cncrot_form_frame(fm.G68_2, 0, [1 2 3 30 45 60; 0 0 0 0 30 0]);
+  check(isequal(size(F2), [4 4 2]) && isequal(F2(1:3, 4, 1), [1; 2; 3]), 'G68.2 batch');
+  [w, st] = cncrot_form_values(fm.G68_2, 0, F2);
+  check(max(max(abs(w - [1 2 3 30 45 60; 0 0 0 0 30 0]))) < 1e-12 && isequal(st, [0; 0]), 'G68.2 round trip');
+  [w, st] = cncrot_form_values(fm.PLANE_SPATIAL, 0, cncrot_form_frame(fm.PLANE_SPATIAL, 0, 0:90:180));
+  check(st == 1 && w(3) == 0, 'PLANE SPATIAL singular');
+  check(isequal(size(cncrot_form_frame(fm.G268, 123, zeros(0, 6))), [4 4 0]), 'empty forms');
+  check(isequal(size(cncrot_form_values(fm.G268, 123, zeros(4, 4, 0))), [0 6]), 'empty words');
+  expect_error('cncrot:badArgument', @() cncrot_form_frame(99, 0, [1 2 3]), 'unknown form');
+  expect_error('cncrot:badSize', @() cncrot_form_frame(fm.G68_2, 0, [1 2 3]), 'wrong word count');
+  expect_error('cncrot:badSequence', @() cncrot_form_frame(fm.G268, 313, zeros(0, 6)), 'bad Q, empty');
+  expect_error('cncrot:notAvailable', @() cncrot_form_frame(fm.CYCLE800, 192, zeros(1, 9)), 'direct mode');
+  expect_error('cncrot:degenerate', @() cncrot_form_frame(fm.PLANE_POINTS, 0, zeros(1, 9)), 'degenerate points');
+  expect_error('cncrot:badArgument', @() cncrot_form_values(fm.SINUMERIK_ROTS, 0, eye(4)), 'ROTS not writable');
+  expect_error('cncrot:badArgument', @() cncrot_form_values(fm.PLANE_SPATIAL, 0, [eye(3) [1; 0; 0]; 0 0 0 1]), 'origin for SPATIAL');
+  expect_error('cncrot:notARotation', @() cncrot_form_values(fm.G68_2, 0, 2 * eye(4)), 'not a frame');
+  expect_error('cncrot:badSize', @() cncrot_form_values(fm.G68_2, 0, eye(3)), 'F size');
+
   % Parity with the C harness, bit for bit.
   fid = fopen(cases_file, 'r');
   check(fid >= 0, 'cases file');
@@ -180,6 +202,15 @@ function test_cncrot(cases_file)
                      p(7), p(8), p(9), str2double(t{4}), str2double(t{5}), 0, 0, 0);
         check(same([g.CYC600_2 g.CYC600_3 g.CYC600_4], 15) && same(reshape(g.frame.', 1, 16), 18) ...
               && g.CYC600_5 == str2double(t{34}) && g.CYC600_6 == str2double(t{35}), ['parity ' line]);
+      case 'F'
+        cnt = str2double(t{4});
+        F = cncrot_form_frame(str2double(t{2}), str2double(t{3}), hv(5, cnt));
+        check(same(reshape(F.', 1, 16), 5 + cnt), ['parity ' line]);
+      case 'V'
+        cnt = str2double(t{4});
+        F = reshape(hv(5, 16), 4, 4).';
+        [w, st] = cncrot_form_values(str2double(t{2}), str2double(t{3}), F);
+        check(same(w, 21) && st == str2double(t{21 + cnt}), ['parity ' line]);
     end
     n = n + 1;
   end

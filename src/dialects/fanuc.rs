@@ -3,7 +3,7 @@
 //!
 //! Confidence as in [`crate::dialects::sinumerik`].
 
-use crate::math::{abs, sqrt};
+use crate::vector::{cross, dot};
 use crate::{
     angles_from_matrix, elementary, matrix_from_angles, mul, Axis, Convention, Decomposition,
     Error, Frame, Kind, Matrix, Sequence, Vector,
@@ -47,20 +47,16 @@ pub fn g68_2_angles(m: &Matrix) -> Result<Decomposition, Error> {
 /// assert!((f[1][0] - 1.0).abs() < 1e-15 && (f[0][2] - 0.5f64.sqrt()).abs() < 1e-15);
 /// ```
 pub fn g68_3(tool: Vector, vertical: Vector, r: f64) -> Result<Matrix, Error> {
-    let z = unit(tool)?;
-    let p = unit(vertical)?;
+    let z = crate::unit_vector(tool)?;
+    let p = crate::unit_vector(vertical)?;
     let c = cross(p, z);
-    let n = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-    let x = if n > 1e-12 {
-        c.map(|v| v / n)
+    // Along P (a sine of at most MIN_SINE): the machine's X instead.
+    let hint = if dot(c, c) > crate::MIN_SINE * crate::MIN_SINE {
+        c
     } else {
-        // Along P: the machine's X, made perpendicular to Z (Z = ±P here).
-        let e = [1.0, 0.0, 0.0];
-        let ez = e[0] * z[0] + e[1] * z[1] + e[2] * z[2];
-        unit(core::array::from_fn(|k| e[k] - ez * z[k]))?
+        [1.0, 0.0, 0.0]
     };
-    let y = cross(z, x);
-    let f: Matrix = core::array::from_fn(|i| [x[i] + 0.0, y[i] + 0.0, z[i] + 0.0]);
+    let f = crate::rotation_from_z_x(z, hint)?;
     Ok(mul(&f, &elementary(Axis::Z, r)))
 }
 
@@ -72,27 +68,6 @@ pub fn g68_4(active: &Frame, call: &Frame) -> Frame {
 
 /// `G69`: no tilted plane.
 pub const G69: Frame = Frame::IDENTITY;
-
-fn cross(a: Vector, b: Vector) -> Vector {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-fn unit(v: Vector) -> Result<Vector, Error> {
-    if !v.iter().all(|x| x.is_finite()) {
-        return Err(Error::Degenerate);
-    }
-    let scale = v.iter().fold(0.0f64, |a, &x| a.max(abs(x)));
-    if scale <= 0.0 {
-        return Err(Error::Degenerate);
-    }
-    let w = v.map(|x| x / scale);
-    let n = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-    Ok(w.map(|x| x / n + 0.0))
-}
 
 #[cfg(test)]
 mod tests {
@@ -136,7 +111,7 @@ mod tests {
         ] {
             let f = g68_3(t, [0.0, 0.0, 1.0], 25.0).unwrap();
             assert!(crate::orthonormality_error(&f) < 1e-15 && crate::determinant(&f) > 0.0);
-            let z = unit(t).unwrap();
+            let z = crate::unit_vector(t).unwrap();
             assert!((0..3).all(|i| (f[i][2] - z[i]).abs() < 1e-15), "{t:?}");
         }
         // Along P: X' is the machine's X (then R about Z').

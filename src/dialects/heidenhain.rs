@@ -5,7 +5,6 @@
 //! Confidence as in [`crate::dialects::sinumerik`]: **[doc]**, **[3rd]**, **[derived]**,
 //! **[choice]**. `PLANE PROJECTED` (signs not verified) is not here yet.
 
-use crate::math::{abs, sqrt};
 use crate::{
     angles_from_matrix, matrix_from_angles, Axis, Convention, Decomposition, Error, Frame, Kind,
     Matrix, Sequence, Vector,
@@ -53,8 +52,8 @@ pub fn euler_angles(m: &Matrix) -> Result<Decomposition, Error> {
 /// `PLANE VECTOR BX BY BZ NX NY NZ`: `N` is the new Z axis, `B` the new X axis; neither need
 /// be of unit length [doc]. The manual's own example is not orthogonal (B·N = -0.349) and
 /// the control's correction is not documented: `N` is kept and `B` projected onto the plane
-/// normal to it [choice]. A zero `N`, or `B` parallel to `N`, is refused
-/// ([`Error::Degenerate`]).
+/// normal to it [choice]. A zero `N`, or `B` parallel to `N` (a sine of at most
+/// [`crate::MIN_SINE`]), is refused ([`Error::Degenerate`]).
 ///
 /// ```
 /// use cncrot::dialects::heidenhain::vector;
@@ -62,14 +61,7 @@ pub fn euler_angles(m: &Matrix) -> Result<Decomposition, Error> {
 /// assert_eq!(f, cncrot::IDENTITY);
 /// ```
 pub fn vector(b: Vector, n: Vector) -> Result<Matrix, Error> {
-    let z = unit(n)?;
-    let bz = dot(b, z);
-    let x = unit(core::array::from_fn(|k| b[k] - bz * z[k]))?;
-    // The projection leaves a component along z of the order of the rounding: one more
-    // step removes it, so that the columns are orthogonal to 1 ulp.
-    let xz = dot(x, z);
-    let x = unit(core::array::from_fn(|k| x[k] - xz * z[k]))?;
-    Ok(columns(x, cross(z, x), z))
+    crate::rotation_from_z_x(n, b)
 }
 
 /// `B` and `N` of a rotation (unit vectors: the new X and Z axes).
@@ -80,14 +72,15 @@ pub fn vector_of(m: &Matrix) -> (Vector, Vector) {
 /// `PLANE POINTS P1 P2 P3`: the new X axis from P1 to P2, the new Z axis
 /// `(P2 − P1) × (P3 − P1)` (so P3 lies on the positive-Y side), `Y = Z × X` [doc]; the frame's
 /// origin is not moved (the control tilts about the active datum) [doc]. Coincident or
-/// collinear points are refused ([`Error::Degenerate`]). Other controls' three-point rules
+/// collinear points (a sine of at most [`crate::MIN_SINE`] at P1) are refused
+/// ([`Error::Degenerate`]). Other controls' three-point rules
 /// (TwinCAT CNC turns the new Z to positive z) can give the opposite tool axis for the same
 /// points.
 ///
 /// ```
 /// use cncrot::dialects::heidenhain::points;
 /// let f = points([0.0; 3], [1.0, 1.0, 0.0], [-1.0, 1.0, 0.0]).unwrap();
-/// assert!((f[0][0] - 0.5f64.sqrt()).abs() < 1e-15 && f[2][2] == 1.0);
+/// assert!((f[0][0] - 0.5f64.sqrt()).abs() < 1e-15 && (f[2][2] - 1.0).abs() < 1e-15);
 /// ```
 pub fn points(p1: Vector, p2: Vector, p3: Vector) -> Result<Matrix, Error> {
     let a: Vector = core::array::from_fn(|k| p2[k] - p1[k]);
@@ -95,16 +88,9 @@ pub fn points(p1: Vector, p2: Vector, p3: Vector) -> Result<Matrix, Error> {
     if !a.iter().chain(&b).all(|v| v.is_finite()) {
         return Err(Error::OutOfRange);
     }
-    let x = unit(a)?;
-    let c = cross(x, unit(b)?);
-    // Collinear within 1e-12 of the points' own distances (the sine of the angle at P1)
-    // [choice]: such a plane is not determined by the points.
-    let sine = sqrt(dot(c, c));
-    if sine <= 1e-12 || sine.is_nan() {
-        return Err(Error::Degenerate);
-    }
-    let z = unit(c)?;
-    Ok(columns(x, cross(z, x), z))
+    // Y' is the direction to P3 made perpendicular to X', so Z' = X' × Y' is along
+    // (P2 − P1) × (P3 − P1).
+    crate::rotation_from_x_y(a, b)
 }
 
 /// `PLANE RELATIV SPA|SPB|SPC angle`: one incremental spatial angle, about the axis of the
@@ -115,37 +101,6 @@ pub fn relativ(active: &Frame, axis: Axis, angle: f64) -> Frame {
 
 /// `PLANE RESET`: no tilt.
 pub const RESET: Frame = Frame::IDENTITY;
-
-fn dot(a: Vector, b: Vector) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn cross(a: Vector, b: Vector) -> Vector {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-/// `v / |v|`, scaled by its largest component first (no overflow, no underflow to zero);
-/// refuses a zero or non-finite vector.
-fn unit(v: Vector) -> Result<Vector, Error> {
-    if !v.iter().all(|x| x.is_finite()) {
-        return Err(Error::Degenerate);
-    }
-    let scale = v.iter().fold(0.0f64, |a, &x| a.max(abs(x)));
-    if scale <= 0.0 {
-        return Err(Error::Degenerate);
-    }
-    let w = v.map(|x| x / scale);
-    let n = sqrt(dot(w, w));
-    Ok(w.map(|x| x / n + 0.0))
-}
-
-fn columns(x: Vector, y: Vector, z: Vector) -> Matrix {
-    core::array::from_fn(|i| [x[i] + 0.0, y[i] + 0.0, z[i] + 0.0])
-}
 
 #[cfg(test)]
 mod tests {

@@ -2,6 +2,7 @@
 
 pub mod cycle600;
 pub mod fanuc;
+pub mod form;
 pub mod haas;
 pub mod head_def;
 pub mod heidenhain;

@@ -190,8 +190,10 @@ fn projection_angles(s: Sequence, m: &Matrix) -> Result<Decomposition, Error> {
         // 0° or 180° only.
         return Err(Error::OutOfRange);
     }
-    // tan α = tan γ / cos β, on the branch of `projection` (cos² β > 0 keeps the signs).
-    let alpha = atan2_deg(sg * cb, cg * cb * cb);
+    // tan α = tan γ / cos β, on the branch of `projection`: the pair (sin γ·cos β,
+    // cos γ·cos² β) divided by |cos β| > 0, which keeps the quadrant.
+    let sign = if cb < 0.0 { -1.0 } else { 1.0 };
+    let alpha = atan2_deg(sg * sign, cg * crate::math::abs(cb));
     Ok(Decomposition {
         angles: [alpha, beta, c],
         singular: d.singular,
@@ -319,19 +321,7 @@ pub fn orieuler_vector([a2, b2]: [f64; 2]) -> Vector {
 /// assert!(unit_direction([0.0; 3]).is_err());
 /// ```
 pub fn unit_direction(v: Vector) -> Result<Vector, Error> {
-    // Scaled by the largest component first: the sum of squares cannot overflow or
-    // underflow to zero for any finite nonzero vector.
-    // `max` would drop a NaN: finiteness is checked on its own.
-    if !v.iter().all(|x| x.is_finite()) {
-        return Err(Error::Degenerate);
-    }
-    let scale = v.iter().fold(0.0f64, |a, &x| a.max(crate::math::abs(x)));
-    if scale <= 0.0 {
-        return Err(Error::Degenerate);
-    }
-    let w = v.map(|x| x / scale);
-    let n = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-    Ok(w.map(|x| x / n + 0.0))
+    crate::unit_vector(v)
 }
 
 /// `ORIEULER` angles `[A2, B2]` of a tool direction (any length): B2 in [0, 180], A2 in

@@ -3,7 +3,6 @@
 //!
 //! Confidence as in [`crate::dialects::sinumerik`].
 
-use crate::math::{abs, sqrt};
 use crate::{matrix_from_angles, AxisCode, Error, Frame, Kind, Matrix, Sequence, Vector};
 
 /// How `G158` reads `A B C`: the rotation mode [doc].
@@ -126,31 +125,15 @@ pub fn frame(
 }
 
 fn normal(n: Vector) -> Result<Matrix, Error> {
-    if !n.iter().all(|x| x.is_finite()) {
-        return Err(Error::Degenerate);
-    }
-    let scale = n.iter().fold(0.0f64, |a, &x| a.max(abs(x)));
-    if scale <= 0.0 {
-        return Err(Error::Degenerate);
-    }
-    let w = n.map(|x| x / scale);
-    let len = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-    let z = w.map(|x| x / len);
-    // Y × Z = (z_z, 0, −z_x): in the old XZ plane.
-    let h = sqrt(z[2] * z[2] + z[0] * z[0]);
-    let x = if h > 1e-12 {
-        [z[2] / h, 0.0, -z[0] / h]
+    let z = crate::unit_vector(n)?;
+    // Y × Z = (z_z, 0, −z_x) lies in the old XZ plane; along Y, the old X instead.
+    let h = [z[2], 0.0, -z[0]];
+    let hint = if h[0] * h[0] + h[2] * h[2] > crate::MIN_SINE * crate::MIN_SINE {
+        h
     } else {
         [1.0, 0.0, 0.0]
     };
-    let y = [
-        z[1] * x[2] - z[2] * x[1],
-        z[2] * x[0] - z[0] * x[2],
-        z[0] * x[1] - z[1] * x[0],
-    ];
-    Ok(core::array::from_fn(|i| {
-        [x[i] + 0.0, y[i] + 0.0, z[i] + 0.0]
-    }))
+    crate::rotation_from_z_x(z, hint)
 }
 
 #[cfg(test)]

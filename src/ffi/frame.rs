@@ -5,7 +5,7 @@ use crate::{AxisCode, Frame};
 
 /// # Safety
 /// `p` is non-NULL and points to 16 readable doubles.
-unsafe fn read_frame(p: *const f64) -> Result<Frame, cncrot_status> {
+pub(super) unsafe fn read_frame(p: *const f64) -> Result<Frame, cncrot_status> {
     let v: [f64; 16] = read_finite(p)?;
     let h: [[f64; 4]; 4] = core::array::from_fn(|i| core::array::from_fn(|j| v[4 * i + j]));
     Ok(Frame::from_homogeneous(&h)?)
@@ -13,7 +13,7 @@ unsafe fn read_frame(p: *const f64) -> Result<Frame, cncrot_status> {
 
 /// # Safety
 /// `p` is non-NULL and points to 16 writable doubles.
-unsafe fn write_frame(p: *mut f64, f: &Frame) -> Result<(), cncrot_status> {
+pub(super) unsafe fn write_frame(p: *mut f64, f: &Frame) -> Result<(), cncrot_status> {
     let h = f.to_homogeneous();
     write::<16>(p, core::array::from_fn(|k| h[k / 4][k % 4]))
 }

@@ -13,10 +13,12 @@
 //! - integers from C are validated, never transmuted into Rust enums.
 
 mod cycle600;
+mod dialects;
 mod frame;
 mod rotation;
 
 pub use cycle600::*;
+pub use dialects::*;
 pub use frame::*;
 pub use rotation::*;
 
@@ -236,6 +238,32 @@ mod tests {
             committed == generated,
             "include/cncrot.h is stale: run `cargo build` and commit it"
         );
+    }
+
+    /// Every name the header defines or declares is prefixed: cbindgen exports every
+    /// C-compatible public item of the crate, so a new public constant of the Rust API leaks
+    /// into the header unless `cbindgen.toml` excludes it.
+    #[test]
+    fn every_header_name_is_prefixed() {
+        let header = include_str!(concat!(env!("OUT_DIR"), "/cncrot.h"));
+        for line in header.lines() {
+            let l = line.trim_start();
+            let name = if let Some(rest) = l.strip_prefix("#define ") {
+                rest.split_whitespace().next()
+            } else if let Some(rest) = l.strip_prefix("typedef struct ") {
+                rest.split_whitespace().next()
+            } else if let Some(rest) = l.strip_prefix("typedef enum ") {
+                rest.split_whitespace().next()
+            } else {
+                None
+            };
+            if let Some(name) = name {
+                let ok = name.starts_with("cncrot_")
+                    || name.starts_with("CNCROT_")
+                    || name == "CNCROT_H";
+                assert!(ok, "unprefixed name in the header: {line}");
+            }
+        }
     }
 
     #[test]

@@ -272,6 +272,70 @@ pub fn table() -> Vec<Call> {
             ));
             t.f64s(&p);
         }),
+        ("cncrot_form_word_count", |t| unsafe {
+            let mut n = 0usize;
+            for form in [0, 1, 3, 8, 11, 12, -1] {
+                t.status(cncrot_form_word_count(form, &mut n));
+                t.word(n as u64);
+            }
+            t.status(cncrot_form_word_count(1, std::ptr::null_mut()));
+        }),
+        ("cncrot_form_frame", |t| unsafe {
+            let mut f = [0.0; 16];
+            let g68 = [10.0, 0.0, 0.0, 0.0, 30.0, 0.0];
+            t.status(cncrot_form_frame(8, 0, g68.as_ptr(), 6, f.as_mut_ptr()));
+            t.f64s(&f);
+            let c800 = [0.0, 0.0, 0.0, 30.0, 20.0, 10.0, 0.0, 0.0, 0.0];
+            t.status(cncrot_form_frame(
+                1,
+                128 + 57,
+                c800.as_ptr(),
+                9,
+                f.as_mut_ptr(),
+            ));
+            t.f64s(&f);
+            t.status(cncrot_form_frame(1, 192, c800.as_ptr(), 9, f.as_mut_ptr()));
+            t.status(cncrot_form_frame(8, 0, g68.as_ptr(), 5, f.as_mut_ptr()));
+            t.status(cncrot_form_frame(12, 0, g68.as_ptr(), 6, f.as_mut_ptr()));
+            t.status(cncrot_form_frame(8, 0, BAD.as_ptr(), 3, f.as_mut_ptr()));
+            t.status(cncrot_form_frame(
+                7,
+                0,
+                [0.0; 9].as_ptr(),
+                9,
+                f.as_mut_ptr(),
+            ));
+            t.status(cncrot_form_frame(8, 0, null(), 6, f.as_mut_ptr()));
+            t.f64s(&f);
+        }),
+        ("cncrot_form_values", |t| unsafe {
+            let mut w = [0.0; 9];
+            let mut f = [0.0; 16];
+            let a = [0.0, 0.0, 0.0, 30.0, 90.0, 60.0];
+            t.status(cncrot_form_frame(8, 0, a.as_ptr(), 6, f.as_mut_ptr()));
+            for (form, sel, n) in [
+                (8, 0, 6),
+                (1, 57, 9),
+                (4, 0, 3),
+                (11, 123, 6),
+                (9, 10157, 9),
+            ] {
+                t.status(cncrot_form_values(form, sel, f.as_ptr(), w.as_mut_ptr(), n));
+                t.f64s(&w);
+            }
+            t.status(cncrot_form_values(4, 0, IDF.as_ptr(), w.as_mut_ptr(), 3));
+            t.status(cncrot_form_values(3, 0, IDF.as_ptr(), w.as_mut_ptr(), 2));
+            t.status(cncrot_form_values(1, 192, IDF.as_ptr(), w.as_mut_ptr(), 9));
+            t.status(cncrot_form_values(
+                8,
+                0,
+                [0.0; 16].as_ptr(),
+                w.as_mut_ptr(),
+                6,
+            ));
+            t.status(cncrot_form_values(8, 0, IDF.as_ptr(), null_mut(), 6));
+            t.f64s(&w);
+        }),
         ("cncrot_cycle600_gud_size", |t| {
             t.word(cncrot_cycle600_gud_size() as u64);
         }),

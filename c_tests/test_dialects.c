@@ -1,0 +1,245 @@
+/* The dialects' tilted-plane forms through the C interface: the spec's worked numbers, the
+ * seeds' examples (TwinCAT, Syntec), the paper's probe use case, hand geometry computed here
+ * with the C library's trigonometry, cross-dialect identities, every pair of writable forms
+ * round-tripping random frames, and the error paths. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cncrot.h"
+#include "harness.h"
+
+static const double PI = 3.14159265358979323846;
+
+/* Hand geometry, independent of the library: elementary rotations and products. */
+static void elem(int axis, double deg, double r[9]) {
+  double c = cos(deg * PI / 180), s = sin(deg * PI / 180);
+  double x[9] = {1, 0, 0, 0, c, -s, 0, s, c}, y[9] = {c, 0, s, 0, 1, 0, -s, 0, c}, z[9] = {c, -s, 0, s, c, 0, 0, 0, 1};
+  memcpy(r, axis == 1 ? x : axis == 2 ? y : z, sizeof x);
+}
+static void mul3(const double a[9], const double b[9], double r[9]) {
+  double t[9];
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) t[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
+  memcpy(r, t, sizeof t);
+}
+/* r = R_a(p)·R_b(q)·R_c(s): about the moving axes a, then b, then c. */
+static void intrinsic(int a, int b, int c, double p, double q, double s, double r[9]) {
+  double ra[9], rb[9], rc[9];
+  elem(a, p, ra);
+  elem(b, q, rb);
+  elem(c, s, rc);
+  mul3(ra, rb, r);
+  mul3(r, rc, r);
+}
+static void rot_of(const double f[16], double r[9]) {
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) r[3 * i + j] = f[4 * i + j];
+}
+
+static void worked_numbers(void) {
+  double f[16], r[9];
+  /* PLANE SPATIAL SPA45 SPB0 SPC90 and SPA27 SPB0 SPC45 (spec). */
+  double s1[3] = {45, 0, 90}, e1[9] = {0, -0.707107, 0.707107, 1, 0, 0, 0, 0.707107, 0.707107};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_SPATIAL, 0, s1, 3, f), 0);
+  rot_of(f, r);
+  CHECK_NEAR(r, e1, 9, 5e-7);
+  double s2[3] = {27, 0, 45}, e2[9] = {0.707107, -0.630037, 0.321020, 0.707107, 0.630037, -0.321020, 0, 0.453990, 0.891007};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_SPATIAL, 0, s2, 3, f), 0);
+  rot_of(f, r);
+  CHECK_NEAR(r, e2, 9, 5e-7);
+  /* PLANE EULER EULPR45 EULNU20 EULROT22 (spec). */
+  double s3[3] = {45, 20, 22}, e3[9] = {0.406706, -0.880966, 0.241845, 0.904530, 0.351193, -0.241845, 0.128123, 0.317116, 0.939693};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_EULER, 0, s3, 3, f), 0);
+  rot_of(f, r);
+  CHECK_NEAR(r, e3, 9, 5e-7);
+  /* ROTS X30 Y20 (spec): gamma = 28.481238. */
+  double s4[2] = {30, 20}, e4[9] = {0.939693, 0.163099, 0.300627, 0, 0.878973, -0.476871, -0.342020, 0.448112, 0.825965};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_SINUMERIK_ROTS, 0, s4, 2, f), 0);
+  rot_of(f, r);
+  CHECK_NEAR(r, e4, 9, 5e-7);
+  /* CYCLE800 projection mode X,Y then Z is the same as ROTS X Y. */
+  double c8[9] = {0, 0, 0, 30, 20, 0, 0, 0, 0};
+  double g[16];
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_CYCLE800, 128 + 57, c8, 9, g), 0);
+  CHECK_NEAR(g, f, 16, 1e-15);
+}
+
+static void seeds_and_paper(void) {
+  double f[16], g[16], v[3], r[9];
+  /* TwinCAT (seed 001): after ROT Z45, CalcInvRot of (40, 10, 0) is (35.35, -21.21, 0). */
+  double z45[3] = {0, 0, 45}, p[3] = {40, 10, 0}, expect[3] = {35.355339, -21.213203, 0};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_TWINCAT_ROT, 0, z45, 3, f), 0);
+  rot_of(f, r);
+  CHECK_STATUS(cncrot_rotate_vector_inverse(r, p, v), 0);
+  CHECK_NEAR(v, expect, 3, 1e-6);
+  /* transRotZ(45) twice maps (30, 0, 0) to (0, 30, 0). */
+  double q[3] = {30, 0, 0}, q2[3] = {0, 30, 0};
+  CHECK_STATUS(cncrot_frame_compose(f, f, g), 0);
+  CHECK_STATUS(cncrot_frame_transform_point(g, q, v), 0);
+  CHECK_NEAR(v, q2, 3, 1e-14);
+  /* TwinCAT order: Z, then Y, then X about the global axes: Rx(x)·Ry(y)·Rz(z). */
+  double xyz[3] = {10, 20, 30}, h[9];
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_TWINCAT_ROT, 0, xyz, 3, f), 0);
+  rot_of(f, r);
+  intrinsic(1, 2, 3, 10, 20, 30, h);
+  CHECK_NEAR(r, h, 9, 1e-15);
+  /* Syntec (seed 003): G158 L1 P10157 X2. Y0. Z10. A20 B20 C-30 U0 V10 W0: translate
+   * (2, 0, 10), turn about X 20, the new Y 20, the new Z -30, then (0, 10, 0) in the turned
+   * system. */
+  double s[9] = {2, 0, 10, 20, 20, -30, 0, 10, 0};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_G158, 10157, s, 9, f), 0);
+  rot_of(f, r);
+  intrinsic(1, 2, 3, 20, 20, -30, h);
+  CHECK_NEAR(r, h, 9, 1e-15);
+  double t[3] = {2 + 10 * h[1], 10 * h[4], 10 + 10 * h[7]}, ft[3] = {f[3], f[7], f[11]};
+  CHECK_NEAR(ft, t, 3, 1e-14);
+  /* Syntec P01159 (mode 1, order 59, incremental) as a lone block: on no active plane. */
+  double s2[9] = {0, 0, 0, 0, 0, 10, 0, 0, 0};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_G158, 1159, s2, 9, f), 0);
+  /* The paper: probe angles about the machine axes X, Y, Z = 30, 45, 60 are PLANE SPATIAL,
+   * and the same plane is CYCLE800 axis-by-axis Z, X', Y'' with CYCLE600's output. */
+  double probe[3] = {30, 45, 60}, ex2[9] = {0.3536, -0.5732, 0.7392, 0.6124, 0.7392, 0.2803, -0.7071, 0.3536, 0.6124};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_SPATIAL, 0, probe, 3, f), 0);
+  rot_of(f, r);
+  CHECK_NEAR(r, ex2, 9, 1e-4);
+  double c800[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}, w[9];
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_CYCLE800, 39, f, w, 9), 0);
+  double cyc600[3] = {37.7923, 20.7048, 49.1066};
+  CHECK_NEAR(w + 3, cyc600, 3, 1e-4);
+  memcpy(c800 + 3, cyc600, sizeof cyc600);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_CYCLE800, 39, c800, 9, g), 0);
+  CHECK_NEAR(g, f, 16, 1e-5);
+}
+
+static void dialect_rules(void) {
+  double f[16], w[9], r[9], h[9];
+  /* SINUMERIK read-back (manual): CROT(x,10,y,90,z,40) -> x 0, y 90, z 30. */
+  double a[3] = {10, 90, 40}, e[3] = {0, 90, 30};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_SINUMERIK_ROT, 0, a, 3, f), 0);
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_SINUMERIK_ROT, 0, f, w, 3), CNCROT_STATUS_SINGULAR);
+  CHECK_NEAR(w, e, 3, 1e-12);
+  /* CROT(x,190,y,0,z,-200) -> x -170, y 0, z 160. */
+  double b[3] = {190, 0, -200}, eb[3] = {-170, 0, 160};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_SINUMERIK_ROT, 0, b, 3, f), 0);
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_SINUMERIK_ROT, 0, f, w, 3), 0);
+  CHECK_NEAR(w, eb, 3, 1e-12);
+  /* RPY: Rz(z)·Ry(y)·Rx(x). */
+  double xyz[3] = {10, 20, 30};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_SINUMERIK_ROT, 0, xyz, 3, f), 0);
+  rot_of(f, r);
+  intrinsic(3, 2, 1, 30, 20, 10, h);
+  CHECK_NEAR(r, h, 9, 1e-15);
+  /* G68.2: Rz(I)·Rx(J)·Rz(K) at the origin X Y Z; read back with J >= 0. */
+  double g68[6] = {5, 6, 7, 30, -45, 60};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_G68_2, 0, g68, 6, f), 0);
+  rot_of(f, r);
+  intrinsic(3, 1, 3, 30, -45, 60, h);
+  CHECK_NEAR(r, h, 9, 1e-15);
+  CHECK(f[3] == 5 && f[7] == 6 && f[11] == 7, "origin");
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_G68_2, 0, f, w, 6), 0);
+  CHECK(w[4] >= 0 && fabs(w[4] - 45) < 1e-12, "J = %g", w[4]);
+  /* Haas G268 Q123 is PLANE SPATIAL with SPA = I, SPB = J, SPC = K. */
+  double q[6] = {0, 0, 0, 10, 20, 30}, sp[3] = {10, 20, 30}, f2[16];
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_G268, 123, q, 6, f), 0);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_SPATIAL, 0, sp, 3, f2), 0);
+  CHECK_NEAR(f, f2, 16, 0);
+  /* PLANE SPATIAL at SPB = 90: SPC = 0 (the last rotation carries no angle). */
+  double sing[3] = {10, 90, 40};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_SPATIAL, 0, sing, 3, f), 0);
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_PLANE_SPATIAL, 0, f, w, 3), CNCROT_STATUS_SINGULAR);
+  CHECK(w[1] == 90 && w[2] == 0, "%g %g %g", w[0], w[1], w[2]);
+  /* PLANE POINTS: X' from P1 to P2, P3 on the +Y' side; origin at P1. */
+  double pts[9] = {1, 1, 1, 2, 2, 1, 0, 2, 1}, s2 = sqrt(0.5);
+  double ep[9] = {s2, -s2, 0, s2, s2, 0, 0, 0, 1};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_POINTS, 0, pts, 9, f), 0);
+  rot_of(f, r);
+  CHECK_NEAR(r, ep, 9, 1e-15);
+  CHECK(f[3] == 1 && f[7] == 1 && f[11] == 1, "points origin");
+  /* PLANE VECTOR keeps N and projects B. */
+  double vec[6] = {2, 2, 9, 0, 0, 5};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_VECTOR, 0, vec, 6, f), 0);
+  rot_of(f, r);
+  CHECK_NEAR(r, ep, 9, 1e-15);
+}
+
+/* Every pair of writable forms: words in one form -> frame -> words in another -> frame. */
+static void every_pair_round_trips(void) {
+  struct {
+    int form, sel, n;
+  } forms[] = {
+      {CNCROT_FORM_CYCLE800, 57, 9},   {CNCROT_FORM_CYCLE800, 27, 9},     {CNCROT_FORM_CYCLE800, 64, 9},
+      {CNCROT_FORM_CYCLE800, 185, 9},  {CNCROT_FORM_SINUMERIK_ROT, 0, 3}, {CNCROT_FORM_SINUMERIK_ROT, 1, 3},
+      {CNCROT_FORM_PLANE_SPATIAL, 0, 3}, {CNCROT_FORM_PLANE_EULER, 0, 3}, {CNCROT_FORM_PLANE_VECTOR, 0, 6},
+      {CNCROT_FORM_PLANE_POINTS, 0, 9}, {CNCROT_FORM_G68_2, 0, 6},        {CNCROT_FORM_G158, 10157, 9},
+      {CNCROT_FORM_TWINCAT_ROT, 0, 3}, {CNCROT_FORM_G268, 321, 6},
+  };
+  int nf = (int)(sizeof forms / sizeof forms[0]);
+  double singular[4][3] = {{10, 90, 40}, {0, 0, 0}, {90, 90, 90}, {-30, -90, 120}};
+  for (int trial = 0; trial < 200; trial++) {
+    double a[3] = {rnd(-180, 180), rnd(-90, 90), rnd(-180, 180)}, o[3] = {0, 0, 0}, f[16];
+    if (trial < 4) memcpy(a, singular[trial], sizeof a);
+    cncrot_frame_from_angles(0, 57, a, o, o, f);
+    for (int i = 0; i < nf; i++) {
+      double w[9], g[16], w2[9], h[16];
+      int si = cncrot_form_values(forms[i].form, forms[i].sel, f, w, (size_t)forms[i].n);
+      if (forms[i].sel == 185 && si == CNCROT_STATUS_OUT_OF_RANGE) continue; /* not expressible */
+      CHECK(si >= 0, "form %d/%d: %s", forms[i].form, forms[i].sel, cncrot_status_str(si));
+      if (si < 0) continue;
+      CHECK_STATUS(cncrot_form_frame(forms[i].form, forms[i].sel, w, (size_t)forms[i].n, g), 0);
+      CHECK_NEAR(g, f, 16, 1e-12);
+      for (int j = 0; j < nf; j++) {
+        int sj = cncrot_form_values(forms[j].form, forms[j].sel, g, w2, (size_t)forms[j].n);
+        if (forms[j].sel == 185 && sj == CNCROT_STATUS_OUT_OF_RANGE) continue;
+        CHECK(sj >= 0, "%d -> %d: %s", forms[i].form, forms[j].form, cncrot_status_str(sj));
+        if (sj < 0) continue;
+        CHECK_STATUS(cncrot_form_frame(forms[j].form, forms[j].sel, w2, (size_t)forms[j].n, h), 0);
+        CHECK_NEAR(h, f, 16, 1e-12);
+      }
+    }
+  }
+}
+
+static void errors_leave_outputs_untouched(void) {
+  double f[16], w[9], nan = strtod("nan", NULL);
+  double ok6[6] = {0, 0, 0, 0, 30, 0}, bad6[6] = {0, 0, 0, 0, nan, 0}, zero9[9] = {0};
+  double idf[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  double moved[16] = {1, 0, 0, 5, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  fill_sentinel(f, 16);
+  fill_sentinel(w, 9);
+  CHECK_STATUS(cncrot_form_frame(0, 0, ok6, 6, f), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_form_frame(12, 0, ok6, 6, f), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_G68_2, 0, ok6, 5, f), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_G68_2, 1, ok6, 6, f), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_G68_2, 0, bad6, 6, f), CNCROT_STATUS_NOT_FINITE);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_G68_2, 0, NULL, 6, f), CNCROT_STATUS_NULL_POINTER);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_G68_2, 0, ok6, 6, NULL), CNCROT_STATUS_NULL_POINTER);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_CYCLE800, 192, zero9, 9, f), CNCROT_STATUS_NOT_AVAILABLE);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_CYCLE800, 22, zero9, 9, f), CNCROT_STATUS_BAD_SEQUENCE);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_CYCLE800, 256, zero9, 9, f), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_G158, 10200, zero9, 9, f), CNCROT_STATUS_NOT_AVAILABLE);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_G268, 313, ok6, 6, f), CNCROT_STATUS_BAD_SEQUENCE);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_POINTS, 0, zero9, 9, f), CNCROT_STATUS_DEGENERATE);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_VECTOR, 0, ok6, 6, f), CNCROT_STATUS_DEGENERATE);
+  CHECK(is_sentinel(f, 16), "frame written on error");
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_SINUMERIK_ROTS, 0, idf, w, 2), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_PLANE_SPATIAL, 0, moved, w, 3), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_CYCLE800, 192, idf, w, 9), CNCROT_STATUS_NOT_AVAILABLE);
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_G158, 1157, idf, w, 9), CNCROT_STATUS_BAD_ARGUMENT);
+  double zero16[16] = {0};
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_G68_2, 0, zero16, w, 6), CNCROT_STATUS_NOT_A_ROTATION);
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_G68_2, 0, idf, w, 9), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK(is_sentinel(w, 9), "words written on error");
+  /* A vertical first projected axis with the plane turned about it: not expressible. */
+  double yx[16] = {0, 0.5, 0.8660254037844386, 0, 0, 0.8660254037844386, -0.5, 0, -1, 0, 0, 0, 0, 0, 0, 1};
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_CYCLE800, 185, yx, w, 9), CNCROT_STATUS_OUT_OF_RANGE);
+  CHECK(is_sentinel(w, 9), "words written on error");
+}
+
+int main(void) {
+  worked_numbers();
+  seeds_and_paper();
+  dialect_rules();
+  every_pair_round_trips();
+  errors_leave_outputs_untouched();
+  return finish("test_dialects");
+}
