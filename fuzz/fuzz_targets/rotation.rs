@@ -274,7 +274,11 @@ fuzz_target!(|data: &[u8]| {
             18 => {
                 let form = inp.int();
                 let mut n = usize::MAX;
-                let np = if n1 { std::ptr::null_mut() } else { &mut n as *mut usize };
+                let np = if n1 {
+                    std::ptr::null_mut()
+                } else {
+                    &mut n as *mut usize
+                };
                 let s = cncrot_form_word_count(form, np);
                 assert_known(s);
                 if s < 0 {
