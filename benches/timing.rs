@@ -489,6 +489,84 @@ fn main() {
             report("cncrot_form_values", class, &h, &mut rows);
         }
     }
+    // Probing: a flange from four points, a least-squares plane of four points (the time is
+    // linear in the number of points), an edge in a tilted plane.
+    {
+        let random = &angle_classes[0].1;
+        let flanges: Vec<[[f64; 3]; 4]> = random
+            .iter()
+            .map(|a| {
+                let (sx, sy) = (a[0] / 400.0, a[1] / 400.0);
+                [
+                    [0.0, 0.0, 0.0],
+                    [100.0, 0.0, 100.0 * sx],
+                    [0.0, 0.0, 0.0],
+                    [0.0, 100.0, 100.0 * sy],
+                ]
+            })
+            .collect();
+        let (mut ang, mut f) = ([0.0; 3], [0.0; 16]);
+        measure(
+            &mut h,
+            n("cncrot_probe_flange", "random"),
+            overhead,
+            &flanges,
+            &mut |p| unsafe {
+                cncrot_probe_flange(
+                    p[0].as_ptr(),
+                    p[1].as_ptr(),
+                    p[2].as_ptr(),
+                    p[3].as_ptr(),
+                    ang.as_mut_ptr(),
+                    f.as_mut_ptr(),
+                )
+            },
+        );
+        report("cncrot_probe_flange", "random", &h, &mut rows);
+        // Four probed points on a tilted plane, exactly planar or with one 0.02 mm off.
+        let cloud = |a: &[f64; 3], off: f64| -> Vec<f64> {
+            (0..4)
+                .flat_map(|k| {
+                    let (x, y) = ((k % 2) as f64 * 100.0, (k / 2) as f64 * 80.0);
+                    let bump = if k == 3 { off } else { 0.0 };
+                    [x, y, 5.0 + a[0] / 1000.0 * x + a[1] / 1000.0 * y + bump]
+                })
+                .collect()
+        };
+        let mut res = [0.0; 2];
+        for (class, off) in [("4 points", 0.0), ("4 points, one off", 0.02)] {
+            let clouds: Vec<Vec<f64>> = random.iter().map(|a| cloud(a, off)).collect();
+            measure(
+                &mut h,
+                n("cncrot_probe_plane", class),
+                overhead,
+                &clouds,
+                &mut |p| unsafe {
+                    cncrot_probe_plane(p.as_ptr(), 4, f.as_mut_ptr(), res.as_mut_ptr())
+                },
+            );
+            report("cncrot_probe_plane", class, &h, &mut rows);
+        }
+        let edges: Vec<[f64; 16]> = frames.clone();
+        let mut angle = 0.0;
+        let (e1, e2) = ([0.0; 3], [100.0, 30.0, 7.0]);
+        measure(
+            &mut h,
+            n("cncrot_probe_edge", "random"),
+            overhead,
+            &edges,
+            &mut |fr| unsafe {
+                cncrot_probe_edge(
+                    fr.as_ptr(),
+                    e1.as_ptr(),
+                    e2.as_ptr(),
+                    &mut angle,
+                    f.as_mut_ptr(),
+                )
+            },
+        );
+        report("cncrot_probe_edge", "random", &h, &mut rows);
+    }
     for (class, inputs) in &angle_classes {
         // CYCLE600 recalculation (paper, Example 3 with these angles), then the additive call.
         let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };

@@ -90,5 +90,30 @@ int main(void) {
       hexes(w2, (int)n);
       printf(" %d\n", s);
     }
+  /* Probing: flanges, planes of five points, edges. */
+  for (int k = 0; k < 12; k++) {
+    double a1[3] = {rnd(-100, 100), rnd(-100, 100), rnd(-10, 10)}, a2[3], b1[3], b2[3], ang[3], f[16];
+    a2[0] = a1[0] + rnd(50, 150), a2[1] = a1[1], a2[2] = a1[2] + rnd(-30, 30);
+    b1[0] = a1[0], b1[1] = a1[1], b1[2] = a1[2];
+    b2[0] = a1[0], b2[1] = a1[1] + rnd(50, 150), b2[2] = a1[2] + rnd(-30, 30);
+    if (cncrot_probe_flange(a1, a2, b1, b2, ang, f) >= 0) {
+      printf("PF");
+      hexes(a1, 3), hexes(a2, 3), hexes(b1, 3), hexes(b2, 3), hexes(ang, 3), hexes(f, 16);
+      printf("\n");
+    }
+    double pts[15], g[16], res[2];
+    for (int j = 0; j < 15; j++) pts[j] = j % 3 == 2 ? 5 + rnd(-0.1, 0.1) + 0.2 * pts[j - 2] : rnd(-100, 100);
+    if (cncrot_probe_plane(pts, 5, g, res) >= 0) {
+      printf("PP");
+      hexes(pts, 15), hexes(g, 16), hexes(res, 2);
+      printf("\n");
+    }
+    double e1[3] = {rnd(-50, 50), rnd(-50, 50), rnd(-5, 5)}, e2[3] = {rnd(-50, 50), rnd(-50, 50), rnd(-5, 5)}, angle, t[16];
+    if (cncrot_probe_edge(f, e1, e2, &angle, t) >= 0) {
+      printf("PE");
+      hexes(f, 16), hexes(e1, 3), hexes(e2, 3), hexes(&angle, 1), hexes(t, 16);
+      printf("\n");
+    }
+  }
   return 0;
 }

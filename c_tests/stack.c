@@ -126,6 +126,20 @@ static void form_values(void) {
           cncrot_form_values(CNCROT_FORM_PLANE_POINTS, 0, f2, w, 9) + cncrot_form_values(CNCROT_FORM_G268, 123, f2, w, 6) +
           cncrot_form_values(CNCROT_FORM_SINUMERIK_ROT, 1, IDF, w, 3);
 }
+static void probe_flange(void) {
+  static const double o[3] = {0, 0, 0}, x[3] = {100, 0, 10}, y[3] = {0, 100, -5};
+  sink += cncrot_probe_flange(o, x, o, y, out3, f) + cncrot_probe_flange(o, o, o, y, out3, f);
+}
+static void probe_plane(void) {
+  static const double pts[24] = {0, 0, 5, 100, 0, 5, 0, 100, 5, 100, 100, 5.02, 50, 50, 5, 20, 70, 5.01, 90, 10, 4.99, 60, 60, 5};
+  static double res[2];
+  sink += cncrot_probe_plane(pts, 8, f, res) + cncrot_probe_plane(pts, 2, f, res);
+}
+static void probe_edge(void) {
+  static const double e1[3] = {0, 0, 0}, e2[3] = {100, 100, 0};
+  static double a;
+  sink += cncrot_probe_edge(IDF, e1, e2, &a, f) + cncrot_probe_edge(IDF, e1, e1, &a, f);
+}
 static void cycle600(void) {
   memset(&gud, 0, sizeof gud);
   sink += cncrot_cycle600(&gud, &table, 0, "UFK600", 1, 57, 1, 2, 3, 30, 45, 60, 4, 5, 6, 1, 39, 0, 0, 0);
@@ -148,7 +162,8 @@ static const struct entry ENTRIES[] = {
     E(frame_about_point, 0), E(frame_compose, 0),      E(frame_inverse, 0),
     E(frame_transform_point, 0), E(cycle600_gud_size, 0), E(head_table_parse, 1),
     E(cycle600, 0),          E(form_frame, 0),         E(form_values, 0),
-    E(form_word_count, 0),
+    E(form_word_count, 0),   E(probe_flange, 0),       E(probe_plane, 0),
+    E(probe_edge, 0),
 };
 
 int main(int argc, char **argv) {

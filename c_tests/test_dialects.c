@@ -218,7 +218,9 @@ static void errors_leave_outputs_untouched(void) {
   CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_CYCLE800, 256, zero9, 9, f), CNCROT_STATUS_BAD_ARGUMENT);
   CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_G158, 10200, zero9, 9, f), CNCROT_STATUS_NOT_AVAILABLE);
   CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_G268, 313, ok6, 6, f), CNCROT_STATUS_BAD_SEQUENCE);
-  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_POINTS, 0, zero9, 9, f), CNCROT_STATUS_DEGENERATE);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_POINTS, 0, zero9, 9, f), CNCROT_STATUS_COINCIDENT);
+  double line9[9] = {0, 0, 0, 1, 1, 1, -2, -2, -2};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_POINTS, 0, line9, 9, f), CNCROT_STATUS_COLLINEAR);
   CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_VECTOR, 0, ok6, 6, f), CNCROT_STATUS_DEGENERATE);
   CHECK(is_sentinel(f, 16), "frame written on error");
   CHECK_STATUS(cncrot_form_values(CNCROT_FORM_SINUMERIK_ROTS, 0, idf, w, 2), CNCROT_STATUS_BAD_ARGUMENT);
@@ -235,8 +237,84 @@ static void errors_leave_outputs_untouched(void) {
   CHECK(is_sentinel(w, 9), "words written on error");
 }
 
+/* The paper's use case: a flange tilted about the machine's X by 30 and Y by 45 (extrinsic),
+ * probed along X and along Y; the angles go into CYCLE600, whose output feeds CYCLE800. */
+static void probing(void) {
+  double r[9], rx[9], ry[9];
+  elem(1, 30, rx);
+  elem(2, 45, ry);
+  mul3(ry, rx, r); /* extrinsic X then Y: Ry(45)·Rx(30) */
+  double n[3] = {r[2], r[5], r[8]};
+#define Z(x, y) (50 - (n[0] * (x) + n[1] * (y)) / n[2])
+  double a1[3] = {10, 20, Z(10, 20)}, a2[3] = {110, 20, Z(110, 20)};
+  double b1[3] = {10, 20, Z(10, 20)}, b2[3] = {10, 90, Z(10, 90)};
+  double ang[3], f[16], e[3] = {30, 45, 0};
+  CHECK_STATUS(cncrot_probe_flange(a1, a2, b1, b2, ang, f), 0);
+  CHECK_NEAR(ang, e, 3, 1e-12);
+  double fr[9];
+  rot_of(f, fr);
+  CHECK_NEAR(fr, r, 9, 1e-15);
+  cncrot_cycle600_gud gud;
+  memset(&gud, 0, sizeof gud);
+  CHECK_STATUS(cncrot_cycle600(&gud, NULL, 0, "UFK600", 1, 57, 0, 0, 0, ang[0], ang[1], ang[2], 0, 0, 0, 1, 39, 0, 0, 0), 0);
+  double w[9], c800[3] = {gud.cyc600_2, gud.cyc600_3, gud.cyc600_4};
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_CYCLE800, 39, f, w, 9), 0);
+  CHECK_NEAR(w + 3, c800, 3, 1e-12);
+  /* Least squares: eight points of that plane (flatness 0), then two corners 0.01 above and
+   * two below in a symmetric pattern (flatness 0.02, rms 0.01). */
+  double pts[24], res[2], g[16];
+  double grid[8][2] = {{0, 0}, {100, 0}, {0, 80}, {100, 80}, {50, 40}, {20, 70}, {90, 10}, {60, 60}};
+  for (int k = 0; k < 8; k++) {
+    pts[3 * k] = grid[k][0];
+    pts[3 * k + 1] = grid[k][1];
+    pts[3 * k + 2] = Z(grid[k][0], grid[k][1]);
+  }
+  CHECK_STATUS(cncrot_probe_plane(pts, 8, g, res), 0);
+  CHECK(res[0] < 1e-12 && res[1] < 1e-12, "flatness %g rms %g", res[0], res[1]);
+  double gz[3] = {g[2], g[6], g[10]};
+  CHECK_NEAR(gz, n, 3, 1e-13);
+  double sym[12], h = 0.01, pat[4][3] = {{1, 1, 1}, {-1, -1, 1}, {1, -1, -1}, {-1, 1, -1}};
+  for (int k = 0; k < 4; k++)
+    for (int i = 0; i < 3; i++) sym[3 * k + i] = 50 * pat[k][0] * r[3 * i] + 50 * pat[k][1] * r[3 * i + 1] + h * pat[k][2] * r[3 * i + 2];
+  CHECK_STATUS(cncrot_probe_plane(sym, 4, g, res), 0);
+  CHECK(fabs(res[0] - 0.02) < 1e-12 && fabs(res[1] - 0.01) < 1e-12, "flatness %g rms %g", res[0], res[1]);
+  /* Three points: PLANE POINTS's frame. */
+  double pp[16];
+  CHECK_STATUS(cncrot_probe_plane(pts, 3, g, res), 0);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_POINTS, 0, pts, 9, pp), 0);
+  CHECK_NEAR(g, pp, 16, 1e-12);
+  /* An edge at 20 degrees from X' in the tilted plane. */
+  double c20 = cos(20 * PI / 180), s20 = sin(20 * PI / 180), e1[3], e2[3], angle, t[16];
+  for (int i = 0; i < 3; i++) {
+    e1[i] = 10 * r[3 * i] + 10 * r[3 * i + 1];
+    e2[i] = (10 + 50 * c20) * r[3 * i] + (10 + 50 * s20) * r[3 * i + 1];
+  }
+  CHECK_STATUS(cncrot_probe_edge(f, e1, e2, &angle, t), 0);
+  CHECK(fabs(angle - 20) < 1e-12, "angle %g", angle);
+  /* Refusals, outputs untouched. */
+  double o[3] = {0, 0, 0}, x[3] = {100, 0, 0}, xx[3] = {-50, 0, 0}, nanp[3] = {0, strtod("nan", NULL), 0};
+  fill_sentinel(ang, 3);
+  fill_sentinel(f, 16);
+  fill_sentinel(res, 2);
+  CHECK_STATUS(cncrot_probe_flange(o, o, o, x, ang, f), CNCROT_STATUS_COINCIDENT);
+  CHECK_STATUS(cncrot_probe_flange(o, x, o, xx, ang, f), CNCROT_STATUS_COLLINEAR);
+  CHECK_STATUS(cncrot_probe_flange(o, x, nanp, o, ang, f), CNCROT_STATUS_NOT_FINITE);
+  CHECK_STATUS(cncrot_probe_flange(o, x, o, NULL, ang, f), CNCROT_STATUS_NULL_POINTER);
+  CHECK_STATUS(cncrot_probe_plane(pts, 2, f, res), CNCROT_STATUS_TOO_FEW);
+  double same[9] = {1, 2, 3, 1, 2, 3, 1, 2, 3}, line[9] = {0, 0, 0, 1, 2, 3, -2, -4, -6};
+  CHECK_STATUS(cncrot_probe_plane(same, 3, f, res), CNCROT_STATUS_COINCIDENT);
+  CHECK_STATUS(cncrot_probe_plane(line, 3, f, res), CNCROT_STATUS_COLLINEAR);
+  CHECK_STATUS(cncrot_probe_plane((const double *)((const char *)pts + 1), 3, f, res), CNCROT_STATUS_BAD_ARGUMENT);
+  double idf[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}, up[3] = {0, 0, 5};
+  CHECK_STATUS(cncrot_probe_edge(idf, o, o, &angle, f), CNCROT_STATUS_COINCIDENT);
+  CHECK_STATUS(cncrot_probe_edge(idf, o, up, &angle, f), CNCROT_STATUS_COLLINEAR);
+  CHECK(is_sentinel(ang, 3) && is_sentinel(f, 16) && is_sentinel(res, 2), "outputs written on error");
+#undef Z
+}
+
 int main(void) {
   worked_numbers();
+  probing();
   seeds_and_paper();
   dialect_rules();
   every_pair_round_trips();

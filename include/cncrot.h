@@ -171,6 +171,18 @@ enum cncrot_status
    */
   CNCROT_STATUS_BAD_STATE = -15,
   /**
+   * Points that must differ coincide (probing, `PLANE POINTS`).
+   */
+  CNCROT_STATUS_COINCIDENT = -16,
+  /**
+   * Points or directions that must span a plane lie on one line.
+   */
+  CNCROT_STATUS_COLLINEAR = -17,
+  /**
+   * Too few points (a plane needs three).
+   */
+  CNCROT_STATUS_TOO_FEW = -18,
+  /**
    * Internal failure (a caught panic): a bug in cncrot, please report it.
    */
   CNCROT_STATUS_INTERNAL = -100,
@@ -427,8 +439,8 @@ int32_t cncrot_form_word_count(int32_t form, size_t *count);
  * Returns 0, or a negative status with `frame` untouched: `CNCROT_STATUS_BAD_ARGUMENT`
  * (unknown form, wrong `count`, a selector the form does not have),
  * `CNCROT_STATUS_BAD_SEQUENCE` (a bad order code in `_MODE`, `P` or `Q`),
- * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_DEGENERATE` (a zero `PLANE VECTOR` normal,
- * coincident or collinear `PLANE POINTS`), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes,
+ * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_DEGENERATE` (a zero `PLANE VECTOR` normal, or
+ * B along N), `CNCROT_STATUS_COINCIDENT` / `CNCROT_STATUS_COLLINEAR` (`PLANE POINTS`), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes,
  * which need the machine's kinematics), `CNCROT_STATUS_OUT_OF_RANGE`.
  *
  * # Safety
@@ -557,6 +569,83 @@ int32_t cncrot_frame_inverse(const double *frame, double *out);
  * ```
  */
 int32_t cncrot_frame_transform_point(const double *frame, const double *point, double *out);
+
+/**
+ * The paper's flange probing: two points along the machine's X (`a1`, `a2`) and two along
+ * Y (`b1`, `b2`), probed on the flange in machine coordinates, give the flange's tilt as
+ * extrinsic angles about X, Y, Z (for CYCLE600 with `_INEXIN = 0`, `_BIN_IN = 57`; the
+ * third is 0 when A1 and A2 differ only in X and Z) and as a rotation frame (no
+ * translation: the tilt about the active datum, as CYCLE600 with `_POS = 0`).
+ *
+ * Returns 0 (or `CNCROT_STATUS_SINGULAR` for a vertical flange), or with nothing written:
+ * `CNCROT_STATUS_COINCIDENT` (A1 = A2 or B1 = B2), `CNCROT_STATUS_COLLINEAR` (both
+ * directions parallel), `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`.
+ *
+ * # Safety
+ * `a1`, `a2`, `b1`, `b2` point to 3 readable doubles, `angles_deg` to 3 and `frame` to 16
+ * writable doubles (or NULL: error).
+ *
+ * ```c
+ * double a1[3] = {0, 0, 0}, a2[3] = {100, 0, 10}, b1[3] = {0, 0, 0}, b2[3] = {0, 100, 0};
+ * double ang[3], f[16];
+ * cncrot_probe_flange(a1, a2, b1, b2, ang, f);   // ang = {0, -5.7106, 0}
+ * ```
+ */
+int32_t cncrot_probe_flange(const double *a1,
+                            const double *a2,
+                            const double *b1,
+                            const double *b2,
+                            double *angles_deg,
+                            double *frame);
+
+/**
+ * The least-squares plane through `n` points (`points` holds `3·n` doubles, x y z for each)
+ * and its flatness: `frame` gets the plane (origin at the first point's foot on it, X'
+ * along the first two points' direction, Z' on the side of `(P2 − P1) × (P3 − P1)`: three
+ * points give `PLANE POINTS`'s frame), `residual[0]` the flatness (largest minus smallest
+ * distance from the plane), `residual[1]` the RMS distance, millimetres. The time is
+ * linear in `n` (no iteration).
+ *
+ * Returns 0, or with nothing written: `CNCROT_STATUS_TOO_FEW` (n < 3),
+ * `CNCROT_STATUS_COINCIDENT`, `CNCROT_STATUS_COLLINEAR`, `CNCROT_STATUS_DEGENERATE`
+ * (points spread alike in every direction), `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_BAD_ARGUMENT` (`points` not aligned for
+ * doubles, or `n` beyond any array).
+ *
+ * # Safety
+ * `points` points to `3·n` readable doubles, `frame` to 16 and `residual` to 2 writable
+ * doubles (or NULL: error).
+ *
+ * ```c
+ * double pts[12] = {0,0,5, 100,0,5, 0,100,5, 100,100,5.02}, f[16], res[2];
+ * cncrot_probe_plane(pts, 4, f, res);   // res[0] = flatness
+ * ```
+ */
+int32_t cncrot_probe_plane(const double *points, size_t n, double *frame, double *residual);
+
+/**
+ * Two points along an edge of the workpiece (E1 → E2, machine coordinates), probed in the
+ * tilted plane `frame_in`: the turn about the plane's normal that lays its X' along the
+ * edge, in `*angle_deg` (degrees), and the turned plane in `frame_out`
+ * (`frame_in · Rz(angle)`, origin unchanged).
+ *
+ * Returns 0, or with nothing written: `CNCROT_STATUS_COINCIDENT` (E1 = E2),
+ * `CNCROT_STATUS_COLLINEAR` (the edge along the plane's normal),
+ * `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`.
+ *
+ * # Safety
+ * `frame_in` points to 16 and `e1`, `e2` to 3 readable doubles, `angle_deg` to one and
+ * `frame_out` to 16 writable doubles (or NULL: error); `frame_out` may be `frame_in`.
+ *
+ * ```c
+ * double a; cncrot_probe_edge(f, e1, e2, &a, f);   // turn the active plane onto the edge
+ * ```
+ */
+int32_t cncrot_probe_edge(const double *frame_in,
+                          const double *e1,
+                          const double *e2,
+                          double *angle_deg,
+                          double *frame_out);
 
 /**
  * The rotation matrix of three angles in a convention.

@@ -44,6 +44,14 @@ pub enum Error {
     /// A stored CYCLE600 state that this library did not write as it is: corrupted in
     /// storage, edited, or from a version with another layout.
     BadState,
+    /// Points that should be different coincide (probing: A1 = A2; all plane points
+    /// equal; PLANE POINTS with P1 = P2).
+    Coincident,
+    /// Points or directions that should span a plane lie on one line (within a sine of
+    /// [`crate::MIN_SINE`]).
+    Collinear,
+    /// Fewer points than the computation needs (a plane needs three).
+    TooFew,
 }
 
 impl fmt::Display for Error {
@@ -69,6 +77,9 @@ impl Error {
             Error::Parse => "HEAD_DEF text could not be read",
             Error::TableFull => "head table is full",
             Error::OutOfRange => "a result is too large to represent",
+            Error::Coincident => "points that must differ coincide",
+            Error::Collinear => "points or directions that must span a plane lie on one line",
+            Error::TooFew => "too few points (a plane needs three)",
             Error::BadState => {
                 "stored CYCLE600 state is corrupt, edited or from another version (format or checksum)"
             }

@@ -35,6 +35,7 @@ mod vector;
 pub mod ffi;
 
 mod panic;
+pub mod probe;
 
 pub use checksum::crc32;
 pub use error::Error;

@@ -92,7 +92,7 @@ fn orthonormality(m: &[f64]) -> f64 {
 
 fuzz_target!(|data: &[u8]| {
     let mut inp = Input(data);
-    let op = inp.u8() % 20;
+    let op = inp.u8() % 23;
     let (n1, n2, n3, n4) = (inp.null(), inp.null(), inp.null(), inp.null());
     // SAFETY (every call below): each pointer is NULL or a heap buffer of the documented size.
     unsafe {
@@ -286,6 +286,73 @@ fuzz_target!(|data: &[u8]| {
                 } else {
                     assert!((2..=CNCROT_FORM_MAX_WORDS).contains(&n));
                 }
+            }
+            19 => {
+                // Flange points: often on a tilted plane (so success is reached), or anything.
+                let base = inp.f64s::<3>();
+                let pts: [[f64; 3]; 4] = core::array::from_fn(|k| {
+                    let d = inp.f64s::<3>();
+                    if inp.u8() % 2 == 0 {
+                        d
+                    } else {
+                        let along = [[0.0; 3], [100.0, 0.0, 0.0], [0.0; 3], [0.0, 100.0, 0.0]][k];
+                        core::array::from_fn(|i| base[i] + along[i] + 0.01 * d[i].clamp(-1e3, 1e3))
+                    }
+                });
+                let b: Vec<Box<[f64]>> = pts.iter().map(|p| buffer_from(p)).collect();
+                let mut a = buffer(3, SENTINEL);
+                let mut f = buffer(16, SENTINEL);
+                let s = cncrot_probe_flange(
+                    ptr(&b[0], n1),
+                    ptr(&b[1], n2),
+                    ptr(&b[2], n3),
+                    ptr(&b[3], n4),
+                    a.as_mut_ptr(),
+                    f.as_mut_ptr(),
+                );
+                check_outputs(s, &[&a, &f]);
+                if s >= 0 {
+                    let r: Vec<f64> = (0..9).map(|k| f[4 * (k / 3) + k % 3]).collect();
+                    assert!(orthonormality(&r) <= 2e-15, "{:?}", &f[..]);
+                }
+            }
+            20 => {
+                let n = usize::from(inp.u8() % 12);
+                let w: Vec<f64> = (0..3 * n)
+                    .map(|k| {
+                        let x = inp.f64();
+                        if k % 3 == 2 && inp.u8() % 2 == 0 {
+                            5.0
+                        } else {
+                            x
+                        }
+                    })
+                    .collect();
+                let w = buffer_from(&w);
+                let mut f = buffer(16, SENTINEL);
+                let mut r = buffer(2, SENTINEL);
+                let s =
+                    cncrot_probe_plane(ptr(&w, n1), n, ptr_mut(&mut f, n2), ptr_mut(&mut r, n3));
+                check_outputs(s, &[&f, &r]);
+                if s >= 0 {
+                    let m: Vec<f64> = (0..9).map(|k| f[4 * (k / 3) + k % 3]).collect();
+                    assert!(orthonormality(&m) <= 2e-15, "{:?}", &f[..]);
+                    assert!(r[0] >= 0.0 && r[1] >= 0.0, "{:?}", &r[..]);
+                }
+            }
+            21 => {
+                let f = frame(&mut inp);
+                let (e1, e2) = (buffer_from(&inp.f64s::<3>()), buffer_from(&inp.f64s::<3>()));
+                let mut a = buffer(1, SENTINEL);
+                let mut out = buffer(16, SENTINEL);
+                let s = cncrot_probe_edge(
+                    ptr(&f, n1),
+                    ptr(&e1, n2),
+                    ptr(&e2, n3),
+                    ptr_mut(&mut a, n4),
+                    out.as_mut_ptr(),
+                );
+                check_outputs(s, &[&a, &out]);
             }
             _ => {
                 assert_eq!(

@@ -139,6 +139,9 @@ static void raise_status(int32_t s, long row, size_t n) {
     case CNCROT_STATUS_TABLE_FULL: id = "cncrot:tableFull"; break;
     case CNCROT_STATUS_OUT_OF_RANGE: id = "cncrot:outOfRange"; break;
     case CNCROT_STATUS_BAD_STATE: id = "cncrot:badState"; break;
+    case CNCROT_STATUS_COINCIDENT: id = "cncrot:coincident"; break;
+    case CNCROT_STATUS_COLLINEAR: id = "cncrot:collinear"; break;
+    case CNCROT_STATUS_TOO_FEW: id = "cncrot:tooFew"; break;
     default: id = "cncrot:internal"; break;
   }
   if (per_row && row >= 0 && n > 1)

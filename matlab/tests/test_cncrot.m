@@ -167,11 +167,27 @@ function test_cncrot(cases_file)
   expect_error('cncrot:badSize', @() cncrot_form_frame(fm.G68_2, 0, [1 2 3]), 'wrong word count');
   expect_error('cncrot:badSequence', @() cncrot_form_frame(fm.G268, 313, zeros(0, 6)), 'bad Q, empty');
   expect_error('cncrot:notAvailable', @() cncrot_form_frame(fm.CYCLE800, 192, zeros(1, 9)), 'direct mode');
-  expect_error('cncrot:degenerate', @() cncrot_form_frame(fm.PLANE_POINTS, 0, zeros(1, 9)), 'degenerate points');
+  expect_error('cncrot:coincident', @() cncrot_form_frame(fm.PLANE_POINTS, 0, zeros(1, 9)), 'coincident points');
   expect_error('cncrot:badArgument', @() cncrot_form_values(fm.SINUMERIK_ROTS, 0, eye(4)), 'ROTS not writable');
   expect_error('cncrot:badArgument', @() cncrot_form_values(fm.PLANE_SPATIAL, 0, [eye(3) [1; 0; 0]; 0 0 0 1]), 'origin for SPATIAL');
   expect_error('cncrot:notARotation', @() cncrot_form_values(fm.G68_2, 0, 2 * eye(4)), 'not a frame');
   expect_error('cncrot:badSize', @() cncrot_form_values(fm.G68_2, 0, eye(3)), 'F size');
+
+  % Probing: the paper's flange (extrinsic X 30, Y 45), a plane, an edge, the refusals.
+  R = cncrot_matrix(0, 57, [30 45 0]);
+  nz = R(:, 3);
+  z = @(x, y) 50 - (nz(1) * x + nz(2) * y) / nz(3);
+  [a, F] = cncrot_probe_flange([10 20 z(10, 20)], [110 20 z(110, 20)], [10 20 z(10, 20)], [10 90 z(10, 90)]);
+  check(max(abs(a - [30 45 0])) < 1e-12 && max(max(abs(F(1:3, 1:3) - R))) < 1e-15, 'paper flange');
+  [F, fl, rm] = cncrot_probe_plane([0 0 5; 100 0 5; 0 100 5; 100 100 5]);
+  check(fl < 1e-12 && rm < 1e-12 && abs(F(3, 3) - 1) < 1e-15, 'level plane');
+  check(abs(cncrot_probe_edge(eye(4), [0 0 0], [100 100 0]) - 45) < 1e-12, 'edge 45');
+  expect_error('cncrot:coincident', @() cncrot_probe_flange([0 0 0], [0 0 0], [0 0 0], [0 1 0]), 'flange A1 = A2');
+  expect_error('cncrot:collinear', @() cncrot_probe_flange([0 0 0], [1 0 0], [0 0 0], [-1 0 0]), 'flange parallel');
+  expect_error('cncrot:tooFew', @() cncrot_probe_plane([0 0 0; 1 0 0]), 'two points');
+  expect_error('cncrot:collinear', @() cncrot_probe_plane([0 0 0; 1 1 1; 2 2 2]), 'points on a line');
+  expect_error('cncrot:collinear', @() cncrot_probe_edge(eye(4), [0 0 0], [0 0 5]), 'edge along the normal');
+  expect_error('cncrot:badSize', @() cncrot_probe_flange([0 0], [1 0 0], [0 0 0], [0 1 0]), 'point size');
 
   % Parity with the C harness, bit for bit.
   fid = fopen(cases_file, 'r');
@@ -211,6 +227,15 @@ function test_cncrot(cases_file)
         F = reshape(hv(5, 16), 4, 4).';
         [w, st] = cncrot_form_values(str2double(t{2}), str2double(t{3}), F);
         check(same(w, 21) && st == str2double(t{21 + cnt}), ['parity ' line]);
+      case 'PF'
+        [a, F] = cncrot_probe_flange(hv(2, 3), hv(5, 3), hv(8, 3), hv(11, 3));
+        check(same(a, 14) && same(reshape(F.', 1, 16), 17), ['parity ' line]);
+      case 'PP'
+        [F, fl, rm] = cncrot_probe_plane(reshape(hv(2, 15), 3, 5).');
+        check(same(reshape(F.', 1, 16), 17) && same([fl rm], 33), ['parity ' line]);
+      case 'PE'
+        [a, F2] = cncrot_probe_edge(reshape(hv(2, 16), 4, 4).', hv(18, 3), hv(21, 3));
+        check(same(a, 24) && same(reshape(F2.', 1, 16), 25), ['parity ' line]);
     end
     n = n + 1;
   end

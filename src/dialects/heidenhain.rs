@@ -73,7 +73,7 @@ pub fn vector_of(m: &Matrix) -> (Vector, Vector) {
 /// `(P2 − P1) × (P3 − P1)` (so P3 lies on the positive-Y side), `Y = Z × X` [doc]; the frame's
 /// origin is not moved (the control tilts about the active datum) [doc]. Coincident or
 /// collinear points (a sine of at most [`crate::MIN_SINE`] at P1) are refused
-/// ([`Error::Degenerate`]). Other controls' three-point rules
+/// ([`Error::Coincident`], [`Error::Collinear`]). Other controls' three-point rules
 /// (TwinCAT CNC turns the new Z to positive z) can give the opposite tool axis for the same
 /// points.
 ///
@@ -88,9 +88,12 @@ pub fn points(p1: Vector, p2: Vector, p3: Vector) -> Result<Matrix, Error> {
     if !a.iter().chain(&b).all(|v| v.is_finite()) {
         return Err(Error::OutOfRange);
     }
+    if a == [0.0; 3] || b == [0.0; 3] {
+        return Err(Error::Coincident);
+    }
     // Y' is the direction to P3 made perpendicular to X', so Z' = X' × Y' is along
     // (P2 − P1) × (P3 − P1).
-    crate::rotation_from_x_y(a, b)
+    crate::rotation_from_x_y(a, b).map_err(|_| Error::Collinear)
 }
 
 /// `PLANE RELATIV SPA|SPB|SPC angle`: one incremental spatial angle, about the axis of the
@@ -200,11 +203,11 @@ mod tests {
     #[test]
     fn points_refuse_what_defines_no_plane() {
         let o = [1.0, 2.0, 3.0];
-        assert_eq!(points(o, o, [0.0; 3]), Err(Error::Degenerate));
-        assert_eq!(points(o, [2.0, 2.0, 3.0], o), Err(Error::Degenerate));
+        assert_eq!(points(o, o, [0.0; 3]), Err(Error::Coincident));
+        assert_eq!(points(o, [2.0, 2.0, 3.0], o), Err(Error::Coincident));
         assert_eq!(
             points(o, [2.0, 2.0, 3.0], [5.0, 2.0, 3.0]),
-            Err(Error::Degenerate)
+            Err(Error::Collinear)
         );
         assert_eq!(
             points([-f64::MAX, 0.0, 0.0], [f64::MAX, 0.0, 0.0], o),

@@ -58,8 +58,8 @@ pub unsafe extern "C" fn cncrot_form_word_count(form: i32, count: *mut usize) ->
 /// Returns 0, or a negative status with `frame` untouched: `CNCROT_STATUS_BAD_ARGUMENT`
 /// (unknown form, wrong `count`, a selector the form does not have),
 /// `CNCROT_STATUS_BAD_SEQUENCE` (a bad order code in `_MODE`, `P` or `Q`),
-/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_DEGENERATE` (a zero `PLANE VECTOR` normal,
-/// coincident or collinear `PLANE POINTS`), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes,
+/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_DEGENERATE` (a zero `PLANE VECTOR` normal, or
+/// B along N), `CNCROT_STATUS_COINCIDENT` / `CNCROT_STATUS_COLLINEAR` (`PLANE POINTS`), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes,
 /// which need the machine's kinematics), `CNCROT_STATUS_OUT_OF_RANGE`.
 ///
 /// # Safety

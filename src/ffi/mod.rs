@@ -15,11 +15,13 @@
 mod cycle600;
 mod dialects;
 mod frame;
+mod probe;
 mod rotation;
 
 pub use cycle600::*;
 pub use dialects::*;
 pub use frame::*;
+pub use probe::*;
 pub use rotation::*;
 
 use crate::{Convention, Error, Kind};
@@ -68,6 +70,12 @@ pub enum cncrot_status {
     /// checksum is wrong (storage corruption, an edited field, another version), or it is
     /// neither all zero bytes nor well-formed.
     BadState = -15,
+    /// Points that must differ coincide (probing, `PLANE POINTS`).
+    Coincident = -16,
+    /// Points or directions that must span a plane lie on one line.
+    Collinear = -17,
+    /// Too few points (a plane needs three).
+    TooFew = -18,
     /// Internal failure (a caught panic): a bug in cncrot, please report it.
     Internal = -100,
 }
@@ -94,6 +102,9 @@ impl From<Error> for cncrot_status {
             Error::TableFull => cncrot_status::TableFull,
             Error::OutOfRange => cncrot_status::OutOfRange,
             Error::BadState => cncrot_status::BadState,
+            Error::Coincident => cncrot_status::Coincident,
+            Error::Collinear => cncrot_status::Collinear,
+            Error::TooFew => cncrot_status::TooFew,
         }
     }
 }
@@ -125,6 +136,9 @@ pub extern "C" fn cncrot_status_str(status: i32) -> *const c_char {
         -12 => c"CNCROT_STATUS_PARSE: HEAD_DEF text could not be read",
         -13 => c"CNCROT_STATUS_TABLE_FULL: head table is full",
         -14 => c"CNCROT_STATUS_OUT_OF_RANGE: a result is too large to represent",
+        -16 => c"CNCROT_STATUS_COINCIDENT: points that must differ coincide",
+        -17 => c"CNCROT_STATUS_COLLINEAR: points or directions that must span a plane lie on one line",
+        -18 => c"CNCROT_STATUS_TOO_FEW: too few points (a plane needs three)",
         -15 => c"CNCROT_STATUS_BAD_STATE: stored CYCLE600 state is corrupt, edited or from another version (format or checksum)",
         -100 => c"CNCROT_STATUS_INTERNAL: internal failure (caught panic), please report",
         _ => c"CNCROT_STATUS_UNKNOWN: not a cncrot status",
@@ -292,6 +306,9 @@ mod tests {
             S::TableFull,
             S::OutOfRange,
             S::BadState,
+            S::Coincident,
+            S::Collinear,
+            S::TooFew,
             S::Internal,
         ];
         for s in all {

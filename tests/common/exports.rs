@@ -336,6 +336,135 @@ pub fn table() -> Vec<Call> {
             t.status(cncrot_form_values(8, 0, IDF.as_ptr(), null_mut(), 6));
             t.f64s(&w);
         }),
+        ("cncrot_probe_flange", |t| unsafe {
+            let (mut a, mut f) = ([0.0; 3], [0.0; 16]);
+            let o = [0.0; 3];
+            let (x, y) = ([100.0, 0.0, 10.0], [0.0, 100.0, -5.0]);
+            t.status(cncrot_probe_flange(
+                o.as_ptr(),
+                x.as_ptr(),
+                o.as_ptr(),
+                y.as_ptr(),
+                a.as_mut_ptr(),
+                f.as_mut_ptr(),
+            ));
+            t.f64s(&a);
+            t.f64s(&f);
+            t.status(cncrot_probe_flange(
+                o.as_ptr(),
+                o.as_ptr(),
+                o.as_ptr(),
+                y.as_ptr(),
+                a.as_mut_ptr(),
+                f.as_mut_ptr(),
+            ));
+            t.status(cncrot_probe_flange(
+                o.as_ptr(),
+                x.as_ptr(),
+                o.as_ptr(),
+                x.as_ptr(),
+                a.as_mut_ptr(),
+                f.as_mut_ptr(),
+            ));
+            t.status(cncrot_probe_flange(
+                o.as_ptr(),
+                BAD.as_ptr(),
+                o.as_ptr(),
+                y.as_ptr(),
+                a.as_mut_ptr(),
+                f.as_mut_ptr(),
+            ));
+            t.status(cncrot_probe_flange(
+                null(),
+                x.as_ptr(),
+                o.as_ptr(),
+                y.as_ptr(),
+                a.as_mut_ptr(),
+                f.as_mut_ptr(),
+            ));
+            t.f64s(&a);
+        }),
+        ("cncrot_probe_plane", |t| unsafe {
+            let (mut f, mut r) = ([0.0; 16], [0.0; 2]);
+            let pts = [
+                0.0, 0.0, 5.0, 100.0, 0.0, 5.0, 0.0, 100.0, 5.0, 100.0, 100.0, 5.02,
+            ];
+            t.status(cncrot_probe_plane(
+                pts.as_ptr(),
+                4,
+                f.as_mut_ptr(),
+                r.as_mut_ptr(),
+            ));
+            t.f64s(&f);
+            t.f64s(&r);
+            t.status(cncrot_probe_plane(
+                pts.as_ptr(),
+                2,
+                f.as_mut_ptr(),
+                r.as_mut_ptr(),
+            ));
+            t.status(cncrot_probe_plane(
+                [1.0; 12].as_ptr(),
+                4,
+                f.as_mut_ptr(),
+                r.as_mut_ptr(),
+            ));
+            t.status(cncrot_probe_plane(
+                [0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 2.0, 2.0, 2.0].as_ptr(),
+                3,
+                f.as_mut_ptr(),
+                r.as_mut_ptr(),
+            ));
+            t.status(cncrot_probe_plane(
+                pts.as_ptr(),
+                4,
+                f.as_mut_ptr(),
+                null_mut(),
+            ));
+            t.f64s(&r);
+        }),
+        ("cncrot_probe_edge", |t| unsafe {
+            let (mut a, mut f) = (0.0, [0.0; 16]);
+            let (e1, e2) = ([0.0; 3], [100.0, 100.0, 0.0]);
+            t.status(cncrot_probe_edge(
+                IDF.as_ptr(),
+                e1.as_ptr(),
+                e2.as_ptr(),
+                &mut a,
+                f.as_mut_ptr(),
+            ));
+            t.f64s(&[a]);
+            t.f64s(&f);
+            t.status(cncrot_probe_edge(
+                IDF.as_ptr(),
+                e1.as_ptr(),
+                e1.as_ptr(),
+                &mut a,
+                f.as_mut_ptr(),
+            ));
+            t.status(cncrot_probe_edge(
+                IDF.as_ptr(),
+                e1.as_ptr(),
+                [0.0, 0.0, 1.0].as_ptr(),
+                &mut a,
+                f.as_mut_ptr(),
+            ));
+            t.status(cncrot_probe_edge(
+                [0.0; 16].as_ptr(),
+                e1.as_ptr(),
+                e2.as_ptr(),
+                &mut a,
+                f.as_mut_ptr(),
+            ));
+            t.status(cncrot_probe_edge(
+                IDF.as_ptr(),
+                e1.as_ptr(),
+                e2.as_ptr(),
+                null_mut(),
+                f.as_mut_ptr(),
+            ));
+            t.f64s(&[a]);
+        }),
         ("cncrot_cycle600_gud_size", |t| {
             t.word(cncrot_cycle600_gud_size() as u64);
         }),
