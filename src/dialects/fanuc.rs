@@ -72,13 +72,7 @@ pub const G69: Frame = Frame::IDENTITY;
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn close(a: &Matrix, b: &Matrix, tol: f64) -> bool {
-        a.iter()
-            .flatten()
-            .zip(b.iter().flatten())
-            .all(|(x, y)| (x - y).abs() <= tol)
-    }
+    use crate::dialects::close;
 
     #[test]
     fn g68_2_is_intrinsic_zxz_and_round_trips() {

@@ -108,14 +108,8 @@ pub const RESET: Frame = Frame::IDENTITY;
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::dialects::close;
     use crate::{elementary, mul};
-
-    fn close(a: &Matrix, b: &Matrix, tol: f64) -> bool {
-        a.iter()
-            .flatten()
-            .zip(b.iter().flatten())
-            .all(|(x, y)| (x - y).abs() <= tol)
-    }
 
     /// The spec's worked numbers.
     #[test]

@@ -9,3 +9,12 @@ pub mod heidenhain;
 pub mod sinumerik;
 pub mod syntec;
 pub mod twincat;
+
+/// Whether two matrices agree element by element within `tol` (the dialects' tests).
+#[cfg(test)]
+pub(crate) fn close(a: &crate::Matrix, b: &crate::Matrix, tol: f64) -> bool {
+    a.iter()
+        .flatten()
+        .zip(b.iter().flatten())
+        .all(|(x, y)| (x - y).abs() <= tol)
+}

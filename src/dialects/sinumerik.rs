@@ -365,14 +365,8 @@ pub fn orirpy_angles(v: Vector) -> Result<([f64; 3], bool), Error> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::dialects::close;
     use crate::{elementary, mul, Axis};
-
-    fn close(a: &Matrix, b: &Matrix, tol: f64) -> bool {
-        a.iter()
-            .flatten()
-            .zip(b.iter().flatten())
-            .all(|(x, y)| (x - y).abs() <= tol)
-    }
 
     #[test]
     fn mode_decoding() {
