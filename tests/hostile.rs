@@ -716,6 +716,10 @@ fn the_head_table_is_read_in_place_entry_by_entry() {
     let mut c = t;
     c.heads[0].name = [b'A' as std::ffi::c_char; 32];
     assert_eq!(call_head(&c, c"H0"), UNKNOWN_HEAD);
+    // An empty name never matches, not even an entry whose name field is empty.
+    let mut c = t;
+    c.heads[2].name = [0; 32];
+    assert_eq!(call_head(&c, c""), UNKNOWN_HEAD);
     // A misaligned table is refused, not read.
     let mut buf = vec![0u8; size_of::<cncrot_head_table>() + 8];
     let p = buf.as_mut_ptr();

@@ -141,7 +141,9 @@ pub fn cycle600_in(
         return Err(Error::BadArgument);
     }
     if let Some(table) = heads {
-        if !table.contains(call.mihead)? {
+        // An empty name names no accessory (a corrupt entry with an empty name field must
+        // not match it).
+        if call.mihead.is_empty() || !table.contains(call.mihead)? {
             return Err(Error::UnknownHead);
         }
     }
