@@ -7,4 +7,4 @@
 %   Errors: cncrot:tooFew, cncrot:coincident, cncrot:collinear, cncrot:degenerate, ...
 %
 %   Example:
-%     [F, flat] = cncrot_probe_plane([0 0 5; 100 0 5; 0 100 5; 100 100 5.02])
+%     [F, flat, rms] = cncrot_probe_plane([0 0 5.01; 100 100 5.01; 0 100 4.99; 100 0 4.99])   % 0.02 0.01

@@ -119,11 +119,12 @@ pub struct Plane {
 ///
 /// ```
 /// use cncrot::probe::plane;
-/// // Four points on z = 5, one 0.02 mm high: flatness 0.02 about the fitted plane.
-/// let p = plane(&[[0.0, 0.0, 5.0], [100.0, 0.0, 5.0], [0.0, 100.0, 5.0], [100.0, 100.0, 5.02]])
+/// // Two opposite corners 0.01 mm above z = 5, the other two 0.01 below: by symmetry the
+/// // fit is z = 5 itself, the flatness 0.02 and the RMS 0.01.
+/// let p = plane(&[[0.0, 0.0, 5.01], [100.0, 100.0, 5.01], [0.0, 100.0, 4.99], [100.0, 0.0, 4.99]])
 ///     .unwrap();
-/// assert!((p.flatness - 0.02).abs() < 1e-12);
-/// assert!(p.frame.rotation[2][2] > 0.99999);
+/// assert!((p.flatness - 0.02).abs() < 1e-12 && (p.rms - 0.01).abs() < 1e-12);
+/// assert!((p.frame.rotation[2][2] - 1.0).abs() < 1e-15);
 /// ```
 pub fn plane(points: &[Vector]) -> Result<Plane, Error> {
     if points.len() < 3 {

@@ -80,8 +80,8 @@ pub unsafe extern "C" fn cncrot_probe_flange(
 /// doubles (or NULL: error).
 ///
 /// ```c
-/// double pts[12] = {0,0,5, 100,0,5, 0,100,5, 100,100,5.02}, f[16], res[2];
-/// cncrot_probe_plane(pts, 4, f, res);   // res[0] = flatness
+/// double pts[12] = {0,0,5.01, 100,100,5.01, 0,100,4.99, 100,0,4.99}, f[16], res[2];
+/// cncrot_probe_plane(pts, 4, f, res);   // plane z = 5: res[0] = 0.02 (flatness), res[1] = 0.01
 /// ```
 #[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
