@@ -67,7 +67,7 @@ int main(void) {
                                      {CNCROT_FORM_PLANE_EULER, 0, 3}, {CNCROT_FORM_PLANE_VECTOR, 0, 6},
                                      {CNCROT_FORM_PLANE_POINTS, 0, 9}, {CNCROT_FORM_G68_2, 0, 6},
                                      {CNCROT_FORM_G158, 10157, 9},    {CNCROT_FORM_TWINCAT_ROT, 0, 3},
-                                     {CNCROT_FORM_G268, 321, 6}};
+                                     {CNCROT_FORM_G268, 321, 6},      {CNCROT_FORM_G68_3, 0, 7}};
   for (int k = 0; k < (int)(sizeof FORMS / sizeof FORMS[0]); k++)
     for (int v = 0; v < 3; v++) {
       int32_t form = FORMS[k][0], sel = FORMS[k][1];

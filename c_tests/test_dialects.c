@@ -155,6 +155,18 @@ static void dialect_rules(void) {
   rot_of(f, r);
   CHECK_NEAR(r, ep, 9, 1e-15);
   CHECK(f[3] == 1 && f[7] == 1 && f[11] == 1, "points origin");
+  /* G68.3: Z' the tool direction, X' = P x Z' (P = +Z), then R about Z'. Tool tilted about
+   * Y: X' along +Y. */
+  double g683[7] = {1, 2, 3, 0, 1, 0, 1}, s1 = sqrt(0.5);
+  double e683[9] = {0, -s1, s1, 1, 0, 0, 0, s1, s1};
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_G68_3, 0, g683, 7, f), 0);
+  rot_of(f, r);
+  CHECK_NEAR(r, e683, 9, 1e-15);
+  g683[3] = 90; /* R = 90: X' turns onto the old Y' */
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_G68_3, 0, g683, 7, f), 0);
+  CHECK(fabs(f[0] + s1) < 1e-15 && fabs(f[4]) < 1e-15 && fabs(f[8] - s1) < 1e-15, "%g %g %g", f[0], f[4], f[8]);
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_G68_3, 0, f, w, 7), 0);
+  CHECK(fabs(w[3] - 90) < 1e-12 && fabs(w[4] - s1) < 1e-15, "R %g", w[3]);
   /* PLANE VECTOR keeps N and projects B. */
   double vec[6] = {2, 2, 9, 0, 0, 5};
   CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_VECTOR, 0, vec, 6, f), 0);
@@ -171,7 +183,7 @@ static void every_pair_round_trips(void) {
       {CNCROT_FORM_CYCLE800, 185, 9},  {CNCROT_FORM_SINUMERIK_ROT, 0, 3}, {CNCROT_FORM_SINUMERIK_ROT, 1, 3},
       {CNCROT_FORM_PLANE_SPATIAL, 0, 3}, {CNCROT_FORM_PLANE_EULER, 0, 3}, {CNCROT_FORM_PLANE_VECTOR, 0, 6},
       {CNCROT_FORM_PLANE_POINTS, 0, 9}, {CNCROT_FORM_G68_2, 0, 6},        {CNCROT_FORM_G158, 10157, 9},
-      {CNCROT_FORM_TWINCAT_ROT, 0, 3}, {CNCROT_FORM_G268, 321, 6},
+      {CNCROT_FORM_TWINCAT_ROT, 0, 3}, {CNCROT_FORM_G268, 321, 6},      {CNCROT_FORM_G68_3, 0, 7},
   };
   int nf = (int)(sizeof forms / sizeof forms[0]);
   double singular[4][3] = {{10, 90, 40}, {0, 0, 0}, {90, 90, 90}, {-30, -90, 120}};

@@ -86,6 +86,12 @@
 #define CNCROT_FORM_G268 11
 
 /**
+ * Fanuc-style `G68.3` (vertical axis +Z): selector 0; words `X Y Z R TX TY TZ`, T the tool
+ * direction.
+ */
+#define CNCROT_FORM_G68_3 12
+
+/**
  * The most words a form has (`count` is exactly the form's number of words).
  */
 #define CNCROT_FORM_MAX_WORDS 9

@@ -1,6 +1,6 @@
 % CNCROT_FORM_FRAME  Frames (4-by-4) of a controller's tilted-plane command.
 %   F = cncrot_form_frame(form, selector, words)
-%   form: a code of cncrot_forms (G68.2, PLANE SPATIAL, CYCLE800, G158, G268, ...);
+%   form: a code of cncrot_forms (G68.2, G68.3, PLANE SPATIAL, CYCLE800, G158, G268, ...);
 %   selector: the command's integer word (_MODE, P, Q, the angle mode, or 0); words: N-by-count,
 %   one command per row, its words in the order cncrot_forms lists (omitted words are 0).
 %   F: 4-by-4 (N = 1) or 4-by-4-by-N; a point q of the new system is F*[q; 1] in the old one.

@@ -60,10 +60,10 @@ fn form_args(inp: &mut Input) -> (i32, i32, usize) {
         0, 1, 2, 57, 27, 55, 3, 64, 185, 158, 167, 192, 123, 321, 213, 10157, 10159, 10400, 10300,
         1157,
     ];
-    const COUNTS: [usize; 12] = [0, 9, 3, 2, 3, 3, 6, 9, 6, 9, 3, 6];
+    const COUNTS: [usize; 13] = [0, 9, 3, 2, 3, 3, 6, 9, 6, 9, 3, 6, 7];
     let form = match inp.u8() % 8 {
         0 => inp.int(),
-        _ => i32::from(inp.u8() % 11) + 1,
+        _ => i32::from(inp.u8() % 12) + 1,
     };
     let sel = match inp.u8() % 4 {
         0 => inp.int(),

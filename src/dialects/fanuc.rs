@@ -60,6 +60,22 @@ pub fn g68_3(tool: Vector, vertical: Vector, r: f64) -> Result<Matrix, Error> {
     Ok(mul(&f, &elementary(Axis::Z, r)))
 }
 
+/// The `R` of `G68.3` that gives the rotation `m` (whose Z axis is the tool direction): the
+/// turn about Z' from the plane `G68.3` builds with `R = 0` to `m`'s X axis, in (-180, 180].
+///
+/// ```
+/// use cncrot::dialects::fanuc::{g68_3, g68_3_r};
+/// let m = g68_3([1.0, 2.0, 3.0], [0.0, 0.0, 1.0], 40.0).unwrap();
+/// assert!((g68_3_r(&m, [0.0, 0.0, 1.0]).unwrap() - 40.0).abs() < 1e-12);
+/// ```
+pub fn g68_3_r(m: &Matrix, vertical: Vector) -> Result<f64, Error> {
+    let base = g68_3([m[0][2], m[1][2], m[2][2]], vertical, 0.0)?;
+    let x = [m[0][0], m[1][0], m[2][0]];
+    let bx = [base[0][0], base[1][0], base[2][0]];
+    let by = [base[0][1], base[1][1], base[2][1]];
+    Ok(crate::math::atan2_deg(dot(x, by), dot(x, bx)))
+}
+
 /// `G68.4`: the same words as `G68.2`, applied incrementally on the active plane, in its
 /// system: `active · call` [derived].
 pub fn g68_4(active: &Frame, call: &Frame) -> Frame {

@@ -26,6 +26,7 @@ pub const MAX_VALUES: usize = 9;
 /// | [`Form::G158`] | `P` | `X Y Z A B C U V W` |
 /// | [`Form::TwincatRot`] | 0 | `X Y Z` |
 /// | [`Form::G268`] | `Q` | `X Y Z I J K` |
+/// | [`Form::G68_3`] | 0 | `X Y Z R TX TY TZ` (the tool direction T; vertical axis +Z) |
 ///
 /// ```
 /// use cncrot::dialects::form::{form_frame, Form};
@@ -57,11 +58,14 @@ pub enum Form {
     TwincatRot = 10,
     /// Haas `G268`.
     G268 = 11,
+    /// Fanuc-style `G68.3` (the plane from the tool direction, on a machine whose vertical
+    /// axis is +Z [choice: a parameter of the control; `fanuc::g68_3` takes any]).
+    G68_3 = 12,
 }
 
 impl Form {
     /// Every form, in code order.
-    pub const ALL: [Form; 11] = [
+    pub const ALL: [Form; 12] = [
         Form::Cycle800,
         Form::SinumerikRot,
         Form::SinumerikRots,
@@ -73,9 +77,10 @@ impl Form {
         Form::G158,
         Form::TwincatRot,
         Form::G268,
+        Form::G68_3,
     ];
 
-    /// The form of a code (1..=11), else [`Error::BadArgument`].
+    /// The form of a code (1..=12), else [`Error::BadArgument`].
     pub fn from_code(code: i32) -> Result<Form, Error> {
         usize::try_from(code)
             .ok()
@@ -90,6 +95,7 @@ impl Form {
             Form::SinumerikRots => 2,
             Form::SinumerikRot | Form::PlaneSpatial | Form::PlaneEuler | Form::TwincatRot => 3,
             Form::PlaneVector | Form::G68_2 | Form::G268 => 6,
+            Form::G68_3 => 7,
             Form::Cycle800 | Form::PlanePoints | Form::G158 => 9,
         }
     }
@@ -105,10 +111,18 @@ impl Form {
     pub fn has_origin(self) -> bool {
         matches!(
             self,
-            Form::Cycle800 | Form::G68_2 | Form::G158 | Form::G268 | Form::PlanePoints
+            Form::Cycle800
+                | Form::G68_2
+                | Form::G68_3
+                | Form::G158
+                | Form::G268
+                | Form::PlanePoints
         )
     }
 }
+
+/// The vertical axis of the `G68.3` form.
+const VERTICAL: Vector = [0.0, 0.0, 1.0];
 
 fn angle_mode(selector: i32) -> Result<sinumerik::AngleMode, Error> {
     match selector {
@@ -193,6 +207,11 @@ pub fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Err
             rot(twincat::matrix(v3(words, 0)))
         }
         Form::G268 => haas::g268(v3(words, 0), v3(words, 3), selector)?,
+        Form::G68_3 => {
+            no_selector(selector)?;
+            let r = fanuc::g68_3(v3(words, 4), VERTICAL, words[3])?;
+            Frame::with_translations(v3(words, 0), r, [0.0; 3])
+        }
     };
     // Finite words can still overflow (origins near f64::MAX).
     let h = frame.to_homogeneous();
@@ -308,6 +327,16 @@ pub fn form_values(
             put(&mut out, 3, ijk);
             singular
         }
+        Form::G68_3 => {
+            no_selector(selector)?;
+            let r = fanuc::g68_3_r(m, VERTICAL)?;
+            put(&mut out, 0, t);
+            put(&mut out, 4, [m[0][2], m[1][2], m[2][2]]);
+            if let Some(slot) = out.get_mut(3) {
+                *slot = r;
+            }
+            false
+        }
         Form::SinumerikRots => return Err(Error::BadArgument),
     };
     if !out.iter().all(|x| x.is_finite()) {
@@ -335,7 +364,7 @@ mod tests {
     /// that read back to the same frame.
     #[test]
     fn every_form_round_trips() {
-        let cases: [(Form, &[i32]); 10] = [
+        let cases: [(Form, &[i32]); 11] = [
             (
                 Form::Cycle800,
                 &[57, 27, 39, 55, 64, 128 + 57, 128 + 30, 128 + 39],
@@ -349,6 +378,7 @@ mod tests {
             (Form::G158, &[10157, 10159, 10139]),
             (Form::TwincatRot, &[0]),
             (Form::G268, &[123, 321, 213]),
+            (Form::G68_3, &[0]),
         ];
         let frames = [
             Frame::with_translations(
@@ -412,7 +442,7 @@ mod tests {
         let id = Frame::IDENTITY;
         let mut w = [0.0; 9];
         assert_eq!(Form::from_code(0), Err(Error::BadArgument));
-        assert_eq!(Form::from_code(12), Err(Error::BadArgument));
+        assert_eq!(Form::from_code(13), Err(Error::BadArgument));
         assert_eq!(Form::from_code(8), Ok(Form::G68_2));
         assert_eq!(
             form_frame(Form::G68_2, 0, &[0.0; 5]),

@@ -26,6 +26,9 @@ pub const CNCROT_FORM_G158: i32 = 9;
 pub const CNCROT_FORM_TWINCAT_ROT: i32 = 10;
 /// Haas `G268`: selector the `Q` word; words `X Y Z I J K`.
 pub const CNCROT_FORM_G268: i32 = 11;
+/// Fanuc-style `G68.3` (vertical axis +Z): selector 0; words `X Y Z R TX TY TZ`, T the tool
+/// direction.
+pub const CNCROT_FORM_G68_3: i32 = 12;
 /// The most words a form has (`count` is exactly the form's number of words).
 pub const CNCROT_FORM_MAX_WORDS: usize = 9;
 
@@ -165,6 +168,7 @@ mod tests {
             (CNCROT_FORM_G158, Form::G158),
             (CNCROT_FORM_TWINCAT_ROT, Form::TwincatRot),
             (CNCROT_FORM_G268, Form::G268),
+            (CNCROT_FORM_G68_3, Form::G68_3),
         ];
         assert_eq!(c.len(), Form::ALL.len());
         for (code, form) in c {
