@@ -167,7 +167,8 @@ pub fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Err
                 2 => sinumerik::RotsPlane::ZX,
                 _ => return Err(Error::BadArgument),
             };
-            rot(sinumerik::rots(plane, words[0], words[1]))
+            let [a, b] = [0, 1].map(|k| words.get(k).copied().unwrap_or(0.0));
+            rot(sinumerik::rots(plane, a, b))
         }
         Form::PlaneSpatial => {
             no_selector(selector)?;
@@ -209,7 +210,10 @@ pub fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Err
         Form::G268 => haas::g268(v3(words, 0), v3(words, 3), selector)?,
         Form::G68_3 => {
             no_selector(selector)?;
-            let r = fanuc::g68_3(v3(words, 4), VERTICAL, words[3])?;
+            // `get`, not indexing: the length is checked above, but the no-panic proof
+            // (c_tests/no_panic.sh) must see that no path can panic.
+            let angle = words.get(3).copied().ok_or(Error::BadArgument)?;
+            let r = fanuc::g68_3(v3(words, 4), VERTICAL, angle)?;
             Frame::with_translations(v3(words, 0), r, [0.0; 3])
         }
     };
