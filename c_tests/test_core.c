@@ -1,6 +1,6 @@
 /* The rotation core through the C ABI: the paper's numbers (spec tables), exact right
  * angles, every bad input, round trips of all 24 conventions, frames. Expected values come
- * from the paper, the spec tables, exact hand-derived values or identities. */
+ * from the paper, the tables of the README and docs/, exact hand-derived values or identities. */
 #include "cncrot.h"
 #include "harness.h"
 

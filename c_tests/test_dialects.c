@@ -1,7 +1,7 @@
-/* The dialects' tilted-plane forms through the C interface: the spec's worked numbers, the
- * seeds' examples (TwinCAT, Syntec), the paper's probe use case, hand geometry computed here
- * with the C library's trigonometry, cross-dialect identities, every pair of writable forms
- * round-tripping random frames, and the error paths. */
+/* The dialects' tilted-plane forms through the C interface: the worked numbers of
+ * docs/dialects.md, the vendors' examples (TwinCAT, Syntec), the paper's probe use case, hand
+ * geometry computed here with the C library's trigonometry, cross-dialect identities, every
+ * pair of writable forms round-tripping random frames, and the error paths. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -38,7 +38,7 @@ static void rot_of(const double f[16], double r[9]) {
 
 static void worked_numbers(void) {
   double f[16], r[9];
-  /* PLANE SPATIAL SPA45 SPB0 SPC90 and SPA27 SPB0 SPC45 (spec). */
+  /* PLANE SPATIAL SPA45 SPB0 SPC90 and SPA27 SPB0 SPC45 (docs/dialects.md). */
   double s1[3] = {45, 0, 90}, e1[9] = {0, -0.707107, 0.707107, 1, 0, 0, 0, 0.707107, 0.707107};
   CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_SPATIAL, 0, s1, 3, f), 0);
   rot_of(f, r);
@@ -47,12 +47,12 @@ static void worked_numbers(void) {
   CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_SPATIAL, 0, s2, 3, f), 0);
   rot_of(f, r);
   CHECK_NEAR(r, e2, 9, 5e-7);
-  /* PLANE EULER EULPR45 EULNU20 EULROT22 (spec). */
+  /* PLANE EULER EULPR45 EULNU20 EULROT22 (docs/dialects.md). */
   double s3[3] = {45, 20, 22}, e3[9] = {0.406706, -0.880966, 0.241845, 0.904530, 0.351193, -0.241845, 0.128123, 0.317116, 0.939693};
   CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_EULER, 0, s3, 3, f), 0);
   rot_of(f, r);
   CHECK_NEAR(r, e3, 9, 5e-7);
-  /* ROTS X30 Y20 (spec): gamma = 28.481238. */
+  /* ROTS X30 Y20 (docs/dialects.md): gamma = 28.481238. */
   double s4[2] = {30, 20}, e4[9] = {0.939693, 0.163099, 0.300627, 0, 0.878973, -0.476871, -0.342020, 0.448112, 0.825965};
   CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_SINUMERIK_ROTS, 0, s4, 2, f), 0);
   rot_of(f, r);
@@ -64,9 +64,9 @@ static void worked_numbers(void) {
   CHECK_NEAR(g, f, 16, 1e-15);
 }
 
-static void seeds_and_paper(void) {
+static void vendors_and_paper(void) {
   double f[16], g[16], v[3], r[9];
-  /* TwinCAT (seed 001): after ROT Z45, CalcInvRot of (40, 10, 0) is (35.35, -21.21, 0). */
+  /* TwinCAT (its manual): after ROT Z45, CalcInvRot of (40, 10, 0) is (35.35, -21.21, 0). */
   double z45[3] = {0, 0, 45}, p[3] = {40, 10, 0}, expect[3] = {35.355339, -21.213203, 0};
   CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_TWINCAT_ROT, 0, z45, 3, f), 0);
   rot_of(f, r);
@@ -83,7 +83,7 @@ static void seeds_and_paper(void) {
   rot_of(f, r);
   intrinsic(1, 2, 3, 10, 20, 30, h);
   CHECK_NEAR(r, h, 9, 1e-15);
-  /* Syntec (seed 003): G158 L1 P10157 X2. Y0. Z10. A20 B20 C-30 U0 V10 W0: translate
+  /* Syntec (its manual): G158 L1 P10157 X2. Y0. Z10. A20 B20 C-30 U0 V10 W0: translate
    * (2, 0, 10), turn about X 20, the new Y 20, the new Z -30, then (0, 10, 0) in the turned
    * system. */
   double s[9] = {2, 0, 10, 20, 20, -30, 0, 10, 0};
@@ -327,7 +327,7 @@ static void probing(void) {
 int main(void) {
   worked_numbers();
   probing();
-  seeds_and_paper();
+  vendors_and_paper();
   dialect_rules();
   every_pair_round_trips();
   errors_leave_outputs_untouched();

@@ -1,4 +1,4 @@
-//! The seeds' controller examples and the paper's probing use case, computed by the library:
+//! The TwinCAT and Syntec manuals' examples and the paper's probing use case, computed by the library:
 //! `cargo run --release --example dialects`.
 
 use cncrot::dialects::cycle600::{cycle600, Call, State};

@@ -300,7 +300,7 @@ mod tests {
             assert_eq!(wrap_deg(x).to_bits(), (x % 360.0 + 0.0).to_bits());
         }
         assert!(wrap_deg(-360.0).is_sign_positive());
-        // Sinumerik: computed 10°, specified 750° -> 730° (dialects.md worked numbers).
+        // Sinumerik: computed 10°, specified 750° -> 730° (the SINUMERIK manual's example).
         assert_eq!(10.0 + turns_toward(10.0, 750.0), 730.0);
     }
 }

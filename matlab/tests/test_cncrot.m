@@ -151,7 +151,7 @@ function test_cncrot(cases_file)
   check(~isempty(strfind(messages{3}, 'row 2:')), ['batch error names its row: ' messages{3}]);
   check(isempty(strfind(messages{4}, 'row')), ['single-row error names no row: ' messages{4}]);
 
-  % The dialects' forms: the spec's worked number, batches, errors, empty input.
+  % The dialects' forms: a worked number of docs/dialects.md, batches, errors, empty input.
   fm = cncrot_forms();
   F = cncrot_form_frame(fm.PLANE_SPATIAL, 0, [45 0 90]);
   check(max(max(abs(F(1:3, 1:3) - [0 -0.707107 0.707107; 1 0 0; 0 0.707107 0.707107]))) < 5e-7, 'PLANE SPATIAL 45 0 90');

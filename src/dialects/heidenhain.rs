@@ -111,7 +111,7 @@ mod tests {
     use crate::dialects::close;
     use crate::{elementary, mul};
 
-    /// The spec's worked numbers.
+    /// The worked numbers of docs/dialects.md.
     #[test]
     #[allow(clippy::approx_constant)] // printed to six decimals
     fn worked_numbers() {

@@ -394,7 +394,7 @@ mod tests {
         }
     }
 
-    /// The spec's worked number: ROTS X30 Y20, γ = 28.481238°.
+    /// The worked number of docs/dialects.md: ROTS X30 Y20, γ = 28.481238°.
     #[test]
     fn rots_x30_y20() {
         let expect = [

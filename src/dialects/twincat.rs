@@ -16,7 +16,7 @@ use crate::{
 ///
 /// ```
 /// use cncrot::dialects::twincat::Rotation;
-/// // The seed's example: ROT Z30, then AROT Z15, is a rotation of 45° about Z.
+/// // The manual's example: ROT Z30, then AROT Z15, is a rotation of 45° about Z.
 /// let r = Rotation::default().rot([0.0, 0.0, 30.0]).arot([0.0, 0.0, 15.0]);
 /// assert_eq!(r.angles, [0.0, 0.0, 45.0]);
 /// // After ROT Z45, CalcInvRot of (40, 10, 0) is (35.36, -21.21, 0).
@@ -98,7 +98,7 @@ mod tests {
             .zip(expect.iter().flatten())
             .map(|(a, b)| (a - b).abs());
         assert!(d.fold(0.0, f64::max) < 1e-15);
-        // The frame's example of conventions.md: transRotZ(45) twice maps (30, 0, 0) to
+        // TwinCAT's frame example: transRotZ(45) twice maps (30, 0, 0) to
         // (0, 30, 0).
         let r = Rotation::default()
             .rot([0.0, 0.0, 45.0])
