@@ -60,7 +60,6 @@ fn form_args(inp: &mut Input) -> (i32, i32, usize) {
         0, 1, 2, 57, 27, 55, 3, 64, 185, 158, 167, 192, 123, 321, 213, 10157, 10159, 10400, 10300,
         1157,
     ];
-    const COUNTS: [usize; 13] = [0, 9, 3, 2, 3, 3, 6, 9, 6, 9, 3, 6, 7];
     let form = match inp.u8() % 8 {
         0 => inp.int(),
         _ => i32::from(inp.u8() % 12) + 1,
@@ -69,12 +68,14 @@ fn form_args(inp: &mut Input) -> (i32, i32, usize) {
         0 => inp.int(),
         _ => SELECTORS[usize::from(inp.u8()) % SELECTORS.len()],
     };
-    let count = match (
-        inp.u8() % 8,
-        usize::try_from(form).ok().and_then(|f| COUNTS.get(f)),
-    ) {
-        (0, _) | (_, None) => usize::from(inp.u8() % 12),
-        (_, Some(&c)) => c,
+    // The form's own count, from the library (for an unknown form, anything).
+    let mut own = 0usize;
+    // SAFETY: a valid pointer to a usize.
+    let known = unsafe { cncrot_form_word_count(form, &mut own) } >= 0;
+    let count = if known && !inp.u8().is_multiple_of(8) {
+        own
+    } else {
+        usize::from(inp.u8() % 12)
     };
     (form, sel, count)
 }
