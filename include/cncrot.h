@@ -9,6 +9,21 @@
 #include <stdint.h>
 
 /**
+ * The most significant digits a number may have (trailing zeros are not counted).
+ */
+#define MAX_DIGITS 200
+
+/**
+ * Numbers are read and written for magnitudes `10^-MAX_EXP10 ≤ |x| < 10^MAX_EXP10`.
+ */
+#define MAX_EXP10 100
+
+/**
+ * The most decimals the fixed-point writer rounds to.
+ */
+#define MAX_DECIMALS 17
+
+/**
  * The tolerance of the rotation check: the largest element of `MᵀM − I` accepted.
  * Matrices printed to four decimals stay below 2e-4; more distorted ones (raw probe data)
  * must go through `cncrot_nearest_rotation` deliberately.
@@ -159,7 +174,7 @@ enum cncrot_status
    */
   CNCROT_STATUS_NAME_TOO_LONG = -11,
   /**
-   * HEAD_DEF text could not be read.
+   * Text could not be read: a HEAD_DEF line, or a malformed number in a program line.
    */
   CNCROT_STATUS_PARSE = -12,
   /**
@@ -189,6 +204,27 @@ enum cncrot_status
    */
   CNCROT_STATUS_TOO_FEW = -18,
   /**
+   * A program line has a word the dialect does not have there, or one twice.
+   */
+  CNCROT_STATUS_UNKNOWN_WORD = -19,
+  /**
+   * A program line has a variable or expression (`R1`, `Q120`, `#100`) where a number must
+   * stand.
+   */
+  CNCROT_STATUS_NOT_A_NUMBER = -20,
+  /**
+   * A program line lacks a word its command requires.
+   */
+  CNCROT_STATUS_MISSING_WORD = -21,
+  /**
+   * A program line is longer than the controller accepts.
+   */
+  CNCROT_STATUS_LINE_TOO_LONG = -22,
+  /**
+   * The caller's text buffer is too small.
+   */
+  CNCROT_STATUS_NO_ROOM = -23,
+  /**
    * Internal failure (a caught panic): a bug in cncrot, please report it.
    */
   CNCROT_STATUS_INTERNAL = -100,
@@ -200,6 +236,17 @@ typedef enum cncrot_status cncrot_status;
 typedef int32_t cncrot_status;
 #endif // __STDC_VERSION__ >= 202311L
 #endif // __cplusplus
+
+/**
+ * A controller family whose program lines the library reads and writes.
+ *
+ * ```
+ * use cncrot::dialects::program::Dialect;
+ * assert_eq!(Dialect::from_code(2), Ok(Dialect::Heidenhain));
+ * assert_eq!(Dialect::Heidenhain.max_line(), 254);
+ * ```
+ */
+typedef struct Dialect Dialect;
 
 /**
  * One technological accessory of the HEAD_DEF cycle.
@@ -314,6 +361,8 @@ typedef struct cncrot_cycle600_gud {
    */
   uint32_t checksum;
 } cncrot_cycle600_gud;
+
+
 
 
 

@@ -33,7 +33,8 @@ pub enum Error {
     UnknownHead,
     /// A name longer than its fixed-size field.
     NameTooLong,
-    /// HEAD_DEF text that could not be read; the line number is reported separately.
+    /// Text that could not be read: a HEAD_DEF line (its number is reported separately) or a
+    /// malformed number in a program line.
     Parse,
     /// A fixed-capacity table is full.
     TableFull,
@@ -52,6 +53,17 @@ pub enum Error {
     Collinear,
     /// Fewer points than the computation needs (a plane needs three).
     TooFew,
+    /// A program line: a word the dialect does not have there, or one given twice.
+    UnknownWord,
+    /// A program line: a variable or an expression (`R1`, `Q120`, `#100`, `30+5`) where the
+    /// library needs a number.
+    NotANumber,
+    /// A program line: a word the command requires is missing.
+    MissingWord,
+    /// A program line longer than the controller accepts.
+    LineTooLong,
+    /// The caller's text buffer is too small for the line.
+    NoRoom,
 }
 
 impl fmt::Display for Error {
@@ -74,12 +86,17 @@ impl Error {
             Error::NotAvailable => "not available: needs the machine kinematics",
             Error::UnknownHead => "accessory name not found in the head table",
             Error::NameTooLong => "name longer than its field",
-            Error::Parse => "HEAD_DEF text could not be read",
+            Error::Parse => "text could not be read (a malformed number or line)",
             Error::TableFull => "head table is full",
             Error::OutOfRange => "a result is too large to represent",
             Error::Coincident => "points that must differ coincide",
             Error::Collinear => "points or directions that must span a plane lie on one line",
             Error::TooFew => "too few points (a plane needs three)",
+            Error::UnknownWord => "unknown, repeated or misplaced word in the line",
+            Error::NotANumber => "a variable or expression where a number must stand",
+            Error::MissingWord => "a word the command requires is missing",
+            Error::LineTooLong => "line longer than the controller accepts",
+            Error::NoRoom => "the text does not fit the buffer",
             Error::BadState => {
                 "stored CYCLE600 state is corrupt, edited or from another version (format or checksum)"
             }

@@ -24,6 +24,7 @@
 #![deny(missing_docs)]
 
 mod checksum;
+mod decimal;
 pub mod dialects;
 mod error;
 mod frame;

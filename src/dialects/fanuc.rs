@@ -85,6 +85,112 @@ pub fn g68_4(active: &Frame, call: &Frame) -> Frame {
 /// `G69`: no tilted plane.
 pub const G69: Frame = Frame::IDENTITY;
 
+// Program lines.
+
+use super::program::{address_words, Cursor, FormSpec, LineError, Program, Syntax};
+use crate::decimal::{Out, Style};
+
+const SYNTAX: Syntax = Syntax {
+    ex: false,
+    ends: b"(;",
+};
+
+/// `G68.2`, `G68.4`, `G69`, `G53.1`/`G53.6` at the cursor (also Syntec's `G68.2` mode):
+/// `None` when none of them stands there.
+pub(crate) fn read_g68(p: &Program, c: &mut Cursor) -> Option<Result<Program, LineError>> {
+    let column = c.column();
+    let incremental = if c.keyword(b"G68.2") {
+        false
+    } else if c.keyword(b"G68.4") {
+        true
+    } else if c.keyword(b"G69") {
+        return Some(c.end(true, true).map(|()| p.with_frame(G69)));
+    } else if c.keyword(b"G53.1") || c.keyword(b"G53.6") {
+        // Turns the tool to the plane: no frame change.
+        return Some(c.end(true, true).map(|()| *p));
+    } else if c.keyword(b"G68.3") {
+        // The tool direction comes from the machine's position: needs the kinematics.
+        return Some(Err(LineError {
+            error: Error::NotAvailable,
+            column,
+        }));
+    } else {
+        return None;
+    };
+    let words = address_words(c, *b"XYZIJK", SYNTAX, false, (true, true));
+    Some(words.and_then(|(w, _)| {
+        let call = super::program::frame_at(column, super::form::Form::G68_2, 0, &w)?;
+        Ok(p.with_frame(if incremental {
+            g68_4(&p.frame, &call)
+        } else {
+            call
+        }))
+    }))
+}
+
+/// One block of a Fanuc-style program: `G68.2 X Y Z I J K` (omitted words are 0; a new
+/// `G68.2` replaces the active plane [choice]), `G68.4` (the same, on the active plane),
+/// `G69` (cancel), `G53.1`/`G53.6` (no frame change), `G68.3` (needs the tool direction from
+/// the machine: [`Error::NotAvailable`]), with a block number, `/`, `( … )` and `;`.
+/// Numbers without a point are whole units (calculator-type input [choice: a parameter of
+/// the control; write the point to be safe]).
+pub(crate) fn read_line(p: &Program, text: &[u8], _syntec: bool) -> Result<Program, LineError> {
+    let mut c = Cursor::new(text);
+    if c.peek() == Some(b'%') {
+        c.bump();
+    }
+    c.block_number(b'N');
+    if let Some(result) = read_g68(p, &mut c) {
+        return result;
+    }
+    if c.at_end() || c.rest_is_comment(true, true) {
+        return Ok(*p);
+    }
+    Err(c.error(Error::UnknownWord))
+}
+
+/// The Fanuc-style lines: `G68.2 X Y Z I J K`, Syntec's `G158 P X Y Z A B C U V W` and
+/// Haas's `G268 X Y Z I J K Q`, numbers always with a point.
+pub(crate) fn write_line(
+    spec: &FormSpec,
+    words: &[f64],
+    decimals: i32,
+    out: &mut Out,
+) -> Result<(), Error> {
+    use super::form::Form;
+    use super::program::{write_integer, write_word};
+    let style = Style {
+        plus: false,
+        point: true,
+    };
+    let names: &[&[u8]] = match spec.form {
+        Form::G68_2 => {
+            out.text(b"G68.2");
+            &[b" X", b" Y", b" Z", b" I", b" J", b" K"]
+        }
+        Form::G158 => {
+            out.text(b"G158 P");
+            write_integer(out, spec.selector);
+            &[
+                b" X", b" Y", b" Z", b" A", b" B", b" C", b" U", b" V", b" W",
+            ]
+        }
+        Form::G268 => {
+            out.text(b"G268");
+            &[b" X", b" Y", b" Z", b" I", b" J", b" K"]
+        }
+        _ => return Err(Error::BadArgument),
+    };
+    for (name, &v) in names.iter().zip(words) {
+        write_word(out, name, v, decimals, style)?;
+    }
+    if spec.form == Form::G268 {
+        out.text(b" Q");
+        write_integer(out, spec.selector);
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

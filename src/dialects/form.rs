@@ -27,6 +27,7 @@ pub const MAX_VALUES: usize = 9;
 /// | [`Form::TwincatRot`] | 0 | `X Y Z` |
 /// | [`Form::G268`] | `Q` | `X Y Z I J K` |
 /// | [`Form::G68_3`] | 0 | `X Y Z R TX TY TZ` (the tool direction T; vertical axis +Z) |
+/// | [`Form::PlaneProjected`] | 0 | `PROPR PROMIN ROT` |
 ///
 /// ```
 /// use cncrot::dialects::form::{form_frame, Form};
@@ -61,11 +62,13 @@ pub enum Form {
     /// Fanuc-style `G68.3` (the plane from the tool direction, on a machine whose vertical
     /// axis is +Z [choice: a parameter of the control; `fanuc::g68_3` takes any]).
     G68_3 = 12,
+    /// Heidenhain `PLANE PROJECTED`.
+    PlaneProjected = 13,
 }
 
 impl Form {
     /// Every form, in code order.
-    pub const ALL: [Form; 12] = [
+    pub const ALL: [Form; 13] = [
         Form::Cycle800,
         Form::SinumerikRot,
         Form::SinumerikRots,
@@ -78,9 +81,10 @@ impl Form {
         Form::TwincatRot,
         Form::G268,
         Form::G68_3,
+        Form::PlaneProjected,
     ];
 
-    /// The form of a code (1..=12), else [`Error::BadArgument`].
+    /// The form of a code (1..=13), else [`Error::BadArgument`].
     pub fn from_code(code: i32) -> Result<Form, Error> {
         usize::try_from(code)
             .ok()
@@ -93,7 +97,11 @@ impl Form {
     pub fn count(self) -> usize {
         match self {
             Form::SinumerikRots => 2,
-            Form::SinumerikRot | Form::PlaneSpatial | Form::PlaneEuler | Form::TwincatRot => 3,
+            Form::SinumerikRot
+            | Form::PlaneSpatial
+            | Form::PlaneEuler
+            | Form::TwincatRot
+            | Form::PlaneProjected => 3,
             Form::PlaneVector | Form::G68_2 | Form::G268 => 6,
             Form::G68_3 => 7,
             Form::Cycle800 | Form::PlanePoints | Form::G158 => 9,
@@ -208,6 +216,10 @@ pub fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Err
             rot(twincat::matrix(v3(words, 0)))
         }
         Form::G268 => haas::g268(v3(words, 0), v3(words, 3), selector)?,
+        Form::PlaneProjected => {
+            no_selector(selector)?;
+            rot(heidenhain::projected(v3(words, 0)))
+        }
         Form::G68_3 => {
             no_selector(selector)?;
             // `get`, not indexing: the length is checked above, but the no-panic proof
@@ -341,6 +353,12 @@ pub fn form_values(
             }
             false
         }
+        Form::PlaneProjected => {
+            no_selector(selector)?;
+            let d = heidenhain::projected_angles(m)?;
+            put(&mut out, 0, d.angles);
+            d.singular
+        }
         Form::SinumerikRots => return Err(Error::BadArgument),
     };
     if !out.iter().all(|x| x.is_finite()) {
@@ -368,7 +386,7 @@ mod tests {
     /// that read back to the same frame.
     #[test]
     fn every_form_round_trips() {
-        let cases: [(Form, &[i32]); 11] = [
+        let cases: [(Form, &[i32]); 12] = [
             (
                 Form::Cycle800,
                 &[57, 27, 39, 55, 64, 128 + 57, 128 + 30, 128 + 39],
@@ -383,6 +401,7 @@ mod tests {
             (Form::TwincatRot, &[0]),
             (Form::G268, &[123, 321, 213]),
             (Form::G68_3, &[0]),
+            (Form::PlaneProjected, &[0]),
         ];
         let frames = [
             Frame::with_translations(
@@ -446,7 +465,7 @@ mod tests {
         let id = Frame::IDENTITY;
         let mut w = [0.0; 9];
         assert_eq!(Form::from_code(0), Err(Error::BadArgument));
-        assert_eq!(Form::from_code(13), Err(Error::BadArgument));
+        assert_eq!(Form::from_code(14), Err(Error::BadArgument));
         assert_eq!(Form::from_code(8), Ok(Form::G68_2));
         assert_eq!(
             form_frame(Form::G68_2, 0, &[0.0; 5]),

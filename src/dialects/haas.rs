@@ -64,6 +64,45 @@ pub fn g268_angles(m: &crate::Matrix, q: i32) -> Result<([f64; 3], bool), Error>
 /// `G269`: no tilted plane.
 pub const G269: Frame = Frame::IDENTITY;
 
+// Program lines.
+
+use super::program::{address_words, whole, Cursor, LineError, Program, Syntax};
+
+const SYNTAX: Syntax = Syntax {
+    ex: false,
+    ends: b"(;",
+};
+
+/// One block of a Haas program: `G268 X Y Z I J K Q` (omitted `X … K` are 0; `Q` is
+/// required [choice: Haas's default is not public]), `G269` (cancel), `G253` (orients the
+/// spindle: no frame change), with a block number and `( … )` comments. A `G268` while one
+/// is active replaces it [choice].
+pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
+    let mut c = Cursor::new(text);
+    c.block_number(b'N');
+    let column = c.column();
+    if c.keyword(b"G268") {
+        let (w, given) = address_words(&mut c, *b"XYZIJKQ", SYNTAX, false, (true, true))?;
+        let [x, y, z, i, j, k, q] = w;
+        if !given[6] {
+            return Err(c.error(Error::MissingWord));
+        }
+        let q = whole(q, column)?;
+        let frame =
+            super::program::frame_at(column, super::form::Form::G268, q, &[x, y, z, i, j, k])?;
+        return Ok(p.with_frame(frame));
+    }
+    if c.keyword(b"G269") {
+        c.end(true, true)?;
+        return Ok(p.with_frame(Frame::IDENTITY));
+    }
+    if c.keyword(b"G253") || c.at_end() || c.rest_is_comment(true, true) {
+        c.end(true, true)?;
+        return Ok(*p);
+    }
+    Err(c.error(Error::UnknownWord))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,9 +1,9 @@
 //! Heidenhain TNC: the tilted working plane `PLANE` in its forms `SPATIAL`, `EULER`,
-//! `VECTOR`, `POINTS`, `RELATIV` and `RESET`, and the inverse of each form that can express
-//! any plane (what a writer of a measured plane needs).
+//! `VECTOR`, `POINTS`, `PROJECTED`, `RELATIV` and `RESET`, the inverse of each form that can
+//! express a plane (what a writer of a measured plane needs), and its program lines.
 //!
 //! Confidence as in [`crate::dialects::sinumerik`]: **[doc]**, **[3rd]**, **[derived]**,
-//! **[choice]**. `PLANE PROJECTED` (signs not verified) is not here yet.
+//! **[choice]**.
 
 use crate::{
     angles_from_matrix, matrix_from_angles, Axis, Convention, Decomposition, Error, Frame, Kind,
@@ -102,8 +102,228 @@ pub fn relativ(active: &Frame, axis: Axis, angle: f64) -> Frame {
     active.compose(&Frame::from_rotation(crate::elementary(axis, angle)))
 }
 
+/// `PLANE PROJECTED PROPR PROMIN ROT`: the plane's line in the ZX plane makes the angle
+/// PROPR with X (a turn about Y), its line in the YZ plane the angle PROMIN with Y (a turn
+/// about X), X' lies on the first line, and ROT turns about the new tool axis [doc wording];
+/// so `PROPR` and `PROMIN` are SINUMERIK's projection angles `ROTS Y=PROPR X=PROMIN`:
+/// `F = Ry(PROPR)·Rx(γ)·Rz(ROT)`, `tan γ = tan PROMIN · cos PROPR` [derived; the signs,
+/// right-handed about +Y and +X, are our choice: the manual's figures show no sign].
+///
+/// ```
+/// use cncrot::dialects::heidenhain::projected;
+/// use cncrot::{elementary, Axis};
+/// assert_eq!(projected([0.0, 30.0, 0.0]), elementary(Axis::X, 30.0));
+/// ```
+pub fn projected([propr, promin, rot]: [f64; 3]) -> Matrix {
+    super::sinumerik::projection(Sequence::XYZ, [promin, propr, rot])
+}
+
+/// `PROPR PROMIN ROT` of a rotation: the inverse of [`projected`]; refused like the
+/// projection mode of CYCLE800 when X' has turned onto Z with the plane turned about it
+/// ([`Error::OutOfRange`]).
+pub fn projected_angles(m: &Matrix) -> Result<Decomposition, Error> {
+    let d = super::sinumerik::projection_angles(Sequence::XYZ, m)?;
+    let [promin, propr, rot] = d.angles;
+    Ok(Decomposition {
+        angles: [propr, promin, rot],
+        singular: d.singular,
+    })
+}
+
 /// `PLANE RESET`: no tilt.
 pub const RESET: Frame = Frame::IDENTITY;
+
+// Program lines.
+
+use super::form::Form;
+use super::program::{frame_at, Cursor, FormSpec, LineError, Program, Syntax};
+use crate::decimal::{Out, Style};
+
+const SYNTAX: Syntax = Syntax {
+    ex: false,
+    ends: b";",
+};
+
+/// The words of one `PLANE` form, each required, in any order.
+fn plane_words<const N: usize>(c: &mut Cursor, names: [&[u8]; N]) -> Result<[f64; N], LineError> {
+    let mut values = [0.0; N];
+    let mut given = [false; N];
+    loop {
+        c.spaces();
+        let column = c.column();
+        let hit = names.iter().position(|n| c.word(n));
+        let Some(k) = hit else {
+            break;
+        };
+        if given.get(k).copied().unwrap_or(true) {
+            return Err(LineError {
+                error: Error::UnknownWord,
+                column,
+            });
+        }
+        c.spaces();
+        let v = c.number(SYNTAX)?;
+        if let (Some(slot), Some(g)) = (values.get_mut(k), given.get_mut(k)) {
+            *slot = v;
+            *g = true;
+        }
+    }
+    if given.contains(&false) {
+        return Err(c.error(Error::MissingWord));
+    }
+    Ok(values)
+}
+
+/// What may follow the plane's words: how to position (`MOVE`, `TURN`, `STAY`, `MB MAX`,
+/// `MB n`, `DIST n`, `FMAX`, `F n`, `F AUTO`) and which solution (`SEQ±`, `SYM±`,
+/// `TABLE ROT`, `COORD ROT`): they choose motion and machine axes, not the plane.
+fn options(c: &mut Cursor) -> Result<(), LineError> {
+    loop {
+        c.spaces();
+        if c.rest_is_comment(true, false) {
+            return c.end(true, false);
+        }
+        if c.keyword(b"MOVE") || c.keyword(b"TURN") || c.keyword(b"STAY") || c.keyword(b"FMAX") {
+            continue;
+        }
+        if c.keyword(b"TABLE") || c.keyword(b"COORD") {
+            c.spaces();
+            if !c.keyword(b"ROT") {
+                return Err(c.error(Error::MissingWord));
+            }
+            continue;
+        }
+        if c.word(b"SEQ") || c.word(b"SYM") {
+            match c.peek() {
+                Some(b'+' | b'-') => c.bump(),
+                _ => return Err(c.error(Error::MissingWord)),
+            }
+            continue;
+        }
+        if c.word(b"MB") || c.word(b"F") || c.word(b"DIST") {
+            c.spaces();
+            if c.keyword(b"MAX") || c.keyword(b"AUTO") {
+                continue;
+            }
+            c.number(SYNTAX)?;
+            continue;
+        }
+        return Err(c.error(Error::UnknownWord));
+    }
+}
+
+/// One block of a Heidenhain plain-language program: `PLANE SPATIAL SPA SPB SPC`,
+/// `PLANE PROJECTED PROPR PROMIN ROT`, `PLANE EULER EULPR EULNU EULROT`,
+/// `PLANE VECTOR BX BY BZ NX NY NZ`, `PLANE POINTS P1X … P3Z` (every word required, in any
+/// order), `PLANE RELATIV SPA|SPB|SPC` (on the active plane), `PLANE RESET`, each with the
+/// positioning and solution options, after a line number, with `;` comments; `BEGIN PGM`
+/// and `END PGM` lines change nothing; `PLANE AXIAL` needs the kinematics
+/// ([`Error::NotAvailable`]). A `PLANE` replaces the active one; the datum is not part of
+/// the plane (only `POINTS` has an origin, P1).
+pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
+    let mut c = Cursor::new(text);
+    c.spaces();
+    while c.peek().is_some_and(|b| b.is_ascii_digit()) {
+        c.bump();
+    }
+    c.spaces();
+    if c.at_end() || c.peek() == Some(b'*') || c.rest_is_comment(true, false) {
+        return Ok(*p);
+    }
+    if c.keyword(b"BEGIN") || c.keyword(b"END") {
+        c.spaces();
+        if c.keyword(b"PGM") {
+            return Ok(*p);
+        }
+        return Err(c.error(Error::UnknownWord));
+    }
+    let column = c.column();
+    if !c.keyword(b"PLANE") {
+        return Err(c.error(Error::UnknownWord));
+    }
+    c.spaces();
+    let at = c.column();
+    let frame = if c.keyword(b"SPATIAL") {
+        let w = plane_words(&mut c, [b"SPA", b"SPB", b"SPC"])?;
+        frame_at(at, Form::PlaneSpatial, 0, &w)?
+    } else if c.keyword(b"PROJECTED") {
+        let w = plane_words(&mut c, [b"PROPR", b"PROMIN", b"ROT"])?;
+        frame_at(at, Form::PlaneProjected, 0, &w)?
+    } else if c.keyword(b"EULER") {
+        let w = plane_words(&mut c, [b"EULPR", b"EULNU", b"EULROT"])?;
+        frame_at(at, Form::PlaneEuler, 0, &w)?
+    } else if c.keyword(b"VECTOR") {
+        let w = plane_words(&mut c, [b"BX", b"BY", b"BZ", b"NX", b"NY", b"NZ"])?;
+        frame_at(at, Form::PlaneVector, 0, &w)?
+    } else if c.keyword(b"POINTS") {
+        let names: [&[u8]; 9] = [
+            b"P1X", b"P1Y", b"P1Z", b"P2X", b"P2Y", b"P2Z", b"P3X", b"P3Y", b"P3Z",
+        ];
+        let w = plane_words(&mut c, names)?;
+        frame_at(at, Form::PlanePoints, 0, &w)?
+    } else if c.keyword(b"RELATIV") {
+        c.spaces();
+        let axis = if c.word(b"SPA") {
+            Axis::X
+        } else if c.word(b"SPB") {
+            Axis::Y
+        } else if c.word(b"SPC") {
+            Axis::Z
+        } else {
+            return Err(c.error(Error::MissingWord));
+        };
+        c.spaces();
+        let angle = c.number(SYNTAX)?;
+        relativ(&p.frame, axis, angle)
+    } else if c.keyword(b"RESET") {
+        RESET
+    } else if c.keyword(b"AXIAL") {
+        return Err(LineError {
+            error: Error::NotAvailable,
+            column,
+        });
+    } else {
+        return Err(c.error(Error::UnknownWord));
+    };
+    options(&mut c)?;
+    Ok(p.with_frame(frame))
+}
+
+/// `PLANE <form> <words> STAY`: the words with their signs (`SPA+30`), then `STAY`
+/// (the control asks for a positioning choice; `STAY` tilts the plane without moving).
+pub(crate) fn write_line(
+    spec: &FormSpec,
+    words: &[f64],
+    decimals: i32,
+    out: &mut Out,
+) -> Result<(), Error> {
+    let (head, names): (&[u8], &[&[u8]]) = match spec.form {
+        Form::PlaneSpatial => (b"PLANE SPATIAL", &[b" SPA", b" SPB", b" SPC"]),
+        Form::PlaneProjected => (b"PLANE PROJECTED", &[b" PROPR", b" PROMIN", b" ROT"]),
+        Form::PlaneEuler => (b"PLANE EULER", &[b" EULPR", b" EULNU", b" EULROT"]),
+        Form::PlaneVector => (
+            b"PLANE VECTOR",
+            &[b" BX", b" BY", b" BZ", b" NX", b" NY", b" NZ"],
+        ),
+        Form::PlanePoints => (
+            b"PLANE POINTS",
+            &[
+                b" P1X", b" P1Y", b" P1Z", b" P2X", b" P2Y", b" P2Z", b" P3X", b" P3Y", b" P3Z",
+            ],
+        ),
+        _ => return Err(Error::BadArgument),
+    };
+    let style = Style {
+        plus: true,
+        point: false,
+    };
+    out.text(head);
+    for (name, &v) in names.iter().zip(words) {
+        super::program::write_word(out, name, v, decimals, style)?;
+    }
+    out.text(b" STAY");
+    Ok(())
+}
 
 #[cfg(test)]
 mod tests {

@@ -6,6 +6,7 @@ pub mod form;
 pub mod haas;
 pub mod head_def;
 pub mod heidenhain;
+pub mod program;
 pub mod sinumerik;
 pub mod syntec;
 pub mod twincat;

@@ -169,7 +169,7 @@ fn projection_order(s: Sequence) -> Sequence {
 /// `p` axis is `R_q(β)·e_p` and the new `pq` plane contains `R_p(α)·e_q`, so
 /// `F = R_q(β)·R_p(γ)·R_r(C)` with `γ = atan2(sin α cos β, cos α)` (`tan γ = tan α cos β`,
 /// on the branch that keeps the new `q` axis on the side of `R_p(α)·e_q`).
-fn projection(s: Sequence, [alpha, beta, c]: [f64; 3]) -> Matrix {
+pub(crate) fn projection(s: Sequence, [alpha, beta, c]: [f64; 3]) -> Matrix {
     let (sa, ca) = sin_cos_deg(alpha);
     let (_, cb) = sin_cos_deg(beta);
     let gamma = atan2_deg(sa * cb, ca);
@@ -180,7 +180,7 @@ fn projection(s: Sequence, [alpha, beta, c]: [f64; 3]) -> Matrix {
     )
 }
 
-fn projection_angles(s: Sequence, m: &Matrix) -> Result<Decomposition, Error> {
+pub(crate) fn projection_angles(s: Sequence, m: &Matrix) -> Result<Decomposition, Error> {
     let d = angles_from_matrix(Convention::new(Kind::Intrinsic, projection_order(s)), m)?;
     let [beta, gamma, c] = d.angles;
     let (sg, cg) = sin_cos_deg(gamma);
@@ -360,6 +360,301 @@ pub fn orirpy_angles(v: Vector) -> Result<([f64; 3], bool), Error> {
         return Ok(([a2, 0.0, 0.0], true));
     }
     Ok(([a2, atan2_deg(x, z), 0.0], false))
+}
+
+// Program lines.
+
+use super::form::Form;
+use super::program::{
+    address_words, frame_at, whole, Cursor, FormSpec, LineError, Program, Syntax,
+};
+use crate::decimal::{Out, Style};
+
+const WORDS: Syntax = Syntax {
+    ex: true,
+    ends: b";",
+};
+const ARGS: Syntax = Syntax {
+    ex: true,
+    ends: b",);",
+};
+
+/// One argument of a cycle call.
+#[derive(Clone, Copy)]
+enum Arg<'a> {
+    Empty,
+    Number(f64),
+    Text(&'a [u8]),
+}
+
+/// The arguments of a cycle call `NAME(a, "b", , d)` at the cursor (after the name):
+/// at most `N`, each with its column; returns how many there were.
+fn call_args<'a, const N: usize>(
+    c: &mut Cursor<'a>,
+    args: &mut [(Arg<'a>, usize); N],
+) -> Result<usize, LineError> {
+    c.spaces();
+    if c.peek() != Some(b'(') {
+        return Err(c.error(Error::MissingWord));
+    }
+    c.bump();
+    c.spaces();
+    if c.peek() == Some(b')') {
+        c.bump();
+        return Ok(0);
+    }
+    let mut n = 0;
+    loop {
+        c.spaces();
+        let column = c.column();
+        let arg = match c.peek() {
+            Some(b',' | b')') => Arg::Empty,
+            Some(b'"') => {
+                c.bump();
+                let text = c.until(b'"').ok_or(LineError {
+                    error: Error::Parse,
+                    column,
+                })?;
+                Arg::Text(text)
+            }
+            _ => Arg::Number(c.number(ARGS)?),
+        };
+        let Some(slot) = args.get_mut(n) else {
+            return Err(LineError {
+                error: Error::UnknownWord,
+                column,
+            });
+        };
+        *slot = (arg, column);
+        n += 1;
+        c.spaces();
+        match c.peek() {
+            Some(b',') => c.bump(),
+            Some(b')') => {
+                c.bump();
+                return Ok(n);
+            }
+            None => return Err(c.error(Error::MissingWord)),
+            Some(_) => return Err(c.error(Error::UnknownWord)),
+        }
+    }
+}
+
+/// A numeric argument (empty: 0).
+fn real(arg: (Arg, usize)) -> Result<f64, LineError> {
+    match arg.0 {
+        Arg::Empty => Ok(0.0),
+        Arg::Number(v) => Ok(v),
+        Arg::Text(_) => Err(LineError {
+            error: Error::Parse,
+            column: arg.1,
+        }),
+    }
+}
+
+/// An integer argument (empty: 0).
+fn int(arg: (Arg, usize)) -> Result<i32, LineError> {
+    whole(real(arg)?, arg.1)
+}
+
+/// A text argument (empty: no text).
+fn text<'a>(arg: (Arg<'a>, usize)) -> Result<&'a [u8], LineError> {
+    match arg.0 {
+        Arg::Empty => Ok(&[]),
+        Arg::Text(t) => Ok(t),
+        Arg::Number(_) => Err(LineError {
+            error: Error::Parse,
+            column: arg.1,
+        }),
+    }
+}
+
+fn at(column: usize) -> impl Fn(Error) -> LineError {
+    move |error| LineError { error, column }
+}
+
+/// `CYCLE800(_FR, _TC, _ST, _MODE, _X0, _Y0, _Z0, _A, _B, _C, _X1, _Y1, _Z1, _DIR, _FR_I,
+/// _DMODE)`: at least the four up to `_MODE` (omitted and empty arguments are 0);
+/// `CYCLE800()` and `_TC = "0"` deselect the swivel [doc]; `_ST` units digit 0 new plane,
+/// 1 additive [choice], the higher digits (tool alignment, …) do not change the plane;
+/// `_DIR`, `_FR`, `_FR_I`, `_DMODE` choose motion and solution, not the plane.
+fn cycle800_line(p: &Program, c: &mut Cursor, column: usize) -> Result<Program, LineError> {
+    let mut args = [(Arg::Empty, 0); 16];
+    let n = call_args(c, &mut args)?;
+    c.end(true, false)?;
+    if n == 0 {
+        return Ok(p.with_frame(Frame::IDENTITY));
+    }
+    if n < 4 {
+        return Err(c.error(Error::MissingWord));
+    }
+    let arg = |k: usize| args.get(k).copied().unwrap_or((Arg::Empty, column));
+    int(arg(0))?;
+    let tc = text(arg(1))?;
+    let st = int(arg(2))?;
+    let mode = int(arg(3))?;
+    for k in 13..16 {
+        real(arg(k))?;
+    }
+    let mut w = [0.0; 9];
+    for (k, slot) in w.iter_mut().enumerate() {
+        *slot = real(arg(4 + k))?;
+    }
+    if tc == b"0" {
+        return Ok(p.with_frame(Frame::IDENTITY));
+    }
+    if st < 0 || st % 10 > 1 {
+        return Err(at(arg(2).1)(Error::BadArgument));
+    }
+    let call = frame_at(arg(3).1, Form::Cycle800, mode, &w)?;
+    Ok(p.with_frame(cycle800_apply(&p.frame, st % 10 == 1, &call)))
+}
+
+/// `CYCLE600(_INEXIN, _MIHEAD, _SW_REC, _BIN_IN, _POS_X, _POS_Y, _POS_Z, _ANG_1, _ANG_2,
+/// _ANG_3, _POS_X_R, _POS_Y_R, _POS_Z_R, _INEXOUT, _BIN_OUT, _ROT_AD, _ROT_INV, _RETR_Z)`:
+/// at least up to `_BIN_OUT`. The frame the cycle computes becomes the active one, as when
+/// its results are passed on to CYCLE800 [choice]; `_ROT_AD = 1` adds to the active frame.
+fn cycle600_line(p: &Program, c: &mut Cursor, column: usize) -> Result<Program, LineError> {
+    let mut args = [(Arg::Empty, 0); 18];
+    let n = call_args(c, &mut args)?;
+    c.end(true, false)?;
+    if n < 15 {
+        return Err(c.error(Error::MissingWord));
+    }
+    let arg = |k: usize| args.get(k).copied().unwrap_or((Arg::Empty, column));
+    let v3 = |k: usize| -> Result<[f64; 3], LineError> {
+        Ok([real(arg(k))?, real(arg(k + 1))?, real(arg(k + 2))?])
+    };
+    let call = super::cycle600::Call {
+        inexin: int(arg(0))?,
+        mihead: text(arg(1))?,
+        sw_rec: int(arg(2))?,
+        bin_in: int(arg(3))?,
+        pos: v3(4)?,
+        ang: v3(7)?,
+        pos_r: v3(10)?,
+        inexout: int(arg(13))?,
+        bin_out: int(arg(14))?,
+        rot_ad: int(arg(15))?,
+        rot_inv: int(arg(16))?,
+        retr_z: int(arg(17))?,
+    };
+    let state = super::cycle600::State {
+        frame: p.frame,
+        ..Default::default()
+    };
+    let next = super::cycle600::cycle600_in(&state, None, &call).map_err(at(column))?;
+    Ok(p.with_frame(next.frame))
+}
+
+/// One block of a SINUMERIK program: `ROT`, `AROT`, `CROT` (`X Y Z`, with or without `=`,
+/// in the program's angle mode; `ROT`/`CROT` without words cancel, and replace the whole
+/// programmable frame as the control's substituting commands do [doc]; `CROT` reads like
+/// `ROT` [choice]), `ROTS`/`AROTS`/`CROTS` (two of `X Y Z`), `TRANS`/`ATRANS`, `CYCLE800(…)`
+/// and `CYCLE600(…)`, after a block number (`N10`, `:10`), a skip mark or a label, with `;`
+/// comments. "Frame instructions are programmed in their own block" [doc]: nothing else may
+/// stand on the line.
+pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
+    let mut c = Cursor::new(text);
+    c.block_number(b'N');
+    if c.peek() == Some(b':') {
+        c.bump();
+        while c.peek().is_some_and(|b| b.is_ascii_digit()) {
+            c.bump();
+        }
+        c.spaces();
+    }
+    c.label();
+    if c.at_end() || c.rest_is_comment(true, false) {
+        return Ok(*p);
+    }
+    let column = c.column();
+    if c.keyword(b"CYCLE800") {
+        return cycle800_line(p, &mut c, column);
+    }
+    if c.keyword(b"CYCLE600") {
+        return cycle600_line(p, &mut c, column);
+    }
+    // Frame commands: (substituting, additive) × (rotation, projection, translation).
+    let commands: [(&[u8], bool, u8); 8] = [
+        (b"ROT", false, b'R'),
+        (b"CROT", false, b'R'),
+        (b"AROT", true, b'R'),
+        (b"ROTS", false, b'S'),
+        (b"CROTS", false, b'S'),
+        (b"AROTS", true, b'S'),
+        (b"TRANS", false, b'T'),
+        (b"ATRANS", true, b'T'),
+    ];
+    let Some(&(_, additive, kind)) = commands.iter().find(|(name, _, _)| c.keyword(name)) else {
+        return Err(c.error(Error::UnknownWord));
+    };
+    let (xyz, given) = address_words(&mut c, *b"XYZ", WORDS, true, (true, false))?;
+    let count = given.iter().filter(|&&g| g).count();
+    if count == 0 {
+        return if additive {
+            Err(c.error(Error::MissingWord))
+        } else {
+            Ok(p.with_frame(Frame::IDENTITY))
+        };
+    }
+    let step = match kind {
+        b'R' => frame_at(column, Form::SinumerikRot, i32::from(p.euler), &xyz)?,
+        b'S' => {
+            let [x, y, z] = xyz;
+            let (plane, a, b) = match given {
+                [true, true, true] => return Err(at(column)(Error::UnknownWord)),
+                [_, true, true] => (RotsPlane::YZ, y, z),
+                [true, false, true] => (RotsPlane::ZX, z, x),
+                _ => (RotsPlane::XY, x, y),
+            };
+            let selector = match plane {
+                RotsPlane::XY => 0,
+                RotsPlane::YZ => 1,
+                RotsPlane::ZX => 2,
+            };
+            frame_at(column, Form::SinumerikRots, selector, &[a, b])?
+        }
+        _ => Frame::with_translations(xyz, crate::IDENTITY, [0.0; 3]),
+    };
+    Ok(p.with_frame(if additive {
+        p.frame.compose(&step)
+    } else {
+        step
+    }))
+}
+
+/// `CYCLE800(0,"",0,_MODE,_X0,_Y0,_Z0,_A,_B,_C,_X1,_Y1,_Z1,-1,0,0)` (`_DIR` −1, "minus"
+/// [choice]) or `ROT X=… Y=… Z=…`.
+pub(crate) fn write_line(
+    spec: &FormSpec,
+    words: &[f64],
+    decimals: i32,
+    out: &mut Out,
+) -> Result<(), Error> {
+    let style = Style {
+        plus: false,
+        point: false,
+    };
+    match spec.form {
+        Form::Cycle800 => {
+            out.text(b"CYCLE800(0,\"\",0,");
+            super::program::write_integer(out, spec.selector);
+            for &v in words {
+                out.byte(b',');
+                crate::decimal::write(out, v, decimals, style)?;
+            }
+            out.text(b",-1,0,0)");
+        }
+        Form::SinumerikRot => {
+            out.text(b"ROT");
+            for (name, &v) in [&b" X="[..], b" Y=", b" Z="].iter().zip(words) {
+                super::program::write_word(out, name, v, decimals, style)?;
+            }
+        }
+        _ => return Err(Error::BadArgument),
+    }
+    Ok(())
 }
 
 #[cfg(test)]

@@ -136,6 +136,48 @@ fn normal(n: Vector) -> Result<Matrix, Error> {
     crate::rotation_from_z_x(z, hint)
 }
 
+// Program lines.
+
+use super::program::{address_words, whole, Cursor, LineError, Program, Syntax};
+
+const SYNTAX: Syntax = Syntax {
+    ex: false,
+    ends: b"(;",
+};
+
+/// One block of a Syntec program: `G158 L P X Y Z A B C U V W` (omitted words are 0, `L`
+/// accepted and ignored [choice: not documented]; `G158` without words cancels [choice]),
+/// and the Fanuc-style `G68.2`, `G68.4`, `G69`, `G53.1` of its G68.2 mode, with a block
+/// number, `( … )` and `;` comments.
+pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
+    let mut c = Cursor::new(text);
+    c.block_number(b'N');
+    let column = c.column();
+    if c.keyword(b"G158") {
+        if c.rest_is_comment(true, true) {
+            c.end(true, true)?;
+            return Ok(p.with_frame(Frame::IDENTITY));
+        }
+        let (w, given) = address_words(&mut c, *b"LPXYZABCUVW", SYNTAX, false, (true, true))?;
+        let [_, pw, x, y, z, a, b, cc, u, v, ww] = w;
+        if !given[1] {
+            return Err(c.error(Error::MissingWord));
+        }
+        let pword =
+            PWord::decode(whole(pw, column)?).map_err(|error| LineError { error, column })?;
+        let f = frame(&p.frame, pword, [x, y, z], [a, b, cc], [u, v, ww])
+            .map_err(|error| LineError { error, column })?;
+        return Ok(p.with_frame(f));
+    }
+    if let Some(result) = super::fanuc::read_g68(p, &mut c) {
+        return result;
+    }
+    if c.at_end() || c.rest_is_comment(true, true) {
+        return Ok(*p);
+    }
+    Err(c.error(Error::UnknownWord))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -80,6 +80,71 @@ pub fn rot_angles(m: &Matrix) -> Result<([f64; 3], bool), Error> {
     Ok(([x, y, z], d.singular))
 }
 
+// Program lines.
+
+use super::program::{address_words, Cursor, LineError, Program, Syntax};
+use crate::decimal::{Out, Style};
+
+const SYNTAX: Syntax = Syntax {
+    ex: false,
+    ends: b";(",
+};
+
+/// One block of a TwinCAT NC I program: `ROT X Y Z` (no words: cancel), `AROT X Y Z`, and
+/// `RotExOn`/`RotExOff` (no frame change), with a block number and `( … )` or `;`
+/// comments. "The rotation instructions must be programmed in their own block" [doc]:
+/// nothing else may stand on the line.
+pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
+    let mut c = Cursor::new(text);
+    c.block_number(b'N');
+    let column = c.column();
+    let additive = if c.keyword(b"ROT") {
+        false
+    } else if c.keyword(b"AROT") {
+        true
+    } else if c.keyword(b"ROTEXON") || c.keyword(b"ROTEXOFF") || c.at_end() {
+        c.end(true, true)?;
+        return Ok(*p);
+    } else if c.rest_is_comment(true, true) {
+        return Ok(*p);
+    } else {
+        return Err(c.error(Error::UnknownWord));
+    };
+    let (xyz, given) = address_words(&mut c, *b"XYZ", SYNTAX, false, (true, true))?;
+    let angles = if additive {
+        if !given.contains(&true) {
+            return Err(c.error(Error::MissingWord));
+        }
+        Rotation { angles: p.angles }.arot(xyz).angles
+    } else {
+        xyz
+    };
+    if !angles.iter().all(|a| a.is_finite()) {
+        return Err(LineError {
+            error: Error::OutOfRange,
+            column,
+        });
+    }
+    Ok(Program {
+        frame: crate::Frame::from_rotation(matrix(angles)),
+        angles: angles.map(|a| a + 0.0),
+        ..*p
+    })
+}
+
+/// `ROT X… Y… Z…` for the words of [`crate::dialects::form::Form::TwincatRot`].
+pub(crate) fn write_line(words: &[f64], decimals: i32, out: &mut Out) -> Result<(), Error> {
+    let style = Style {
+        plus: false,
+        point: false,
+    };
+    out.text(b"ROT");
+    for (name, &v) in [&b" X"[..], b" Y", b" Z"].iter().zip(words) {
+        super::program::write_word(out, name, v, decimals, style)?;
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

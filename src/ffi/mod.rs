@@ -60,7 +60,7 @@ pub enum cncrot_status {
     UnknownHead = -10,
     /// A name is longer than its field.
     NameTooLong = -11,
-    /// HEAD_DEF text could not be read.
+    /// Text could not be read: a HEAD_DEF line, or a malformed number in a program line.
     Parse = -12,
     /// The head table is full.
     TableFull = -13,
@@ -76,6 +76,17 @@ pub enum cncrot_status {
     Collinear = -17,
     /// Too few points (a plane needs three).
     TooFew = -18,
+    /// A program line has a word the dialect does not have there, or one twice.
+    UnknownWord = -19,
+    /// A program line has a variable or expression (`R1`, `Q120`, `#100`) where a number must
+    /// stand.
+    NotANumber = -20,
+    /// A program line lacks a word its command requires.
+    MissingWord = -21,
+    /// A program line is longer than the controller accepts.
+    LineTooLong = -22,
+    /// The caller's text buffer is too small.
+    NoRoom = -23,
     /// Internal failure (a caught panic): a bug in cncrot, please report it.
     Internal = -100,
 }
@@ -105,6 +116,11 @@ impl From<Error> for cncrot_status {
             Error::Coincident => cncrot_status::Coincident,
             Error::Collinear => cncrot_status::Collinear,
             Error::TooFew => cncrot_status::TooFew,
+            Error::UnknownWord => cncrot_status::UnknownWord,
+            Error::NotANumber => cncrot_status::NotANumber,
+            Error::MissingWord => cncrot_status::MissingWord,
+            Error::LineTooLong => cncrot_status::LineTooLong,
+            Error::NoRoom => cncrot_status::NoRoom,
         }
     }
 }
@@ -133,12 +149,17 @@ pub extern "C" fn cncrot_status_str(status: i32) -> *const c_char {
         -9 => c"CNCROT_STATUS_NOT_AVAILABLE: not available: needs the machine kinematics",
         -10 => c"CNCROT_STATUS_UNKNOWN_HEAD: accessory name not found in the head table",
         -11 => c"CNCROT_STATUS_NAME_TOO_LONG: name longer than its field",
-        -12 => c"CNCROT_STATUS_PARSE: HEAD_DEF text could not be read",
+        -12 => c"CNCROT_STATUS_PARSE: text could not be read (a malformed number or line)",
         -13 => c"CNCROT_STATUS_TABLE_FULL: head table is full",
         -14 => c"CNCROT_STATUS_OUT_OF_RANGE: a result is too large to represent",
         -16 => c"CNCROT_STATUS_COINCIDENT: points that must differ coincide",
         -17 => c"CNCROT_STATUS_COLLINEAR: points or directions that must span a plane lie on one line",
         -18 => c"CNCROT_STATUS_TOO_FEW: too few points (a plane needs three)",
+        -19 => c"CNCROT_STATUS_UNKNOWN_WORD: unknown, repeated or misplaced word in the line",
+        -20 => c"CNCROT_STATUS_NOT_A_NUMBER: a variable or expression where a number must stand",
+        -21 => c"CNCROT_STATUS_MISSING_WORD: a word the command requires is missing",
+        -22 => c"CNCROT_STATUS_LINE_TOO_LONG: line longer than the controller accepts",
+        -23 => c"CNCROT_STATUS_NO_ROOM: the text does not fit the buffer",
         -15 => c"CNCROT_STATUS_BAD_STATE: stored CYCLE600 state is corrupt, edited or from another version (format or checksum)",
         -100 => c"CNCROT_STATUS_INTERNAL: internal failure (caught panic), please report",
         _ => c"CNCROT_STATUS_UNKNOWN: not a cncrot status",
@@ -309,6 +330,11 @@ mod tests {
             S::Coincident,
             S::Collinear,
             S::TooFew,
+            S::UnknownWord,
+            S::NotANumber,
+            S::MissingWord,
+            S::LineTooLong,
+            S::NoRoom,
             S::Internal,
         ];
         for s in all {

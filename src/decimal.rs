@@ -1,0 +1,856 @@
+//! Decimal numbers in program text, read and written exactly, without allocation and
+//! provably without panics (`core`'s own float parsing and formatting are opaque calls that
+//! the no-panic proof cannot see through, and they would accept `inf` and `nan`).
+//!
+//! Reading rounds correctly (to nearest, ties to even) whatever the number of digits;
+//! writing gives either the shortest digits that read back to the same double or the value
+//! correctly rounded to a number of decimals (ties to even, as C's `printf` does). Both work
+//! on magnitudes from 1e-100 to 1e100 (and zero): beyond that no controller's number format
+//! reaches, and the exact arithmetic stays within a fixed 2048-bit integer.
+
+use crate::Error;
+use core::cmp::Ordering;
+
+/// Limbs of the fixed-size integer (2048 bits: the largest product of a comparison within
+/// the documented range, 200 digits at 10^-100, is about 1340 bits).
+const LIMBS: usize = 64;
+
+/// The most significant digits a number may have (trailing zeros are not counted).
+pub const MAX_DIGITS: usize = 200;
+
+/// Numbers are read and written for magnitudes `10^-MAX_EXP10 ≤ |x| < 10^MAX_EXP10`.
+pub const MAX_EXP10: i32 = 100;
+
+/// The most decimals the fixed-point writer rounds to.
+pub const MAX_DECIMALS: i32 = 17;
+
+/// A non-negative integer below 2^1280, little-endian; every operation that would overflow
+/// reports it instead.
+#[derive(Clone, Copy)]
+struct Big {
+    d: [u32; LIMBS],
+}
+
+impl Big {
+    fn from_u64(v: u64) -> Big {
+        let mut d = [0u32; LIMBS];
+        let [lo, hi, ..] = &mut d;
+        *lo = v as u32;
+        *hi = (v >> 32) as u32;
+        Big { d }
+    }
+
+    fn is_zero(&self) -> bool {
+        self.d.iter().all(|&x| x == 0)
+    }
+
+    fn mul_small(&mut self, m: u32) -> Result<(), Error> {
+        let mut carry = 0u64;
+        for x in self.d.iter_mut() {
+            let p = u64::from(*x) * u64::from(m) + carry;
+            *x = p as u32;
+            carry = p >> 32;
+        }
+        if carry == 0 {
+            Ok(())
+        } else {
+            Err(Error::OutOfRange)
+        }
+    }
+
+    fn add_small(&mut self, a: u32) -> Result<(), Error> {
+        let mut carry = u64::from(a);
+        for x in self.d.iter_mut() {
+            let s = u64::from(*x) + carry;
+            *x = s as u32;
+            carry = s >> 32;
+        }
+        if carry == 0 {
+            Ok(())
+        } else {
+            Err(Error::OutOfRange)
+        }
+    }
+
+    fn mul_pow5(&mut self, mut n: u32) -> Result<(), Error> {
+        const POW5_13: u32 = 1_220_703_125;
+        while n >= 13 {
+            self.mul_small(POW5_13)?;
+            n -= 13;
+        }
+        self.mul_small(5u32.pow(n))
+    }
+
+    fn mul_pow10(&mut self, n: u32) -> Result<(), Error> {
+        self.mul_pow5(n)?;
+        self.shl(n)
+    }
+
+    fn shl(&mut self, n: u32) -> Result<(), Error> {
+        let limbs = (n / 32) as usize;
+        let bits = n % 32;
+        if limbs >= LIMBS {
+            return if self.is_zero() {
+                Ok(())
+            } else {
+                Err(Error::OutOfRange)
+            };
+        }
+        // Nothing may be shifted out at the top.
+        let lost_limbs = self.d.iter().rev().take(limbs).any(|&x| x != 0);
+        let top = self.d.get(LIMBS - 1 - limbs).copied().unwrap_or(0);
+        let lost_bits = bits != 0 && (top >> (32 - bits)) != 0;
+        if lost_limbs || lost_bits {
+            return Err(Error::OutOfRange);
+        }
+        let old = self.d;
+        for (i, x) in self.d.iter_mut().enumerate() {
+            let at = |j: Option<usize>| j.and_then(|j| old.get(j)).copied().unwrap_or(0);
+            let hi = at(i.checked_sub(limbs));
+            let lo = at(i.checked_sub(limbs + 1));
+            *x = if bits == 0 {
+                hi
+            } else {
+                (hi << bits) | (lo >> (32 - bits))
+            };
+        }
+        Ok(())
+    }
+
+    fn add(&mut self, o: &Big) -> Result<(), Error> {
+        let mut carry = 0u64;
+        for (x, &y) in self.d.iter_mut().zip(o.d.iter()) {
+            let s = u64::from(*x) + u64::from(y) + carry;
+            *x = s as u32;
+            carry = s >> 32;
+        }
+        if carry == 0 {
+            Ok(())
+        } else {
+            Err(Error::OutOfRange)
+        }
+    }
+
+    /// `self -= o`; callers ensure `self >= o`.
+    fn sub(&mut self, o: &Big) {
+        let mut borrow = 0i64;
+        for (x, &y) in self.d.iter_mut().zip(o.d.iter()) {
+            let s = i64::from(*x) - i64::from(y) - borrow;
+            *x = s as u32;
+            borrow = i64::from(s < 0);
+        }
+    }
+
+    /// `self /= m`, returning the remainder.
+    fn div_small(&mut self, m: u32) -> u32 {
+        let mut rem = 0u64;
+        for x in self.d.iter_mut().rev() {
+            let cur = (rem << 32) | u64::from(*x);
+            *x = (cur / u64::from(m.max(1))) as u32;
+            rem = cur % u64::from(m.max(1));
+        }
+        rem as u32
+    }
+
+    fn cmp(&self, o: &Big) -> Ordering {
+        for (x, y) in self.d.iter().rev().zip(o.d.iter().rev()) {
+            match x.cmp(y) {
+                Ordering::Equal => {}
+                other => return other,
+            }
+        }
+        Ordering::Equal
+    }
+}
+
+/// A positive normal double as `mant · 2^exp` with `2^52 ≤ mant < 2^53`.
+fn split(v: f64) -> (u64, i32) {
+    let bits = v.to_bits();
+    let field = ((bits >> 52) & 0x7ff) as i32;
+    ((bits & ((1 << 52) - 1)) | (1 << 52), field - 1075)
+}
+
+/// 10^e as a double for |e| ≤ 200 (a few ulps off: only a starting point).
+fn pow10_approx(e: i32) -> f64 {
+    const POWERS: [f64; 23] = [
+        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+        1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+    ];
+    let mut n = e.unsigned_abs().min(300);
+    let mut p = 1.0;
+    while n > 22 {
+        p *= 1e22;
+        n -= 22;
+    }
+    p *= POWERS.get(n as usize).copied().unwrap_or(1.0);
+    if e < 0 {
+        1.0 / p
+    } else {
+        p
+    }
+}
+
+/// Compares `n · 10^e` with `m · 2^k` exactly.
+fn cmp_exact(n: &Big, e: i32, m: u64, k: i32) -> Result<Ordering, Error> {
+    let (mut l, mut r) = (*n, Big::from_u64(m));
+    if e >= 0 {
+        l.mul_pow5(e.unsigned_abs())?;
+    } else {
+        r.mul_pow5(e.unsigned_abs())?;
+    }
+    let p2 = e.saturating_sub(k);
+    if p2 >= 0 {
+        l.shl(p2.unsigned_abs())?;
+    } else {
+        r.shl(p2.unsigned_abs())?;
+    }
+    Ok(l.cmp(&r))
+}
+
+/// The value of `digits` (ASCII digits with at most one `.`, at least one digit) times
+/// `10^exp10`, correctly rounded; `negative` gives the sign (never -0).
+///
+/// Refused: other characters ([`Error::Parse`]), more than [`MAX_DIGITS`] significant
+/// digits ([`Error::Parse`]), a non-zero magnitude outside `10^±MAX_EXP10`
+/// ([`Error::OutOfRange`]).
+pub fn parse(negative: bool, digits: &[u8], exp10: i32) -> Result<f64, Error> {
+    let mut n = Big::from_u64(0);
+    let (mut sig, mut zeros, mut frac, mut point, mut any) = (0usize, 0u32, 0i32, false, false);
+    // The first 19 significant digits, for the starting approximation.
+    let (mut w, mut used) = (0u64, 0usize);
+    for &b in digits {
+        match b {
+            b'.' if !point => point = true,
+            b'0'..=b'9' => {
+                any = true;
+                frac = frac.saturating_add(i32::from(point));
+                let digit = u32::from(b - b'0');
+                if digit == 0 {
+                    // Held back: trailing zeros only scale the value.
+                    if sig > 0 {
+                        zeros = zeros.saturating_add(1);
+                    }
+                    continue;
+                }
+                for _ in 0..=zeros {
+                    sig += 1;
+                    if sig > MAX_DIGITS {
+                        return Err(Error::Parse);
+                    }
+                    n.mul_small(10)?;
+                }
+                n.add_small(digit)?;
+                let pending = zeros as usize + 1;
+                if used == sig - pending && used + pending <= 19 {
+                    w = w * 10u64.pow(pending as u32 - 1) * 10 + u64::from(digit);
+                    used += pending;
+                }
+                zeros = 0;
+            }
+            _ => return Err(Error::Parse),
+        }
+    }
+    if !any {
+        return Err(Error::Parse);
+    }
+    if sig == 0 {
+        return Ok(0.0);
+    }
+    // value = n · 10^e; its decimal magnitude is sig + e.
+    let e = i64::from(exp10) - i64::from(frac) + i64::from(zeros);
+    let magnitude = e + sig as i64;
+    if magnitude > i64::from(MAX_EXP10) || magnitude <= -i64::from(MAX_EXP10) {
+        return Err(Error::OutOfRange);
+    }
+    let e = e as i32;
+    let approx = w as f64 * pow10_approx(e + (sig - used) as i32);
+    let mut c = approx;
+    // The approximation is within a few ulps; each step moves one ulp towards the exact
+    // value, and the bound keeps the reader's time bounded whatever happens.
+    for _ in 0..64 {
+        let (mant, exp) = split(c);
+        let up = cmp_exact(&n, e, 2 * mant + 1, exp - 1)?;
+        let down = if mant == 1 << 52 {
+            cmp_exact(&n, e, 4 * mant - 1, exp - 2)?
+        } else {
+            cmp_exact(&n, e, 2 * mant - 1, exp - 1)?
+        };
+        let odd = mant & 1 == 1;
+        let next = match (up, down) {
+            (Ordering::Greater, _) => f64::from_bits(c.to_bits() + 1),
+            (Ordering::Equal, _) if odd => f64::from_bits(c.to_bits() + 1),
+            (_, Ordering::Less) => f64::from_bits(c.to_bits() - 1),
+            (_, Ordering::Equal) if odd => f64::from_bits(c.to_bits() - 1),
+            _ => return Ok(if negative { -c } else { c }),
+        };
+        // A tie moved to the even neighbour is final.
+        if up == Ordering::Equal || down == Ordering::Equal {
+            return Ok(if negative { -next } else { next });
+        }
+        c = next;
+    }
+    Err(Error::Parse)
+}
+
+/// How a number is spelt in a dialect.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Style {
+    /// Write `+` before positive numbers and zero (Heidenhain's `SPA+30`).
+    pub plus: bool,
+    /// Write a point after whole numbers (`30.`: Fanuc-style controls read `30` in the
+    /// least input increment unless a parameter says otherwise).
+    pub point: bool,
+}
+
+/// A caller's text buffer being filled; remembers whether anything did not fit.
+pub struct Out<'a> {
+    buf: &'a mut [u8],
+    len: usize,
+    full: bool,
+}
+
+impl<'a> Out<'a> {
+    /// An empty text over `buf`.
+    pub fn new(buf: &'a mut [u8]) -> Out<'a> {
+        Out {
+            buf,
+            len: 0,
+            full: false,
+        }
+    }
+
+    /// Appends one byte (or remembers that it did not fit).
+    pub fn byte(&mut self, b: u8) {
+        match self.buf.get_mut(self.len) {
+            Some(slot) => {
+                *slot = b;
+                self.len += 1;
+            }
+            None => self.full = true,
+        }
+    }
+
+    /// Appends bytes.
+    pub fn text(&mut self, t: &[u8]) {
+        for &b in t {
+            self.byte(b);
+        }
+    }
+
+    /// The length written, or `None` if something did not fit.
+    pub fn finish(&self) -> Option<usize> {
+        if self.full {
+            None
+        } else {
+            Some(self.len)
+        }
+    }
+}
+
+/// Decimal digits with the position of the point: the value is `0.d1 d2 … × 10^point`.
+struct Digits {
+    d: [u8; 128],
+    n: usize,
+    point: i32,
+}
+
+impl Digits {
+    fn push(&mut self, digit: u8) {
+        if let Some(slot) = self.d.get_mut(self.n) {
+            *slot = digit;
+            self.n += 1;
+        }
+    }
+
+    fn get(&self, i: usize) -> u8 {
+        self.d.get(i).copied().unwrap_or(0)
+    }
+}
+
+/// The shortest digits that read back (to nearest, ties to even) as `v` (positive, normal):
+/// Steele and White's free-format algorithm with exact integers.
+fn shortest(v: f64) -> Result<Digits, Error> {
+    let (mant, exp) = split(v);
+    let even = mant & 1 == 0;
+    let boundary = mant == 1 << 52 && (v.to_bits() >> 52) > 1;
+    // v = r / s; the neighbours are (r ± m) / s (m_minus smaller at a binade's bottom).
+    let (mut r, mut s, mut mp, mut mm);
+    if exp >= 0 {
+        let sh = exp.unsigned_abs();
+        r = Big::from_u64(mant);
+        r.shl(sh + 1 + u32::from(boundary))?;
+        s = Big::from_u64(2 << u32::from(boundary));
+        mp = Big::from_u64(1);
+        mp.shl(sh + u32::from(boundary))?;
+        mm = Big::from_u64(1);
+        mm.shl(sh)?;
+    } else {
+        r = Big::from_u64(mant << (1 + u32::from(boundary)));
+        s = Big::from_u64(1);
+        s.shl(exp.unsigned_abs() + 1 + u32::from(boundary))?;
+        mp = Big::from_u64(1 << u32::from(boundary));
+        mm = Big::from_u64(1);
+    }
+    // k ≈ ⌈log10 v⌉ from the binary exponent, then corrected exactly.
+    let e2 = exp + 52;
+    let mut k = ((f64::from(e2) * core::f64::consts::LOG10_2) as i32).saturating_add(1);
+    if k >= 0 {
+        s.mul_pow10(k.unsigned_abs())?;
+    } else {
+        let p = k.unsigned_abs();
+        r.mul_pow10(p)?;
+        mp.mul_pow10(p)?;
+        mm.mul_pow10(p)?;
+    }
+    let high = |r: &Big, mp: &Big, s: &Big| -> Result<bool, Error> {
+        let mut t = *r;
+        t.add(mp)?;
+        Ok(match t.cmp(s) {
+            Ordering::Greater => true,
+            Ordering::Equal => even,
+            Ordering::Less => false,
+        })
+    };
+    for _ in 0..4 {
+        if high(&r, &mp, &s)? {
+            s.mul_small(10)?;
+            k += 1;
+        } else {
+            break;
+        }
+    }
+    for _ in 0..4 {
+        let mut t = r;
+        t.add(&mp)?;
+        t.mul_small(10)?;
+        if t.cmp(&s) == Ordering::Less {
+            r.mul_small(10)?;
+            mp.mul_small(10)?;
+            mm.mul_small(10)?;
+            k -= 1;
+        } else {
+            break;
+        }
+    }
+    let mut out = Digits {
+        d: [0; 128],
+        n: 0,
+        point: k,
+    };
+    for _ in 0..20 {
+        r.mul_small(10)?;
+        mp.mul_small(10)?;
+        mm.mul_small(10)?;
+        let mut digit = 0u8;
+        while r.cmp(&s) != Ordering::Less && digit < 10 {
+            r.sub(&s);
+            digit += 1;
+        }
+        let low = match r.cmp(&mm) {
+            Ordering::Less => true,
+            Ordering::Equal => even,
+            Ordering::Greater => false,
+        };
+        let hi = high(&r, &mp, &s)?;
+        if low || hi {
+            let up = if low && hi {
+                let mut twice = r;
+                twice.shl(1)?;
+                match twice.cmp(&s) {
+                    Ordering::Less => false,
+                    Ordering::Greater => true,
+                    Ordering::Equal => digit & 1 == 1,
+                }
+            } else {
+                hi
+            };
+            out.push(digit + u8::from(up));
+            carry(&mut out);
+            return Ok(out);
+        }
+        out.push(digit);
+    }
+    Err(Error::OutOfRange)
+}
+
+/// Propagates a last digit of 10 (a rounding up) to the digits before it.
+fn carry(x: &mut Digits) {
+    let mut i = x.n;
+    while i > 0 {
+        i -= 1;
+        let Some(d) = x.d.get_mut(i) else { return };
+        if *d < 10 {
+            return;
+        }
+        *d = 0;
+        if i == 0 {
+            // 9.99… became 10: one digit more in front.
+            let len = x.d.len();
+            x.d.copy_within(0..len - 1, 1);
+            if let Some(first) = x.d.first_mut() {
+                *first = 1;
+            }
+            x.n = (x.n + 1).min(x.d.len());
+            x.point += 1;
+        } else if let Some(prev) = x.d.get_mut(i - 1) {
+            *prev += 1;
+        }
+    }
+}
+
+/// `v` (positive, normal) rounded to `decimals` decimals, ties to even.
+fn fixed(v: f64, decimals: u32) -> Result<Digits, Error> {
+    let (mant, exp) = split(v);
+    let mut q = Big::from_u64(mant);
+    q.mul_pow10(decimals)?;
+    if exp >= 0 {
+        q.shl(exp.unsigned_abs())?;
+    } else {
+        // q / 2^-exp, rounded: the remainder compared with half the divisor.
+        let sh = exp.unsigned_abs();
+        let mut rem = q;
+        let mut quo = Big::from_u64(0);
+        // Long division by a power of two: the quotient is q shifted right.
+        for (i, x) in quo.d.iter_mut().enumerate() {
+            let at = |j: usize| q.d.get(j).copied().unwrap_or(0);
+            let (limbs, bits) = ((sh / 32) as usize, sh % 32);
+            let lo = at(i + limbs);
+            let hi = at(i + limbs + 1);
+            *x = if bits == 0 {
+                lo
+            } else {
+                (lo >> bits) | (hi << (32 - bits))
+            };
+        }
+        let mut back = quo;
+        back.shl(sh)?;
+        rem.sub(&back);
+        rem.shl(1)?;
+        let mut half = Big::from_u64(1);
+        half.shl(sh)?;
+        let up = match rem.cmp(&half) {
+            Ordering::Greater => true,
+            Ordering::Less => false,
+            Ordering::Equal => quo.d.first().is_some_and(|&x| x & 1 == 1),
+        };
+        q = quo;
+        if up {
+            q.add_small(1)?;
+        }
+    }
+    // The digits of q, last first.
+    let mut rev = [0u8; 128];
+    let mut n = 0;
+    while !q.is_zero() {
+        let Some(slot) = rev.get_mut(n) else {
+            return Err(Error::OutOfRange);
+        };
+        *slot = q.div_small(10) as u8;
+        n += 1;
+    }
+    let mut out = Digits {
+        d: [0; 128],
+        n: 0,
+        point: n as i32 - decimals as i32,
+    };
+    for i in (0..n).rev() {
+        out.push(rev.get(i).copied().unwrap_or(0));
+    }
+    // Trailing zeros say nothing.
+    while out.n > 0 && out.get(out.n - 1) == 0 {
+        out.n -= 1;
+    }
+    Ok(out)
+}
+
+/// Writes `v` into `out`: the shortest digits that read back exactly (`decimals < 0`), or
+/// rounded to `decimals` (0..=[`MAX_DECIMALS`]) decimals, trailing zeros dropped, never in
+/// exponent notation and never `-0`.
+///
+/// Refused: a non-finite `v` ([`Error::NotFinite`]), a magnitude of `10^MAX_EXP10` or more,
+/// or a non-zero magnitude below `10^-MAX_EXP10` to be written exactly
+/// ([`Error::OutOfRange`]), `decimals` above [`MAX_DECIMALS`] ([`Error::BadArgument`]).
+pub fn write(out: &mut Out, v: f64, decimals: i32, style: Style) -> Result<(), Error> {
+    if !v.is_finite() {
+        return Err(Error::NotFinite);
+    }
+    if decimals > MAX_DECIMALS {
+        return Err(Error::BadArgument);
+    }
+    let a = crate::math::abs(v);
+    if a >= 1e100 || (a != 0.0 && a < 1e-100 && decimals < 0) {
+        return Err(Error::OutOfRange);
+    }
+    let digits = if a == 0.0 || (decimals >= 0 && a < 1e-100) {
+        None
+    } else if decimals < 0 {
+        Some(shortest(a)?)
+    } else {
+        Some(fixed(a, decimals.unsigned_abs())?).filter(|d| d.n > 0)
+    };
+    let Some(x) = digits else {
+        if style.plus {
+            out.byte(b'+');
+        }
+        out.text(if style.point { b"0." } else { b"0" });
+        return Ok(());
+    };
+    if v < 0.0 {
+        out.byte(b'-');
+    } else if style.plus {
+        out.byte(b'+');
+    }
+    let n = x.n as i32;
+    if x.point <= 0 {
+        out.text(b"0.");
+        for _ in 0..x.point.unsigned_abs() {
+            out.byte(b'0');
+        }
+        for i in 0..x.n {
+            out.byte(b'0' + x.get(i));
+        }
+    } else if x.point < n {
+        for i in 0..x.n {
+            if i as i32 == x.point {
+                out.byte(b'.');
+            }
+            out.byte(b'0' + x.get(i));
+        }
+    } else {
+        for i in 0..x.n {
+            out.byte(b'0' + x.get(i));
+        }
+        for _ in 0..(x.point - n) {
+            out.byte(b'0');
+        }
+        if style.point {
+            out.byte(b'.');
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn read(t: &str) -> Result<f64, Error> {
+        let (neg, t) = match t.strip_prefix('-') {
+            Some(rest) => (true, rest),
+            None => (false, t),
+        };
+        parse(neg, t.as_bytes(), 0)
+    }
+
+    fn show(v: f64, decimals: i32, style: Style) -> String {
+        let mut buf = [0u8; 400];
+        let mut out = Out::new(&mut buf);
+        write(&mut out, v, decimals, style).unwrap();
+        let n = out.finish().unwrap();
+        String::from_utf8(buf[..n].to_vec()).unwrap()
+    }
+
+    const PLAIN: Style = Style {
+        plus: false,
+        point: false,
+    };
+
+    struct Rng(u64);
+    impl Rng {
+        fn next(&mut self) -> u64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            self.0
+        }
+    }
+
+    /// The reader gives the bits of `str::parse` (correctly rounded, an independent
+    /// implementation) for long and short numbers, ties and near-ties included.
+    #[test]
+    fn reads_as_the_standard_parser() {
+        let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+        for i in 0..300_000 {
+            let mut t = String::new();
+            let digits = 1 + (rng.next() % 40) as usize;
+            let point = (rng.next() % (digits as u64 + 1)) as usize;
+            for k in 0..digits {
+                if k == point {
+                    t.push('.');
+                }
+                t.push(char::from(b'0' + (rng.next() % 10) as u8));
+            }
+            let e = (rng.next() % 120) as i32 - 60;
+            let theirs: f64 = format!("{t}e{e}").parse().unwrap();
+            let ours = parse(false, t.as_bytes(), e);
+            if theirs != 0.0 && (theirs.abs() >= 1e99 || theirs.abs() < 1e-99) {
+                continue;
+            }
+            assert_eq!(ours.map(f64::to_bits), Ok(theirs.to_bits()), "{i}: {t}e{e}");
+        }
+        // Exact midpoints between neighbouring doubles round to the even one.
+        for v in [1.0f64, 0.1, 123.456, 1e-50, 3e80, 0.7, 1.5] {
+            let exact = exact_midpoint(v);
+            let theirs: f64 = exact.parse().unwrap();
+            assert_eq!(read(&exact).unwrap().to_bits(), theirs.to_bits(), "{exact}");
+        }
+    }
+
+    /// The decimal expansion of the midpoint between `v` and the next double up (exact:
+    /// a binary fraction has a finite decimal expansion).
+    fn exact_midpoint(v: f64) -> String {
+        let (mant, exp) = split(v);
+        // (2·mant + 1) · 2^(exp − 1) = (2·mant + 1) · 5^(1−exp) / 10^(1−exp) for exp < 1.
+        let mut n = Big::from_u64(2 * mant + 1);
+        let scale;
+        if exp < 1 {
+            n.mul_pow5((1 - exp) as u32).unwrap();
+            scale = (1 - exp) as usize;
+        } else {
+            n.shl((exp - 1) as u32).unwrap();
+            scale = 0;
+        }
+        let mut s = Vec::new();
+        while !n.is_zero() {
+            s.push(b'0' + n.div_small(10) as u8);
+        }
+        while s.len() <= scale {
+            s.push(b'0');
+        }
+        s.reverse();
+        let (int, frac) = s.split_at(s.len() - scale);
+        format!(
+            "{}.{}",
+            String::from_utf8(int.to_vec()).unwrap(),
+            String::from_utf8(frac.to_vec()).unwrap()
+        )
+    }
+
+    #[test]
+    fn refusals() {
+        assert_eq!(parse(false, b"", 0), Err(Error::Parse));
+        assert_eq!(parse(false, b".", 0), Err(Error::Parse));
+        assert_eq!(parse(false, b"1.2.3", 0), Err(Error::Parse));
+        assert_eq!(parse(false, b"1e5", 0), Err(Error::Parse));
+        assert_eq!(parse(false, b"1", 100), Err(Error::OutOfRange));
+        assert_eq!(parse(false, b"1", -101), Err(Error::OutOfRange));
+        assert_eq!(
+            parse(false, b"1", -100).map(f64::to_bits),
+            Ok(1e-100f64.to_bits())
+        );
+        assert_eq!(
+            parse(false, b"1", 99).map(f64::to_bits),
+            Ok(1e99f64.to_bits())
+        );
+        assert_eq!(parse(false, b"0", 5000).map(f64::to_bits), Ok(0));
+        assert_eq!(parse(true, b"0.000", 0).map(f64::to_bits), Ok(0));
+        let long = "1".repeat(MAX_DIGITS + 1);
+        assert_eq!(parse(false, long.as_bytes(), 0), Err(Error::Parse));
+        // Zeros are free: they only scale.
+        let padded = format!("30{}", "0".repeat(200));
+        assert_eq!(parse(false, padded.as_bytes(), -200), Ok(30.0));
+    }
+
+    /// Shortest output has Rust's (shortest round-trip) length and reads back exactly.
+    #[test]
+    fn shortest_round_trips() {
+        let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+        for i in 0..300_000 {
+            let v = match i % 3 {
+                0 => f64::from_bits(rng.next() >> 1),
+                1 => (rng.next() % 7_200_000) as f64 / 10_000.0 - 360.0,
+                _ => (rng.next() as f64 / u64::MAX as f64 - 0.5) * 1000.0,
+            };
+            if v != 0.0 && !(1e-99..1e99).contains(&v.abs()) {
+                continue;
+            }
+            let s = show(v, -1, PLAIN);
+            assert_eq!(read(&s).unwrap().to_bits(), v.to_bits(), "{v:e} → {s}");
+            let theirs = format!("{:e}", v);
+            let sig = theirs
+                .split('e')
+                .next()
+                .unwrap()
+                .bytes()
+                .filter(u8::is_ascii_digit)
+                .count();
+            let trimmed: String = s.chars().filter(|c| c.is_ascii_digit()).collect();
+            let trimmed = trimmed.trim_start_matches('0').trim_end_matches('0');
+            assert_eq!(trimmed.len(), sig, "{v:e}: {s} vs {theirs}");
+        }
+    }
+
+    /// Fixed decimals give what C's printf gives (exact, ties to even), trailing zeros
+    /// dropped.
+    #[test]
+    fn fixed_as_printf() {
+        let cases: [(f64, i32, &str); 12] = [
+            (30.0, 3, "30"),
+            (28.481238, 3, "28.481"),
+            (0.125, 2, "0.12"),
+            (0.375, 2, "0.38"),
+            (2.5, 0, "2"),
+            (3.5, 0, "4"),
+            (-0.0004, 3, "0"),
+            (-0.0005, 3, "-0.001"), // 0.0005 is a little above 5e-4 in binary
+            (1.005, 2, "1"),        // 1.005 is a little below in binary
+            (123456789.123456789, 4, "123456789.1235"),
+            (1e-120, 3, "0"),
+            (-359.99999, 3, "-360"),
+        ];
+        for (v, d, want) in cases {
+            assert_eq!(show(v, d, PLAIN), want, "{v} {d}");
+        }
+        let mut rng = Rng(77);
+        for _ in 0..100_000 {
+            let v = (rng.next() as f64 / u64::MAX as f64 - 0.5) * 2000.0;
+            let d = (rng.next() % 7) as i32;
+            let theirs = format!("{v:.*}", d as usize);
+            let theirs = if theirs.contains('.') {
+                theirs
+                    .trim_end_matches('0')
+                    .trim_end_matches('.')
+                    .to_string()
+            } else {
+                theirs
+            };
+            let theirs = if theirs == "-0" {
+                "0".to_string()
+            } else {
+                theirs
+            };
+            assert_eq!(show(v, d, PLAIN), theirs, "{v} {d}");
+        }
+    }
+
+    #[test]
+    fn styles() {
+        let heidenhain = Style {
+            plus: true,
+            point: false,
+        };
+        let fanuc = Style {
+            plus: false,
+            point: true,
+        };
+        assert_eq!(show(27.0, -1, heidenhain), "+27");
+        assert_eq!(show(0.0, -1, heidenhain), "+0");
+        assert_eq!(show(-0.0, -1, heidenhain), "+0");
+        assert_eq!(show(-20.5, -1, heidenhain), "-20.5");
+        assert_eq!(show(30.0, -1, fanuc), "30.");
+        assert_eq!(show(0.0, 3, fanuc), "0.");
+        assert_eq!(show(1e-7, -1, PLAIN), "0.0000001");
+        assert_eq!(show(1.5e20, -1, fanuc), "150000000000000000000.");
+        assert_eq!(show(9.9999999, 3, PLAIN), "10");
+        let mut small = [0u8; 3];
+        let mut out = Out::new(&mut small);
+        write(&mut out, 1234.0, -1, PLAIN).unwrap();
+        assert_eq!(out.finish(), None);
+        let mut buf = [0u8; 8];
+        let mut out = Out::new(&mut buf);
+        assert_eq!(write(&mut out, f64::NAN, -1, PLAIN), Err(Error::NotFinite));
+        assert_eq!(write(&mut out, 1e100, -1, PLAIN), Err(Error::OutOfRange));
+        assert_eq!(write(&mut out, 1e-101, -1, PLAIN), Err(Error::OutOfRange));
+        assert_eq!(write(&mut out, 1.0, 18, PLAIN), Err(Error::BadArgument));
+    }
+}

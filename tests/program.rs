@@ -1,0 +1,666 @@
+//! Program lines: each dialect's reader against vendor examples, the worked numbers of
+//! docs/dialects.md and hand geometry; refusals with their columns and the state untouched;
+//! every writer read back by its own dialect; every pair of dialects and forms converted
+//! through text, with random and with singular frames.
+
+use cncrot::dialects::program::{write_line, Dialect, LineError, Program};
+use cncrot::{elementary, mul, Axis, Error, Frame, Matrix};
+
+fn read(d: Dialect, lines: &[&str]) -> Program {
+    let mut p = Program::default();
+    for l in lines {
+        p = p
+            .line(d, l.as_bytes())
+            .unwrap_or_else(|e| panic!("{d:?} {l:?}: {e:?}"));
+    }
+    p
+}
+
+fn rot(d: Dialect, lines: &[&str]) -> Matrix {
+    read(d, lines).frame.rotation
+}
+
+fn dist(a: &Matrix, b: &Matrix) -> f64 {
+    a.iter()
+        .flatten()
+        .zip(b.iter().flatten())
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
+}
+
+fn frame_dist(a: &Frame, b: &Frame) -> f64 {
+    a.to_homogeneous()
+        .iter()
+        .flatten()
+        .zip(b.to_homogeneous().iter().flatten())
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
+}
+
+fn r(axis: Axis, deg: f64) -> Matrix {
+    elementary(axis, deg)
+}
+
+/// The worked numbers of docs/dialects.md (printed to six decimals).
+const SPATIAL_27_0_45: Matrix = [
+    [0.707107, -0.630037, 0.321020],
+    [0.707107, 0.630037, -0.321020],
+    [0.0, 0.453990, 0.891007],
+];
+const ROTS_X30_Y20: Matrix = [
+    [0.939693, 0.163099, 0.300627],
+    [0.0, 0.878973, -0.476871],
+    [-0.342020, 0.448112, 0.825965],
+];
+const EULER_45_20_22: Matrix = [
+    [0.406706, -0.880966, 0.241845],
+    [0.904530, 0.351193, -0.241845],
+    [0.128123, 0.317116, 0.939693],
+];
+
+#[test]
+fn heidenhain_reads_the_worked_numbers_with_real_line_words() {
+    let d = Dialect::Heidenhain;
+    let f = rot(
+        d,
+        &["5 PLANE SPATIAL SPA+27 SPB+0 SPC+45 TURN MB MAX FMAX SEQ-"],
+    );
+    assert!(dist(&f, &SPATIAL_27_0_45) < 1e-6);
+    let f = rot(
+        d,
+        &["12 plane spatial spc+45 spa+27 spb+0 stay ; words in any order"],
+    );
+    assert!(dist(&f, &SPATIAL_27_0_45) < 1e-6);
+    let f = rot(
+        d,
+        &["PLANE EULER EULPR45 EULNU20 EULROT22 MOVE DIST50 F1000 SYM+ COORD ROT"],
+    );
+    assert!(dist(&f, &EULER_45_20_22) < 1e-6);
+    // PROJECTED: PROPR in ZX, PROMIN in YZ, as ROTS Y=PROPR X=PROMIN.
+    let f = rot(
+        d,
+        &["PLANE PROJECTED PROPR+20 PROMIN+30 ROT+0 TABLE ROT STAY"],
+    );
+    assert!(dist(&f, &ROTS_X30_Y20) < 1e-6);
+    // RELATIV turns about the tilted axis: SPB30, then about the new X by 20.
+    let f = rot(
+        d,
+        &[
+            "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY",
+            "PLANE RELATIV SPA+20 STAY",
+        ],
+    );
+    assert!(dist(&f, &mul(&r(Axis::Y, 30.0), &r(Axis::X, 20.0))) < 1e-15);
+    // POINTS: X' from P1 to P2, Z' to P3's side; the origin at P1.
+    let p = read(
+        d,
+        &["PLANE POINTS P1X+10 P1Y+0 P1Z+0 P2X+10 P2Y+5 P2Z+0 P3X+0 P3Y+0 P3Z+0 STAY"],
+    );
+    // Z' = (0, 5, 0) × (−10, 0, 0) / 50 = +Z, Y' = Z' × X' = −X.
+    assert_eq!(
+        p.frame.rotation,
+        [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
+    );
+    assert_eq!(p.frame.translation, [10.0, 0.0, 0.0]);
+    // VECTOR: N is Z', B (made perpendicular) X'.
+    let f = rot(d, &["PLANE VECTOR BX+0 BY+1 BZ+0 NX+0 NY+0 NZ+2 STAY"]);
+    assert_eq!(f, r(Axis::Z, 90.0));
+    let p = read(
+        d,
+        &[
+            "BEGIN PGM TILT MM",
+            "; comment",
+            "* - structure",
+            "7 PLANE SPATIAL SPA+10 SPB+0 SPC+0 STAY",
+            "8 PLANE RESET STAY",
+            "END PGM TILT MM",
+        ],
+    );
+    assert_eq!(p.frame, Frame::IDENTITY);
+}
+
+#[test]
+fn sinumerik_frames_cycles_and_readback() {
+    let d = Dialect::Sinumerik;
+    assert!(dist(&rot(d, &["N10 ROTS X30 Y20"]), &ROTS_X30_Y20) < 1e-6);
+    assert!(dist(&rot(d, &["N10 CROTS Y=20 X=30 ; any order"]), &ROTS_X30_Y20) < 1e-6);
+    // The manual's projection check: CYCLE800 in projection mode (_MODE 128 + 57) equals ROTS.
+    let f = rot(
+        d,
+        &["N20 CYCLE800(1,\"TC1\",0,185,0,0,0,30,20,0,0,0,0,-1,100,1)"],
+    );
+    assert!(dist(&f, &ROTS_X30_Y20) < 1e-6);
+    // RPY: F = Rz(z)·Ry(y)·Rx(x), whatever the word order; AROT on the right.
+    let f = rot(d, &["ROT Z=30 X=10 Y=-20", "AROT Z15"]);
+    let want = mul(
+        &mul(
+            &mul(&r(Axis::Z, 30.0), &r(Axis::Y, -20.0)),
+            &r(Axis::X, 10.0),
+        ),
+        &r(Axis::Z, 15.0),
+    );
+    assert!(dist(&f, &want) < 1e-15);
+    // TRANS then AROT rotates about the translated origin.
+    let p = read(d, &["TRANS X10", "AROT Z90"]);
+    assert_eq!(p.frame.translation, [10.0, 0.0, 0.0]);
+    assert_eq!(p.frame.rotation, r(Axis::Z, 90.0));
+    // ROT replaces the whole programmable frame; ROT and CROT without words cancel.
+    assert_eq!(
+        read(d, &["TRANS X10", "ROT Z90"]).frame.translation,
+        [0.0; 3]
+    );
+    assert_eq!(read(d, &["ROT Z90", "ROT"]).frame, Frame::IDENTITY);
+    assert_eq!(read(d, &["ROT Z90", "CROT"]).frame, Frame::IDENTITY);
+    // CYCLE800: two additive calls about Y by 10 equal one by 20 (_ST units digit 1).
+    let two = rot(
+        d,
+        &[
+            "CYCLE800(0,\"\",0,57,0,0,0,0,10,0,0,0,0,-1)",
+            "CYCLE800(0,\"\",1,57,0,0,0,0,10,0,0,0,0,-1)",
+        ],
+    );
+    assert!(dist(&two, &r(Axis::Y, 20.0)) < 1e-15);
+    // Empty arguments count as 0; _TC="0" and CYCLE800() deselect.
+    let p = read(d, &["CYCLE800(,,,27,10,,,,90,,,,,-1,,)"]);
+    assert_eq!(p.frame.translation, [10.0, 0.0, 0.0]);
+    assert_eq!(p.frame.rotation, r(Axis::Y, 90.0));
+    assert_eq!(
+        read(d, &["CYCLE800(,,,27,10,,,,90,,,,,-1,,)", "CYCLE800()"]).frame,
+        Frame::IDENTITY
+    );
+    assert_eq!(
+        read(
+            d,
+            &[
+                "CYCLE800(,,,27,10,,,,90,,,,,-1,,)",
+                "CYCLE800(0,\"0\",0,57,0,0,0,0,0,0,0,0,0,1)"
+            ]
+        )
+        .frame,
+        Frame::IDENTITY
+    );
+    // The paper's Example 3: CYCLE600 turns the probe angles (extrinsic X, Y, Z = 30, 45,
+    // 60) into intrinsic Z, X', Y'' = 37.7923, 20.7048, 49.1066 for CYCLE800; both lines,
+    // and PLANE SPATIAL with the same probe angles, are the same plane.
+    let a = rot(
+        d,
+        &["N120 CYCLE600(0, \"UFK600\", 1, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)"],
+    );
+    let b = rot(
+        d,
+        &["N130 CYCLE800(0,\"\",0,39,0,0,0,37.7923,20.7048,49.1066,0,0,0,-1)"],
+    );
+    let c = rot(
+        Dialect::Heidenhain,
+        &["PLANE SPATIAL SPA+30 SPB+45 SPC+60 STAY"],
+    );
+    assert!(dist(&a, &b) < 1e-5 && dist(&a, &c) < 1e-15);
+    // Labels, main block numbers, skip marks, lower case, EX exponents.
+    let f = rot(d, &["/N10 TILT: rot z=3ex1"]);
+    assert!(dist(&f, &r(Axis::Z, 30.0)) < 1e-15);
+    assert_eq!(
+        read(d, &[":100 ; main block", "", "N5"]).frame,
+        Frame::IDENTITY
+    );
+}
+
+#[test]
+fn sinumerik_reads_back_as_the_control_does() {
+    // The manual: CROT(x,10,y,90,z,40) reads back x 0, y 90, z 30;
+    // CROT(x,190,y,0,z,-200) reads back x -170, y 0, z 160.
+    let d = Dialect::Sinumerik;
+    let mut buf = [0u8; 128];
+    for (line, want) in [
+        ("ROT X10 Y90 Z40", "ROT X=0 Y=90 Z=30"),
+        ("ROT X190 Y0 Z-200", "ROT X=-170 Y=0 Z=160"),
+    ] {
+        let f = read(d, &[line]).frame;
+        let (n, _) = write_line(d, b"ROT", &f, 6, &mut buf).unwrap();
+        assert_eq!(std::str::from_utf8(&buf[..n]).unwrap(), want);
+    }
+}
+
+#[test]
+fn twincat_the_manuals_examples() {
+    let d = Dialect::Twincat;
+    let p = read(d, &["N65 ROT Z30", "N90 AROT Z15"]);
+    assert_eq!(p.angles, [0.0, 0.0, 45.0]);
+    assert!(dist(&p.frame.rotation, &r(Axis::Z, 45.0)) < 1e-15);
+    // After ROT Z45, CalcInvRot of (40, 10, 0) is (35.36, -21.21, 0): Fᵀ·v.
+    let f = rot(d, &["N30 ROT Z45 (rotate)"]).map(|row| row);
+    let v = [40.0, 10.0, 0.0];
+    let back: Vec<f64> = (0..3)
+        .map(|k| (0..3).map(|i| f[i][k] * v[i]).sum())
+        .collect();
+    assert!((back[0] - 35.3553).abs() < 1e-4 && (back[1] + 21.2132).abs() < 1e-4);
+    // Z, then Y, then X about the global axes, whatever the word order: F = Rx·Ry·Rz.
+    let f = rot(d, &["ROT Z30 X10 Y20"]);
+    let want = mul(
+        &mul(&r(Axis::X, 10.0), &r(Axis::Y, 20.0)),
+        &r(Axis::Z, 30.0),
+    );
+    assert!(dist(&f, &want) < 1e-15);
+    assert_eq!(read(d, &["N110 ROT X90", "ROT"]).frame, Frame::IDENTITY);
+    assert_eq!(
+        read(d, &["N10 RotExOn", "N1000 RotExOff"]).frame,
+        Frame::IDENTITY
+    );
+}
+
+#[test]
+fn syntec_the_manuals_examples() {
+    let d = Dialect::Syntec;
+    // "translated first X2 Y0 Z10, then 20° about X, 20° about Y, -30° about Z, then
+    // U V W in the rotated system".
+    let p = read(d, &["G158 L1 P10157 X2. Y0. Z10. A20 B20 C-30 U0 V10 W0"]);
+    let m = mul(
+        &mul(&r(Axis::X, 20.0), &r(Axis::Y, 20.0)),
+        &r(Axis::Z, -30.0),
+    );
+    let want = Frame::with_translations([2.0, 0.0, 10.0], m, [0.0, 10.0, 0.0]);
+    assert!(frame_dist(&p.frame, &want) < 1e-14);
+    // "Increment and then turn the XY plane to 10 degrees": twice is 20.
+    let f = rot(
+        d,
+        &[
+            "G158 L3 P01159 X0 Y0 Z0 A0 B0 C10 U0 V0 W0",
+            "G158 L3 P01159 X0 Y0 Z0 A0 B0 C10 U0 V0 W0 ;Increment",
+        ],
+    );
+    assert!(dist(&f, &r(Axis::Z, 20.0)) < 1e-15);
+    // Mode 4: F = Ry(-A)·Rx(B)·Rz(C).
+    let f = rot(d, &["G158 P10400 X0 Y0 Z0 A20. B30. C15. U0 V0 W0"]);
+    let want = mul(
+        &mul(&r(Axis::Y, -20.0), &r(Axis::X, 30.0)),
+        &r(Axis::Z, 15.0),
+    );
+    assert!(dist(&f, &want) < 1e-15);
+    let e = Program::default()
+        .line(d, b"G158 L3 P10200 X0 Y0 Z10 A0 B20 C45 U0 V0 W0")
+        .unwrap_err();
+    assert_eq!(
+        e,
+        LineError {
+            error: Error::NotAvailable,
+            column: 1
+        }
+    );
+    // Syntec's G68.2 mode reads Fanuc's words; G158 alone and G69 cancel.
+    assert!(dist(&rot(d, &["G68.2 X0 Y0 Z0 I0 J30 K0"]), &r(Axis::X, 30.0)) < 1e-15);
+    assert_eq!(read(d, &["G68.2 J30", "G69"]).frame, Frame::IDENTITY);
+    assert_eq!(read(d, &["G158 P10157 A30", "G158"]).frame, Frame::IDENTITY);
+}
+
+#[test]
+fn fanuc_and_haas() {
+    let d = Dialect::Fanuc;
+    let p = read(d, &["%", "N10 G68.2 X10. Y0 Z0 I0 J30. K0 (TILT)"]);
+    assert_eq!(p.frame.translation, [10.0, 0.0, 0.0]);
+    assert!(dist(&p.frame.rotation, &r(Axis::X, 30.0)) < 1e-15);
+    // I J K: Z, X', Z''.
+    let f = rot(d, &["g68.2 i30 j45 k60", "G53.1"]);
+    let want = mul(
+        &mul(&r(Axis::Z, 30.0), &r(Axis::X, 45.0)),
+        &r(Axis::Z, 60.0),
+    );
+    assert!(dist(&f, &want) < 1e-15);
+    // Two G68.4 by 15 are one G68.2 by 30.
+    let f = rot(d, &["G68.4 I0 J15 K0", "G68.4 I0 J15 K0"]);
+    assert!(dist(&f, &r(Axis::X, 30.0)) < 1e-15);
+    assert_eq!(read(d, &["G68.2 J30", "G69"]).frame, Frame::IDENTITY);
+    let e = Program::default().line(d, b"G68.3 R0").unwrap_err();
+    assert_eq!(e.error, Error::NotAvailable);
+
+    let d = Dialect::Haas;
+    let f = rot(d, &["G268 X0 Y0 Z0 I0 J30 K0 Q123"]);
+    assert!(dist(&f, &r(Axis::Y, 30.0)) < 1e-15);
+    // Q321 and Q123 agree on a turn about Z alone.
+    assert_eq!(rot(d, &["G268 K40 Q321"]), rot(d, &["G268 K40 Q123"]));
+    // About the fixed axes: F = Rz(K)·Ry(J)·Rx(I) with Q123.
+    let f = rot(d, &["G268 I10 J20 K30 Q123"]);
+    let want = mul(
+        &mul(&r(Axis::Z, 30.0), &r(Axis::Y, 20.0)),
+        &r(Axis::X, 10.0),
+    );
+    assert!(dist(&f, &want) < 1e-15);
+    assert_eq!(
+        read(d, &["G268 J30 Q123", "G253", "G269"]).frame,
+        Frame::IDENTITY
+    );
+}
+
+/// Every refusal leaves the state as it was and names the column of the first bad
+/// character (1-based; one past the end for something missing at the end).
+#[test]
+fn refusals_name_their_column() {
+    let active = read(Dialect::Sinumerik, &["ROT Z30"]);
+    let cases: [(Dialect, &str, Error, &str); 22] = [
+        (Dialect::Sinumerik, "ROT X=R1", Error::NotANumber, "R1"),
+        (Dialect::Sinumerik, "ROT X10 A5", Error::UnknownWord, "A5"),
+        (Dialect::Sinumerik, "ROT X10 X20", Error::UnknownWord, "X20"),
+        (Dialect::Sinumerik, "ROT X=10+5", Error::NotANumber, "+5"),
+        (Dialect::Sinumerik, "ROT X1.2.3", Error::Parse, ".3"),
+        (Dialect::Sinumerik, "G1 X10", Error::UnknownWord, "G1"),
+        (Dialect::Sinumerik, "AROT", Error::MissingWord, ""),
+        (
+            Dialect::Sinumerik,
+            "CYCLE800(0,\"TC1\",0,192,0,0,0,0,30,0,0,0,0,-1)",
+            Error::NotAvailable,
+            "192",
+        ),
+        (
+            Dialect::Sinumerik,
+            "CYCLE800(0,\"TC1\",0,300,0,0,0,0,30,0,0,0,0,-1)",
+            Error::BadArgument,
+            "300",
+        ),
+        (
+            Dialect::Sinumerik,
+            "CYCLE800(0,\"TC1\",0,57,0,0,0,_A,30,0,0,0,0,-1)",
+            Error::NotANumber,
+            "_A",
+        ),
+        (
+            Dialect::Sinumerik,
+            "CYCLE800(0,\"TC1\",0)",
+            Error::MissingWord,
+            "",
+        ),
+        (
+            Dialect::Sinumerik,
+            "CYCLE800(0,\"TC1\",0,57",
+            Error::MissingWord,
+            "",
+        ),
+        (
+            Dialect::Sinumerik,
+            "CYCLE600(0,\"UFK600\",0,57,0,0,0,30,45,60,0,0,0,1,39,0,0,0)",
+            Error::NotAvailable,
+            "CYCLE600",
+        ),
+        (
+            Dialect::Heidenhain,
+            "PLANE SPATIAL SPA+Q120 SPB+0 SPC+0",
+            Error::NotANumber,
+            "Q120",
+        ),
+        (
+            Dialect::Heidenhain,
+            "PLANE SPATIAL SPA+0 SPB+0",
+            Error::MissingWord,
+            "",
+        ),
+        (
+            Dialect::Heidenhain,
+            "PLANE SPATIAL SPA+0 SPB+0 SPC+0 WARP",
+            Error::UnknownWord,
+            "WARP",
+        ),
+        (
+            Dialect::Heidenhain,
+            "L X+10 FMAX",
+            Error::UnknownWord,
+            "L X",
+        ),
+        (
+            Dialect::Heidenhain,
+            "PLANE VECTOR BX+1 BY+0 BZ+0 NX+1 NY+0 NZ+0",
+            Error::Degenerate,
+            "VECTOR",
+        ),
+        (
+            Dialect::Fanuc,
+            "G68.2 X0 Y0 Z0 I0 J#100 K0",
+            Error::NotANumber,
+            "#100",
+        ),
+        (Dialect::Fanuc, "G68.2 X0 P1 Q123", Error::UnknownWord, "P1"),
+        (Dialect::Haas, "G268 X0 I0 J30 K0", Error::MissingWord, ""),
+        (Dialect::Twincat, "ROT Z30 G1", Error::UnknownWord, "G1"),
+    ];
+    for (d, line, error, at) in cases {
+        let p = Program {
+            dialect: Some(d),
+            ..active
+        };
+        let before = p;
+        let e = p.line(d, line.as_bytes()).expect_err(line);
+        let column = if at.is_empty() {
+            line.len() + 1
+        } else {
+            line.find(at).unwrap() + 1
+        };
+        assert_eq!(e, LineError { error, column }, "{line}");
+        assert_eq!(p, before);
+    }
+    // Too long for the controller: SINUMERIK's 512 bytes, the others' 256 (Heidenhain 254).
+    let long = format!("ROT Z30 ;{}", "x".repeat(503));
+    assert_eq!(long.len(), 512);
+    assert!(Program::default()
+        .line(Dialect::Sinumerik, long.as_bytes())
+        .is_ok());
+    let longer = format!("{long}x");
+    assert_eq!(
+        Program::default().line(Dialect::Sinumerik, longer.as_bytes()),
+        Err(LineError {
+            error: Error::LineTooLong,
+            column: 513
+        })
+    );
+    // Non-ASCII and control bytes are words no dialect has.
+    let e = Program::default()
+        .line(Dialect::Fanuc, "G68.2 J30 \u{b0}".as_bytes())
+        .unwrap_err();
+    assert_eq!(
+        e,
+        LineError {
+            error: Error::UnknownWord,
+            column: 11
+        }
+    );
+}
+
+/// The forms each dialect writes.
+const FORMS: [(Dialect, &str); 14] = [
+    (Dialect::Sinumerik, "CYCLE800"),
+    (Dialect::Sinumerik, "CYCLE800 27"),
+    (Dialect::Sinumerik, "CYCLE800 64"),
+    (Dialect::Sinumerik, "ROT"),
+    (Dialect::Heidenhain, "PLANE SPATIAL"),
+    (Dialect::Heidenhain, "PLANE EULER"),
+    (Dialect::Heidenhain, "PLANE VECTOR"),
+    (Dialect::Heidenhain, "PLANE POINTS"),
+    (Dialect::Fanuc, "G68.2"),
+    (Dialect::Syntec, "G158"),
+    (Dialect::Syntec, "G158 P10139"),
+    (Dialect::Syntec, "G68.2"),
+    (Dialect::Twincat, "ROT"),
+    (Dialect::Haas, "G268 Q321"),
+];
+
+/// Whether a form carries an origin.
+fn has_origin(form: &str) -> bool {
+    !matches!(
+        form,
+        "ROT" | "PLANE SPATIAL" | "PLANE EULER" | "PLANE VECTOR"
+    )
+}
+
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// Random frames, and the singular ones: middle angles of ±90 and 0/180 in each
+/// dialect's convention, from the rotations that put a new axis on an old one.
+fn frames() -> Vec<Frame> {
+    let mut rng = Rng(0x1234_5678_9ABC_DEF1);
+    let mut out = Vec::new();
+    for _ in 0..60 {
+        let a = [0; 3].map(|_| rng.next() * 360.0 - 180.0);
+        let m = mul(
+            &mul(&r(Axis::Z, a[0]), &r(Axis::Y, a[1] / 2.0)),
+            &r(Axis::X, a[2]),
+        );
+        let t = [0; 3].map(|_| rng.next() * 400.0 - 200.0);
+        out.push(Frame::with_translations(t, m, [0.0; 3]));
+    }
+    for (axis, deg) in [
+        (Axis::Y, 90.0),
+        (Axis::Y, -90.0),
+        (Axis::X, 90.0),
+        (Axis::X, 0.0),
+        (Axis::X, 180.0),
+    ] {
+        for twist in [0.0, 25.0, -130.0] {
+            let m = mul(
+                &mul(&r(Axis::Z, twist), &r(axis, deg)),
+                &r(Axis::Z, 40.0 - twist),
+            );
+            out.push(Frame::with_translations([5.0, -2.0, 1.0], m, [0.0; 3]));
+        }
+    }
+    out
+}
+
+fn write(d: Dialect, form: &str, f: &Frame, decimals: i32) -> Result<String, Error> {
+    let mut buf = [0u8; 512];
+    let (n, _) = write_line(d, form.as_bytes(), f, decimals, &mut buf)?;
+    Ok(String::from_utf8(buf[..n].to_vec()).unwrap())
+}
+
+/// Every writer's line reads back, in the same dialect, as the same frame: shortest numbers
+/// to rounding (1e-12), rounded ones to their decimals.
+#[test]
+fn every_writer_reads_back() {
+    for f in frames() {
+        for (d, form) in FORMS {
+            let f = if has_origin(form) {
+                f
+            } else {
+                Frame::from_rotation(f.rotation)
+            };
+            let line = match write(d, form, &f, -1) {
+                Ok(l) => l,
+                // Projection-like forms cannot express every frame; no others fail.
+                Err(e) => panic!("{d:?} {form}: {e:?}"),
+            };
+            let g = read(d, &[&line]).frame;
+            assert!(
+                frame_dist(&f, &g) < 1e-12,
+                "{line}: {:e}",
+                frame_dist(&f, &g)
+            );
+            let line = write(d, form, &f, 6).unwrap();
+            let g = read(d, &[&line]).frame;
+            // Six decimals: angles within 5e-7°, vector components within 5e-7.
+            assert!(frame_dist(&f, &g) < 1e-3, "{line}");
+            assert!(dist(&f.rotation, &g.rotation) < 3e-6, "{line}");
+        }
+    }
+}
+
+/// Read in one dialect, write in another, read again: the frame survives every pair.
+#[test]
+fn every_pair_of_dialects_converts() {
+    let mut pairs = 0;
+    for f in frames() {
+        for (da, fa) in FORMS {
+            for (db, fb) in FORMS {
+                let both = has_origin(fa) && has_origin(fb);
+                let f = if both {
+                    f
+                } else {
+                    Frame::from_rotation(f.rotation)
+                };
+                let a = write(da, fa, &f, -1).unwrap();
+                let ga = read(da, &[&a]).frame;
+                let b = write(db, fb, &ga, -1).unwrap();
+                let gb = read(db, &[&b]).frame;
+                assert!(frame_dist(&f, &gb) < 1e-12, "{a} → {b}");
+                pairs += 1;
+            }
+        }
+    }
+    assert_eq!(pairs, frames().len() * FORMS.len() * FORMS.len());
+}
+
+#[test]
+fn writers_say_where_the_free_angle_went() {
+    let mut buf = [0u8; 128];
+    // PLANE SPATIAL at SPB = 90 puts the free angle in SPA (SPC = 0 by its rule)...
+    let f = Frame::from_rotation(mul(&r(Axis::Y, 90.0), &r(Axis::X, 30.0)));
+    let (n, singular) = write_line(Dialect::Heidenhain, b"PLANE SPATIAL", &f, 6, &mut buf).unwrap();
+    assert!(singular);
+    assert_eq!(&buf[..n], b"PLANE SPATIAL SPA+30 SPB+90 SPC+0 STAY");
+    // ...SINUMERIK's read-back the other way round (x = 0).
+    let (n, singular) = write_line(Dialect::Sinumerik, b"ROT", &f, 6, &mut buf).unwrap();
+    assert!(singular);
+    assert_eq!(&buf[..n], b"ROT X=0 Y=90 Z=-30");
+    // Fanuc numbers always carry a point; Haas names its Q.
+    let f = Frame::with_translations([10.0, 0.0, 0.0], r(Axis::X, 30.0), [0.0; 3]);
+    let (n, _) = write_line(Dialect::Fanuc, b"G68.2", &f, 3, &mut buf).unwrap();
+    assert_eq!(&buf[..n], b"G68.2 X10. Y0. Z0. I0. J30. K0.");
+    let (n, _) = write_line(Dialect::Haas, b"g268", &f, 3, &mut buf).unwrap();
+    assert_eq!(&buf[..n], b"G268 X10. Y0. Z0. I30. J0. K0. Q123");
+    let (n, _) = write_line(Dialect::Sinumerik, b"CYCLE800", &f, 3, &mut buf).unwrap();
+    assert_eq!(
+        &buf[..n],
+        b"CYCLE800(0,\"\",0,57,10,0,0,30,0,0,0,0,0,-1,0,0)"
+    );
+}
+
+#[test]
+fn writers_refuse() {
+    let mut buf = [0u8; 128];
+    let moved = Frame::with_translations([1.0, 0.0, 0.0], cncrot::IDENTITY, [0.0; 3]);
+    let id = Frame::IDENTITY;
+    let w =
+        |d, form: &str, f: &Frame, dec, buf: &mut [u8]| write_line(d, form.as_bytes(), f, dec, buf);
+    assert_eq!(
+        w(Dialect::Heidenhain, "PLANE SPATIAL", &moved, -1, &mut buf),
+        Err(Error::BadArgument)
+    );
+    assert_eq!(
+        w(Dialect::Heidenhain, "G68.2", &id, -1, &mut buf),
+        Err(Error::BadArgument)
+    );
+    assert_eq!(
+        w(Dialect::Haas, "G68.2", &id, -1, &mut buf),
+        Err(Error::BadArgument)
+    );
+    assert_eq!(
+        w(Dialect::Sinumerik, "ROTS", &id, -1, &mut buf),
+        Err(Error::BadArgument)
+    );
+    assert_eq!(
+        w(Dialect::Sinumerik, "CYCLE800 192", &id, -1, &mut buf),
+        Err(Error::NotAvailable)
+    );
+    assert_eq!(
+        w(Dialect::Sinumerik, "CYCLE800 x", &id, -1, &mut buf),
+        Err(Error::BadArgument)
+    );
+    assert_eq!(
+        w(Dialect::Syntec, "G158 P10200", &id, -1, &mut buf),
+        Err(Error::NotAvailable)
+    );
+    assert_eq!(
+        w(Dialect::Fanuc, "G68.2", &id, 18, &mut buf),
+        Err(Error::BadArgument)
+    );
+    assert_eq!(
+        w(Dialect::Fanuc, "G68.2", &id, -1, &mut buf[..10]),
+        Err(Error::NoRoom)
+    );
+    let far = Frame::with_translations([1e120, 0.0, 0.0], cncrot::IDENTITY, [0.0; 3]);
+    assert_eq!(
+        w(Dialect::Fanuc, "G68.2", &far, -1, &mut buf),
+        Err(Error::OutOfRange)
+    );
+}
