@@ -9,21 +9,6 @@
 #include <stdint.h>
 
 /**
- * The most significant digits a number may have (trailing zeros are not counted).
- */
-#define MAX_DIGITS 200
-
-/**
- * Numbers are read and written for magnitudes `10^-MAX_EXP10 ≤ |x| < 10^MAX_EXP10`.
- */
-#define MAX_EXP10 100
-
-/**
- * The most decimals the fixed-point writer rounds to.
- */
-#define MAX_DECIMALS 17
-
-/**
  * The tolerance of the rotation check: the largest element of `MᵀM − I` accepted.
  * Matrices printed to four decimals stay below 2e-4; more distorted ones (raw probe data)
  * must go through `cncrot_nearest_rotation` deliberately.
@@ -107,9 +92,57 @@
 #define CNCROT_FORM_G68_3 12
 
 /**
+ * Heidenhain `PLANE PROJECTED`: selector 0; words `PROPR PROMIN ROT`.
+ */
+#define CNCROT_FORM_PLANE_PROJECTED 13
+
+/**
  * The most words a form has (`count` is exactly the form's number of words).
  */
 #define CNCROT_FORM_MAX_WORDS 9
+
+/**
+ * Siemens SINUMERIK: `CYCLE800(…)`, `CYCLE600(…)`, `ROT`/`AROT`/`CROT`, `ROTS`/`AROTS`/`CROTS`,
+ * `TRANS`/`ATRANS`; blocks of at most 512 bytes.
+ */
+#define CNCROT_DIALECT_SINUMERIK 1
+
+/**
+ * Heidenhain plain language: `PLANE SPATIAL|PROJECTED|EULER|VECTOR|POINTS|RELATIV|RESET`;
+ * blocks of at most 254 bytes.
+ */
+#define CNCROT_DIALECT_HEIDENHAIN 2
+
+/**
+ * Fanuc-style: `G68.2`, `G68.4`, `G69`, `G53.1`; blocks of at most 256 bytes.
+ */
+#define CNCROT_DIALECT_FANUC 3
+
+/**
+ * Syntec: `G158` and its Fanuc-style `G68.2` mode; blocks of at most 256 bytes.
+ */
+#define CNCROT_DIALECT_SYNTEC 4
+
+/**
+ * Beckhoff TwinCAT NC I: `ROT`, `AROT`; blocks of at most 256 bytes.
+ */
+#define CNCROT_DIALECT_TWINCAT 5
+
+/**
+ * Haas: `G268`, `G269`, `G253`; blocks of at most 256 bytes.
+ */
+#define CNCROT_DIALECT_HAAS 6
+
+/**
+ * `cncrot_program.options`: SINUMERIK frame angles in Euler mode (machine data 10600 = 2)
+ * instead of RPY.
+ */
+#define CNCROT_PROGRAM_SINUMERIK_EULER 1
+
+/**
+ * The longest line `cncrot_program_write` writes, without its NUL (SINUMERIK's block limit).
+ */
+#define CNCROT_PROGRAM_LINE_MAX 512
 
 /**
  * Status of every `cncrot_` function: 0 success, positive success with a remark, negative
@@ -238,17 +271,6 @@ typedef int32_t cncrot_status;
 #endif // __cplusplus
 
 /**
- * A controller family whose program lines the library reads and writes.
- *
- * ```
- * use cncrot::dialects::program::Dialect;
- * assert_eq!(Dialect::from_code(2), Ok(Dialect::Heidenhain));
- * assert_eq!(Dialect::Heidenhain.max_line(), 254);
- * ```
- */
-typedef struct Dialect Dialect;
-
-/**
  * One technological accessory of the HEAD_DEF cycle.
  */
 typedef struct cncrot_head {
@@ -361,6 +383,43 @@ typedef struct cncrot_cycle600_gud {
    */
   uint32_t checksum;
 } cncrot_cycle600_gud;
+
+/**
+ * The modal state of a part program, owned by the caller: the active frame and what the
+ * controller keeps between blocks. All zero bytes is a program with nothing active, ready
+ * for its first block (then `options` may be set). The fields are the library's to write:
+ * a state it did not write is refused with `CNCROT_STATUS_BAD_STATE`.
+ */
+typedef struct cncrot_program {
+  /**
+   * The active rotation, row-major (all zero while `active` is 0).
+   */
+  double rotation[9];
+  /**
+   * The active origin (all zero while `active` is 0).
+   */
+  double origin[3];
+  /**
+   * TwinCAT's programmed angles `X Y Z` (its `AROT` adds angles); zero in other dialects.
+   */
+  double angles[3];
+  /**
+   * 1 while a frame is active, 0 when none is (the identity).
+   */
+  int32_t active;
+  /**
+   * The dialect of the blocks read so far (`CNCROT_DIALECT_*`), 0 before the first.
+   */
+  int32_t dialect;
+  /**
+   * `CNCROT_PROGRAM_*` settings of the machine, set by the caller.
+   */
+  uint32_t options;
+  /**
+   * Zero.
+   */
+  uint32_t reserved;
+} cncrot_program;
 
 
 
@@ -701,6 +760,120 @@ int32_t cncrot_probe_edge(const double *frame_in,
                           const double *e2,
                           double *angle_deg,
                           double *frame_out);
+
+/**
+ * Applies one block of a part program (`len` bytes, no NUL needed; a trailing line end is
+ * ignored) in `dialect` (`CNCROT_DIALECT_*`) to `*program`, as that controller does: a tilt
+ * replaces or adds to the active frame, a cancel (`ROT`, `CROT`, `CYCLE800()`,
+ * `PLANE RESET`, `G69`, `G269`, `G158`) restores none, a blank, comment-only or
+ * block-number-only line changes nothing. A program speaks one dialect.
+ *
+ * Returns 0, or a negative status with `*program` byte-identical:
+ * `CNCROT_STATUS_UNKNOWN_WORD` (a word the dialect does not have there, or twice),
+ * `CNCROT_STATUS_NOT_A_NUMBER` (`R1`, `Q120`, `#100`, `30+5` where a number must stand),
+ * `CNCROT_STATUS_MISSING_WORD`, `CNCROT_STATUS_PARSE` (a malformed number),
+ * `CNCROT_STATUS_LINE_TOO_LONG`, `CNCROT_STATUS_BAD_ARGUMENT` (unknown dialect, a dialect
+ * other than the program's, a value outside its set), `CNCROT_STATUS_BAD_STATE` (a state
+ * this library did not write), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes, `G68.3`,
+ * `PLANE AXIAL`: they need the machine's kinematics), and the statuses of the command's
+ * mathematics. `cncrot_program_column` names the column of the offending character.
+ *
+ * # Safety
+ * `program` points to a readable and writable `cncrot_program`, `line` to `len` readable
+ * bytes (or NULL: error).
+ *
+ * ```c
+ * cncrot_program p = {0};
+ * const char *l = "N10 PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY";
+ * int s = cncrot_program_line(&p, CNCROT_DIALECT_HEIDENHAIN, l, strlen(l));
+ * ```
+ */
+int32_t cncrot_program_line(struct cncrot_program *program,
+                            int32_t dialect,
+                            const char *line,
+                            size_t len);
+
+/**
+ * What `cncrot_program_line` would return for this block, without changing anything, and
+ * in `*column` the 1-based byte column of the first offending character (one past the end
+ * when a word is missing at the end; 0 on success and for errors that are not in the text:
+ * a bad dialect or state).
+ *
+ * # Safety
+ * `program` points to a readable `cncrot_program`, `line` to `len` readable bytes,
+ * `column` to a writable `size_t` (or NULL: error; `*column` is written for every other
+ * status).
+ *
+ * ```c
+ * size_t col;
+ * cncrot_program_column(&p, CNCROT_DIALECT_SINUMERIK, "ROT X=R1", 8, &col);   // -20, col 7
+ * ```
+ */
+int32_t cncrot_program_column(const struct cncrot_program *program,
+                              int32_t dialect,
+                              const char *line,
+                              size_t len,
+                              size_t *column);
+
+/**
+ * The active frame of a program (4x4, row-major; the identity when none is active).
+ *
+ * Returns 0, or `CNCROT_STATUS_BAD_STATE` for a state this library did not write, with
+ * `frame` untouched.
+ *
+ * # Safety
+ * `program` points to a readable `cncrot_program`, `frame` to 16 writable doubles (or NULL:
+ * error).
+ *
+ * ```c
+ * double f[16];
+ * cncrot_program_frame(&p, f);
+ * ```
+ */
+int32_t cncrot_program_frame(const struct cncrot_program *program, double *frame);
+
+/**
+ * Writes the block that programs `frame` (4x4, row-major) in `dialect` with the command
+ * `form` (a NUL-terminated name, upper or lower case):
+ *
+ * | dialect | forms |
+ * |---|---|
+ * | SINUMERIK | `"CYCLE800"` (`_MODE` 57), `"CYCLE800 <_MODE>"`, `"ROT"`, `"ROT EULER"` |
+ * | Heidenhain | `"PLANE SPATIAL"`, `"PLANE EULER"`, `"PLANE VECTOR"`, `"PLANE POINTS"`, `"PLANE PROJECTED"` |
+ * | Fanuc | `"G68.2"` |
+ * | Syntec | `"G158"` (`P10157`), `"G158 P<p>"`, `"G68.2"` |
+ * | TwinCAT | `"ROT"` |
+ * | Haas | `"G268"` (`Q123`), `"G268 Q<q>"` |
+ *
+ * The same dialect's `cncrot_program_line` reads the line back as the same frame. With
+ * `decimals` < 0 the numbers are the shortest that read back exactly; with 0..17 they are
+ * rounded to that many decimals (ties to even), trailing zeros dropped. Angles are in each
+ * dialect's read-back ranges; `CNCROT_STATUS_SINGULAR` says the middle angle was singular and
+ * the free angle sits where that dialect's rule puts it. `out` receives the line and a NUL
+ * (at most `CNCROT_PROGRAM_LINE_MAX` + 1 bytes).
+ *
+ * Returns 0 or `CNCROT_STATUS_SINGULAR`, or a negative status with `out` untouched:
+ * `CNCROT_STATUS_BAD_ARGUMENT` (unknown dialect or form, `decimals` > 17, a frame with an
+ * origin for a form without origin words), `CNCROT_STATUS_NOT_A_ROTATION`,
+ * `CNCROT_STATUS_NOT_AVAILABLE` (direct modes), `CNCROT_STATUS_OUT_OF_RANGE` (a frame the
+ * form cannot express, numbers of 1e100 or more, or a line longer than the dialect reads),
+ * `CNCROT_STATUS_NO_ROOM` (`cap` too small).
+ *
+ * # Safety
+ * `form` is a NUL-terminated string (at most 64 bytes are read: a longer name is refused), `frame` points to 16
+ * readable doubles, `out` to `cap` writable bytes (or NULL: error).
+ *
+ * ```c
+ * char line[CNCROT_PROGRAM_LINE_MAX + 1];
+ * cncrot_program_write(CNCROT_DIALECT_FANUC, "G68.2", f, 4, line, sizeof line);
+ * ```
+ */
+int32_t cncrot_program_write(int32_t dialect,
+                             const char *form,
+                             const double *frame,
+                             int32_t decimals,
+                             char *out,
+                             size_t cap);
 
 /**
  * The rotation matrix of three angles in a convention.

@@ -29,6 +29,8 @@ pub const CNCROT_FORM_G268: i32 = 11;
 /// Fanuc-style `G68.3` (vertical axis +Z): selector 0; words `X Y Z R TX TY TZ`, T the tool
 /// direction.
 pub const CNCROT_FORM_G68_3: i32 = 12;
+/// Heidenhain `PLANE PROJECTED`: selector 0; words `PROPR PROMIN ROT`.
+pub const CNCROT_FORM_PLANE_PROJECTED: i32 = 13;
 /// The most words a form has (`count` is exactly the form's number of words).
 pub const CNCROT_FORM_MAX_WORDS: usize = 9;
 
@@ -169,6 +171,7 @@ mod tests {
             (CNCROT_FORM_TWINCAT_ROT, Form::TwincatRot),
             (CNCROT_FORM_G268, Form::G268),
             (CNCROT_FORM_G68_3, Form::G68_3),
+            (CNCROT_FORM_PLANE_PROJECTED, Form::PlaneProjected),
         ];
         assert_eq!(c.len(), Form::ALL.len());
         for (code, form) in c {

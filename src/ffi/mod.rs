@@ -16,12 +16,14 @@ mod cycle600;
 mod dialects;
 mod frame;
 mod probe;
+mod program;
 mod rotation;
 
 pub use cycle600::*;
 pub use dialects::*;
 pub use frame::*;
 pub use probe::*;
+pub use program::*;
 pub use rotation::*;
 
 use crate::{Convention, Error, Kind};

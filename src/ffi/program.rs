@@ -1,0 +1,384 @@
+//! Exports of program lines: read a block into a caller-owned program state, read the active
+//! frame, write the block for a frame.
+
+use super::frame::{read_frame, write_frame};
+use super::{cncrot_status, guard, non_null};
+use crate::dialects::program::{self, Dialect, Program};
+use crate::dialects::twincat;
+use crate::{Error, Frame};
+use core::ffi::c_char;
+
+/// Siemens SINUMERIK: `CYCLE800(…)`, `CYCLE600(…)`, `ROT`/`AROT`/`CROT`, `ROTS`/`AROTS`/`CROTS`,
+/// `TRANS`/`ATRANS`; blocks of at most 512 bytes.
+pub const CNCROT_DIALECT_SINUMERIK: i32 = 1;
+/// Heidenhain plain language: `PLANE SPATIAL|PROJECTED|EULER|VECTOR|POINTS|RELATIV|RESET`;
+/// blocks of at most 254 bytes.
+pub const CNCROT_DIALECT_HEIDENHAIN: i32 = 2;
+/// Fanuc-style: `G68.2`, `G68.4`, `G69`, `G53.1`; blocks of at most 256 bytes.
+pub const CNCROT_DIALECT_FANUC: i32 = 3;
+/// Syntec: `G158` and its Fanuc-style `G68.2` mode; blocks of at most 256 bytes.
+pub const CNCROT_DIALECT_SYNTEC: i32 = 4;
+/// Beckhoff TwinCAT NC I: `ROT`, `AROT`; blocks of at most 256 bytes.
+pub const CNCROT_DIALECT_TWINCAT: i32 = 5;
+/// Haas: `G268`, `G269`, `G253`; blocks of at most 256 bytes.
+pub const CNCROT_DIALECT_HAAS: i32 = 6;
+/// `cncrot_program.options`: SINUMERIK frame angles in Euler mode (machine data 10600 = 2)
+/// instead of RPY.
+pub const CNCROT_PROGRAM_SINUMERIK_EULER: u32 = 1;
+/// The longest line `cncrot_program_write` writes, without its NUL (SINUMERIK's block limit).
+pub const CNCROT_PROGRAM_LINE_MAX: usize = 512;
+/// The longest form name `cncrot_program_write` reads, without its NUL.
+const FORM_MAX: usize = 64;
+
+/// The modal state of a part program, owned by the caller: the active frame and what the
+/// controller keeps between blocks. All zero bytes is a program with nothing active, ready
+/// for its first block (then `options` may be set). The fields are the library's to write:
+/// a state it did not write is refused with `CNCROT_STATUS_BAD_STATE`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct cncrot_program {
+    /// The active rotation, row-major (all zero while `active` is 0).
+    pub rotation: [f64; 9],
+    /// The active origin (all zero while `active` is 0).
+    pub origin: [f64; 3],
+    /// TwinCAT's programmed angles `X Y Z` (its `AROT` adds angles); zero in other dialects.
+    pub angles: [f64; 3],
+    /// 1 while a frame is active, 0 when none is (the identity).
+    pub active: i32,
+    /// The dialect of the blocks read so far (`CNCROT_DIALECT_*`), 0 before the first.
+    pub dialect: i32,
+    /// `CNCROT_PROGRAM_*` settings of the machine, set by the caller.
+    pub options: u32,
+    /// Zero.
+    pub reserved: u32,
+}
+
+fn load(c: &cncrot_program) -> Result<Program, Error> {
+    let dialect = match c.dialect {
+        0 => None,
+        d => Some(Dialect::from_code(d).map_err(|_| Error::BadState)?),
+    };
+    if c.options & !CNCROT_PROGRAM_SINUMERIK_EULER != 0 || c.reserved != 0 {
+        return Err(Error::BadState);
+    }
+    let numbers = c.rotation.iter().chain(&c.origin).chain(&c.angles);
+    if !numbers.into_iter().all(|x| x.is_finite()) {
+        return Err(Error::BadState);
+    }
+    let frame = match c.active {
+        0 if c.rotation == [0.0; 9] && c.origin == [0.0; 3] => Frame::IDENTITY,
+        1 => {
+            let r = core::array::from_fn(|i| core::array::from_fn(|j| c.rotation[3 * i + j]));
+            crate::check_rotation(&r).map_err(|_| Error::BadState)?;
+            Frame::with_translations(c.origin, r, [0.0; 3])
+        }
+        _ => return Err(Error::BadState),
+    };
+    // TwinCAT's rotation is a function of its angles; elsewhere there are none.
+    let consistent = if dialect == Some(Dialect::Twincat) {
+        twincat::matrix(c.angles) == frame.rotation
+    } else {
+        c.angles == [0.0; 3]
+    };
+    if !consistent {
+        return Err(Error::BadState);
+    }
+    Ok(Program {
+        frame,
+        angles: c.angles,
+        dialect,
+        euler: c.options & CNCROT_PROGRAM_SINUMERIK_EULER != 0,
+    })
+}
+
+fn store(p: &Program, options: u32) -> cncrot_program {
+    let active = p.frame != Frame::IDENTITY;
+    let (rotation, origin) = if active {
+        let r = p.frame.rotation;
+        (
+            core::array::from_fn(|k| r[k / 3][k % 3] + 0.0),
+            p.frame.translation.map(|x| x + 0.0),
+        )
+    } else {
+        ([0.0; 9], [0.0; 3])
+    };
+    cncrot_program {
+        rotation,
+        origin,
+        angles: p.angles.map(|x| x + 0.0),
+        active: i32::from(active),
+        dialect: p.dialect.map_or(0, |d| d as i32),
+        options,
+        reserved: 0,
+    }
+}
+
+/// Reads one block; on success the next state, else the error and its 1-based column.
+///
+/// # Safety
+/// `program` readable, `line` (non-NULL) `len` readable bytes.
+unsafe fn read(
+    program: *const cncrot_program,
+    dialect: i32,
+    line: *const c_char,
+    len: usize,
+) -> Result<cncrot_program, (cncrot_status, usize)> {
+    let c = program.read_unaligned();
+    let p = load(&c).map_err(|e| (e.into(), 0))?;
+    let d = Dialect::from_code(dialect).map_err(|e| (e.into(), 0))?;
+    // Beyond the longest block and its line end nothing is read.
+    if len > d.max_line() + 2 {
+        return Err((cncrot_status::LineTooLong, d.max_line() + 1));
+    }
+    let text = core::slice::from_raw_parts(line.cast::<u8>(), len);
+    let next = p
+        .line(d, text)
+        .map_err(|e| (e.error.into(), e.column))?;
+    Ok(store(&next, c.options))
+}
+
+/// Applies one block of a part program (`len` bytes, no NUL needed; a trailing line end is
+/// ignored) in `dialect` (`CNCROT_DIALECT_*`) to `*program`, as that controller does: a tilt
+/// replaces or adds to the active frame, a cancel (`ROT`, `CROT`, `CYCLE800()`,
+/// `PLANE RESET`, `G69`, `G269`, `G158`) restores none, a blank, comment-only or
+/// block-number-only line changes nothing. A program speaks one dialect.
+///
+/// Returns 0, or a negative status with `*program` byte-identical:
+/// `CNCROT_STATUS_UNKNOWN_WORD` (a word the dialect does not have there, or twice),
+/// `CNCROT_STATUS_NOT_A_NUMBER` (`R1`, `Q120`, `#100`, `30+5` where a number must stand),
+/// `CNCROT_STATUS_MISSING_WORD`, `CNCROT_STATUS_PARSE` (a malformed number),
+/// `CNCROT_STATUS_LINE_TOO_LONG`, `CNCROT_STATUS_BAD_ARGUMENT` (unknown dialect, a dialect
+/// other than the program's, a value outside its set), `CNCROT_STATUS_BAD_STATE` (a state
+/// this library did not write), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes, `G68.3`,
+/// `PLANE AXIAL`: they need the machine's kinematics), and the statuses of the command's
+/// mathematics. `cncrot_program_column` names the column of the offending character.
+///
+/// # Safety
+/// `program` points to a readable and writable `cncrot_program`, `line` to `len` readable
+/// bytes (or NULL: error).
+///
+/// ```c
+/// cncrot_program p = {0};
+/// const char *l = "N10 PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY";
+/// int s = cncrot_program_line(&p, CNCROT_DIALECT_HEIDENHAIN, l, strlen(l));
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_program_line(
+    program: *mut cncrot_program,
+    dialect: i32,
+    line: *const c_char,
+    len: usize,
+) -> i32 {
+    guard(|| {
+        non_null(&[program.is_null(), line.is_null()])?;
+        let next = read(program, dialect, line, len).map_err(|(s, _)| s)?;
+        program.write_unaligned(next);
+        Ok(cncrot_status::Ok)
+    })
+}
+
+/// What `cncrot_program_line` would return for this block, without changing anything, and
+/// in `*column` the 1-based byte column of the first offending character (one past the end
+/// when a word is missing at the end; 0 on success and for errors that are not in the text:
+/// a bad dialect or state).
+///
+/// # Safety
+/// `program` points to a readable `cncrot_program`, `line` to `len` readable bytes,
+/// `column` to a writable `size_t` (or NULL: error; `*column` is written for every other
+/// status).
+///
+/// ```c
+/// size_t col;
+/// cncrot_program_column(&p, CNCROT_DIALECT_SINUMERIK, "ROT X=R1", 8, &col);   // -20, col 7
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_program_column(
+    program: *const cncrot_program,
+    dialect: i32,
+    line: *const c_char,
+    len: usize,
+    column: *mut usize,
+) -> i32 {
+    guard(|| {
+        non_null(&[program.is_null(), line.is_null(), column.is_null()])?;
+        match read(program, dialect, line, len) {
+            Ok(_) => {
+                column.write_unaligned(0);
+                Ok(cncrot_status::Ok)
+            }
+            Err((s, c)) => {
+                column.write_unaligned(c);
+                Err(s)
+            }
+        }
+    })
+}
+
+/// The active frame of a program (4x4, row-major; the identity when none is active).
+///
+/// Returns 0, or `CNCROT_STATUS_BAD_STATE` for a state this library did not write, with
+/// `frame` untouched.
+///
+/// # Safety
+/// `program` points to a readable `cncrot_program`, `frame` to 16 writable doubles (or NULL:
+/// error).
+///
+/// ```c
+/// double f[16];
+/// cncrot_program_frame(&p, f);
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_program_frame(
+    program: *const cncrot_program,
+    frame: *mut f64,
+) -> i32 {
+    guard(|| {
+        non_null(&[program.is_null(), frame.is_null()])?;
+        let p = load(&program.read_unaligned())?;
+        write_frame(frame, &p.frame)?;
+        Ok(cncrot_status::Ok)
+    })
+}
+
+/// Writes the block that programs `frame` (4x4, row-major) in `dialect` with the command
+/// `form` (a NUL-terminated name, upper or lower case):
+///
+/// | dialect | forms |
+/// |---|---|
+/// | SINUMERIK | `"CYCLE800"` (`_MODE` 57), `"CYCLE800 <_MODE>"`, `"ROT"`, `"ROT EULER"` |
+/// | Heidenhain | `"PLANE SPATIAL"`, `"PLANE EULER"`, `"PLANE VECTOR"`, `"PLANE POINTS"`, `"PLANE PROJECTED"` |
+/// | Fanuc | `"G68.2"` |
+/// | Syntec | `"G158"` (`P10157`), `"G158 P<p>"`, `"G68.2"` |
+/// | TwinCAT | `"ROT"` |
+/// | Haas | `"G268"` (`Q123`), `"G268 Q<q>"` |
+///
+/// The same dialect's `cncrot_program_line` reads the line back as the same frame. With
+/// `decimals` < 0 the numbers are the shortest that read back exactly; with 0..17 they are
+/// rounded to that many decimals (ties to even), trailing zeros dropped. Angles are in each
+/// dialect's read-back ranges; `CNCROT_STATUS_SINGULAR` says the middle angle was singular and
+/// the free angle sits where that dialect's rule puts it. `out` receives the line and a NUL
+/// (at most `CNCROT_PROGRAM_LINE_MAX` + 1 bytes).
+///
+/// Returns 0 or `CNCROT_STATUS_SINGULAR`, or a negative status with `out` untouched:
+/// `CNCROT_STATUS_BAD_ARGUMENT` (unknown dialect or form, `decimals` > 17, a frame with an
+/// origin for a form without origin words), `CNCROT_STATUS_NOT_A_ROTATION`,
+/// `CNCROT_STATUS_NOT_AVAILABLE` (direct modes), `CNCROT_STATUS_OUT_OF_RANGE` (a frame the
+/// form cannot express, numbers of 1e100 or more, or a line longer than the dialect reads),
+/// `CNCROT_STATUS_NO_ROOM` (`cap` too small).
+///
+/// # Safety
+/// `form` is a NUL-terminated string (at most 64 bytes are read: a longer name is refused), `frame` points to 16
+/// readable doubles, `out` to `cap` writable bytes (or NULL: error).
+///
+/// ```c
+/// char line[CNCROT_PROGRAM_LINE_MAX + 1];
+/// cncrot_program_write(CNCROT_DIALECT_FANUC, "G68.2", f, 4, line, sizeof line);
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_program_write(
+    dialect: i32,
+    form: *const c_char,
+    frame: *const f64,
+    decimals: i32,
+    out: *mut c_char,
+    cap: usize,
+) -> i32 {
+    guard(|| {
+        non_null(&[form.is_null(), frame.is_null(), out.is_null()])?;
+        let d = Dialect::from_code(dialect)?;
+        let mut name = [0u8; FORM_MAX];
+        let mut n = 0;
+        loop {
+            let slot = name.get_mut(n).ok_or(cncrot_status::BadArgument)?;
+            let b = form.add(n).cast::<u8>().read();
+            if b == 0 {
+                break;
+            }
+            *slot = b;
+            n += 1;
+        }
+        let f = read_frame(frame)?;
+        let mut buf = [0u8; CNCROT_PROGRAM_LINE_MAX];
+        let name = name.get(..n).ok_or(cncrot_status::BadArgument)?;
+        let (len, singular) = program::write_line(d, name, &f, decimals, &mut buf)?;
+        let text = buf.get(..len).ok_or(cncrot_status::Internal)?;
+        if cap <= len {
+            return Err(cncrot_status::NoRoom);
+        }
+        let dst = core::slice::from_raw_parts_mut(out.cast::<u8>(), len + 1);
+        let (body, nul) = dst.split_at_mut(len);
+        body.copy_from_slice(text);
+        if let Some(z) = nul.first_mut() {
+            *z = 0;
+        }
+        Ok(super::status_of(singular))
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn dialect_constants_name_the_dialects() {
+        let c = [
+            (CNCROT_DIALECT_SINUMERIK, Dialect::Sinumerik),
+            (CNCROT_DIALECT_HEIDENHAIN, Dialect::Heidenhain),
+            (CNCROT_DIALECT_FANUC, Dialect::Fanuc),
+            (CNCROT_DIALECT_SYNTEC, Dialect::Syntec),
+            (CNCROT_DIALECT_TWINCAT, Dialect::Twincat),
+            (CNCROT_DIALECT_HAAS, Dialect::Haas),
+        ];
+        assert_eq!(c.len(), Dialect::ALL.len());
+        for (code, d) in c {
+            assert_eq!(Dialect::from_code(code), Ok(d));
+        }
+        let longest = Dialect::ALL.iter().map(|d| d.max_line()).max();
+        assert_eq!(longest, Some(CNCROT_PROGRAM_LINE_MAX));
+    }
+
+    /// Every state the library stores loads back as itself; zero is nothing active.
+    #[test]
+    fn states_round_trip_and_strangers_are_refused() {
+        assert_eq!(load(&cncrot_program::default()), Ok(Program::default()));
+        let p = Program::default()
+            .line(Dialect::Twincat, b"ROT Z30")
+            .unwrap()
+            .line(Dialect::Twincat, b"AROT X10")
+            .unwrap();
+        let c = store(&p, 0);
+        assert_eq!(load(&c), Ok(p));
+        let mut bad = c;
+        bad.angles[0] = 11.0;
+        assert_eq!(load(&bad), Err(Error::BadState));
+        let mut bad = c;
+        bad.rotation[0] = 2.0;
+        assert_eq!(load(&bad), Err(Error::BadState));
+        let mut bad = c;
+        bad.dialect = 7;
+        assert_eq!(load(&bad), Err(Error::BadState));
+        let mut bad = cncrot_program::default();
+        bad.origin[1] = 1.0;
+        assert_eq!(load(&bad), Err(Error::BadState));
+        let mut bad = cncrot_program::default();
+        bad.options = 2;
+        assert_eq!(load(&bad), Err(Error::BadState));
+        let mut bad = c;
+        bad.origin[2] = f64::NAN;
+        assert_eq!(load(&bad), Err(Error::BadState));
+        // A cancelled program is all zero again but for its dialect.
+        let off = p.line(Dialect::Twincat, b"ROT").unwrap();
+        let c = store(&off, 0);
+        assert_eq!(
+            c,
+            cncrot_program {
+                dialect: CNCROT_DIALECT_TWINCAT,
+                ..Default::default()
+            }
+        );
+    }
+}
