@@ -1,0 +1,295 @@
+/* Program lines through the C interface: the vendors' example lines (TwinCAT, Syntec), the
+ * worked numbers of docs/dialects.md, SINUMERIK's documented read-back, the paper's CYCLE600
+ * call equal to its CYCLE800 call and to PLANE SPATIAL, hand geometry with the C library's
+ * trigonometry; every writer's line converted into every other dialect and back; refused
+ * lines with their columns and the state byte-identical; the writer's buffer rules. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cncrot.h"
+#include "harness.h"
+#include "geometry.h"
+
+/* Applies lines in order to a fresh program; returns the status of the first refusal. */
+static int32_t run(int32_t dialect, const char *const *lines, int n, double f[16]) {
+  cncrot_program p;
+  memset(&p, 0, sizeof p);
+  for (int k = 0; k < n; k++) {
+    int32_t s = cncrot_program_line(&p, dialect, lines[k], strlen(lines[k]));
+    if (s < 0) return s;
+  }
+  return cncrot_program_frame(&p, f);
+}
+
+static void one(int32_t dialect, const char *line, double r[9]) {
+  double f[16];
+  CHECK_STATUS(run(dialect, &line, 1, f), CNCROT_STATUS_OK);
+  rot_of(f, r);
+}
+
+static void vendors(void) {
+  double f[16], r[9], want[9];
+  /* TwinCAT: ROT Z30, then AROT Z15, is 45 about Z; CalcInvRot of (40, 10, 0) after ROT Z45
+   * is (35.36, -21.21, 0). */
+  const char *tc[] = {"N65 ROT Z30", "N90 AROT Z15 (add)"};
+  CHECK_STATUS(run(CNCROT_DIALECT_TWINCAT, tc, 2, f), CNCROT_STATUS_OK);
+  rot_of(f, r);
+  elem(3, 45, want);
+  CHECK_NEAR(r, want, 9, 1e-15);
+  one(CNCROT_DIALECT_TWINCAT, "N30 ROT Z45", r);
+  double v[3] = {40, 10, 0}, back[3];
+  for (int k = 0; k < 3; k++) back[k] = r[k] * v[0] + r[3 + k] * v[1] + r[6 + k] * v[2];
+  CHECK(fabs(back[0] - 35.3553) < 1e-4 && fabs(back[1] + 21.2132) < 1e-4, "%g %g", back[0], back[1]);
+
+  /* Syntec: translate (2, 0, 10), turn X 20, Y' 20, Z'' -30, then (0, 10, 0) in the turned
+   * system. */
+  const char *sy = "G158 L1 P10157 X2. Y0. Z10. A20 B20 C-30 U0 V10 W0";
+  CHECK_STATUS(run(CNCROT_DIALECT_SYNTEC, &sy, 1, f), CNCROT_STATUS_OK);
+  rot_of(f, r);
+  intrinsic(1, 2, 3, 20, 20, -30, want);
+  CHECK_NEAR(r, want, 9, 1e-14);
+  double o[3] = {2 + 10 * want[1], 10 * want[4], 10 + 10 * want[7]}, got[3] = {f[3], f[7], f[11]};
+  CHECK_NEAR(got, o, 3, 1e-13);
+  const char *twice[] = {"G158 L3 P01159 X0 Y0 Z0 A0 B0 C10 U0 V0 W0",
+                         "G158 L3 P01159 X0 Y0 Z0 A0 B0 C10 U0 V0 W0 ;Increment and then turn"};
+  CHECK_STATUS(run(CNCROT_DIALECT_SYNTEC, twice, 2, f), CNCROT_STATUS_OK);
+  rot_of(f, r);
+  elem(3, 20, want);
+  CHECK_NEAR(r, want, 9, 1e-15);
+  const char *direct = "G158 L3 P10200 X0 Y0 Z10 A0 B20 C45 U0 V0 W0";
+  CHECK_STATUS(run(CNCROT_DIALECT_SYNTEC, &direct, 1, f), CNCROT_STATUS_NOT_AVAILABLE);
+
+  /* The worked numbers: PLANE SPATIAL SPA27 SPB0 SPC45, PLANE EULER 45 20 22, ROTS X30 Y20,
+   * and PLANE PROJECTED with the same projections. */
+  double spatial[9] = {0.707107, -0.630037, 0.321020, 0.707107, 0.630037, -0.321020, 0, 0.453990, 0.891007};
+  double euler[9] = {0.406706, -0.880966, 0.241845, 0.904530, 0.351193, -0.241845, 0.128123, 0.317116, 0.939693};
+  double rots[9] = {0.939693, 0.163099, 0.300627, 0, 0.878973, -0.476871, -0.342020, 0.448112, 0.825965};
+  one(CNCROT_DIALECT_HEIDENHAIN, "5 PLANE SPATIAL SPA+27 SPB+0 SPC+45 TURN MB MAX FMAX SEQ-", r);
+  CHECK_NEAR(r, spatial, 9, 1e-6);
+  one(CNCROT_DIALECT_HEIDENHAIN, "6 PLANE EULER EULPR45 EULNU20 EULROT22 STAY ; Euler", r);
+  CHECK_NEAR(r, euler, 9, 1e-6);
+  one(CNCROT_DIALECT_SINUMERIK, "N10 ROTS X30 Y20", r);
+  CHECK_NEAR(r, rots, 9, 1e-6);
+  one(CNCROT_DIALECT_SINUMERIK, "N20 CYCLE800(1,\"TC1\",0,185,0,0,0,30,20,0,0,0,0,-1,100,1)", r);
+  CHECK_NEAR(r, rots, 9, 1e-6);
+  one(CNCROT_DIALECT_HEIDENHAIN, "PLANE PROJECTED PROPR+20 PROMIN+30 ROT+0 STAY", r);
+  CHECK_NEAR(r, rots, 9, 1e-6);
+
+  /* The paper's Example 3: CYCLE600 with the probe angles (30, 45, 60 about the machine X, Y,
+   * Z) gives CYCLE800 37.7923 20.7048 49.1066 (intrinsic Z, X', Y''): the same plane, and
+   * the same as PLANE SPATIAL with the probe angles. */
+  double a[9], b[9], c[9];
+  one(CNCROT_DIALECT_SINUMERIK, "N120 CYCLE600(0, \"UFK600\", 1, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)", a);
+  one(CNCROT_DIALECT_SINUMERIK, "N130 CYCLE800(0,\"\",0,39,0,0,0,37.7923,20.7048,49.1066,0,0,0,-1)", b);
+  one(CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+30 SPB+45 SPC+60 STAY", c);
+  CHECK_NEAR(a, b, 9, 1e-5);
+  CHECK_NEAR(a, c, 9, 1e-15);
+  elem(3, 60, want);
+  mul3(want, (elem(2, 45, r), r), want);
+  elem(1, 30, r);
+  mul3(want, r, want);
+  CHECK_NEAR(c, want, 9, 1e-15);
+
+  /* G68.2: origin, then Z, X', Z''; two G68.4 by 15 are one by 30; Haas Q123 about the
+   * fixed axes. */
+  one(CNCROT_DIALECT_FANUC, "N10 G68.2 X10. Y0 Z0 I30. J45. K60. (TILT)", r);
+  intrinsic(3, 1, 3, 30, 45, 60, want);
+  CHECK_NEAR(r, want, 9, 1e-15);
+  const char *inc[] = {"G68.4 I0 J15 K0", "G68.4 I0 J15 K0"};
+  CHECK_STATUS(run(CNCROT_DIALECT_FANUC, inc, 2, f), CNCROT_STATUS_OK);
+  rot_of(f, r);
+  elem(1, 30, want);
+  CHECK_NEAR(r, want, 9, 1e-15);
+  one(CNCROT_DIALECT_HAAS, "G268 X0 Y0 Z0 I10 J20 K30 Q123", r);
+  intrinsic(3, 2, 1, 30, 20, 10, want);
+  CHECK_NEAR(r, want, 9, 1e-15);
+}
+
+/* SINUMERIK reads back CROT(x,10,y,90,z,40) as x 0, y 90, z 30 and CROT(x,190,y,0,z,-200)
+ * as x -170, y 0, z 160 (its manual); PLANE SPATIAL's rule puts the free angle in SPA. */
+static void readback_and_rules(void) {
+  double f[16];
+  char out[CNCROT_PROGRAM_LINE_MAX + 1];
+  const char *l1 = "ROT X10 Y90 Z40";
+  CHECK_STATUS(run(CNCROT_DIALECT_SINUMERIK, &l1, 1, f), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_SINUMERIK, "ROT", f, 4, out, sizeof out), CNCROT_STATUS_SINGULAR);
+  CHECK(strcmp(out, "ROT X=0 Y=90 Z=30") == 0, "%s", out);
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", f, 4, out, sizeof out), CNCROT_STATUS_SINGULAR);
+  CHECK(strcmp(out, "PLANE SPATIAL SPA-30 SPB+90 SPC+0 STAY") == 0, "%s", out);
+  const char *l2 = "ROT X190 Y0 Z-200";
+  CHECK_STATUS(run(CNCROT_DIALECT_SINUMERIK, &l2, 1, f), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_SINUMERIK, "rot", f, 4, out, sizeof out), CNCROT_STATUS_OK);
+  CHECK(strcmp(out, "ROT X=-170 Y=0 Z=160") == 0, "%s", out);
+  const char *l3 = "G68.2 X10 I0 J30 K0";
+  CHECK_STATUS(run(CNCROT_DIALECT_FANUC, &l3, 1, f), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_FANUC, "G68.2", f, 3, out, sizeof out), CNCROT_STATUS_OK);
+  CHECK(strcmp(out, "G68.2 X10. Y0. Z0. I0. J30. K0.") == 0, "%s", out);
+  /* The shortest numbers that read back: 0.1 + 0.2 is not 0.3. */
+  double g[16];
+  const char *l4 = "ROT Z0.30000000000000004";
+  CHECK_STATUS(run(CNCROT_DIALECT_TWINCAT, &l4, 1, g), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_TWINCAT, "ROT", g, -1, out, sizeof out), CNCROT_STATUS_OK);
+  const char *echo = out;
+  double h[16];
+  CHECK_STATUS(run(CNCROT_DIALECT_TWINCAT, &echo, 1, h), CNCROT_STATUS_OK);
+  CHECK(memcmp(g, h, sizeof g) == 0, "%s does not read back bit for bit", out);
+}
+
+static const struct {
+  int32_t dialect;
+  const char *form;
+  int origin;
+} FORMS[] = {
+    {CNCROT_DIALECT_SINUMERIK, "CYCLE800", 1},       {CNCROT_DIALECT_SINUMERIK, "CYCLE800 27", 1},
+    {CNCROT_DIALECT_SINUMERIK, "CYCLE800 64", 1},    {CNCROT_DIALECT_SINUMERIK, "ROT", 0},
+    {CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", 0}, {CNCROT_DIALECT_HEIDENHAIN, "PLANE EULER", 0},
+    {CNCROT_DIALECT_HEIDENHAIN, "PLANE VECTOR", 0},  {CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", 1},
+    {CNCROT_DIALECT_FANUC, "G68.2", 1},              {CNCROT_DIALECT_SYNTEC, "G158", 1},
+    {CNCROT_DIALECT_SYNTEC, "G158 P10139", 1},       {CNCROT_DIALECT_SYNTEC, "G68.2", 1},
+    {CNCROT_DIALECT_TWINCAT, "ROT", 0},              {CNCROT_DIALECT_HAAS, "G268 Q321", 1},
+};
+#define NFORMS ((int)(sizeof FORMS / sizeof FORMS[0]))
+
+/* Writes frame f in form k and reads it back; returns the status. */
+static int32_t through(int k, const double f[16], int decimals, double g[16]) {
+  char out[CNCROT_PROGRAM_LINE_MAX + 1];
+  int32_t s = cncrot_program_write(FORMS[k].dialect, FORMS[k].form, f, decimals, out, sizeof out);
+  if (s < 0) return s;
+  const char *line = out;
+  return run(FORMS[k].dialect, &line, 1, g);
+}
+
+/* Random frames and singular ones (a new axis on an old one), through every pair of forms. */
+static void every_pair_converts(void) {
+  int pairs = 0;
+  for (int n = 0; n < 40; n++) {
+    double r[9], f[16] = {0}, rot_only[16] = {0};
+    if (n < 30) {
+      intrinsic(3, 2, 1, rnd(-180, 180), rnd(-90, 90), rnd(-180, 180), r);
+    } else {
+      double twist = (n % 3) * 55.0, mid = (n % 2) ? 90 : 180;
+      intrinsic(3, 1 + n % 2, 3, twist, mid, 40 - twist, r);
+    }
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++) f[4 * i + j] = rot_only[4 * i + j] = r[3 * i + j];
+    f[3] = rnd(-500, 500), f[7] = rnd(-500, 500), f[11] = rnd(-500, 500);
+    f[15] = rot_only[15] = 1;
+    for (int a = 0; a < NFORMS; a++)
+      for (int b = 0; b < NFORMS; b++) {
+        const double *src = FORMS[a].origin && FORMS[b].origin ? f : rot_only;
+        double ga[16], gb[16];
+        CHECK_STATUS(through(a, src, -1, ga), CNCROT_STATUS_OK);
+        CHECK_STATUS(through(b, ga, -1, gb), CNCROT_STATUS_OK);
+        CHECK_NEAR(gb, src, 16, 1e-12);
+        pairs++;
+      }
+    /* Rounded to 4 decimals: angles within 5e-5 degrees, coordinates within 5e-5. */
+    for (int a = 0; a < NFORMS; a++) {
+      double g[16];
+      CHECK_STATUS(through(a, FORMS[a].origin ? f : rot_only, 4, g), CNCROT_STATUS_OK);
+      CHECK_NEAR(g, FORMS[a].origin ? f : rot_only, 16, 2e-4);
+    }
+  }
+  CHECK(pairs == 40 * NFORMS * NFORMS, "%d pairs", pairs);
+}
+
+/* Refused lines: the status, the column of the first bad character, the state untouched. */
+static void refusals(void) {
+  static const struct {
+    int32_t dialect;
+    const char *line;
+    int32_t status;
+    size_t column;
+  } cases[] = {
+      {CNCROT_DIALECT_SINUMERIK, "ROT X=R1", CNCROT_STATUS_NOT_A_NUMBER, 7},
+      {CNCROT_DIALECT_SINUMERIK, "N10 ROT X10 X20", CNCROT_STATUS_UNKNOWN_WORD, 13},
+      {CNCROT_DIALECT_SINUMERIK, "ROT X10 B5", CNCROT_STATUS_UNKNOWN_WORD, 9},
+      {CNCROT_DIALECT_SINUMERIK, "CYCLE800(0,\"TC1\",0,192,0,0,0,0,30,0,0,0,0,-1)", CNCROT_STATUS_NOT_AVAILABLE, 20},
+      {CNCROT_DIALECT_SINUMERIK, "CYCLE800(0,\"TC1\",0", CNCROT_STATUS_MISSING_WORD, 19},
+      {CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+Q120 SPB+0 SPC+0", CNCROT_STATUS_NOT_A_NUMBER, 19},
+      {CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+0 SPB+0", CNCROT_STATUS_MISSING_WORD, 26},
+      {CNCROT_DIALECT_HEIDENHAIN, "PLANE AXIAL B+30", CNCROT_STATUS_NOT_AVAILABLE, 1},
+      {CNCROT_DIALECT_FANUC, "G68.2 X0 Y0 Z0 I0 J#100 K0", CNCROT_STATUS_NOT_A_NUMBER, 20},
+      {CNCROT_DIALECT_FANUC, "G68.2 J1.2.3", CNCROT_STATUS_PARSE, 11},
+      {CNCROT_DIALECT_HAAS, "G268 X0 I0 J30 K0", CNCROT_STATUS_MISSING_WORD, 18},
+      {CNCROT_DIALECT_TWINCAT, "ROT Z30 G1", CNCROT_STATUS_UNKNOWN_WORD, 9},
+      {CNCROT_DIALECT_SYNTEC, "G158 P10957 A30", CNCROT_STATUS_BAD_ARGUMENT, 1},
+  };
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    cncrot_program p, before;
+    memset(&p, 0, sizeof p);
+    const char *start = cases[k].dialect == CNCROT_DIALECT_HEIDENHAIN ? "PLANE SPATIAL SPA+0 SPB+30 SPC+0"
+                        : cases[k].dialect == CNCROT_DIALECT_SINUMERIK ? "ROT Z30"
+                        : cases[k].dialect == CNCROT_DIALECT_TWINCAT   ? "ROT Z30"
+                        : cases[k].dialect == CNCROT_DIALECT_HAAS      ? "G268 K30 Q123"
+                                                                       : "G68.2 K30";
+    CHECK_STATUS(cncrot_program_line(&p, cases[k].dialect, start, strlen(start)), CNCROT_STATUS_OK);
+    before = p;
+    size_t column = 999;
+    CHECK_STATUS(cncrot_program_line(&p, cases[k].dialect, cases[k].line, strlen(cases[k].line)), cases[k].status);
+    CHECK(memcmp(&p, &before, sizeof p) == 0, "%s changed the state", cases[k].line);
+    CHECK_STATUS(cncrot_program_column(&p, cases[k].dialect, cases[k].line, strlen(cases[k].line), &column),
+                 cases[k].status);
+    CHECK(column == cases[k].column, "%s: column %zu, expected %zu", cases[k].line, column, cases[k].column);
+  }
+  /* Another dialect on the same program, an unknown dialect, a state not written here. */
+  cncrot_program p;
+  memset(&p, 0, sizeof p);
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_FANUC, "G68.2 J30", 9), CNCROT_STATUS_OK);
+  cncrot_program before = p;
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_HAAS, "G269", 4), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_program_line(&p, 7, "G69", 3), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_FANUC, NULL, 0), CNCROT_STATUS_NULL_POINTER);
+  CHECK(memcmp(&p, &before, sizeof p) == 0, "a refusal changed the state");
+  p.rotation[0] = 1.5;
+  before = p;
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_FANUC, "G69", 3), CNCROT_STATUS_BAD_STATE);
+  double f[16];
+  fill_sentinel(f, 16);
+  CHECK_STATUS(cncrot_program_frame(&p, f), CNCROT_STATUS_BAD_STATE);
+  CHECK(is_sentinel(f, 16), "frame written on error");
+  /* A line is read only up to len: the rest of the buffer may be anything. */
+  memset(&p, 0, sizeof p);
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_FANUC, "G69 garbage", 3), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_FANUC, "G68.2 J30\r\n", 11), CNCROT_STATUS_OK);
+  /* Cancels: all zero again but for the dialect. */
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_FANUC, "G69 (off)", 9), CNCROT_STATUS_OK);
+  cncrot_program zero;
+  memset(&zero, 0, sizeof zero);
+  zero.dialect = CNCROT_DIALECT_FANUC;
+  CHECK(memcmp(&p, &zero, sizeof p) == 0, "G69 left something active");
+}
+
+/* The writer: NUL-terminated, refused without writing when the buffer is short. */
+static void writer_buffers(void) {
+  double f[16] = {1, 0, 0, 10, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  char out[64];
+  memset(out, 'x', sizeof out);
+  const char *want = "G68.2 X10. Y0. Z0. I0. J0. K0.";
+  size_t n = strlen(want);
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_FANUC, "G68.2", f, -1, out, n), CNCROT_STATUS_NO_ROOM);
+  CHECK(out[0] == 'x', "written on error");
+  /* No tilt: J = 0 is the singular middle angle of Z, X', Z''. */
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_FANUC, "G68.2", f, -1, out, n + 1), CNCROT_STATUS_SINGULAR);
+  CHECK(strcmp(out, want) == 0 && out[n + 1] == 'x', "%s", out);
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", f, -1, out, sizeof out),
+               CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_FANUC, "PLANE SPATIAL", f, -1, out, sizeof out),
+               CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_FANUC, "G68.2", f, 18, out, sizeof out), CNCROT_STATUS_BAD_ARGUMENT);
+  f[0] = NAN;
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_FANUC, "G68.2", f, -1, out, sizeof out), CNCROT_STATUS_NOT_FINITE);
+  f[0] = 1;
+  f[3] = 1e120;
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_FANUC, "G68.2", f, -1, out, sizeof out), CNCROT_STATUS_OUT_OF_RANGE);
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_FANUC, NULL, f, -1, out, sizeof out), CNCROT_STATUS_NULL_POINTER);
+}
+
+int main(void) {
+  vendors();
+  readback_and_rules();
+  every_pair_converts();
+  refusals();
+  writer_buffers();
+  return finish("test_program");
+}
