@@ -6,7 +6,7 @@
  * and outputs are globals, so the wrapper's own frame is a few words, and the empty
  * wrapper's use is subtracted. Usage: stack LIMIT_HOT LIMIT_SETUP; prints a table and exits
  * 1 if a hot-path function needs more than LIMIT_HOT bytes or a setup function (HEAD_DEF
- * parsing) more than LIMIT_SETUP. Not built with sanitizers (they change frames). */
+ * parsing, program lines) more than LIMIT_SETUP. Not built with sanitizers (they change frames). */
 #define _XOPEN_SOURCE 700
 #include <stdio.h>
 #include <stdlib.h>
@@ -140,6 +140,32 @@ static void probe_edge(void) {
   static double a;
   sink += cncrot_probe_edge(IDF, e1, e2, &a, f) + cncrot_probe_edge(IDF, e1, e1, &a, f);
 }
+static cncrot_program prog;
+static const char C800[] = "N10 CYCLE800(1,\"TC1\",0,57,10,0,0,30,45,60,0,0,0,-1,100,1)";
+static const char C600[] = "N20 CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1,39,1,0,0) ; paper";
+static const char PLANE[] = "5 PLANE POINTS P1X+10 P1Y+0 P1Z+0 P2X+10.123456789012345 P2Y+5 P2Z+0 P3X+0 P3Y+0 P3Z+0 STAY";
+static void program_line(void) {
+  memset(&prog, 0, sizeof prog);
+  sink += cncrot_program_line(&prog, CNCROT_DIALECT_SINUMERIK, C800, sizeof C800 - 1) +
+          cncrot_program_line(&prog, CNCROT_DIALECT_SINUMERIK, C600, sizeof C600 - 1);
+  memset(&prog, 0, sizeof prog);
+  sink += cncrot_program_line(&prog, CNCROT_DIALECT_HEIDENHAIN, PLANE, sizeof PLANE - 1) +
+          cncrot_program_line(&prog, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+Q1", 20);
+}
+static void program_column(void) {
+  static size_t col;
+  sink += cncrot_program_column(&prog, CNCROT_DIALECT_HEIDENHAIN, PLANE, sizeof PLANE - 1, &col) +
+          cncrot_program_column(&prog, CNCROT_DIALECT_HEIDENHAIN, "PLANE RELATIV SPA+1.5e", 22, &col);
+}
+static void program_frame(void) { sink += cncrot_program_frame(&prog, f); }
+static void program_write(void) {
+  static char out[CNCROT_PROGRAM_LINE_MAX + 1];
+  /* Shortest digits of numbers near 1e-90 and 1e99 take the longest exact arithmetic. */
+  static const double g[16] = {0.36, -0.48, 0.8, 1e-90, 0.8, 0.6, 0, 9.87654321e98, -0.48, 0.64, 0.6, -3.1e-7, 0, 0, 0, 1};
+  sink += cncrot_program_write(CNCROT_DIALECT_SINUMERIK, "CYCLE800 185", g, -1, out, sizeof out) +
+          cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", g, -1, out, sizeof out) +
+          cncrot_program_write(CNCROT_DIALECT_FANUC, "G68.2", g, 17, out, sizeof out);
+}
 static void cycle600(void) {
   memset(&gud, 0, sizeof gud);
   sink += cncrot_cycle600(&gud, &table, 0, "UFK600", 1, 57, 1, 2, 3, 30, 45, 60, 4, 5, 6, 1, 39, 0, 0, 0);
@@ -163,7 +189,8 @@ static const struct entry ENTRIES[] = {
     E(frame_transform_point, 0), E(cycle600_gud_size, 0), E(head_table_parse, 1),
     E(cycle600, 0),          E(form_frame, 0),         E(form_values, 0),
     E(form_word_count, 0),   E(probe_flange, 0),       E(probe_plane, 0),
-    E(probe_edge, 0),
+    E(probe_edge, 0),        E(program_line, 1),       E(program_column, 1),
+    E(program_frame, 0),     E(program_write, 1),
 };
 
 int main(int argc, char **argv) {

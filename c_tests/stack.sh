@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Worst-case stack of every export (c_tests/stack.c, a painted stack per call), for the std
 # and the real-time build; fails above the documented bounds: 2048 bytes for the hot-path
-# functions, 3072 for HEAD_DEF parsing (setup time). Also fails when a function the header
+# functions, 3584 for text (HEAD_DEF parsing, program lines: setup time). Also fails when a function the header
 # declares is not measured. Usage: c_tests/stack.sh (after the release and rt builds).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -21,6 +21,6 @@ for variant in release rt; do
   [ "$variant" = release ] && libs+=(-lm -lpthread -ldl)
   cc -std=c99 -O1 -Wall -Wextra -Werror -Iinclude c_tests/stack.c "${libs[@]}" -o "$build/stack_$variant"
   echo "== stack ($variant build)"
-  "$build/stack_$variant" 2048 3072 || failed=1
+  "$build/stack_$variant" 2048 3584 || failed=1
 done
 exit $failed

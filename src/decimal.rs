@@ -6,14 +6,18 @@
 //! writing gives either the shortest digits that read back to the same double or the value
 //! correctly rounded to a number of decimals (ties to even, as C's `printf` does). Both work
 //! on magnitudes from 1e-100 to 1e100 (and zero): beyond that no controller's number format
-//! reaches, and the exact arithmetic stays within a fixed 2048-bit integer.
+//! reaches, and the exact arithmetic stays within fixed-size integers.
 
 use crate::Error;
 use core::cmp::Ordering;
 
-/// Limbs of the fixed-size integer (2048 bits: the largest product of a comparison within
-/// the documented range, 200 digits at 10^-100, is about 1340 bits).
-const LIMBS: usize = 64;
+/// Limbs of the reader's integers (1536 bits: the largest product of a comparison within the
+/// documented range, 200 digits at 10^-100, is about 1340 bits).
+const READ: usize = 48;
+
+/// Limbs of the writer's integers (512 bits: a double below 1e100 or its scale 2^386 times a
+/// digit is about 400 bits). Small, so that writing stays within the stack bound.
+const WRITE: usize = 16;
 
 /// The most significant digits a number may have (trailing zeros are not counted).
 pub const MAX_DIGITS: usize = 200;
@@ -24,19 +28,19 @@ pub const MAX_EXP10: i32 = 100;
 /// The most decimals the fixed-point writer rounds to.
 pub const MAX_DECIMALS: i32 = 17;
 
-/// A non-negative integer below 2^1280, little-endian; every operation that would overflow
+/// A non-negative integer of `L` 32-bit limbs, little-endian; every operation that would overflow
 /// reports it instead.
 #[derive(Clone, Copy)]
-struct Big {
-    d: [u32; LIMBS],
+struct Big<const L: usize> {
+    d: [u32; L],
 }
 
-impl Big {
-    fn from_u64(v: u64) -> Big {
-        let mut d = [0u32; LIMBS];
-        let [lo, hi, ..] = &mut d;
-        *lo = v as u32;
-        *hi = (v >> 32) as u32;
+impl<const L: usize> Big<L> {
+    fn from_u64(v: u64) -> Self {
+        let mut d = [0u32; L];
+        for (k, x) in d.iter_mut().take(2).enumerate() {
+            *x = (v >> (32 * k)) as u32;
+        }
         Big { d }
     }
 
@@ -89,7 +93,7 @@ impl Big {
     fn shl(&mut self, n: u32) -> Result<(), Error> {
         let limbs = (n / 32) as usize;
         let bits = n % 32;
-        if limbs >= LIMBS {
+        if limbs >= L {
             return if self.is_zero() {
                 Ok(())
             } else {
@@ -98,7 +102,7 @@ impl Big {
         }
         // Nothing may be shifted out at the top.
         let lost_limbs = self.d.iter().rev().take(limbs).any(|&x| x != 0);
-        let top = self.d.get(LIMBS - 1 - limbs).copied().unwrap_or(0);
+        let top = self.d.get(L - 1 - limbs).copied().unwrap_or(0);
         let lost_bits = bits != 0 && (top >> (32 - bits)) != 0;
         if lost_limbs || lost_bits {
             return Err(Error::OutOfRange);
@@ -117,7 +121,7 @@ impl Big {
         Ok(())
     }
 
-    fn add(&mut self, o: &Big) -> Result<(), Error> {
+    fn add(&mut self, o: &Self) -> Result<(), Error> {
         let mut carry = 0u64;
         for (x, &y) in self.d.iter_mut().zip(o.d.iter()) {
             let s = u64::from(*x) + u64::from(y) + carry;
@@ -132,7 +136,7 @@ impl Big {
     }
 
     /// `self -= o`; callers ensure `self >= o`.
-    fn sub(&mut self, o: &Big) {
+    fn sub(&mut self, o: &Self) {
         let mut borrow = 0i64;
         for (x, &y) in self.d.iter_mut().zip(o.d.iter()) {
             let s = i64::from(*x) - i64::from(y) - borrow;
@@ -152,7 +156,7 @@ impl Big {
         rem as u32
     }
 
-    fn cmp(&self, o: &Big) -> Ordering {
+    fn cmp(&self, o: &Self) -> Ordering {
         for (x, y) in self.d.iter().rev().zip(o.d.iter().rev()) {
             match x.cmp(y) {
                 Ordering::Equal => {}
@@ -191,7 +195,8 @@ fn pow10_approx(e: i32) -> f64 {
 }
 
 /// Compares `n · 10^e` with `m · 2^k` exactly.
-fn cmp_exact(n: &Big, e: i32, m: u64, k: i32) -> Result<Ordering, Error> {
+#[inline(never)]
+fn cmp_exact(n: &Big<READ>, e: i32, m: u64, k: i32) -> Result<Ordering, Error> {
     let (mut l, mut r) = (*n, Big::from_u64(m));
     if e >= 0 {
         l.mul_pow5(e.unsigned_abs())?;
@@ -214,7 +219,7 @@ fn cmp_exact(n: &Big, e: i32, m: u64, k: i32) -> Result<Ordering, Error> {
 /// digits ([`Error::Parse`]), a non-zero magnitude outside `10^±MAX_EXP10`
 /// ([`Error::OutOfRange`]).
 pub fn parse(negative: bool, digits: &[u8], exp10: i32) -> Result<f64, Error> {
-    let mut n = Big::from_u64(0);
+    let mut n = Big::<READ>::from_u64(0);
     let (mut sig, mut zeros, mut frac, mut point, mut any) = (0usize, 0u32, 0i32, false, false);
     // The first 19 significant digits, for the starting approximation.
     let (mut w, mut used) = (0u64, 0usize);
@@ -369,12 +374,14 @@ impl Digits {
 
 /// The shortest digits that read back (to nearest, ties to even) as `v` (positive, normal):
 /// Steele and White's free-format algorithm with exact integers.
+// Not inlined: its integers and those of `fixed` need not share one frame.
+#[inline(never)]
 fn shortest(v: f64) -> Result<Digits, Error> {
     let (mant, exp) = split(v);
     let even = mant & 1 == 0;
     let boundary = mant == 1 << 52 && (v.to_bits() >> 52) > 1;
     // v = r / s; the neighbours are (r ± m) / s (m_minus smaller at a binade's bottom).
-    let (mut r, mut s, mut mp, mut mm);
+    let (mut r, mut s, mut mp, mut mm): (Big<WRITE>, Big<WRITE>, Big<WRITE>, Big<WRITE>);
     if exp >= 0 {
         let sh = exp.unsigned_abs();
         r = Big::from_u64(mant);
@@ -402,7 +409,7 @@ fn shortest(v: f64) -> Result<Digits, Error> {
         mp.mul_pow10(p)?;
         mm.mul_pow10(p)?;
     }
-    let high = |r: &Big, mp: &Big, s: &Big| -> Result<bool, Error> {
+    let high = |r: &Big<WRITE>, mp: &Big<WRITE>, s: &Big<WRITE>| -> Result<bool, Error> {
         let mut t = *r;
         t.add(mp)?;
         Ok(match t.cmp(s) {
@@ -499,9 +506,10 @@ fn carry(x: &mut Digits) {
 }
 
 /// `v` (positive, normal) rounded to `decimals` decimals, ties to even.
+#[inline(never)]
 fn fixed(v: f64, decimals: u32) -> Result<Digits, Error> {
     let (mant, exp) = split(v);
-    let mut q = Big::from_u64(mant);
+    let mut q = Big::<WRITE>::from_u64(mant);
     q.mul_pow10(decimals)?;
     if exp >= 0 {
         q.shl(exp.unsigned_abs())?;
@@ -701,7 +709,7 @@ mod tests {
     fn exact_midpoint(v: f64) -> String {
         let (mant, exp) = split(v);
         // (2·mant + 1) · 2^(exp − 1) = (2·mant + 1) · 5^(1−exp) / 10^(1−exp) for exp < 1.
-        let mut n = Big::from_u64(2 * mant + 1);
+        let mut n = Big::<READ>::from_u64(2 * mant + 1);
         let scale;
         if exp < 1 {
             n.mul_pow5((1 - exp) as u32).unwrap();

@@ -134,6 +134,7 @@ pub(crate) fn read_g68(p: &Program, c: &mut Cursor) -> Option<Result<Program, Li
 /// the machine: [`Error::NotAvailable`]), with a block number, `/`, `( … )` and `;`.
 /// Numbers without a point are whole units (calculator-type input [choice: a parameter of
 /// the control; write the point to be safe]).
+#[inline(never)]
 pub(crate) fn read_line(p: &Program, text: &[u8], _syntec: bool) -> Result<Program, LineError> {
     let mut c = Cursor::new(text);
     if c.peek() == Some(b'%') {
@@ -151,6 +152,7 @@ pub(crate) fn read_line(p: &Program, text: &[u8], _syntec: bool) -> Result<Progr
 
 /// The Fanuc-style lines: `G68.2 X Y Z I J K`, Syntec's `G158 P X Y Z A B C U V W` and
 /// Haas's `G268 X Y Z I J K Q`, numbers always with a point.
+#[inline(never)]
 pub(crate) fn write_line(
     spec: &FormSpec,
     words: &[f64],

@@ -77,6 +77,7 @@ const SYNTAX: Syntax = Syntax {
 /// required [choice: Haas's default is not public]), `G269` (cancel), `G253` (orients the
 /// spindle: no frame change), with a block number and `( … )` comments. A `G268` while one
 /// is active replaces it [choice].
+#[inline(never)]
 pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
     let mut c = Cursor::new(text);
     c.block_number(b'N');

@@ -220,6 +220,7 @@ fn options(c: &mut Cursor) -> Result<(), LineError> {
 /// and `END PGM` lines change nothing; `PLANE AXIAL` needs the kinematics
 /// ([`Error::NotAvailable`]). A `PLANE` replaces the active one; the datum is not part of
 /// the plane (only `POINTS` has an origin, P1).
+#[inline(never)]
 pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
     let mut c = Cursor::new(text);
     c.spaces();
@@ -291,6 +292,7 @@ pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> 
 
 /// `PLANE <form> <words> STAY`: the words with their signs (`SPA+30`), then `STAY`
 /// (the control asks for a positioning choice; `STAY` tilts the plane without moving).
+#[inline(never)]
 pub(crate) fn write_line(
     spec: &FormSpec,
     words: &[f64],

@@ -186,8 +186,11 @@ impl Program {
 /// use cncrot::{Frame, elementary, Axis};
 /// let f = Frame::from_rotation(elementary(Axis::X, 30.0));
 /// let mut buf = [0u8; 128];
-/// let (n, _) = write_line(Dialect::Heidenhain, b"PLANE SPATIAL", &f, -1, &mut buf).unwrap();
+/// let (n, _) = write_line(Dialect::Heidenhain, b"PLANE SPATIAL", &f, 6, &mut buf).unwrap();
 /// assert_eq!(&buf[..n], b"PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY");
+/// // The shortest exact numbers show the decomposition's last bit.
+/// let (n, _) = write_line(Dialect::Heidenhain, b"PLANE SPATIAL", &f, -1, &mut buf).unwrap();
+/// assert_eq!(&buf[..n], b"PLANE SPATIAL SPA+29.999999999999996 SPB+0 SPC+0 STAY");
 /// ```
 pub fn write_line(
     dialect: Dialect,

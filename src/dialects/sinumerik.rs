@@ -379,93 +379,100 @@ const ARGS: Syntax = Syntax {
     ends: b",);",
 };
 
-/// One argument of a cycle call.
-#[derive(Clone, Copy)]
-enum Arg<'a> {
-    Empty,
-    Number(f64),
-    Text(&'a [u8]),
+/// The arguments of a cycle call, compact (a line is parsed on a small stack): each a
+/// number, empty or text, with its column; the text of argument `TEXT` is kept, the
+/// others' only checked.
+struct Args<'a, const N: usize> {
+    value: [f64; N],
+    text: [bool; N],
+    column: [u16; N],
+    name: &'a [u8],
+    n: usize,
 }
 
-/// The arguments of a cycle call `NAME(a, "b", , d)` at the cursor (after the name):
-/// at most `N`, each with its column; returns how many there were.
-fn call_args<'a, const N: usize>(
-    c: &mut Cursor<'a>,
-    args: &mut [(Arg<'a>, usize); N],
-) -> Result<usize, LineError> {
-    c.spaces();
-    if c.peek() != Some(b'(') {
-        return Err(c.error(Error::MissingWord));
-    }
-    c.bump();
-    c.spaces();
-    if c.peek() == Some(b')') {
+impl<'a, const N: usize> Args<'a, N> {
+    /// The arguments of `NAME(a, "b", , d)` at the cursor (after the name): at most `N`.
+    fn read(c: &mut Cursor<'a>, text_at: usize) -> Result<Self, LineError> {
+        let mut a = Args {
+            value: [0.0; N],
+            text: [false; N],
+            column: [0; N],
+            name: &[],
+            n: 0,
+        };
+        c.spaces();
+        if c.peek() != Some(b'(') {
+            return Err(c.error(Error::MissingWord));
+        }
         c.bump();
-        return Ok(0);
-    }
-    let mut n = 0;
-    loop {
         c.spaces();
-        let column = c.column();
-        let arg = match c.peek() {
-            Some(b',' | b')') => Arg::Empty,
-            Some(b'"') => {
-                c.bump();
-                let text = c.until(b'"').ok_or(LineError {
-                    error: Error::Parse,
-                    column,
-                })?;
-                Arg::Text(text)
+        if c.peek() == Some(b')') {
+            c.bump();
+            return Ok(a);
+        }
+        loop {
+            c.spaces();
+            let column = c.column();
+            let k = a.n;
+            let (Some(v), Some(t), Some(col)) =
+                (a.value.get_mut(k), a.text.get_mut(k), a.column.get_mut(k))
+            else {
+                return Err(c.error(Error::UnknownWord));
+            };
+            // Lines are at most 512 bytes: the column fits.
+            *col = column as u16;
+            match c.peek() {
+                Some(b',' | b')') => {}
+                Some(b'"') => {
+                    c.bump();
+                    let s = c.until(b'"').ok_or(LineError {
+                        error: Error::Parse,
+                        column,
+                    })?;
+                    *t = true;
+                    if k == text_at {
+                        a.name = s;
+                    }
+                }
+                _ => *v = c.number(ARGS)?,
             }
-            _ => Arg::Number(c.number(ARGS)?),
-        };
-        let Some(slot) = args.get_mut(n) else {
-            return Err(LineError {
-                error: Error::UnknownWord,
-                column,
-            });
-        };
-        *slot = (arg, column);
-        n += 1;
-        c.spaces();
-        match c.peek() {
-            Some(b',') => c.bump(),
-            Some(b')') => {
-                c.bump();
-                return Ok(n);
+            a.n += 1;
+            c.spaces();
+            match c.peek() {
+                Some(b',') => c.bump(),
+                Some(b')') => {
+                    c.bump();
+                    return Ok(a);
+                }
+                None => return Err(c.error(Error::MissingWord)),
+                Some(_) => return Err(c.error(Error::UnknownWord)),
             }
-            None => return Err(c.error(Error::MissingWord)),
-            Some(_) => return Err(c.error(Error::UnknownWord)),
         }
     }
-}
 
-/// A numeric argument (empty: 0).
-fn real(arg: (Arg, usize)) -> Result<f64, LineError> {
-    match arg.0 {
-        Arg::Empty => Ok(0.0),
-        Arg::Number(v) => Ok(v),
-        Arg::Text(_) => Err(LineError {
-            error: Error::Parse,
-            column: arg.1,
-        }),
+    fn column(&self, k: usize) -> usize {
+        usize::from(self.column.get(k).copied().unwrap_or(0))
     }
-}
 
-/// An integer argument (empty: 0).
-fn int(arg: (Arg, usize)) -> Result<i32, LineError> {
-    whole(real(arg)?, arg.1)
-}
+    /// A numeric argument (empty or omitted: 0); text is refused.
+    fn real(&self, k: usize) -> Result<f64, LineError> {
+        if self.text.get(k).copied().unwrap_or(false) {
+            return Err(at(self.column(k))(Error::Parse));
+        }
+        Ok(self.value.get(k).copied().unwrap_or(0.0))
+    }
 
-/// A text argument (empty: no text).
-fn text<'a>(arg: (Arg<'a>, usize)) -> Result<&'a [u8], LineError> {
-    match arg.0 {
-        Arg::Empty => Ok(&[]),
-        Arg::Text(t) => Ok(t),
-        Arg::Number(_) => Err(LineError {
-            error: Error::Parse,
-            column: arg.1,
-        }),
+    /// An integer argument (empty or omitted: 0).
+    fn int(&self, k: usize) -> Result<i32, LineError> {
+        whole(self.real(k)?, self.column(k))
+    }
+
+    /// The text argument (empty: no text); a number there is refused.
+    fn name(&self, k: usize) -> Result<&'a [u8], LineError> {
+        if k < self.n && !self.text.get(k).copied().unwrap_or(false) && self.value.get(k) != Some(&0.0) {
+            return Err(at(self.column(k))(Error::Parse));
+        }
+        Ok(self.name)
     }
 }
 
@@ -479,34 +486,33 @@ fn at(column: usize) -> impl Fn(Error) -> LineError {
 /// 1 additive [choice], the higher digits (tool alignment, …) do not change the plane;
 /// `_DIR`, `_FR`, `_FR_I`, `_DMODE` choose motion and solution, not the plane.
 fn cycle800_line(p: &Program, c: &mut Cursor, column: usize) -> Result<Program, LineError> {
-    let mut args = [(Arg::Empty, 0); 16];
-    let n = call_args(c, &mut args)?;
+    let args = Args::<16>::read(c, 1)?;
     c.end(true, false)?;
-    if n == 0 {
+    if args.n == 0 {
         return Ok(p.with_frame(Frame::IDENTITY));
     }
-    if n < 4 {
+    if args.n < 4 {
         return Err(c.error(Error::MissingWord));
     }
-    let arg = |k: usize| args.get(k).copied().unwrap_or((Arg::Empty, column));
-    int(arg(0))?;
-    let tc = text(arg(1))?;
-    let st = int(arg(2))?;
-    let mode = int(arg(3))?;
+    let _ = column;
+    args.int(0)?;
+    let tc = args.name(1)?;
+    let st = args.int(2)?;
+    let mode = args.int(3)?;
     for k in 13..16 {
-        real(arg(k))?;
+        args.real(k)?;
     }
     let mut w = [0.0; 9];
     for (k, slot) in w.iter_mut().enumerate() {
-        *slot = real(arg(4 + k))?;
+        *slot = args.real(4 + k)?;
     }
     if tc == b"0" {
         return Ok(p.with_frame(Frame::IDENTITY));
     }
     if st < 0 || st % 10 > 1 {
-        return Err(at(arg(2).1)(Error::BadArgument));
+        return Err(at(args.column(2))(Error::BadArgument));
     }
-    let call = frame_at(arg(3).1, Form::Cycle800, mode, &w)?;
+    let call = frame_at(args.column(3), Form::Cycle800, mode, &w)?;
     Ok(p.with_frame(cycle800_apply(&p.frame, st % 10 == 1, &call)))
 }
 
@@ -515,29 +521,27 @@ fn cycle800_line(p: &Program, c: &mut Cursor, column: usize) -> Result<Program, 
 /// at least up to `_BIN_OUT`. The frame the cycle computes becomes the active one, as when
 /// its results are passed on to CYCLE800 [choice]; `_ROT_AD = 1` adds to the active frame.
 fn cycle600_line(p: &Program, c: &mut Cursor, column: usize) -> Result<Program, LineError> {
-    let mut args = [(Arg::Empty, 0); 18];
-    let n = call_args(c, &mut args)?;
+    let args = Args::<18>::read(c, 1)?;
     c.end(true, false)?;
-    if n < 15 {
+    if args.n < 15 {
         return Err(c.error(Error::MissingWord));
     }
-    let arg = |k: usize| args.get(k).copied().unwrap_or((Arg::Empty, column));
     let v3 = |k: usize| -> Result<[f64; 3], LineError> {
-        Ok([real(arg(k))?, real(arg(k + 1))?, real(arg(k + 2))?])
+        Ok([args.real(k)?, args.real(k + 1)?, args.real(k + 2)?])
     };
     let call = super::cycle600::Call {
-        inexin: int(arg(0))?,
-        mihead: text(arg(1))?,
-        sw_rec: int(arg(2))?,
-        bin_in: int(arg(3))?,
+        inexin: args.int(0)?,
+        mihead: args.name(1)?,
+        sw_rec: args.int(2)?,
+        bin_in: args.int(3)?,
         pos: v3(4)?,
         ang: v3(7)?,
         pos_r: v3(10)?,
-        inexout: int(arg(13))?,
-        bin_out: int(arg(14))?,
-        rot_ad: int(arg(15))?,
-        rot_inv: int(arg(16))?,
-        retr_z: int(arg(17))?,
+        inexout: args.int(13)?,
+        bin_out: args.int(14)?,
+        rot_ad: args.int(15)?,
+        rot_inv: args.int(16)?,
+        retr_z: args.int(17)?,
     };
     let state = super::cycle600::State {
         frame: p.frame,
@@ -554,6 +558,7 @@ fn cycle600_line(p: &Program, c: &mut Cursor, column: usize) -> Result<Program, 
 /// and `CYCLE600(…)`, after a block number (`N10`, `:10`), a skip mark or a label, with `;`
 /// comments. "Frame instructions are programmed in their own block" [doc]: nothing else may
 /// stand on the line.
+#[inline(never)]
 pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
     let mut c = Cursor::new(text);
     c.block_number(b'N');
@@ -626,6 +631,7 @@ pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> 
 
 /// `CYCLE800(0,"",0,_MODE,_X0,_Y0,_Z0,_A,_B,_C,_X1,_Y1,_Z1,-1,0,0)` (`_DIR` −1, "minus"
 /// [choice]) or `ROT X=… Y=… Z=…`.
+#[inline(never)]
 pub(crate) fn write_line(
     spec: &FormSpec,
     words: &[f64],

@@ -149,6 +149,7 @@ const SYNTAX: Syntax = Syntax {
 /// accepted and ignored [choice: not documented]; `G158` without words cancels [choice]),
 /// and the Fanuc-style `G68.2`, `G68.4`, `G69`, `G53.1` of its G68.2 mode, with a block
 /// number, `( … )` and `;` comments.
+#[inline(never)]
 pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
     let mut c = Cursor::new(text);
     c.block_number(b'N');

@@ -94,6 +94,7 @@ const SYNTAX: Syntax = Syntax {
 /// `RotExOn`/`RotExOff` (no frame change), with a block number and `( … )` or `;`
 /// comments. "The rotation instructions must be programmed in their own block" [doc]:
 /// nothing else may stand on the line.
+#[inline(never)]
 pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
     let mut c = Cursor::new(text);
     c.block_number(b'N');
@@ -110,7 +111,8 @@ pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> 
     } else {
         return Err(c.error(Error::UnknownWord));
     };
-    let (xyz, given) = address_words(&mut c, *b"XYZ", SYNTAX, false, (true, true))?;
+    // `=` before a value is allowed (`X=R1` is how NC I assigns a parameter).
+    let (xyz, given) = address_words(&mut c, *b"XYZ", SYNTAX, true, (true, true))?;
     let angles = if additive {
         if !given.contains(&true) {
             return Err(c.error(Error::MissingWord));
@@ -133,6 +135,7 @@ pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> 
 }
 
 /// `ROT X… Y… Z…` for the words of [`crate::dialects::form::Form::TwincatRot`].
+#[inline(never)]
 pub(crate) fn write_line(words: &[f64], decimals: i32, out: &mut Out) -> Result<(), Error> {
     let style = Style {
         plus: false,
