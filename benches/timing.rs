@@ -566,6 +566,105 @@ fn main() {
             },
         );
         report("cncrot_probe_edge", "random", &h, &mut rows);
+        // Program lines (setup time, but bounded): a CYCLE800 call and a PLANE line read on
+        // the random angles, the active frame read, the lines written back.
+        let c800: Vec<Vec<u8>> = random
+            .iter()
+            .map(|a| {
+                let l = format!(
+                    "N10 CYCLE800(1,\"TC1\",0,57,10,0,0,{},{},{},0,0,0,-1,100,1)",
+                    a[0], a[1], a[2]
+                );
+                l.into_bytes()
+            })
+            .collect();
+        let plane: Vec<Vec<u8>> = random
+            .iter()
+            .map(|a| {
+                format!(
+                    "5 PLANE SPATIAL SPA{:+} SPB{:+} SPC{:+} TURN MB MAX FMAX",
+                    a[0], a[1], a[2]
+                )
+                .into_bytes()
+            })
+            .collect();
+        let mut p = cncrot_program::default();
+        for (class, dialect, lines) in [
+            ("CYCLE800 line", CNCROT_DIALECT_SINUMERIK, &c800),
+            ("PLANE SPATIAL line", CNCROT_DIALECT_HEIDENHAIN, &plane),
+        ] {
+            measure(
+                &mut h,
+                n("cncrot_program_line", class),
+                overhead,
+                lines,
+                &mut |l| unsafe {
+                    p = cncrot_program::default();
+                    cncrot_program_line(&mut p, dialect, l.as_ptr().cast(), l.len())
+                },
+            );
+            report("cncrot_program_line", class, &h, &mut rows);
+        }
+        let mut col = 0usize;
+        let bad = b"5 PLANE SPATIAL SPA+30 SPB+Q12 SPC+0".to_vec();
+        measure(
+            &mut h,
+            n("cncrot_program_column", "variable"),
+            overhead,
+            &[bad],
+            &mut |l| unsafe {
+                cncrot_program_column(
+                    &p,
+                    CNCROT_DIALECT_HEIDENHAIN,
+                    l.as_ptr().cast(),
+                    l.len(),
+                    &mut col,
+                )
+            },
+        );
+        report("cncrot_program_column", "variable", &h, &mut rows);
+        measure(
+            &mut h,
+            n("cncrot_program_frame", "active"),
+            overhead,
+            &[p],
+            &mut |q| unsafe { cncrot_program_frame(q, f.as_mut_ptr()) },
+        );
+        report("cncrot_program_frame", "active", &h, &mut rows);
+        let mut out = [0u8; CNCROT_PROGRAM_LINE_MAX + 1];
+        for (class, dialect, form, decimals) in [
+            ("G68.2 shortest", CNCROT_DIALECT_FANUC, c"G68.2", -1),
+            (
+                "PLANE 4 decimals",
+                CNCROT_DIALECT_HEIDENHAIN,
+                c"PLANE SPATIAL",
+                4,
+            ),
+        ] {
+            measure(
+                &mut h,
+                n("cncrot_program_write", class),
+                overhead,
+                &edges,
+                &mut |fr| unsafe {
+                    let mut g = *fr;
+                    if dialect == CNCROT_DIALECT_HEIDENHAIN {
+                        g[3] = 0.0;
+                        g[7] = 0.0;
+                        g[11] = 0.0;
+                    }
+                    cncrot_program_write(
+                        dialect,
+                        form.as_ptr(),
+                        g.as_ptr(),
+                        decimals,
+                        out.as_mut_ptr().cast(),
+                        out.len(),
+                    )
+                },
+            );
+            report("cncrot_program_write", class, &h, &mut rows);
+        }
     }
     for (class, inputs) in &angle_classes {
         // CYCLE600 recalculation (paper, Example 3 with these angles), then the additive call.

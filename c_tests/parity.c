@@ -16,6 +16,11 @@ static void hex(double x) {
 static void hexes(const double *x, int n) {
   for (int k = 0; k < n; k++) hex(x[k]);
 }
+/* A text as one word of hex bytes (program lines hold spaces). */
+static void text_hex(const char *t) {
+  printf(" ");
+  for (; *t; t++) printf("%02x", (unsigned char)*t);
+}
 
 int main(void) {
   for (int kind = 0; kind < 2; kind++)
@@ -89,6 +94,40 @@ int main(void) {
       hexes(f, 16);
       hexes(w2, (int)n);
       printf(" %d\n", s);
+    }
+  /* Program lines: a line read into a fresh program (its bytes in hex) and the frame; a
+   * frame written in a form (the form's and the line's bytes in hex). */
+  static const struct {
+    int32_t dialect;
+    const char *form;
+  } WRITERS[] = {{CNCROT_DIALECT_SINUMERIK, "CYCLE800"},   {CNCROT_DIALECT_SINUMERIK, "ROT"},
+                 {CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL"}, {CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS"},
+                 {CNCROT_DIALECT_FANUC, "G68.2"},          {CNCROT_DIALECT_SYNTEC, "G158 P10139"},
+                 {CNCROT_DIALECT_TWINCAT, "ROT"},          {CNCROT_DIALECT_HAAS, "G268 Q321"}};
+  for (int k = 0; k < (int)(sizeof WRITERS / sizeof WRITERS[0]); k++)
+    for (int v = 0; v < 3; v++) {
+      double a[3] = {rnd(-170, 170), rnd(-80, 80), rnd(-170, 170)}, o[3] = {rnd(-99, 99), rnd(-99, 99), rnd(-99, 99)};
+      double f[16], none[3] = {0, 0, 0};
+      int origin = strcmp(WRITERS[k].form, "ROT") != 0 && strcmp(WRITERS[k].form, "PLANE SPATIAL") != 0;
+      cncrot_frame_from_angles(1, 27, a, origin ? o : none, none, f);
+      char line[CNCROT_PROGRAM_LINE_MAX + 1];
+      int decimals = v == 2 ? 3 : -1;
+      int32_t s = cncrot_program_write(WRITERS[k].dialect, WRITERS[k].form, f, decimals, line, sizeof line);
+      if (s < 0) continue;
+      printf("W %d %d", WRITERS[k].dialect, decimals);
+      text_hex(WRITERS[k].form);
+      hexes(f, 16);
+      text_hex(line);
+      printf(" %d\n", s);
+      cncrot_program p;
+      memset(&p, 0, sizeof p);
+      double g[16];
+      if (cncrot_program_line(&p, WRITERS[k].dialect, line, strlen(line)) < 0 || cncrot_program_frame(&p, g) < 0)
+        continue;
+      printf("L %d", WRITERS[k].dialect);
+      text_hex(line);
+      hexes(g, 16);
+      printf("\n");
     }
   /* Probing: flanges, planes of five points, edges. */
   for (int k = 0; k < 12; k++) {

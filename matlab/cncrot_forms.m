@@ -14,9 +14,10 @@ function f = cncrot_forms()
 %     TWINCAT_ROT     selector 0;                  words X Y Z
 %     G268            selector the Q word;         words X Y Z I J K
 %     G68_3           selector 0;                  words X Y Z R TX TY TZ (T: tool direction)
+%     PLANE_PROJECTED selector 0;                  words PROPR PROMIN ROT
 %
 %   Example: F = cncrot_form_frame(cncrot_forms().G68_2, 0, [10 0 0 0 30 0])
   f = struct('CYCLE800', 1, 'SINUMERIK_ROT', 2, 'SINUMERIK_ROTS', 3, 'PLANE_SPATIAL', 4, ...
              'PLANE_EULER', 5, 'PLANE_VECTOR', 6, 'PLANE_POINTS', 7, 'G68_2', 8, 'G158', 9, ...
-             'TWINCAT_ROT', 10, 'G268', 11, 'G68_3', 12);
+             'TWINCAT_ROT', 10, 'G268', 11, 'G68_3', 12, 'PLANE_PROJECTED', 13);
 end

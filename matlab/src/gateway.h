@@ -120,19 +120,20 @@ static void to_col_major(const double *row, double *col) {
 /* Raises the MATLAB error of a negative status (after the library has returned). `row` is
  * the 0-based row of a batch, or -1: it is named only for statuses that belong to one row
  * (a value, not a flag or a code) in a batch of more than one. */
-static void raise_status(int32_t s, long row, size_t n) {
+/* The MATLAB error identifier of a status; `per_row` says whether it can differ by row. */
+static const char *status_id(int32_t s, int *per_row) {
   const char *id;
-  int per_row = 1;
+  *per_row = 1;
   switch (s) {
     case CNCROT_STATUS_NULL_POINTER: id = "cncrot:nullPointer"; break;
     case CNCROT_STATUS_NOT_FINITE: id = "cncrot:notFinite"; break;
-    case CNCROT_STATUS_BAD_FLAG: id = "cncrot:badFlag"; per_row = 0; break;
-    case CNCROT_STATUS_BAD_SEQUENCE: id = "cncrot:badSequence"; per_row = 0; break;
-    case CNCROT_STATUS_INCOMPLETE_SEQUENCE: id = "cncrot:incompleteSequence"; per_row = 0; break;
+    case CNCROT_STATUS_BAD_FLAG: id = "cncrot:badFlag"; *per_row = 0; break;
+    case CNCROT_STATUS_BAD_SEQUENCE: id = "cncrot:badSequence"; *per_row = 0; break;
+    case CNCROT_STATUS_INCOMPLETE_SEQUENCE: id = "cncrot:incompleteSequence"; *per_row = 0; break;
     case CNCROT_STATUS_NOT_A_ROTATION: id = "cncrot:notARotation"; break;
     case CNCROT_STATUS_DEGENERATE: id = "cncrot:degenerate"; break;
-    case CNCROT_STATUS_BAD_ARGUMENT: id = "cncrot:badArgument"; per_row = 0; break;
-    case CNCROT_STATUS_NOT_AVAILABLE: id = "cncrot:notAvailable"; per_row = 0; break;
+    case CNCROT_STATUS_BAD_ARGUMENT: id = "cncrot:badArgument"; *per_row = 0; break;
+    case CNCROT_STATUS_NOT_AVAILABLE: id = "cncrot:notAvailable"; *per_row = 0; break;
     case CNCROT_STATUS_UNKNOWN_HEAD: id = "cncrot:unknownHead"; break;
     case CNCROT_STATUS_NAME_TOO_LONG: id = "cncrot:nameTooLong"; break;
     case CNCROT_STATUS_PARSE: id = "cncrot:parse"; break;
@@ -142,8 +143,19 @@ static void raise_status(int32_t s, long row, size_t n) {
     case CNCROT_STATUS_COINCIDENT: id = "cncrot:coincident"; break;
     case CNCROT_STATUS_COLLINEAR: id = "cncrot:collinear"; break;
     case CNCROT_STATUS_TOO_FEW: id = "cncrot:tooFew"; break;
+    case CNCROT_STATUS_UNKNOWN_WORD: id = "cncrot:unknownWord"; break;
+    case CNCROT_STATUS_NOT_A_NUMBER: id = "cncrot:notANumber"; break;
+    case CNCROT_STATUS_MISSING_WORD: id = "cncrot:missingWord"; break;
+    case CNCROT_STATUS_LINE_TOO_LONG: id = "cncrot:lineTooLong"; break;
+    case CNCROT_STATUS_NO_ROOM: id = "cncrot:noRoom"; break;
     default: id = "cncrot:internal"; break;
   }
+  return id;
+}
+
+static void raise_status(int32_t s, long row, size_t n) {
+  int per_row;
+  const char *id = status_id(s, &per_row);
   if (per_row && row >= 0 && n > 1)
     mexErrMsgIdAndTxt(id, "row %ld: %s", row + 1, cncrot_status_str(s));
   mexErrMsgIdAndTxt(id, "%s", cncrot_status_str(s));

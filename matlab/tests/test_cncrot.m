@@ -189,6 +189,39 @@ function test_cncrot(cases_file)
   expect_error('cncrot:collinear', @() cncrot_probe_edge(eye(4), [0 0 0], [0 0 5]), 'edge along the normal');
   expect_error('cncrot:badSize', @() cncrot_probe_flange([0 0], [1 0 0], [0 0 0], [0 1 0]), 'point size');
 
+  % Program lines: the vendors' lines, refusals with their columns, the writer read back.
+  d = cncrot_dialects();
+  F = cncrot_program_lines(d.TWINCAT, {'N65 ROT Z30', 'N90 AROT Z15 (add)'});
+  c = cosd(45);
+  check(max(max(abs(F - [c -c 0 0; c c 0 0; 0 0 1 0; 0 0 0 1]))) < 1e-15, 'TwinCAT ROT Z30, AROT Z15');
+  [F, st, fr] = cncrot_program_lines(d.SYNTEC, {'G158 L3 P01159 X0 Y0 Z0 A0 B0 C10 U0 V0 W0', 'G158 L3 P01159 X0 Y0 Z0 A0 B0 C10 U0 V0 W0'});
+  check(abs(F(2, 1) - sind(20)) < 1e-15 && isequal(size(fr), [4 4 2]) && abs(fr(2, 1, 1) - sind(10)) < 1e-15, 'Syntec increments');
+  F2 = cncrot_program_lines(d.SYNTEC, 'G69', st);
+  check(isequal(F2, eye(4)), 'state carried into the next call');
+  F = cncrot_program_lines(d.HEIDENHAIN, '5 PLANE SPATIAL SPA+27 SPB+0 SPC+45 TURN MB MAX FMAX SEQ-');
+  check(max(max(abs(F(1:3, 1:3) - [0.707107 -0.630037 0.321020; 0.707107 0.630037 -0.321020; 0 0.453990 0.891007]))) < 1e-6, 'PLANE SPATIAL worked numbers');
+  F = cncrot_program_lines(d.SINUMERIK, 'ROT X10 Y90 Z40');
+  check(strcmp(cncrot_program_write(d.SINUMERIK, 'ROT', F, 4), 'ROT X=0 Y=90 Z=30'), 'SINUMERIK read-back');
+  ls = cncrot_program_write(d.FANUC, 'G68.2', cat(3, eye(4), F), 3);
+  check(iscell(ls) && strcmp(ls{1}, 'G68.2 X0. Y0. Z0. I0. J0. K0.'), 'two frames, two lines');
+  check(isequal(cncrot_program_lines(d.FANUC, ls{2}), F) || max(max(abs(cncrot_program_lines(d.FANUC, ls{2}) - F))) < 1e-6, 'written line reads back');
+  expect_error('cncrot:notANumber', @() cncrot_program_lines(d.SINUMERIK, 'ROT X=R1'), 'variable');
+  expect_error('cncrot:unknownWord', @() cncrot_program_lines(d.HAAS, 'G268 Q123 Y1 Y2'), 'repeated word');
+  expect_error('cncrot:missingWord', @() cncrot_program_lines(d.HAAS, 'G268 X0'), 'missing Q');
+  expect_error('cncrot:lineTooLong', @() cncrot_program_lines(d.FANUC, ['G69 (' repmat('x', 1, 300) ')']), 'long line');
+  try
+    cncrot_program_lines(d.HEIDENHAIN, {'PLANE RESET', 'PLANE SPATIAL SPA+Q120 SPB+0 SPC+0'});
+    check(false, 'column reported');
+  catch err
+    check(~isempty(strfind(err.message, 'line 2, column 19')), ['column reported: ' err.message]);
+  end
+  expect_error('cncrot:notAvailable', @() cncrot_program_lines(d.FANUC, 'G68.3 R0'), 'G68.3');
+  expect_error('cncrot:badArgument', @() cncrot_program_lines(9, 'G69'), 'bad dialect');
+  expect_error('cncrot:badState', @() cncrot_program_lines(d.FANUC, 'G69', struct('active', 2)), 'bad state');
+  expect_error('cncrot:badArgument', @() cncrot_program_write(d.FANUC, 'PLANE SPATIAL', eye(4)), 'form of another dialect');
+  expect_error('cncrot:badClass', @() cncrot_program_lines(d.FANUC, 42), 'numeric line');
+  check(isequal(size(cncrot_program_write(d.FANUC, 'G68.2', zeros(4, 4, 0))), [0 1]), 'no frames, no lines');
+
   % Parity with the C harness, bit for bit.
   fid = fopen(cases_file, 'r');
   check(fid >= 0, 'cases file');
@@ -201,6 +234,7 @@ function test_cncrot(cases_file)
     h = @(k) hex2num(t{k});
     hv = @(k, m) arrayfun(@(j) hex2num(t{j}), k:k + m - 1);
     same = @(x, k) all(arrayfun(@(j) strcmp(bits(x(j)), lower(t{k + j - 1})), 1:numel(x)));
+    unhex = @(x) char(sscanf(x, '%2x').');
     switch t{1}
       case 'M'
         R = cncrot_matrix(str2double(t{2}), str2double(t{3}), hv(4, 3));
@@ -233,6 +267,12 @@ function test_cncrot(cases_file)
       case 'PP'
         [F, fl, rm] = cncrot_probe_plane(reshape(hv(2, 15), 3, 5).');
         check(same(reshape(F.', 1, 16), 17) && same([fl rm], 33), ['parity ' line]);
+      case 'W'
+        [l, st] = cncrot_program_write(str2double(t{2}), unhex(t{4}), reshape(hv(5, 16), 4, 4).', str2double(t{3}));
+        check(strcmp(l, unhex(t{21})) && st == str2double(t{22}), ['parity ' line]);
+      case 'L'
+        F = cncrot_program_lines(str2double(t{2}), unhex(t{3}));
+        check(same(reshape(F.', 1, 16), 4), ['parity ' line]);
       case 'PE'
         [a, F2] = cncrot_probe_edge(reshape(hv(2, 16), 4, 4).', hv(18, 3), hv(21, 3));
         check(same(a, 24) && same(reshape(F2.', 1, 16), 25), ['parity ' line]);

@@ -469,7 +469,10 @@ impl<'a, const N: usize> Args<'a, N> {
 
     /// The text argument (empty: no text); a number there is refused.
     fn name(&self, k: usize) -> Result<&'a [u8], LineError> {
-        if k < self.n && !self.text.get(k).copied().unwrap_or(false) && self.value.get(k) != Some(&0.0) {
+        if k < self.n
+            && !self.text.get(k).copied().unwrap_or(false)
+            && self.value.get(k) != Some(&0.0)
+        {
             return Err(at(self.column(k))(Error::Parse));
         }
         Ok(self.name)

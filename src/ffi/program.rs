@@ -131,9 +131,7 @@ unsafe fn read(
         return Err((cncrot_status::LineTooLong, d.max_line() + 1));
     }
     let text = core::slice::from_raw_parts(line.cast::<u8>(), len);
-    let next = p
-        .line(d, text)
-        .map_err(|e| (e.error.into(), e.column))?;
+    let next = p.line(d, text).map_err(|e| (e.error.into(), e.column))?;
     Ok(store(&next, c.options))
 }
 

@@ -468,13 +468,25 @@ pub fn table() -> Vec<Call> {
         ("cncrot_program_line", |t| unsafe {
             let mut p = cncrot_program::default();
             let lines: [(i32, &[u8]); 8] = [
-                (CNCROT_DIALECT_SINUMERIK, b"N10 CYCLE800(1,\"TC1\",0,57,10,0,0,30,45,60,0,0,0,-1,100,1)"),
-                (CNCROT_DIALECT_SINUMERIK, b"N20 AROT Z=15 ; on the tilted plane"),
-                (CNCROT_DIALECT_SINUMERIK, b"N30 CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1,39,1,0,0)"),
+                (
+                    CNCROT_DIALECT_SINUMERIK,
+                    b"N10 CYCLE800(1,\"TC1\",0,57,10,0,0,30,45,60,0,0,0,-1,100,1)",
+                ),
+                (
+                    CNCROT_DIALECT_SINUMERIK,
+                    b"N20 AROT Z=15 ; on the tilted plane",
+                ),
+                (
+                    CNCROT_DIALECT_SINUMERIK,
+                    b"N30 CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1,39,1,0,0)",
+                ),
                 (CNCROT_DIALECT_SINUMERIK, b"ROT X=R1"),
                 (CNCROT_DIALECT_HEIDENHAIN, b"PLANE RESET STAY"),
                 (CNCROT_DIALECT_SINUMERIK, b"ROTS X30 Y20 Z10"),
-                (CNCROT_DIALECT_SINUMERIK, b"CYCLE800(0,\"TC1\",0,192,0,0,0,0,0,0,0,0,0,1)"),
+                (
+                    CNCROT_DIALECT_SINUMERIK,
+                    b"CYCLE800(0,\"TC1\",0,192,0,0,0,0,0,0,0,0,0,1)",
+                ),
                 (0, b""),
             ];
             for (d, l) in lines {
@@ -483,12 +495,27 @@ pub fn table() -> Vec<Call> {
             }
             let l = b"G68.2 X10 I30 J45 K60";
             let mut q = cncrot_program::default();
-            t.status(cncrot_program_line(&mut q, CNCROT_DIALECT_FANUC, l.as_ptr().cast(), usize::MAX));
+            t.status(cncrot_program_line(
+                &mut q,
+                CNCROT_DIALECT_FANUC,
+                l.as_ptr().cast(),
+                usize::MAX,
+            ));
             t.status(cncrot_program_line(&mut q, CNCROT_DIALECT_FANUC, null(), 0));
-            t.status(cncrot_program_line(null_mut(), CNCROT_DIALECT_FANUC, l.as_ptr().cast(), l.len()));
+            t.status(cncrot_program_line(
+                null_mut(),
+                CNCROT_DIALECT_FANUC,
+                l.as_ptr().cast(),
+                l.len(),
+            ));
             let mut bad = q;
             bad.reserved = 1;
-            t.status(cncrot_program_line(&mut bad, CNCROT_DIALECT_FANUC, l.as_ptr().cast(), l.len()));
+            t.status(cncrot_program_line(
+                &mut bad,
+                CNCROT_DIALECT_FANUC,
+                l.as_ptr().cast(),
+                l.len(),
+            ));
             for d in [1, 2, 3, 4, 5, 6, 7] {
                 let mut q = cncrot_program::default();
                 t.status(cncrot_program_line(&mut q, d, l.as_ptr().cast(), l.len()));
@@ -498,13 +525,36 @@ pub fn table() -> Vec<Call> {
         ("cncrot_program_column", |t| unsafe {
             let p = cncrot_program::default();
             let mut col = 99;
-            for l in [&b"ROT X=R1"[..], b"ROT X10 X20", b"CYCLE800(0,\"A\",0", b"ROT Z30"] {
-                t.status(cncrot_program_column(&p, CNCROT_DIALECT_SINUMERIK, l.as_ptr().cast(), l.len(), &mut col));
+            for l in [
+                &b"ROT X=R1"[..],
+                b"ROT X10 X20",
+                b"CYCLE800(0,\"A\",0",
+                b"ROT Z30",
+            ] {
+                t.status(cncrot_program_column(
+                    &p,
+                    CNCROT_DIALECT_SINUMERIK,
+                    l.as_ptr().cast(),
+                    l.len(),
+                    &mut col,
+                ));
                 t.word(col as u64);
             }
-            t.status(cncrot_program_column(&p, 9, b"G69".as_ptr().cast(), 3, &mut col));
+            t.status(cncrot_program_column(
+                &p,
+                9,
+                b"G69".as_ptr().cast(),
+                3,
+                &mut col,
+            ));
             t.word(col as u64);
-            t.status(cncrot_program_column(&p, 3, b"G69".as_ptr().cast(), 3, null_mut()));
+            t.status(cncrot_program_column(
+                &p,
+                3,
+                b"G69".as_ptr().cast(),
+                3,
+                null_mut(),
+            ));
         }),
         ("cncrot_program_frame", |t| unsafe {
             let mut p = cncrot_program::default();
@@ -512,7 +562,12 @@ pub fn table() -> Vec<Call> {
             t.status(cncrot_program_frame(&p, f.as_mut_ptr()));
             t.f64s(&f);
             let l = b"G158 L1 P10157 X2. Y0. Z10. A20 B20 C-30 U0 V10 W0";
-            t.status(cncrot_program_line(&mut p, CNCROT_DIALECT_SYNTEC, l.as_ptr().cast(), l.len()));
+            t.status(cncrot_program_line(
+                &mut p,
+                CNCROT_DIALECT_SYNTEC,
+                l.as_ptr().cast(),
+                l.len(),
+            ));
             t.status(cncrot_program_frame(&p, f.as_mut_ptr()));
             t.f64s(&f);
             p.origin[0] = f64::NAN;
@@ -536,16 +591,65 @@ pub fn table() -> Vec<Call> {
                 (CNCROT_DIALECT_TWINCAT, c"ROTS", -1),
                 (CNCROT_DIALECT_FANUC, c"G68.2", 18),
             ] {
-                t.status(cncrot_program_write(d, form.as_ptr(), f.as_ptr(), dec, out.as_mut_ptr().cast(), out.len()));
+                t.status(cncrot_program_write(
+                    d,
+                    form.as_ptr(),
+                    f.as_ptr(),
+                    dec,
+                    out.as_mut_ptr().cast(),
+                    out.len(),
+                ));
                 t.bytes(&out);
             }
-            t.status(cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, c"PLANE SPATIAL".as_ptr(), IDF.as_ptr(), 3, out.as_mut_ptr().cast(), out.len()));
-            t.status(cncrot_program_write(3, c"G68.2".as_ptr(), f.as_ptr(), -1, out.as_mut_ptr().cast(), 8));
-            t.status(cncrot_program_write(3, c"G68.2".as_ptr(), [0.0; 16].as_ptr(), -1, out.as_mut_ptr().cast(), 8));
-            t.status(cncrot_program_write(0, c"G68.2".as_ptr(), f.as_ptr(), -1, out.as_mut_ptr().cast(), 8));
-            t.status(cncrot_program_write(3, null(), f.as_ptr(), -1, out.as_mut_ptr().cast(), 8));
+            t.status(cncrot_program_write(
+                CNCROT_DIALECT_HEIDENHAIN,
+                c"PLANE SPATIAL".as_ptr(),
+                IDF.as_ptr(),
+                3,
+                out.as_mut_ptr().cast(),
+                out.len(),
+            ));
+            t.status(cncrot_program_write(
+                3,
+                c"G68.2".as_ptr(),
+                f.as_ptr(),
+                -1,
+                out.as_mut_ptr().cast(),
+                8,
+            ));
+            t.status(cncrot_program_write(
+                3,
+                c"G68.2".as_ptr(),
+                [0.0; 16].as_ptr(),
+                -1,
+                out.as_mut_ptr().cast(),
+                8,
+            ));
+            t.status(cncrot_program_write(
+                0,
+                c"G68.2".as_ptr(),
+                f.as_ptr(),
+                -1,
+                out.as_mut_ptr().cast(),
+                8,
+            ));
+            t.status(cncrot_program_write(
+                3,
+                null(),
+                f.as_ptr(),
+                -1,
+                out.as_mut_ptr().cast(),
+                8,
+            ));
             let long = [b'G'; 100];
-            t.status(cncrot_program_write(3, long.as_ptr().cast(), f.as_ptr(), -1, out.as_mut_ptr().cast(), 8));
+            t.status(cncrot_program_write(
+                3,
+                long.as_ptr().cast(),
+                f.as_ptr(),
+                -1,
+                out.as_mut_ptr().cast(),
+                8,
+            ));
             t.bytes(&out);
         }),
         ("cncrot_cycle600_gud_size", |t| {

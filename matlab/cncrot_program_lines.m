@@ -1,0 +1,16 @@
+% CNCROT_PROGRAM_LINES  What program lines do to the active frame, as the controller does.
+%   [F, state, frames] = cncrot_program_lines(dialect, lines)
+%   [F, state, frames] = cncrot_program_lines(dialect, lines, state)
+%   dialect is a code of cncrot_dialects; lines a char row (one block) or a cell array of
+%   them, applied in order. F is the 4-by-4 active frame after the last line
+%   (p_old = F * [p_new; 1]), state the program's modal state to pass to the next call
+%   (state.options = 1 reads SINUMERIK frame angles in Euler mode; start from [] or that
+%   struct), frames the frame after each line (4-by-4-by-N).
+%   A line the controller could not execute raises the status's error (cncrot:unknownWord,
+%   cncrot:notANumber for a variable, cncrot:missingWord, cncrot:parse, cncrot:lineTooLong,
+%   or the error of the command's mathematics) whose message names the line and the column
+%   of the first offending character.
+%
+%   Example (the TwinCAT manual: ROT Z30 then AROT Z15 is 45 degrees about Z):
+%     F = cncrot_program_lines(cncrot_dialects().TWINCAT, {'N65 ROT Z30', 'N90 AROT Z15'})
+%     F = cncrot_program_lines(cncrot_dialects().HEIDENHAIN, '5 PLANE SPATIAL SPA+27 SPB+0 SPC+45 TURN FMAX')

@@ -1,0 +1,112 @@
+/* [F, state, frames] = cncrot_program_lines(dialect, lines, state): see cncrot_program_lines.m. */
+#include "gateway.h"
+
+static const char *FIELDS[] = {"rotation", "origin", "angles", "active", "dialect", "options"};
+
+/* A field of the state struct as n doubles (absent: zeros; wrong size: an error). */
+static void field(const mxArray *s, const char *name, double *out, size_t n) {
+  memset(out, 0, n * sizeof *out);
+  const mxArray *f = mxGetField(s, 0, name);
+  if (!f) return;
+  if (!mxIsDouble(f) || mxIsComplex(f) || mxIsSparse(f) || mxGetNumberOfElements(f) != n)
+    mexErrMsgIdAndTxt("cncrot:badState", "state.%s must be %zu real doubles", name, n);
+  const double *d = real_data(f, name);
+  memcpy(out, d, n * sizeof *out);
+}
+
+static int32_t as_int(double v) { return v >= -2147483648.0 && v <= 2147483647.0 ? (int32_t)v : INT32_MIN; }
+
+/* The state struct as the library's; values the library did not write are refused by it
+ * (cncrot:badState), after the call. */
+static void from_struct(const mxArray *s, cncrot_program *p) {
+  memset(p, 0, sizeof *p);
+  if (mxIsEmpty(s) && !mxIsStruct(s)) return;
+  if (!mxIsStruct(s) || mxGetNumberOfElements(s) != 1)
+    mexErrMsgIdAndTxt("cncrot:badClass", "state must be a 1-by-1 struct from cncrot_program_lines, or []");
+  double r[9], v[3];
+  field(s, "rotation", r, 9);
+  to_row_major(r, p->rotation);
+  field(s, "origin", p->origin, 3);
+  field(s, "angles", p->angles, 3);
+  field(s, "active", v, 1);
+  p->active = as_int(v[0]);
+  field(s, "dialect", v, 1);
+  p->dialect = as_int(v[0]);
+  field(s, "options", v, 1);
+  p->options = v[0] >= 0 && v[0] <= 4294967295.0 && v[0] == (double)(uint32_t)v[0] ? (uint32_t)v[0] : 0xFFFFFFFFu;
+}
+
+static mxArray *to_struct(const cncrot_program *p) {
+  mxArray *s = mxCreateStructMatrix(1, 1, 6, FIELDS);
+  mxArray *r = mxCreateDoubleMatrix(3, 3, mxREAL);
+  to_col_major(p->rotation, mxGetDoubles(r));
+  mxSetField(s, 0, "rotation", r);
+  mxArray *o = mxCreateDoubleMatrix(1, 3, mxREAL), *a = mxCreateDoubleMatrix(1, 3, mxREAL);
+  memcpy(mxGetDoubles(o), p->origin, sizeof p->origin);
+  memcpy(mxGetDoubles(a), p->angles, sizeof p->angles);
+  mxSetField(s, 0, "origin", o);
+  mxSetField(s, 0, "angles", a);
+  mxSetField(s, 0, "active", mxCreateDoubleScalar(p->active));
+  mxSetField(s, 0, "dialect", mxCreateDoubleScalar(p->dialect));
+  mxSetField(s, 0, "options", mxCreateDoubleScalar(p->options));
+  return s;
+}
+
+/* One line of text as bytes (characters beyond ASCII become a byte every dialect refuses). */
+static size_t line_bytes(const mxArray *a, char *out, size_t cap) {
+  if (!mxIsChar(a)) mexErrMsgIdAndTxt("cncrot:badClass", "lines must be char or a cell array of char");
+  size_t n = mxGetNumberOfElements(a);
+  if (n > 0 && (mxGetNumberOfDimensions(a) != 2 || mxGetM(a) != 1))
+    mexErrMsgIdAndTxt("cncrot:badSize", "a line must be a char row vector");
+  const mxChar *c = mxGetChars(a);
+  size_t k;
+  /* Longer lines than any dialect reads arrive cut to cap bytes: the library refuses them. */
+  for (k = 0; k < n && k < cap; k++) out[k] = (char)(c[k] > 127 ? 0x80 : c[k]);
+  return k;
+}
+
+void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
+  check_nargs(nrhs, 2, 3, nlhs, 3);
+  int32_t dialect = integer_arg(prhs[0], "dialect");
+  cncrot_program p;
+  if (nrhs == 3) from_struct(prhs[2], &p);
+  else memset(&p, 0, sizeof p);
+  const mxArray *lines = prhs[1];
+  int cell = mxIsCell(lines);
+  size_t n = cell ? mxGetNumberOfElements(lines) : 1;
+  mxArray *frames = mxCreateNumericArray(3, (mwSize[]){4, 4, n}, mxDOUBLE_CLASS, mxREAL);
+  double *fr = mxGetDoubles(frames);
+  double f[16];
+  /* The state's own check, also for no lines. */
+  int32_t s = cncrot_program_frame(&p, f);
+  if (s < 0) {
+    mxDestroyArray(frames);
+    raise_status(s, -1, 0);
+  }
+  for (size_t k = 0; k < n; k++) {
+    const mxArray *a = cell ? mxGetCell(lines, k) : lines;
+    if (!a) a = mxCreateString("");
+    char buf[CNCROT_PROGRAM_LINE_MAX + 3];
+    size_t len = line_bytes(a, buf, sizeof buf);
+    size_t column = 0;
+    s = cncrot_program_line(&p, dialect, buf, len);
+    if (s < 0) {
+      cncrot_program_column(&p, dialect, buf, len, &column);
+      mxDestroyArray(frames);
+      int per_row;
+      if (column > 0)
+        mexErrMsgIdAndTxt(status_id(s, &per_row), "line %zu, column %zu: %s", k + 1, column, cncrot_status_str(s));
+      raise_status(s, (long)k, n);
+    }
+    cncrot_program_frame(&p, f);
+    for (int i = 0; i < 4; i++)
+      for (int j = 0; j < 4; j++) fr[16 * k + i + 4 * j] = f[4 * i + j];
+  }
+  mxArray *F = mxCreateDoubleMatrix(4, 4, mxREAL);
+  double *fd = mxGetDoubles(F);
+  for (int i = 0; i < 4; i++)
+    for (int j = 0; j < 4; j++) fd[i + 4 * j] = f[4 * i + j];
+  plhs[0] = F;
+  if (nlhs > 1) plhs[1] = to_struct(&p);
+  if (nlhs > 2) plhs[2] = frames; else mxDestroyArray(frames);
+}
