@@ -718,14 +718,13 @@ mod tests {
         let (mant, exp) = split(v);
         // (2·mant + 1) · 2^(exp − 1) = (2·mant + 1) · 5^(1−exp) / 10^(1−exp) for exp < 1.
         let mut n = Big::<READ>::from_u64(2 * mant + 1);
-        let scale;
-        if exp < 1 {
+        let scale = if exp < 1 {
             n.mul_pow5((1 - exp) as u32).unwrap();
-            scale = (1 - exp) as usize;
+            (1 - exp) as usize
         } else {
             n.shl((exp - 1) as u32).unwrap();
-            scale = 0;
-        }
+            0
+        };
         let mut s = Vec::new();
         while !n.is_zero() {
             s.push(b'0' + n.div_small(10) as u8);
@@ -810,7 +809,7 @@ mod tests {
             (-0.0004, 3, "0"),
             (-0.0005, 3, "-0.001"), // 0.0005 is a little above 5e-4 in binary
             (1.005, 2, "1"),        // 1.005 is a little below in binary
-            (123456789.123456789, 4, "123456789.1235"),
+            (123456789.12345679, 4, "123456789.1235"),
             (1e-120, 3, "0"),
             (-359.99999, 3, "-360"),
         ];

@@ -42,6 +42,7 @@ fn r(axis: Axis, deg: f64) -> Matrix {
 }
 
 /// The worked numbers of docs/dialects.md (printed to six decimals).
+#[allow(clippy::approx_constant)]
 const SPATIAL_27_0_45: Matrix = [
     [0.707107, -0.630037, 0.321020],
     [0.707107, 0.630037, -0.321020],

@@ -362,8 +362,10 @@ mod tests {
         let mut bad = cncrot_program::default();
         bad.origin[1] = 1.0;
         assert_eq!(load(&bad), Err(Error::BadState));
-        let mut bad = cncrot_program::default();
-        bad.options = 2;
+        let bad = cncrot_program {
+            options: 2,
+            ..Default::default()
+        };
         assert_eq!(load(&bad), Err(Error::BadState));
         let mut bad = c;
         bad.origin[2] = f64::NAN;
