@@ -22,7 +22,13 @@ fn as_bytes<T>(v: &T) -> Vec<u8> {
 fn forms(dialect: i32) -> &'static [&'static CStr] {
     match dialect {
         1 => &[c"CYCLE800", c"CYCLE800 185", c"ROT", c"ROT EULER"],
-        2 => &[c"PLANE SPATIAL", c"PLANE EULER", c"PLANE VECTOR", c"PLANE POINTS", c"PLANE PROJECTED"],
+        2 => &[
+            c"PLANE SPATIAL",
+            c"PLANE EULER",
+            c"PLANE VECTOR",
+            c"PLANE POINTS",
+            c"PLANE PROJECTED",
+        ],
         3 => &[c"G68.2"],
         4 => &[c"G158", c"G158 P10159", c"G68.2"],
         5 => &[c"ROT"],
@@ -59,12 +65,22 @@ fuzz_target!(|data: &[u8]| {
         let mut column = usize::MAX;
         // SAFETY: as above.
         let c = unsafe {
-            cncrot_program_column(&again, dialect, line.as_ptr().cast(), line.len(), &mut column)
+            cncrot_program_column(
+                &again,
+                dialect,
+                line.as_ptr().cast(),
+                line.len(),
+                &mut column,
+            )
         };
         assert_eq!(c, s, "the column function disagrees");
         if s < 0 {
             assert_eq!(as_bytes(&p), before, "status {s} changed the program");
-            assert!(column <= line.len() + 1, "column {column} of {}", line.len());
+            assert!(
+                column <= line.len() + 1,
+                "column {column} of {}",
+                line.len()
+            );
             if s == -19 || s == -20 || s == -21 {
                 assert!(column >= 1);
             }
@@ -88,7 +104,14 @@ fn round_trips(dialect: i32, f: &[f64; 16]) {
             let mut out = [0x5Au8; CNCROT_PROGRAM_LINE_MAX + 1];
             // SAFETY: valid pointers, out holds cap bytes.
             let s = unsafe {
-                cncrot_program_write(dialect, form.as_ptr(), g.as_ptr(), -1, out.as_mut_ptr().cast(), out.len())
+                cncrot_program_write(
+                    dialect,
+                    form.as_ptr(),
+                    g.as_ptr(),
+                    -1,
+                    out.as_mut_ptr().cast(),
+                    out.len(),
+                )
             };
             input::assert_known(s);
             if s < 0 {
@@ -108,7 +131,11 @@ fn round_trips(dialect: i32, f: &[f64; 16]) {
             let line = String::from_utf8_lossy(&out[..n]);
             assert_eq!(r, 0, "{line}");
             let h = frame(&q);
-            let d = h.iter().zip(g).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+            let d = h
+                .iter()
+                .zip(g)
+                .map(|(a, b)| (a - b).abs())
+                .fold(0.0, f64::max);
             // Rotations to 1e-12; origins relative to their size.
             assert!(d <= 1e-11 * scale, "{line}: {d:e}");
         }

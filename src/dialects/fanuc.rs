@@ -90,10 +90,7 @@ pub const G69: Frame = Frame::IDENTITY;
 use super::program::{address_words, Cursor, FormSpec, LineError, Program, Syntax};
 use crate::decimal::{Out, Style};
 
-const SYNTAX: Syntax = Syntax {
-    ex: false,
-    ends: b"(;",
-};
+const SYNTAX: Syntax = super::program::G_WORDS;
 
 /// `G68.2`, `G68.4`, `G69`, `G53.1`/`G53.6` at the cursor (also Syntec's `G68.2` mode):
 /// `None` when none of them stands there.
@@ -135,7 +132,7 @@ pub(crate) fn read_g68(p: &Program, c: &mut Cursor) -> Option<Result<Program, Li
 /// Numbers without a point are whole units (calculator-type input [choice: a parameter of
 /// the control; write the point to be safe]).
 #[inline(never)]
-pub(crate) fn read_line(p: &Program, text: &[u8], _syntec: bool) -> Result<Program, LineError> {
+pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
     let mut c = Cursor::new(text);
     if c.peek() == Some(b'%') {
         c.bump();

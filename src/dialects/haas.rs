@@ -68,10 +68,7 @@ pub const G269: Frame = Frame::IDENTITY;
 
 use super::program::{address_words, whole, Cursor, LineError, Program, Syntax};
 
-const SYNTAX: Syntax = Syntax {
-    ex: false,
-    ends: b"(;",
-};
+const SYNTAX: Syntax = super::program::G_WORDS;
 
 /// One block of a Haas program: `G268 X Y Z I J K Q` (omitted `X … K` are 0; `Q` is
 /// required [choice: Haas's default is not public]), `G269` (cancel), `G253` (orients the

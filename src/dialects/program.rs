@@ -133,7 +133,7 @@ impl Program {
         let mut next = match dialect {
             Dialect::Sinumerik => sinumerik::read_line(self, text)?,
             Dialect::Heidenhain => heidenhain::read_line(self, text)?,
-            Dialect::Fanuc => fanuc::read_line(self, text, false)?,
+            Dialect::Fanuc => fanuc::read_line(self, text)?,
             Dialect::Syntec => syntec::read_line(self, text)?,
             Dialect::Twincat => twincat::read_line(self, text)?,
             Dialect::Haas => haas::read_line(self, text)?,
@@ -340,6 +340,13 @@ pub(crate) struct Syntax {
     /// Characters that end a number besides spaces and the end (`,` `)` in calls, `;` `(`).
     pub ends: &'static [u8],
 }
+
+/// Numbers of the address-word dialects (Fanuc, Syntec, Haas, TwinCAT): no exponent, ended
+/// by a comment.
+pub(crate) const G_WORDS: Syntax = Syntax {
+    ex: false,
+    ends: b"(;",
+};
 
 /// A position in a line, with the scanning the dialects share. Columns are 1-based bytes.
 pub(crate) struct Cursor<'a> {

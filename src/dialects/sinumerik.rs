@@ -488,7 +488,7 @@ fn at(column: usize) -> impl Fn(Error) -> LineError {
 /// `CYCLE800()` and `_TC = "0"` deselect the swivel [doc]; `_ST` units digit 0 new plane,
 /// 1 additive [choice], the higher digits (tool alignment, …) do not change the plane;
 /// `_DIR`, `_FR`, `_FR_I`, `_DMODE` choose motion and solution, not the plane.
-fn cycle800_line(p: &Program, c: &mut Cursor, column: usize) -> Result<Program, LineError> {
+fn cycle800_line(p: &Program, c: &mut Cursor) -> Result<Program, LineError> {
     let args = Args::<16>::read(c, 1)?;
     c.end(true, false)?;
     if args.n == 0 {
@@ -497,7 +497,6 @@ fn cycle800_line(p: &Program, c: &mut Cursor, column: usize) -> Result<Program, 
     if args.n < 4 {
         return Err(c.error(Error::MissingWord));
     }
-    let _ = column;
     args.int(0)?;
     let tc = args.name(1)?;
     let st = args.int(2)?;
@@ -578,7 +577,7 @@ pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> 
     }
     let column = c.column();
     if c.keyword(b"CYCLE800") {
-        return cycle800_line(p, &mut c, column);
+        return cycle800_line(p, &mut c);
     }
     if c.keyword(b"CYCLE600") {
         return cycle600_line(p, &mut c, column);

@@ -140,10 +140,7 @@ fn normal(n: Vector) -> Result<Matrix, Error> {
 
 use super::program::{address_words, whole, Cursor, LineError, Program, Syntax};
 
-const SYNTAX: Syntax = Syntax {
-    ex: false,
-    ends: b"(;",
-};
+const SYNTAX: Syntax = super::program::G_WORDS;
 
 /// One block of a Syntec program: `G158 L P X Y Z A B C U V W` (omitted words are 0, `L`
 /// accepted and ignored [choice: not documented]; `G158` without words cancels [choice]),

@@ -85,10 +85,7 @@ pub fn rot_angles(m: &Matrix) -> Result<([f64; 3], bool), Error> {
 use super::program::{address_words, Cursor, LineError, Program, Syntax};
 use crate::decimal::{Out, Style};
 
-const SYNTAX: Syntax = Syntax {
-    ex: false,
-    ends: b";(",
-};
+const SYNTAX: Syntax = super::program::G_WORDS;
 
 /// One block of a TwinCAT NC I program: `ROT X Y Z` (no words: cancel), `AROT X Y Z`, and
 /// `RotExOn`/`RotExOff` (no frame change), with a block number and `( … )` or `;`
