@@ -6,7 +6,10 @@
 //! Expected values come from an oracle independent of the library (double-double arithmetic
 //! for `MᵀM − I`, Rust's exact `%` for the reduction of angles) or from identities.
 
+mod common;
+
 use cncrot::ffi::*;
+use common::Rng;
 use std::ptr::{null, null_mut};
 
 const NOT_A_ROTATION: i32 = cncrot_status::NotARotation as i32;
@@ -16,23 +19,18 @@ const UNKNOWN_HEAD: i32 = cncrot_status::UnknownHead as i32;
 const NOT_FINITE: i32 = cncrot_status::NotFinite as i32;
 const BAD_ARGUMENT: i32 = cncrot_status::BadArgument as i32;
 
-/// xorshift64: deterministic inputs, no dependency.
-struct Rng(u64);
-impl Rng {
+/// The tests' shared generator, with the two draws this file needs.
+trait Draws {
+    fn next(&mut self) -> u64;
+    fn sign(&mut self) -> f64;
+}
+
+impl Draws for Rng {
     fn next(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
-    }
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.unit()
+        self.next_u64()
     }
     fn sign(&mut self) -> f64 {
-        if self.next() & 1 == 0 {
+        if self.next_u64() & 1 == 0 {
             1.0
         } else {
             -1.0
@@ -188,7 +186,7 @@ fn hostile_matrix(rng: &mut Rng) -> [f64; 9] {
 
 #[test]
 fn check_rotation_accepts_no_non_rotation_against_a_double_double_oracle() {
-    let mut rng = Rng(0x5DEE_CE66_D1CE_4E5B);
+    let mut rng = Rng::new(0x5DEE_CE66_D1CE_4E5B);
     let (mut accepted, mut refused, mut boundary) = (0, 0, 0);
     for _ in 0..200_000 {
         let m = hostile_matrix(&mut rng);
@@ -382,7 +380,7 @@ fn every_single_bit_flip_of_a_state_is_refused_and_leaves_it_untouched() {
 
 #[test]
 fn random_states_are_refused() {
-    let mut rng = Rng(0xC0FF_EE00_1234_5678);
+    let mut rng = Rng::new(0xC0FF_EE00_1234_5678);
     for k in 0..100_000 {
         let b: Vec<u8> = (0..216).map(|_| rng.next() as u8).collect();
         let mut g = from_bytes(&b);
@@ -424,7 +422,7 @@ const CHAIN: usize = 1_000_000;
 
 #[test]
 fn a_million_additive_rotations_stay_orthonormal() {
-    let mut rng = Rng(0x1234_5678_9ABC_DEF1);
+    let mut rng = Rng::new(0x1234_5678_9ABC_DEF1);
     let mut m = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
     let mut worst: f64 = 0.0;
     for k in 0..CHAIN {
@@ -446,7 +444,7 @@ fn a_million_additive_rotations_stay_orthonormal() {
 
 #[test]
 fn a_million_additive_cycle600_calls_stay_orthonormal() {
-    let mut rng = Rng(0x0F0F_1234_5678_9ABC);
+    let mut rng = Rng::new(0x0F0F_1234_5678_9ABC);
     let mut g: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
     let mut worst: f64 = 0.0;
     for k in 0..CHAIN {
@@ -469,7 +467,7 @@ fn a_million_additive_cycle600_calls_stay_orthonormal() {
 /// not drift either.
 #[test]
 fn composed_frames_stay_orthonormal() {
-    let mut rng = Rng(0xABCD_EF01_2345_6789);
+    let mut rng = Rng::new(0xABCD_EF01_2345_6789);
     let mut f = [
         1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
     ];
@@ -550,7 +548,7 @@ const CODES: [i32; 12] = [57, 45, 54, 30, 39, 27, 25, 29, 38, 46, 55, 59];
 
 #[test]
 fn every_export_that_takes_angles_gives_the_reduced_rotation_or_refuses() {
-    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    let mut rng = Rng::new(0x9E37_79B9_7F4A_7C15);
     let r0 = matrix(1, 57, [10.0, 20.0, 30.0]);
     for _ in 0..20_000 {
         let a = [

@@ -3,8 +3,11 @@
 //! every writer read back by its own dialect; every pair of dialects and forms converted
 //! through text, with random and with singular frames.
 
+mod common;
+
 use cncrot::dialects::program::{write_line, Dialect, LineError, Program};
 use cncrot::{elementary, mul, Axis, Error, Frame, Matrix};
+use common::Rng;
 
 fn read(d: Dialect, lines: &[&str]) -> Program {
     let mut p = Program::default();
@@ -228,7 +231,7 @@ fn twincat_the_manuals_examples() {
     assert_eq!(p.angles, [0.0, 0.0, 45.0]);
     assert!(dist(&p.frame.rotation, &r(Axis::Z, 45.0)) < 1e-15);
     // After ROT Z45, CalcInvRot of (40, 10, 0) is (35.36, -21.21, 0): Fᵀ·v.
-    let f = rot(d, &["N30 ROT Z45 (rotate)"]).map(|row| row);
+    let f = rot(d, &["N30 ROT Z45 (rotate)"]);
     let v = [40.0, 10.0, 0.0];
     let back: Vec<f64> = (0..3)
         .map(|k| (0..3).map(|i| f[i][k] * v[i]).sum())
@@ -487,28 +490,18 @@ fn has_origin(form: &str) -> bool {
     )
 }
 
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
 /// Random frames, and the singular ones: middle angles of ±90 and 0/180 in each
 /// dialect's convention, from the rotations that put a new axis on an old one.
 fn frames() -> Vec<Frame> {
-    let mut rng = Rng(0x1234_5678_9ABC_DEF1);
+    let mut rng = Rng::new(0x1234_5678_9ABC_DEF1);
     let mut out = Vec::new();
     for _ in 0..60 {
-        let a = [0; 3].map(|_| rng.next() * 360.0 - 180.0);
+        let a = [0; 3].map(|_| rng.range(-180.0, 180.0));
         let m = mul(
             &mul(&r(Axis::Z, a[0]), &r(Axis::Y, a[1] / 2.0)),
             &r(Axis::X, a[2]),
         );
-        let t = [0; 3].map(|_| rng.next() * 400.0 - 200.0);
+        let t = [0; 3].map(|_| rng.range(-200.0, 200.0));
         out.push(Frame::with_translations(t, m, [0.0; 3]));
     }
     for (axis, deg) in [
