@@ -149,6 +149,34 @@ impl Program {
         Ok(next)
     }
 
+    /// Whether this state is one that reading lines can leave: finite, its frame a rotation,
+    /// TwinCAT's rotation the one of its angles and no angles in the other dialects (a state
+    /// restored from elsewhere is checked before use).
+    ///
+    /// ```
+    /// use cncrot::dialects::program::{Dialect, Program};
+    /// let p = Program::default().line(Dialect::Twincat, b"ROT Z30").unwrap();
+    /// assert!(p.check().is_ok());
+    /// assert!(Program { angles: [0.0, 0.0, 31.0], ..p }.check().is_err());
+    /// ```
+    pub fn check(&self) -> Result<(), Error> {
+        let numbers = self.frame.translation.iter().chain(&self.angles);
+        if !numbers.into_iter().all(|x| x.is_finite()) {
+            return Err(Error::NotFinite);
+        }
+        crate::check_rotation(&self.frame.rotation)?;
+        let consistent = if self.dialect == Some(Dialect::Twincat) {
+            twincat::matrix(self.angles) == self.frame.rotation
+        } else {
+            self.angles == [0.0; 3]
+        };
+        if consistent {
+            Ok(())
+        } else {
+            Err(Error::BadArgument)
+        }
+    }
+
     /// This state with `frame` active (TwinCAT's angles cleared: they belong to `ROT`).
     pub(crate) fn with_frame(&self, frame: Frame) -> Program {
         Program {
@@ -297,7 +325,7 @@ fn parse_form(dialect: Dialect, text: &[u8]) -> Result<FormSpec, Error> {
     Ok(found)
 }
 
-/// Writes ` <name><number>` (or `<name>=<number>` with `equals`).
+/// Writes `<name><number>` (the name carries its leading space and any `=`).
 pub(crate) fn write_word(
     out: &mut Out,
     name: &[u8],
@@ -468,7 +496,7 @@ impl<'a> Cursor<'a> {
         }
     }
 
-    /// A name (letters, digits, `_`) starting here; its start column and bytes.
+    /// A name (letters, digits, `_`) starting here.
     pub fn name(&mut self) -> &'a [u8] {
         let start = self.pos;
         while self.peek().is_some_and(is_name) {

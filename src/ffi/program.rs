@@ -4,7 +4,6 @@
 use super::frame::{read_frame, write_frame};
 use super::{cncrot_status, guard, non_null};
 use crate::dialects::program::{self, Dialect, Program};
-use crate::dialects::twincat;
 use crate::{Error, Frame};
 use core::ffi::c_char;
 
@@ -61,34 +60,22 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
     if c.options & !CNCROT_PROGRAM_SINUMERIK_EULER != 0 || c.reserved != 0 {
         return Err(Error::BadState);
     }
-    let numbers = c.rotation.iter().chain(&c.origin).chain(&c.angles);
-    if !numbers.into_iter().all(|x| x.is_finite()) {
-        return Err(Error::BadState);
-    }
     let frame = match c.active {
         0 if c.rotation == [0.0; 9] && c.origin == [0.0; 3] => Frame::IDENTITY,
         1 => {
             let r = core::array::from_fn(|i| core::array::from_fn(|j| c.rotation[3 * i + j]));
-            crate::check_rotation(&r).map_err(|_| Error::BadState)?;
             Frame::with_translations(c.origin, r, [0.0; 3])
         }
         _ => return Err(Error::BadState),
     };
-    // TwinCAT's rotation is a function of its angles; elsewhere there are none.
-    let consistent = if dialect == Some(Dialect::Twincat) {
-        twincat::matrix(c.angles) == frame.rotation
-    } else {
-        c.angles == [0.0; 3]
-    };
-    if !consistent {
-        return Err(Error::BadState);
-    }
-    Ok(Program {
+    let p = Program {
         frame,
         angles: c.angles,
         dialect,
         euler: c.options & CNCROT_PROGRAM_SINUMERIK_EULER != 0,
-    })
+    };
+    p.check().map_err(|_| Error::BadState)?;
+    Ok(p)
 }
 
 fn store(p: &Program, options: u32) -> cncrot_program {
