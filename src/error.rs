@@ -26,8 +26,8 @@ pub enum Error {
     Degenerate,
     /// A parameter outside its documented domain (a value other than the allowed ones).
     BadArgument,
-    /// The requested capability needs something this build does not have (CYCLE600 head
-    /// positioning needs the machine kinematics).
+    /// The requested capability needs something the call did not provide (a machine
+    /// description for positions of rotary axes).
     NotAvailable,
     /// CYCLE600: the accessory name is not in the head table.
     UnknownHead,
@@ -64,6 +64,10 @@ pub enum Error {
     LineTooLong,
     /// The caller's text buffer is too small for the line.
     NoRoom,
+    /// No positions of the machine's rotary axes give that orientation.
+    Unreachable,
+    /// The orientation is reachable, but only outside the rotary axes' travel limits.
+    OutOfTravel,
 }
 
 impl fmt::Display for Error {
@@ -83,7 +87,7 @@ impl Error {
             Error::NotARotation => "matrix is not a rotation (not orthonormal, or a reflection)",
             Error::Degenerate => "matrix is singular or nearest to a reflection",
             Error::BadArgument => "parameter outside its allowed values",
-            Error::NotAvailable => "not available: needs the machine kinematics",
+            Error::NotAvailable => "not available: needs a machine description (rotary axes)",
             Error::UnknownHead => "accessory name not found in the head table",
             Error::NameTooLong => "name longer than its field",
             Error::Parse => "text could not be read (a malformed number or line)",
@@ -97,6 +101,8 @@ impl Error {
             Error::MissingWord => "a word the command requires is missing",
             Error::LineTooLong => "line longer than the controller accepts",
             Error::NoRoom => "the text does not fit the buffer",
+            Error::Unreachable => "no rotary-axis positions of the machine give that orientation",
+            Error::OutOfTravel => "the orientation is reachable only outside the travel limits",
             Error::BadState => {
                 "stored CYCLE600 state is corrupt, edited or from another version (format or checksum)"
             }

@@ -18,7 +18,8 @@
 //!
 //! Module map: [`math`](crate) (the only place floating-point functions are called),
 //! `sequence` (axis codes), `rotation` (the mathematics), `frame` (translations),
-//! `dialects` (controller commands), `ffi` (the C boundary, no mathematics).
+//! `dialects` (controller commands), `kinematics` (rotary-axis positions of real
+//! machines), `ffi` (the C boundary, no mathematics).
 
 #![cfg_attr(not(feature = "std"), no_std)]
 #![deny(missing_docs)]
@@ -28,6 +29,7 @@ mod decimal;
 pub mod dialects;
 mod error;
 mod frame;
+pub mod kinematics;
 mod math;
 mod rotation;
 mod sequence;

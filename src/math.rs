@@ -63,8 +63,8 @@ mod imp {
     }
 }
 
-pub use imp::{atan2, sqrt};
-use imp::{cos, fmod, round, sin};
+pub use imp::{atan2, round, sqrt};
+use imp::{cos, fmod, sin};
 
 /// `|x|` without `std` (clears the sign bit).
 #[inline]

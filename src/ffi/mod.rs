@@ -39,6 +39,13 @@ pub enum cncrot_status {
     Ok = 0,
     /// Success; the decomposition is singular (only θ1 ± θ3 determined, θ3 set to 0).
     Singular = 1,
+    /// Success at a singular pose of the machine: a rotary axis is free (the target
+    /// direction lies along it) and was kept at its current position (at 0 in
+    /// `cncrot_machine_inverse`, which returns the family once).
+    FreeAxis = 2,
+    /// Success; a Hirth axis was snapped to its grid: the residual is in the remaining
+    /// frame.
+    Snapped = 3,
     /// A pointer argument is NULL.
     NullPointer = -1,
     /// A floating-point argument is NaN or infinite.
@@ -56,7 +63,7 @@ pub enum cncrot_status {
     Degenerate = -7,
     /// A parameter outside its allowed values.
     BadArgument = -8,
-    /// Not available in this version (needs the machine kinematics).
+    /// Not available without a machine description (rotary-axis positions need one).
     NotAvailable = -9,
     /// The accessory name is not in the head table.
     UnknownHead = -10,
@@ -89,6 +96,10 @@ pub enum cncrot_status {
     LineTooLong = -22,
     /// The caller's text buffer is too small.
     NoRoom = -23,
+    /// No positions of the machine's rotary axes give the orientation.
+    Unreachable = -24,
+    /// The orientation is reachable only outside the rotary axes' travel limits.
+    OutOfTravel = -25,
     /// Internal failure (a caught panic): a bug in cncrot, please report it.
     Internal = -100,
 }
@@ -123,6 +134,8 @@ impl From<Error> for cncrot_status {
             Error::MissingWord => cncrot_status::MissingWord,
             Error::LineTooLong => cncrot_status::LineTooLong,
             Error::NoRoom => cncrot_status::NoRoom,
+            Error::Unreachable => cncrot_status::Unreachable,
+            Error::OutOfTravel => cncrot_status::OutOfTravel,
         }
     }
 }
@@ -148,7 +161,9 @@ pub extern "C" fn cncrot_status_str(status: i32) -> *const c_char {
         -6 => c"CNCROT_STATUS_NOT_A_ROTATION: matrix is not a rotation (not orthonormal within 1e-3, a reflection, or a frame whose last row is not 0 0 0 1)",
         -7 => c"CNCROT_STATUS_DEGENERATE: matrix is singular or nearest to a reflection",
         -8 => c"CNCROT_STATUS_BAD_ARGUMENT: parameter outside its allowed values",
-        -9 => c"CNCROT_STATUS_NOT_AVAILABLE: not available: needs the machine kinematics",
+        2 => c"CNCROT_STATUS_FREE_AXIS: success at a singular pose; a rotary axis is free and was kept at its current position",
+        3 => c"CNCROT_STATUS_SNAPPED: success; a Hirth axis was snapped to its grid, the residual is in the remaining frame",
+        -9 => c"CNCROT_STATUS_NOT_AVAILABLE: not available: needs a machine description (rotary axes)",
         -10 => c"CNCROT_STATUS_UNKNOWN_HEAD: accessory name not found in the head table",
         -11 => c"CNCROT_STATUS_NAME_TOO_LONG: name longer than its field",
         -12 => c"CNCROT_STATUS_PARSE: text could not be read (a malformed number or line)",
@@ -162,6 +177,8 @@ pub extern "C" fn cncrot_status_str(status: i32) -> *const c_char {
         -21 => c"CNCROT_STATUS_MISSING_WORD: a word the command requires is missing",
         -22 => c"CNCROT_STATUS_LINE_TOO_LONG: line longer than the controller accepts",
         -23 => c"CNCROT_STATUS_NO_ROOM: the text does not fit the buffer",
+        -24 => c"CNCROT_STATUS_UNREACHABLE: no rotary-axis positions of the machine give that orientation",
+        -25 => c"CNCROT_STATUS_OUT_OF_TRAVEL: the orientation is reachable only outside the travel limits",
         -15 => c"CNCROT_STATUS_BAD_STATE: stored CYCLE600 state is corrupt, edited or from another version (format or checksum)",
         -100 => c"CNCROT_STATUS_INTERNAL: internal failure (caught panic), please report",
         _ => c"CNCROT_STATUS_UNKNOWN: not a cncrot status",
@@ -314,6 +331,8 @@ mod tests {
         let all = [
             S::Ok,
             S::Singular,
+            S::FreeAxis,
+            S::Snapped,
             S::NullPointer,
             S::NotFinite,
             S::BadFlag,
@@ -337,6 +356,8 @@ mod tests {
             S::MissingWord,
             S::LineTooLong,
             S::NoRoom,
+            S::Unreachable,
+            S::OutOfTravel,
             S::Internal,
         ];
         for s in all {

@@ -1,0 +1,201 @@
+//! The choice among the solutions: travel limits, whole-turn unwinding, Hirth grids, and
+//! the controllers' rules (CYCLE800 minus/plus, Heidenhain `SEQ±`, CYCLE600 `_ROT_INV`).
+
+use super::{Machine, RotaryAxis, MAX_AXES, MAX_SOLUTIONS};
+use crate::math::{round, turns_toward};
+use crate::{check_rotation, mul, transpose, Error, Matrix, CLOSEST_MAX};
+
+/// Which solution [`Machine::choose`] takes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Rule {
+    /// The one closest to the current positions (sum of squared differences): what
+    /// SINUMERIK does for a frame ("the pair closest to the current positions").
+    Closest,
+    /// The lower position of the given axis (0-based): CYCLE800 "minus" on the
+    /// direction-reference axis; Heidenhain `SEQ-` on the master axis.
+    Minus(usize),
+    /// The higher position of the given axis: CYCLE800 "plus", Heidenhain `SEQ+`.
+    Plus(usize),
+    /// The other one of the pair: the paper's `_ROT_INV = 1` (the same orientation with the
+    /// axes in the inverse position). The closest when there is no other.
+    Inverse,
+}
+
+/// The positions [`Machine::choose`] chose.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Choice {
+    /// Axis positions to move to, degrees, unwound to the current positions and on the
+    /// Hirth grids; unused axes 0.
+    pub axes: [f64; MAX_AXES],
+    /// Hirth snapping: the position moved to minus the exact one, per axis (0 without a
+    /// grid).
+    pub residual: [f64; MAX_AXES],
+    /// The rotation the axes leave to the frame: `Fᵀ·target` with `F` the tool frame at
+    /// `axes` — a rotation about the tool axis for machines with fewer than three axes,
+    /// plus the Hirth residual.
+    pub remaining: Matrix,
+    /// A singular pose: a free axis was kept at its current position.
+    pub free: bool,
+}
+
+/// Where an axis goes: the turn of `angle` nearest to `current` within the travel, snapped
+/// to the Hirth grid. `None` when no turn (or no tooth) lies within the travel.
+fn place(axis: &RotaryAxis, angle: f64, current: f64) -> Option<(f64, f64)> {
+    let mut x = angle + turns_toward(angle, current) + 0.0;
+    if let Some([lo, hi]) = axis.limits {
+        if x > hi {
+            x -= 360.0 * libm_ceil((x - hi) / 360.0);
+        } else if x < lo {
+            x += 360.0 * libm_ceil((lo - x) / 360.0);
+        }
+    }
+    let exact = x;
+    if let Some(h) = axis.hirth {
+        x = h.offset + round((x - h.offset) / h.step) * h.step + 0.0;
+        if let Some([lo, hi]) = axis.limits {
+            if x > hi {
+                x -= h.step;
+            } else if x < lo {
+                x += h.step;
+            }
+        }
+    }
+    let fits = axis.limits.map_or(true, |[lo, hi]| x >= lo && x <= hi);
+    fits.then_some((x, x - exact + 0.0))
+}
+
+/// `ceil` for the small positive quotients of `place` (no `std`).
+fn libm_ceil(x: f64) -> f64 {
+    let r = round(x);
+    if r < x {
+        r + 1.0
+    } else {
+        r
+    }
+}
+
+impl Machine {
+    /// The axis positions to move to for the orientation `target`, seen from `current`
+    /// positions (degrees; unused axes 0).
+    ///
+    /// Every solution of [`Machine::inverse`] is brought to the whole turn nearest to the
+    /// current position (computed 10°, current 750° → 730°), or, on an axis with travel
+    /// limits, to the turn nearest to it within them, and snapped to the axis' Hirth grid;
+    /// a solution that does not fit the travel is skipped and the other taken. Of those
+    /// left, `rule` picks one. A free axis (singular pose) stays at its current position.
+    ///
+    /// Errors: [`Error::Unreachable`] (no positions give the orientation),
+    /// [`Error::OutOfTravel`] (only outside the travel limits), [`Error::BadArgument`] (a
+    /// rule's axis that the machine does not have, a nonzero unused position),
+    /// [`Error::OutOfRange`] (a current position beyond ±65 536°), [`Error::NotFinite`],
+    /// [`Error::NotARotation`].
+    ///
+    /// ```
+    /// use cncrot::kinematics::{Machine, RotaryAxis, Rule, Side};
+    /// use cncrot::{elementary, Axis};
+    /// let m = Machine::new([0.0, 0.0, 1.0]).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3])).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3])).unwrap();
+    /// let target = elementary(Axis::Y, 30.0);
+    /// // From C = 750°: C = 720°, B = 30° (the other pair would need C = 900° or 540°).
+    /// let c = m.choose(&target, [750.0, 0.0, 0.0], Rule::Closest).unwrap();
+    /// assert!((c.axes[0] - 720.0).abs() < 1e-9 && (c.axes[1] - 30.0).abs() < 1e-9);
+    /// // "Minus" on B takes B = -30°.
+    /// let c = m.choose(&target, [0.0; 3], Rule::Minus(1)).unwrap();
+    /// assert!((c.axes[1] + 30.0).abs() < 1e-9);
+    /// ```
+    pub fn choose(
+        &self,
+        target: &Matrix,
+        current: [f64; MAX_AXES],
+        rule: Rule,
+    ) -> Result<Choice, Error> {
+        check_rotation(target)?;
+        let current = self.positions(current)?;
+        // Written so that NaN refuses.
+        if !current.iter().all(|x| crate::math::abs(*x) < CLOSEST_MAX) {
+            return Err(Error::OutOfRange);
+        }
+        let n = self.axes().len();
+        if let Rule::Minus(k) | Rule::Plus(k) = rule {
+            if k >= n {
+                return Err(Error::BadArgument);
+            }
+        }
+        let solutions = self.solve(target, current)?;
+        let mut placed = [([0.0; MAX_AXES], [0.0; MAX_AXES], 0.0f64); MAX_SOLUTIONS];
+        let mut count = 0;
+        'solutions: for s in solutions.as_slice() {
+            let mut axes = [0.0; MAX_AXES];
+            let mut residual = [0.0; MAX_AXES];
+            let mut distance = 0.0;
+            for (k, a) in self.axes().iter().enumerate() {
+                let (Some(&angle), Some(&cur)) = (s.get(k), current.get(k)) else {
+                    continue;
+                };
+                let Some((x, r)) = place(a, angle, cur) else {
+                    continue 'solutions;
+                };
+                if let (Some(ax), Some(re)) = (axes.get_mut(k), residual.get_mut(k)) {
+                    *ax = x;
+                    *re = r;
+                }
+                distance += (x - cur) * (x - cur);
+            }
+            if let Some(slot) = placed.get_mut(count) {
+                *slot = (axes, residual, distance);
+                count += 1;
+            }
+        }
+        let placed = placed.get(..count).unwrap_or(&[]);
+        let closest = |skip: Option<usize>| {
+            let mut best: Option<usize> = None;
+            for (i, p) in placed.iter().enumerate() {
+                if Some(i) == skip {
+                    continue;
+                }
+                if best.map_or(true, |b| placed.get(b).map_or(true, |q| p.2 < q.2)) {
+                    best = Some(i);
+                }
+            }
+            best
+        };
+        let by_axis = |k: usize, higher: bool| {
+            let mut best: Option<usize> = None;
+            for (i, p) in placed.iter().enumerate() {
+                let better = match best.and_then(|b| placed.get(b)) {
+                    None => true,
+                    Some(q) => {
+                        let (x, y) = (p.0.get(k).copied(), q.0.get(k).copied());
+                        // Equal positions: the closer one.
+                        if x == y {
+                            p.2 < q.2
+                        } else {
+                            (x > y) == higher
+                        }
+                    }
+                };
+                if better {
+                    best = Some(i);
+                }
+            }
+            best
+        };
+        let pick = match rule {
+            Rule::Closest => closest(None),
+            Rule::Minus(k) => by_axis(k, false),
+            Rule::Plus(k) => by_axis(k, true),
+            Rule::Inverse => closest(closest(None)).or(closest(None)),
+        };
+        let Some(&(axes, residual, _)) = pick.and_then(|i| placed.get(i)) else {
+            return Err(Error::OutOfTravel);
+        };
+        let reached = self.rotation_at(axes);
+        Ok(Choice {
+            axes,
+            residual,
+            remaining: mul(&transpose(&reached), target),
+            free: solutions.free,
+        })
+    }
+}

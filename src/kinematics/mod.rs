@@ -1,0 +1,437 @@
+//! Swivel kinematics: rotary-axis positions of a real machine (swivel head, rotary table,
+//! both, up to three rotary axes) to the frame they give, and back.
+//!
+//! A rotary axis is a unit direction `v` and a point `p` on it, both in machine coordinates
+//! with every rotary axis at its initial position. Positive rotation is the right-hand rule
+//! about `v`, applied to the part the axis moves: the tool (tool side) or the workpiece (work
+//! side). Axes are given outermost first: an axis added after another on the same side is
+//! carried by it. With `H_k(a)` the turn by `a` about the line through `p_k` along `v_k`,
+//!
+//! - the tool adapter sits at `T = H_1·H_2…` over the tool-side axes,
+//! - the workpiece at `W = H_1·H_2…` over the work-side axes,
+//! - and the tool frame relative to the workpiece is `F = W⁻¹·T·B`, where `B` turns +Z onto
+//!   the tool's base direction (the identity for the usual +Z). Its third column is the tool
+//!   direction in workpiece coordinates; the tool tip for a length `L` is `F·(0, 0, −L)`.
+//!
+//! An axis at position `θ` turns by `θ − offset` (SINUMERIK `$TC_CARR24/25`: the position
+//! the axis reads in the described initial state).
+//!
+//! ```
+//! use cncrot::kinematics::{Machine, RotaryAxis, Side};
+//! // A fork head: C about Z, then A about X carried by it, both through the origin.
+//! let m = Machine::new([0.0, 0.0, 1.0]).unwrap()
+//!     .with_axis(RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3])).unwrap()
+//!     .with_axis(RotaryAxis::new(Side::Tool, [1.0, 0.0, 0.0], [0.0; 3])).unwrap();
+//! let f = m.forward([90.0, 30.0, 0.0]).unwrap();
+//! // The tool direction Rz(90)·Rx(30)·e_z = (0.5, 0, 0.866).
+//! assert!((f.rotation[0][2] - 0.5).abs() < 1e-15 && f.rotation[1][2].abs() < 1e-15);
+//! ```
+
+mod choose;
+mod solve;
+
+pub use choose::{Choice, Rule};
+pub use solve::{Solutions, POLE_SINE};
+
+use crate::math::sin_cos_deg;
+use crate::vector::{cross, dot};
+use crate::{mul, unit_vector, Error, Frame, Matrix, Vector, IDENTITY};
+
+/// The most rotary axes a machine has here (a table with a two-axis head).
+pub const MAX_AXES: usize = 3;
+/// The most isolated solutions an orientation has within one turn of every axis.
+pub const MAX_SOLUTIONS: usize = 2;
+/// Longest machine name in bytes (SINUMERIK `$TC_CARR34` holds 32 characters).
+pub const MACHINE_NAME_MAX: usize = 31;
+/// Below this sine two consecutive axes of the chain count as parallel: such a machine
+/// loses a degree of freedom everywhere and is refused [choice].
+pub const PARALLEL_SINE: f64 = 1e-6;
+/// A target closer than this (in radians of direction) to the reachable orientations is
+/// reached at the nearest reachable one; farther is [`Error::Unreachable`] [choice]. Well
+/// below any measurable angle (2e-8°), well above the rounding of a target computed in
+/// doubles (1e-15).
+pub const REACH_TOLERANCE: f64 = 1e-10;
+
+/// Which part a rotary axis turns.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Side {
+    /// The axis turns the tool (a swivel head).
+    Tool,
+    /// The axis turns the workpiece (a rotary or tilting table).
+    Work,
+}
+
+/// A Hirth tooth system: the axis stops only at `offset + k·step` degrees.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hirth {
+    /// Position of one tooth, degrees (`$TC_CARR26/27`).
+    pub offset: f64,
+    /// Tooth spacing, degrees, positive (`$TC_CARR28/29`).
+    pub step: f64,
+}
+
+/// One rotary axis of a machine.
+///
+/// ```
+/// use cncrot::kinematics::{RotaryAxis, Side};
+/// let c = RotaryAxis::new(Side::Work, [0.0, 0.0, -1.0], [100.0, 50.0, 0.0]);
+/// assert_eq!(c.limits, None); // modulo until limits are set
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RotaryAxis {
+    /// Tool or work side.
+    pub side: Side,
+    /// Direction `v` (any length when given; the machine keeps it as a unit vector).
+    pub direction: Vector,
+    /// A point `p` on the axis, millimetres.
+    pub point: Vector,
+    /// The position the axis reads in the described initial state, degrees.
+    pub offset: f64,
+    /// Travel limits `[min, max]`, degrees; `None`: a modulo axis without limits.
+    pub limits: Option<[f64; 2]>,
+    /// The Hirth grid, if the axis has one.
+    pub hirth: Option<Hirth>,
+}
+
+impl RotaryAxis {
+    /// An axis without offset, limits or Hirth grid.
+    pub const fn new(side: Side, direction: Vector, point: Vector) -> RotaryAxis {
+        RotaryAxis {
+            side,
+            direction,
+            point,
+            offset: 0.0,
+            limits: None,
+            hirth: None,
+        }
+    }
+
+    /// The axis made canonical (unit direction) and checked: finite numbers, a nonzero
+    /// direction, `min <= max`, a positive Hirth step.
+    fn checked(&self) -> Result<RotaryAxis, Error> {
+        let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
+        let limits = self.limits.unwrap_or([0.0; 2]);
+        let hirth = self.hirth.map_or([0.0, 1.0], |h| [h.offset, h.step]);
+        if !(finite(&self.direction)
+            && finite(&self.point)
+            && finite(&[self.offset])
+            && finite(&limits)
+            && finite(&hirth))
+        {
+            return Err(Error::NotFinite);
+        }
+        // Written so that NaN would refuse.
+        if !(limits[0] <= limits[1] && hirth[1] > 0.0) {
+            return Err(Error::BadArgument);
+        }
+        let direction = unit_vector(self.direction).map_err(|_| Error::BadArgument)?;
+        Ok(RotaryAxis { direction, ..*self })
+    }
+}
+
+/// A machine: up to three rotary axes, the tool's base direction and a name. Built by
+/// [`Machine::new`] and [`Machine::with_axis`], which check every part, so a `Machine` is
+/// always usable.
+///
+/// ```
+/// use cncrot::kinematics::{Machine, RotaryAxis, Side};
+/// // Two parallel axes in a row cannot tilt the tool in two directions: refused.
+/// let m = Machine::new([0.0, 0.0, 1.0]).unwrap()
+///     .with_axis(RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3])).unwrap();
+/// assert!(m.with_axis(RotaryAxis::new(Side::Tool, [0.0, 0.0, 2.0], [0.0; 3])).is_err());
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Machine {
+    axes: [RotaryAxis; MAX_AXES],
+    count: usize,
+    tool_direction: Vector,
+    name: [u8; MACHINE_NAME_MAX],
+    name_len: u8,
+}
+
+/// One link of the rotation chain `W⁻¹·T`: work-side axes innermost first with negated
+/// angles, then tool-side axes outermost first.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Link {
+    pub(crate) axis: Vector,
+    /// +1 on the tool side, -1 on the work side.
+    pub(crate) sign: f64,
+    /// Index of the machine axis (the order of addition).
+    pub(crate) index: usize,
+}
+
+impl Machine {
+    /// A machine without rotary axes whose tool points along `tool_direction` (any length)
+    /// when every axis is in its initial position; +Z on most machines.
+    pub fn new(tool_direction: Vector) -> Result<Machine, Error> {
+        if !tool_direction.iter().all(|x| x.is_finite()) {
+            return Err(Error::NotFinite);
+        }
+        let tool_direction = unit_vector(tool_direction).map_err(|_| Error::BadArgument)?;
+        Ok(Machine {
+            axes: [RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]); MAX_AXES],
+            count: 0,
+            tool_direction,
+            name: [0; MACHINE_NAME_MAX],
+            name_len: 0,
+        })
+    }
+
+    /// The machine with one more axis, carried by the axes already on its side.
+    /// Refused: a fourth axis ([`Error::TableFull`]), a non-finite number
+    /// ([`Error::NotFinite`]), a zero direction, `min > max`, a Hirth step ≤ 0, or two
+    /// consecutive axes of the chain parallel within [`PARALLEL_SINE`]
+    /// ([`Error::BadArgument`]).
+    pub fn with_axis(&self, axis: RotaryAxis) -> Result<Machine, Error> {
+        if self.count >= MAX_AXES {
+            return Err(Error::TableFull);
+        }
+        let mut next = *self;
+        if let Some(slot) = next.axes.get_mut(self.count) {
+            *slot = axis.checked()?;
+        }
+        next.count = self.count + 1;
+        let (chain, n) = next.chain();
+        for pair in chain.get(..n).unwrap_or(&[]).windows(2) {
+            if let [a, b] = pair {
+                let c = cross(a.axis, b.axis);
+                if dot(c, c) < PARALLEL_SINE * PARALLEL_SINE {
+                    return Err(Error::BadArgument);
+                }
+            }
+        }
+        Ok(next)
+    }
+
+    /// The machine with a name (printable ASCII, at most [`MACHINE_NAME_MAX`] bytes).
+    pub fn with_name(&self, name: &[u8]) -> Result<Machine, Error> {
+        if name.len() > MACHINE_NAME_MAX {
+            return Err(Error::NameTooLong);
+        }
+        if !name.iter().all(|b| (0x20..0x7f).contains(b)) {
+            return Err(Error::BadArgument);
+        }
+        let mut next = *self;
+        next.name = [0; MACHINE_NAME_MAX];
+        if let Some(dst) = next.name.get_mut(..name.len()) {
+            dst.copy_from_slice(name);
+        }
+        next.name_len = name.len() as u8;
+        Ok(next)
+    }
+
+    /// The axes, in the order they were added.
+    pub fn axes(&self) -> &[RotaryAxis] {
+        self.axes.get(..self.count).unwrap_or(&[])
+    }
+
+    /// The tool's base direction (a unit vector).
+    pub fn tool_direction(&self) -> Vector {
+        self.tool_direction
+    }
+
+    /// The name.
+    pub fn name(&self) -> &[u8] {
+        self.name.get(..usize::from(self.name_len)).unwrap_or(&[])
+    }
+
+    /// The rotation chain of `W⁻¹·T` and its length.
+    pub(crate) fn chain(&self) -> ([Link; MAX_AXES], usize) {
+        let mut chain = [Link {
+            axis: [0.0; 3],
+            sign: 1.0,
+            index: 0,
+        }; MAX_AXES];
+        let mut n = 0;
+        let axes = self.axes();
+        let work = axes
+            .iter()
+            .enumerate()
+            .rev()
+            .filter(|(_, a)| a.side == Side::Work);
+        let tool = axes
+            .iter()
+            .enumerate()
+            .filter(|(_, a)| a.side == Side::Tool);
+        for (index, a) in work.chain(tool) {
+            if let Some(link) = chain.get_mut(n) {
+                *link = Link {
+                    axis: a.direction,
+                    sign: if a.side == Side::Tool { 1.0 } else { -1.0 },
+                    index,
+                };
+                n += 1;
+            }
+        }
+        (chain, n)
+    }
+
+    /// `B`: the rotation that turns +Z onto the tool's base direction along the shortest
+    /// arc (a half turn about X for −Z) [choice].
+    pub(crate) fn base(&self) -> Matrix {
+        let b = self.tool_direction;
+        if b[2] <= -1.0 {
+            return [[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]];
+        }
+        // I + [k]× + [k]×²/(1 + c) with k = e_z × b, c = b_z: exact for axis directions.
+        let k = [-b[1], b[0], 0.0];
+        let s = 1.0 / (1.0 + b[2]);
+        let kx = [[0.0, -k[2], k[1]], [k[2], 0.0, -k[0]], [-k[1], k[0], 0.0]];
+        let kk = mul(&kx, &kx);
+        core::array::from_fn(|i| {
+            core::array::from_fn(|j| IDENTITY[i][j] + kx[i][j] + kk[i][j] * s + 0.0)
+        })
+    }
+
+    /// Checks the positions: finite; unused axes must be 0.
+    fn positions(&self, axes: [f64; MAX_AXES]) -> Result<[f64; MAX_AXES], Error> {
+        if !axes.iter().all(|x| x.is_finite()) {
+            return Err(Error::NotFinite);
+        }
+        if axes.iter().skip(self.count).any(|&x| x != 0.0) {
+            return Err(Error::BadArgument);
+        }
+        Ok(axes)
+    }
+
+    /// The rotation part of `F` for positions `θ` (degrees): `R_W⁻¹·R_T·B`.
+    pub(crate) fn rotation_at(&self, theta: [f64; MAX_AXES]) -> Matrix {
+        let (chain, n) = self.chain();
+        let mut r = IDENTITY;
+        for link in chain.get(..n).unwrap_or(&[]) {
+            let a = self.turn(link.index, theta);
+            r = mul(&r, &about_axis(link.axis, link.sign * a));
+        }
+        mul(&r, &self.base())
+    }
+
+    /// How far axis `k` turns at position `theta[k]`: `θ − offset`.
+    pub(crate) fn turn(&self, k: usize, theta: [f64; MAX_AXES]) -> f64 {
+        let offset = self.axes().get(k).map_or(0.0, |a| a.offset);
+        theta.get(k).copied().unwrap_or(0.0) - offset
+    }
+
+    /// The tool frame relative to the workpiece, `F = W⁻¹·T·B`, at axis positions
+    /// `axes` (degrees; unused ones 0). [`Error::OutOfRange`] when the result overflows.
+    ///
+    /// ```
+    /// use cncrot::kinematics::{Machine, RotaryAxis, Side};
+    /// // A rotary table C (turning the workpiece about +Z) with its centre at x = 100.
+    /// let m = Machine::new([0.0, 0.0, 1.0]).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Work, [0.0, 0.0, 1.0], [100.0, 0.0, 0.0])).unwrap();
+    /// let f = m.forward([90.0, 0.0, 0.0]).unwrap();
+    /// // The tool (at the machine origin) seen from the workpiece turned by 90°: the point
+    /// // (0, 0) of the machine is at (100, 100) of the workpiece.
+    /// assert!((f.translation[0] - 100.0).abs() < 1e-12 && (f.translation[1] - 100.0).abs() < 1e-12);
+    /// ```
+    pub fn forward(&self, axes: [f64; MAX_AXES]) -> Result<Frame, Error> {
+        let theta = self.positions(axes)?;
+        let (tool, work) = self.poses(theta);
+        let f = work
+            .inverse()
+            .compose(&tool)
+            .compose(&Frame::from_rotation(self.base()));
+        let h = f.to_homogeneous();
+        if !h.iter().flatten().all(|x| x.is_finite()) {
+            return Err(Error::OutOfRange);
+        }
+        Ok(f)
+    }
+
+    /// The tool tip in workpiece coordinates for a tool of length `length` (mm) at axis
+    /// positions `axes`, with the linear axes at `linear` (machine coordinates of the tool
+    /// adapter's reference point; the origin of `p_k`): `W⁻¹·(linear + T·(−L·b))`.
+    pub fn tool_tip(
+        &self,
+        axes: [f64; MAX_AXES],
+        linear: Vector,
+        length: f64,
+    ) -> Result<Vector, Error> {
+        let theta = self.positions(axes)?;
+        if !(linear.iter().all(|x| x.is_finite()) && length.is_finite()) {
+            return Err(Error::NotFinite);
+        }
+        let (tool, work) = self.poses(theta);
+        let tip_in_tool = self.tool_direction.map(|x| -length * x);
+        let at = tool.transform_point(tip_in_tool);
+        let machine: Vector = core::array::from_fn(|k| linear[k] + at[k]);
+        finite(work.inverse().transform_point(machine))
+    }
+
+    /// Tool-tip follow-up: the linear-axis positions that keep the tool tip of a tool of
+    /// length `length` on the same workpiece point when the rotary axes move from `from`
+    /// to `to` with the linear axes at `linear` before.
+    ///
+    /// ```
+    /// use cncrot::kinematics::{Machine, RotaryAxis, Side};
+    /// // A head tilting about X through the point 200 mm above the tool adapter.
+    /// let m = Machine::new([0.0, 0.0, 1.0]).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Tool, [1.0, 0.0, 0.0], [0.0, 0.0, 200.0])).unwrap();
+    /// let p = m.follow_tool_tip([0.0; 3], [90.0, 0.0, 0.0], [0.0; 3], 100.0).unwrap();
+    /// // Pivot-to-tip is 300 mm: tilted 90° the tip would move 300 mm along +Y and up
+    /// // 300 mm (Rx(90)·(0, 0, -300) = (0, 300, 0)); the linear axes take it back.
+    /// assert!((p[1] + 300.0).abs() < 1e-9 && (p[2] + 300.0).abs() < 1e-9);
+    /// ```
+    pub fn follow_tool_tip(
+        &self,
+        from: [f64; MAX_AXES],
+        to: [f64; MAX_AXES],
+        linear: Vector,
+        length: f64,
+    ) -> Result<Vector, Error> {
+        let q = self.tool_tip(from, linear, length)?;
+        let theta = self.positions(to)?;
+        let (tool, work) = self.poses(theta);
+        let tip_in_tool = self.tool_direction.map(|x| -length * x);
+        let on_work = work.transform_point(q);
+        let at = tool.transform_point(tip_in_tool);
+        finite(core::array::from_fn(|k| on_work[k] - at[k] + 0.0))
+    }
+
+    /// `(T, W)` at positions `theta`.
+    fn poses(&self, theta: [f64; MAX_AXES]) -> (Frame, Frame) {
+        let mut tool = Frame::IDENTITY;
+        let mut work = Frame::IDENTITY;
+        for (k, a) in self.axes().iter().enumerate() {
+            let h = Frame::about_point(about_axis(a.direction, self.turn(k, theta)), a.point);
+            match a.side {
+                Side::Tool => tool = tool.compose(&h),
+                Side::Work => work = work.compose(&h),
+            }
+        }
+        (tool, work)
+    }
+}
+
+fn finite(v: Vector) -> Result<Vector, Error> {
+    if v.iter().all(|x| x.is_finite()) {
+        Ok(v)
+    } else {
+        Err(Error::OutOfRange)
+    }
+}
+
+/// The rotation by `deg` about the unit vector `u` (Rodrigues): exact for multiples of 90°
+/// about the coordinate axes.
+pub(crate) fn about_axis(u: Vector, deg: f64) -> Matrix {
+    let (s, c) = sin_cos_deg(deg);
+    let t = 1.0 - c;
+    let [x, y, z] = u;
+    [
+        [
+            c + t * x * x + 0.0,
+            t * x * y - s * z + 0.0,
+            t * x * z + s * y + 0.0,
+        ],
+        [
+            t * x * y + s * z + 0.0,
+            c + t * y * y + 0.0,
+            t * y * z - s * x + 0.0,
+        ],
+        [
+            t * x * z - s * y + 0.0,
+            t * y * z + s * x + 0.0,
+            c + t * z * z + 0.0,
+        ],
+    ]
+}

@@ -1,0 +1,290 @@
+//! The inverse: every set of axis positions that gives an orientation, in closed form
+//! (Paden–Kahan subproblems: a rotation about one axis that takes one direction onto
+//! another, and two rotations about two axes that do).
+
+use super::{about_axis, Machine, MAX_AXES, MAX_SOLUTIONS, REACH_TOLERANCE};
+use crate::math::{abs, atan2_deg, sqrt, wrap_deg};
+use crate::vector::{cross, dot};
+use crate::{check_rotation, mul, rotate, transpose, Error, Matrix, Vector};
+
+/// The isolated solutions of [`Machine::inverse`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Solutions {
+    /// Axis positions in degrees, `count` rows used; unused axes 0.
+    pub angles: [[f64; MAX_AXES]; MAX_SOLUTIONS],
+    /// How many rows are used (1 or 2).
+    pub count: usize,
+    /// A singular pose: one axis is free (its family is represented once, with the free
+    /// axis at the given position).
+    pub free: bool,
+}
+
+impl Solutions {
+    /// The used rows.
+    pub fn as_slice(&self) -> &[[f64; MAX_AXES]] {
+        self.angles.get(..self.count).unwrap_or(&[])
+    }
+}
+
+/// Up to two solutions in chain angles `φ`.
+#[derive(Clone, Copy)]
+struct Phis {
+    phi: [[f64; 2]; 2],
+    count: usize,
+    free: bool,
+}
+
+/// A direction within this sine of an axis is along it: the axis is free [choice]. Below
+/// the verification bound 1e-12 by a margin (the pose is treated as exactly singular, which
+/// moves the result by at most this), above the rounding of a computed target (1e-16).
+pub const POLE_SINE: f64 = 1e-14;
+
+/// Beyond this a solution whose forward computation misses the target is dropped as not
+/// a solution (a safety net: the construction reaches it to rounding).
+const VERIFY: f64 = 1e-9;
+
+/// The angle (degrees) of the turn about the unit vector `u` that takes `x` onto `y`
+/// (both made perpendicular to `u` first; their lengths do not matter). `None` when `x` is
+/// along `u`: every angle does.
+fn turn_onto(u: Vector, x: Vector, y: Vector) -> Option<f64> {
+    let ux = dot(u, x);
+    let uy = dot(u, y);
+    let xp: Vector = core::array::from_fn(|k| x[k] - ux * u[k]);
+    let yp: Vector = core::array::from_fn(|k| y[k] - uy * u[k]);
+    if dot(xp, xp) <= POLE_SINE * POLE_SINE {
+        return None;
+    }
+    Some(atan2_deg(dot(u, cross(xp, yp)), dot(xp, yp)))
+}
+
+/// Subproblem 1: `Rot(u, φ)·x = y`. The free angle `free` when `x` is along `u`.
+fn one(u: Vector, x: Vector, y: Vector, free: f64) -> Result<(f64, bool), Error> {
+    if abs(dot(u, x) - dot(u, y)) > REACH_TOLERANCE {
+        return Err(Error::Unreachable);
+    }
+    match turn_onto(u, x, y) {
+        Some(phi) => Ok((phi, false)),
+        // x along u: y must be x itself (the dot products agree, so y is ±u with x's sign).
+        None => Ok((free, true)),
+    }
+}
+
+/// Subproblem 2: `Rot(u1, φ1)·Rot(u2, φ2)·b = d` for unit vectors, `u1` not parallel to
+/// `u2`. The intermediate direction `c = Rot(u2, φ2)·b = Rot(u1, −φ1)·d` lies on both
+/// cones: `u1·c = u1·d`, `u2·c = u2·b`, `|c| = 1`; it is `α·u1 + β·u2 ± γ·(u1 × u2)`.
+fn two(u1: Vector, u2: Vector, b: Vector, d: Vector, free: [f64; 2]) -> Result<Phis, Error> {
+    let mut out = Phis {
+        phi: [[0.0; 2]; 2],
+        count: 0,
+        free: false,
+    };
+    let along = |u: Vector, v: Vector| {
+        let c = cross(u, v);
+        dot(c, c) <= POLE_SINE * POLE_SINE
+    };
+    if along(u2, b) {
+        // The inner axis turns the tool about itself: φ2 is free.
+        let (phi1, _) = one(u1, b, d, free[0])?;
+        out.phi[0] = [phi1, free[1]];
+        out.count = 1;
+        out.free = true;
+        return Ok(out);
+    }
+    if along(u1, d) {
+        // The target along the outer axis: φ1 is free, φ2 brings b onto d.
+        let d1 = rotate(&about_axis(u1, -free[0]), d);
+        let (phi2, _) = one(u2, b, d1, free[1])?;
+        out.phi[0] = [free[0], phi2];
+        out.count = 1;
+        out.free = true;
+        return Ok(out);
+    }
+    // In the orthonormal frame u1, e2 (u2 made perpendicular to u1), n = u1 × u2 / |…|:
+    // c = a1·u1 + p2·e2 ± g·n. The height g² = r² − q² is formed from a cone radius r
+    // computed as a cross product (|u × v|, exact to rounding even when tiny) instead of
+    // 1 − |p|², which loses half the digits near the pole.
+    let k = dot(u1, u2);
+    let w = cross(u1, u2);
+    let wn = sqrt(dot(w, w));
+    let n: Vector = w.map(|x| x / wn);
+    let e2: Vector = core::array::from_fn(|i| (u2[i] - k * u1[i]) / wn);
+    let (a1, a2) = (dot(u1, d), dot(u2, b));
+    let p2 = (a2 - k * a1) / wn;
+    let q1 = (a1 - k * a2) / wn;
+    let (c1, c2) = (cross(u1, d), cross(u2, b));
+    let (r1, r2) = (sqrt(dot(c1, c1)), sqrt(dot(c2, c2)));
+    let h = if r1 <= r2 {
+        (r1 - abs(p2)) * (r1 + abs(p2))
+    } else {
+        (r2 - abs(q1)) * (r2 + abs(q1))
+    };
+    // NaN refuses too.
+    if h.is_nan() || h < -2.0 * REACH_TOLERANCE {
+        return Err(Error::Unreachable);
+    }
+    let gamma = sqrt(h.max(0.0));
+    let p: Vector = core::array::from_fn(|i| a1 * u1[i] + p2 * e2[i]);
+    let signs: &[f64] = if gamma > 0.0 { &[1.0, -1.0] } else { &[1.0] };
+    for &sign in signs {
+        let c: Vector = core::array::from_fn(|i| p[i] + sign * gamma * n[i]);
+        if let (Some(phi2), Some(phi1)) = (turn_onto(u2, b, c), turn_onto(u1, c, d)) {
+            if let Some(slot) = out.phi.get_mut(out.count) {
+                *slot = [phi1, phi2];
+                out.count += 1;
+            }
+        }
+    }
+    if out.count == 0 {
+        return Err(Error::Unreachable);
+    }
+    Ok(out)
+}
+
+impl Machine {
+    /// Every isolated set of axis positions within (-180°, 180°] per axis whose tool frame
+    /// has the orientation `target` (a rotation, checked as [`check_rotation`]), limits
+    /// ignored (see [`Machine::choose`]).
+    ///
+    /// With three axes the whole orientation is matched; with fewer, only the tool
+    /// direction (the target's third column): the rotation about the tool that the axes
+    /// cannot make is what [`Machine::choose`] returns as the remaining frame.
+    ///
+    /// At a singular pose (the target direction along an axis, which is then free) the
+    /// family is returned once, the free axis at 0, and [`Solutions::free`] is set.
+    /// [`Error::Unreachable`]: no positions give that orientation (farther than
+    /// [`super::REACH_TOLERANCE`]).
+    ///
+    /// ```
+    /// use cncrot::kinematics::{Machine, RotaryAxis, Side};
+    /// use cncrot::{elementary, mul, Axis};
+    /// let m = Machine::new([0.0, 0.0, 1.0]).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3])).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3])).unwrap();
+    /// // Tilt 30° about Y: C = 0, B = 30, or C = 180, B = -30.
+    /// let s = m.inverse(&elementary(Axis::Y, 30.0)).unwrap();
+    /// assert_eq!(s.count, 2);
+    /// let mut rows = s.as_slice().to_vec();
+    /// rows.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    /// assert!(rows[0][0].abs() < 1e-12 && (rows[0][1] - 30.0).abs() < 1e-12);
+    /// assert!((rows[1][0] - 180.0).abs() < 1e-12 && (rows[1][1] + 30.0).abs() < 1e-12);
+    /// ```
+    pub fn inverse(&self, target: &Matrix) -> Result<Solutions, Error> {
+        self.solve(target, [0.0; MAX_AXES])
+    }
+
+    /// [`Machine::inverse`] with a free axis placed at its position in `free` (unwrapped).
+    pub(crate) fn solve(&self, target: &Matrix, free: [f64; MAX_AXES]) -> Result<Solutions, Error> {
+        check_rotation(target)?;
+        if !free.iter().all(|x| x.is_finite()) {
+            return Err(Error::NotFinite);
+        }
+        let (chain, n) = self.chain();
+        let link = |j: usize| chain.get(j).copied();
+        // A free axis kept at `free`, as its chain angle.
+        let free_phi = |j: usize| match link(j) {
+            Some(l) => l.sign * self.turn(l.index, free),
+            None => 0.0,
+        };
+        let b = self.tool_direction();
+        let d = [target[0][2], target[1][2], target[2][2]];
+        let mut phis = Phis {
+            phi: [[0.0; 2]; 2],
+            count: 1,
+            free: false,
+        };
+        let mut third = [0.0f64; MAX_SOLUTIONS];
+        match (n, link(0), link(1), link(2)) {
+            (0, ..) => {
+                let e: Vector = core::array::from_fn(|k| d[k] - b[k]);
+                let e2 = dot(e, e);
+                if e2.is_nan() || e2 > REACH_TOLERANCE * REACH_TOLERANCE {
+                    return Err(Error::Unreachable);
+                }
+            }
+            (1, Some(l1), ..) => {
+                let (phi, free1) = one(l1.axis, b, d, free_phi(0))?;
+                phis.phi[0] = [phi, 0.0];
+                phis.free = free1;
+            }
+            (2, Some(l1), Some(l2), _) => {
+                phis = two(l1.axis, l2.axis, b, d, [free_phi(0), free_phi(1)])?;
+            }
+            (3, Some(l1), Some(l2), Some(l3)) => {
+                // The third axis keeps its own direction: the first two bring it where the
+                // target has it, the third turns about it for the rest.
+                let m = mul(target, &transpose(&self.base()));
+                let u3 = l3.axis;
+                let target_u3 = rotate(&m, u3);
+                phis = two(l1.axis, l2.axis, u3, target_u3, [free_phi(0), free_phi(1)])?;
+                let x = perpendicular_to(u3);
+                for (slot, p) in third.iter_mut().zip(&phis.phi) {
+                    let back = mul(
+                        &about_axis(l2.axis, -p[1]),
+                        &mul(&about_axis(l1.axis, -p[0]), &m),
+                    );
+                    *slot = turn_onto(u3, x, rotate(&back, x)).unwrap_or(0.0);
+                }
+            }
+            _ => return Err(Error::BadArgument),
+        }
+        let mut out = Solutions {
+            angles: [[0.0; MAX_AXES]; MAX_SOLUTIONS],
+            count: 0,
+            free: phis.free,
+        };
+        for (p, t3) in phis.phi.iter().zip(third).take(phis.count) {
+            let phi = [p[0], p[1], t3];
+            let mut theta = [0.0; MAX_AXES];
+            for (j, &ph) in phi.iter().enumerate().take(n) {
+                if let Some(l) = link(j) {
+                    let offset = self.axes().get(l.index).map_or(0.0, |a| a.offset);
+                    if let Some(t) = theta.get_mut(l.index) {
+                        *t = wrap_deg(offset + l.sign * ph);
+                    }
+                }
+            }
+            if self.misses(&theta, target, n) <= VERIFY {
+                if let Some(slot) = out.angles.get_mut(out.count) {
+                    *slot = theta;
+                    out.count += 1;
+                }
+            }
+        }
+        if out.count == 0 {
+            return Err(Error::Unreachable);
+        }
+        Ok(out)
+    }
+
+    /// How far the orientation at `theta` is from `target`: the largest element difference
+    /// of the whole rotation with three axes, of the tool direction with fewer.
+    pub(crate) fn misses(&self, theta: &[f64; MAX_AXES], target: &Matrix, n: usize) -> f64 {
+        let r = self.rotation_at(*theta);
+        let mut worst = 0.0f64;
+        for (row_r, row_t) in r.iter().zip(target) {
+            for (j, (a, b)) in row_r.iter().zip(row_t).enumerate() {
+                if n == 3 || j == 2 {
+                    // NaN would make the miss infinite.
+                    let e = abs(a - b);
+                    worst = if e <= worst { worst } else { e };
+                }
+            }
+        }
+        worst
+    }
+}
+
+/// A unit vector perpendicular to the unit vector `u`.
+fn perpendicular_to(u: Vector) -> Vector {
+    // Crossed with the coordinate axis least aligned with u, so the result is never short.
+    let e = if abs(u[0]) <= abs(u[1]) && abs(u[0]) <= abs(u[2]) {
+        [1.0, 0.0, 0.0]
+    } else if abs(u[1]) <= abs(u[2]) {
+        [0.0, 1.0, 0.0]
+    } else {
+        [0.0, 0.0, 1.0]
+    };
+    let c = cross(u, e);
+    let len = sqrt(dot(c, c));
+    c.map(|x| x / len)
+}

@@ -1,0 +1,487 @@
+//! Swivel kinematics: the forward computation against an independent one (nalgebra's
+//! axis-angle rotations and plain matrix products), hand geometry for the usual machines,
+//! forward(inverse(F)) = F for thousands of random machines, and a dense numerical search
+//! that finds no solution the closed form missed.
+
+mod common;
+
+use cncrot::kinematics::{Hirth, Machine, RotaryAxis, Rule, Side, MAX_SOLUTIONS};
+use cncrot::{elementary, mul, Axis, Error, Matrix, Vector};
+use common::Rng;
+use nalgebra::{Matrix4, Rotation3, Translation3, Unit, Vector3};
+
+const Z: Vector = [0.0, 0.0, 1.0];
+
+fn axis(side: Side, v: Vector, p: Vector) -> RotaryAxis {
+    RotaryAxis::new(side, v, p)
+}
+
+fn machine(axes: &[RotaryAxis]) -> Machine {
+    axes.iter()
+        .fold(Machine::new(Z).unwrap(), |m, a| m.with_axis(*a).unwrap())
+}
+
+/// The forward computation written independently: 4x4 products of nalgebra's axis-angle
+/// rotations about lines, `W⁻¹·T`, tool base +Z.
+fn reference_forward(axes: &[RotaryAxis], theta: [f64; 3]) -> Matrix4<f64> {
+    let mut t = Matrix4::<f64>::identity();
+    let mut w = Matrix4::<f64>::identity();
+    for (a, th) in axes.iter().zip(theta) {
+        let v = Unit::new_normalize(Vector3::from(a.direction));
+        let r = Rotation3::from_axis_angle(&v, (th - a.offset).to_radians()).to_homogeneous();
+        let p = Vector3::from(a.point);
+        let h =
+            Translation3::from(p).to_homogeneous() * r * Translation3::from(-p).to_homogeneous();
+        match a.side {
+            Side::Tool => t *= h,
+            Side::Work => w *= h,
+        }
+    }
+    w.try_inverse().unwrap() * t
+}
+
+fn random_direction(rng: &mut Rng) -> Vector {
+    loop {
+        let v = [rng.normal(), rng.normal(), rng.normal()];
+        let n = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        if n > 0.1 {
+            return v.map(|x| x / n);
+        }
+    }
+}
+
+/// A random machine of `n` axes: random sides, directions (a third of them axis-aligned
+/// or at 45°, like real heads), pivots within ±500 mm, offsets.
+fn random_machine(rng: &mut Rng, n: usize) -> (Machine, Vec<RotaryAxis>) {
+    loop {
+        let mut axes = Vec::new();
+        for _ in 0..n {
+            let side = if rng.unit() < 0.5 {
+                Side::Tool
+            } else {
+                Side::Work
+            };
+            let dir = match (rng.next_u64() % 6) as usize {
+                0 => [0.0, 0.0, 1.0],
+                1 => [1.0, 0.0, 0.0],
+                2 => [0.0, (0.5f64).sqrt(), (0.5f64).sqrt()],
+                _ => random_direction(rng),
+            };
+            let p = [0.0; 3].map(|_: f64| rng.range(-500.0, 500.0));
+            let mut a = axis(side, dir, p);
+            if rng.unit() < 0.3 {
+                a.offset = rng.range(-90.0, 90.0);
+            }
+            axes.push(a);
+        }
+        let built = axes
+            .iter()
+            .try_fold(Machine::new(Z).unwrap(), |m, a| m.with_axis(*a));
+        if let Ok(m) = built {
+            let stored = m.axes().to_vec();
+            return (m, stored);
+        }
+    }
+}
+
+fn angles(rng: &mut Rng, n: usize) -> [f64; 3] {
+    let mut t = [0.0; 3];
+    for x in t.iter_mut().take(n) {
+        *x = rng.range(-180.0, 180.0);
+    }
+    t
+}
+
+/// The largest difference between the reached orientation and the target: the whole
+/// rotation with three axes, the tool direction with fewer.
+fn miss(m: &Machine, theta: [f64; 3], target: &Matrix) -> f64 {
+    let r = m.forward(theta).unwrap().rotation;
+    let n = m.axes().len();
+    let mut worst: f64 = 0.0;
+    for i in 0..3 {
+        for j in 0..3 {
+            if n == 3 || j == 2 {
+                worst = worst.max((r[i][j] - target[i][j]).abs());
+            }
+        }
+    }
+    worst
+}
+
+fn same_turn(a: f64, b: f64, tol: f64) -> bool {
+    let d = (a - b).rem_euclid(360.0);
+    d < tol || 360.0 - d < tol
+}
+
+#[test]
+fn forward_matches_an_independent_computation() {
+    let mut rng = Rng::new(10);
+    for n in 1..=3 {
+        for _ in 0..2000 {
+            let (m, axes) = random_machine(&mut rng, n);
+            let theta = angles(&mut rng, n);
+            let f = m.forward(theta).unwrap().to_homogeneous();
+            let r = reference_forward(&axes, theta);
+            for i in 0..4 {
+                for j in 0..4 {
+                    let tol = if j == 3 { 1e-9 } else { 1e-13 };
+                    assert!(
+                        (f[i][j] - r[(i, j)]).abs() < tol,
+                        "{n} {theta:?}\n{f:?}\n{r}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn fork_head_and_table_by_hand() {
+    // Head C (about Z) carrying B (about Y): tool direction (cos C sin B, sin C sin B, cos B).
+    let head = machine(&[
+        axis(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]),
+        axis(Side::Tool, [0.0, 1.0, 0.0], [0.0, 0.0, 250.0]),
+    ]);
+    let (c, b) = (30f64, 40f64);
+    let d = head.forward([c, b, 0.0]).unwrap().rotation;
+    let want = [
+        c.to_radians().cos() * b.to_radians().sin(),
+        c.to_radians().sin() * b.to_radians().sin(),
+        b.to_radians().cos(),
+    ];
+    for k in 0..3 {
+        assert!((d[k][2] - want[k]).abs() < 1e-15);
+    }
+    // The tool tip of a 100 mm tool: the pivot 250 above the adapter; pivot-to-tip 350 mm
+    // along the tilted tool.
+    let tip = head.tool_tip([c, b, 0.0], [0.0; 3], 100.0).unwrap();
+    for k in 0..3 {
+        assert!(
+            (tip[k] - ([0.0, 0.0, 250.0][k] - 350.0 * want[k])).abs() < 1e-12,
+            "{tip:?}"
+        );
+    }
+
+    // Table A (about X, turning the workpiece) carrying C (about Z): the tool, fixed along
+    // +Z in the machine, seen from the workpiece: Rz(-C)·Rx(-A)·e_z.
+    let table = machine(&[
+        axis(Side::Work, [1.0, 0.0, 0.0], [0.0; 3]),
+        axis(Side::Work, [0.0, 0.0, 1.0], [0.0; 3]),
+    ]);
+    let (a, c) = (25f64, 70f64);
+    let f = table.forward([a, c, 0.0]).unwrap().rotation;
+    let r = mul(&elementary(Axis::Z, -c), &elementary(Axis::X, -a));
+    assert!(common::max_diff(&f, &r) < 1e-15);
+}
+
+#[test]
+fn nutating_head_tilt_by_hand() {
+    // A 45° nutating head: B' about (0, √½, √½) on C. The tool tilt β for B' = θ satisfies
+    // cos β = cos²45° + sin²45°·cos θ = (1 + cos θ)/2.
+    let s = 0.5f64.sqrt();
+    let m = machine(&[
+        axis(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]),
+        axis(Side::Tool, [0.0, s, s], [0.0, 0.0, 150.0]),
+    ]);
+    for beta in [0.0, 10.0, 45.0, 60.0, 89.0, 90.0] {
+        let target = mul(&elementary(Axis::Z, 20.0), &elementary(Axis::X, -beta));
+        let sol = m.inverse(&target).unwrap();
+        let theta = (2.0 * beta.to_radians().cos() - 1.0).acos().to_degrees();
+        for row in sol.as_slice() {
+            assert!(miss(&m, *row, &target) < 1e-12, "{beta} {row:?}");
+            assert!(
+                (row[1].abs() - theta).abs() < 1e-6,
+                "{beta} {row:?} {theta}"
+            );
+        }
+        if beta == 0.0 {
+            assert!(sol.free && sol.count == 1, "{sol:?}");
+        } else if beta == 90.0 {
+            // The edge of the reachable cone: the two solutions meet at θ = 180°.
+            assert_eq!(sol.count, 1, "{sol:?}");
+        } else {
+            assert_eq!(sol.count, 2, "{beta}");
+        }
+    }
+    // Beyond 90° the head cannot tilt.
+    let target = elementary(Axis::X, -100.0);
+    assert_eq!(m.inverse(&target), Err(Error::Unreachable));
+}
+
+/// forward(inverse(F)) = F for every returned solution, and the positions F was made
+/// from are among them (a solution within one turn is never lost).
+#[test]
+fn inverse_reproduces_random_targets() {
+    let mut rng = Rng::new(11);
+    let mut checked = 0;
+    for n in 1..=3 {
+        for _ in 0..4000 {
+            let (m, _) = random_machine(&mut rng, n);
+            let theta = angles(&mut rng, n);
+            let target = m.forward(theta).unwrap().rotation;
+            let sol = m
+                .inverse(&target)
+                .unwrap_or_else(|e| panic!("{e:?} {m:?} {theta:?}"));
+            assert!(sol.count >= 1 && sol.count <= MAX_SOLUTIONS);
+            for row in sol.as_slice() {
+                assert!(miss(&m, *row, &target) < 1e-12, "{m:?}\n{theta:?} {row:?}");
+                assert!(row.iter().all(|x| *x > -180.0 && *x <= 180.0));
+                assert!(row[n..].iter().all(|x| *x == 0.0));
+            }
+            if !sol.free {
+                let found = sol
+                    .as_slice()
+                    .iter()
+                    .any(|row| (0..n).all(|k| same_turn(row[k], theta[k], 1e-6)));
+                assert!(found, "{m:?}\n{theta:?} {sol:?}");
+            }
+            checked += sol.count;
+        }
+    }
+    assert!(checked > 12000);
+}
+
+/// Gauss–Newton from many starting points on a grid: every root it converges to is one of
+/// the returned solutions (no solution missed), and the returned ones are roots.
+#[test]
+fn dense_search_finds_no_other_solution() {
+    let mut rng = Rng::new(12);
+    for n in 2..=3 {
+        for _ in 0..40 {
+            let (m, _) = random_machine(&mut rng, n);
+            let theta = angles(&mut rng, n);
+            let target = m.forward(theta).unwrap().rotation;
+            let sol = m.inverse(&target).unwrap();
+            if sol.free {
+                continue;
+            }
+            let step = if n == 2 { 15.0 } else { 30.0 };
+            let grid = (360.0 / step) as usize;
+            let starts = grid.pow(n as u32);
+            for s in 0..starts {
+                let mut x = [0.0; 3];
+                let mut rest = s;
+                for xk in x.iter_mut().take(n) {
+                    *xk = -180.0 + step * (rest % grid) as f64 + 0.5 * step;
+                    rest /= grid;
+                }
+                if let Some(root) = newton(&m, &target, x, n) {
+                    let known = sol
+                        .as_slice()
+                        .iter()
+                        .any(|row| (0..n).all(|k| same_turn(row[k], root[k], 1e-5)));
+                    assert!(known, "missed {root:?}; returned {sol:?}; {m:?}");
+                }
+            }
+        }
+    }
+}
+
+/// Gauss–Newton on the residual (direction or whole rotation) with a numerical Jacobian;
+/// `Some` when it converged to a root.
+fn newton(m: &Machine, target: &Matrix, mut x: [f64; 3], n: usize) -> Option<[f64; 3]> {
+    let resid = |x: [f64; 3]| -> Vec<f64> {
+        let r = m.forward(x).unwrap().rotation;
+        let mut v = Vec::new();
+        for i in 0..3 {
+            for j in 0..3 {
+                if n == 3 || j == 2 {
+                    v.push(r[i][j] - target[i][j]);
+                }
+            }
+        }
+        v
+    };
+    for _ in 0..60 {
+        let r0 = resid(x);
+        let norm: f64 = r0.iter().map(|e| e * e).sum::<f64>().sqrt();
+        if norm < 1e-13 {
+            return Some(x);
+        }
+        let h = 1e-6;
+        let mut jac = nalgebra::DMatrix::<f64>::zeros(r0.len(), n);
+        for k in 0..n {
+            let mut xp = x;
+            xp[k] += h;
+            let rp = resid(xp);
+            for (i, (a, b)) in rp.iter().zip(&r0).enumerate() {
+                jac[(i, k)] = (a - b) / h;
+            }
+        }
+        let rv = nalgebra::DVector::from_vec(r0);
+        let svd = jac.clone().svd(true, true);
+        let dx = svd.solve(&(-rv), 1e-10).ok()?;
+        for k in 0..n {
+            x[k] += dx[k].clamp(-20.0, 20.0);
+        }
+    }
+    let r: f64 = resid(x).iter().map(|e| e * e).sum::<f64>().sqrt();
+    (r < 1e-10).then_some(x)
+}
+
+#[test]
+fn unreachable_and_singular_targets() {
+    // A single rotary table C with a vertical tool: any rotation about Z is reached with C
+    // free (it stays where it is), a tilt is not reachable.
+    let c = machine(&[axis(Side::Work, [0.0, 0.0, -1.0], [0.0; 3])]);
+    let s = c.inverse(&elementary(Axis::Z, 30.0)).unwrap();
+    assert!(s.free && s.count == 1 && s.angles[0] == [0.0; 3]);
+    assert_eq!(
+        c.inverse(&elementary(Axis::X, 1e-6)),
+        Err(Error::Unreachable)
+    );
+    let ch = c
+        .choose(&elementary(Axis::Z, 30.0), [123.0, 0.0, 0.0], Rule::Closest)
+        .unwrap();
+    assert!(ch.free && ch.axes[0] == 123.0);
+    // The table about -Z at 123° has turned the workpiece by -123° about Z, so the tool
+    // frame is Rz(123) and the remaining frame turns by 30 - 123 = -93° about Z.
+    assert!(common::max_diff(&ch.remaining, &elementary(Axis::Z, -93.0)) < 1e-15);
+
+    // A table A carrying C: a vertical target leaves C free at its current position.
+    let ac = machine(&[
+        axis(Side::Work, [1.0, 0.0, 0.0], [0.0; 3]),
+        axis(Side::Work, [0.0, 0.0, 1.0], [0.0; 3]),
+    ]);
+    let ch = ac
+        .choose(&elementary(Axis::Z, 10.0), [0.0, 77.0, 0.0], Rule::Closest)
+        .unwrap();
+    assert!(ch.free && ch.axes == [0.0, 77.0, 0.0], "{ch:?}");
+    // Upside down: A = 180 with C free.
+    let ch = ac
+        .choose(&elementary(Axis::X, 180.0), [0.0, 5.0, 0.0], Rule::Closest)
+        .unwrap();
+    assert!(
+        ch.free && (ch.axes[0].abs() - 180.0).abs() < 1e-12 && ch.axes[1] == 5.0,
+        "{ch:?}"
+    );
+}
+
+#[test]
+fn choice_rules_limits_and_hirth() {
+    // Fork head C on B as in the CYCLE800 manuals, B limited to -100..100.
+    let mut b = axis(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3]);
+    b.limits = Some([-100.0, 100.0]);
+    let m = machine(&[axis(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]), b]);
+    let target = mul(&elementary(Axis::Z, 10.0), &elementary(Axis::Y, 30.0));
+    // Solutions (10, 30) and (-170, -30).
+    let near = m.choose(&target, [750.0, 0.0, 0.0], Rule::Closest).unwrap();
+    assert!(
+        (near.axes[0] - 730.0).abs() < 1e-9 && (near.axes[1] - 30.0).abs() < 1e-9,
+        "{near:?}"
+    );
+    let minus = m.choose(&target, [0.0; 3], Rule::Minus(1)).unwrap();
+    assert!((minus.axes[0] + 170.0).abs() < 1e-9 && (minus.axes[1] + 30.0).abs() < 1e-9);
+    let plus = m.choose(&target, [0.0; 3], Rule::Plus(1)).unwrap();
+    assert!((plus.axes[1] - 30.0).abs() < 1e-9);
+    let inv = m.choose(&target, [0.0; 3], Rule::Inverse).unwrap();
+    assert!((inv.axes[1] + 30.0).abs() < 1e-9, "{inv:?}");
+    // The remaining frame: a fork head reaches the whole orientation Rz·Ry here.
+    assert!(common::max_diff(&near.remaining, &cncrot::IDENTITY) < 1e-14);
+    assert_eq!(
+        m.choose(&target, [0.0; 3], Rule::Minus(2)),
+        Err(Error::BadArgument)
+    );
+
+    // With B limited to 0..100, "minus" cannot have B = -30 and takes the other.
+    let mut b2 = b;
+    b2.limits = Some([0.0, 100.0]);
+    let m2 = machine(&[axis(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]), b2]);
+    let minus = m2.choose(&target, [0.0; 3], Rule::Minus(1)).unwrap();
+    assert!((minus.axes[1] - 30.0).abs() < 1e-9);
+    // A tilt of 120° is beyond the travel on both branches.
+    let far = elementary(Axis::Y, 120.0);
+    assert_eq!(
+        m.choose(&far, [0.0; 3], Rule::Closest),
+        Err(Error::OutOfTravel)
+    );
+
+    // A limited modulo-like axis: C within 0..360 from current -10 goes to 350, not -10.
+    let mut c = axis(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]);
+    c.limits = Some([0.0, 360.0]);
+    let m3 = machine(&[c, b]);
+    let t = mul(&elementary(Axis::Z, -10.0), &elementary(Axis::Y, 30.0));
+    let ch = m3.choose(&t, [-10.0, 0.0, 0.0], Rule::Plus(1)).unwrap();
+    assert!((ch.axes[0] - 350.0).abs() < 1e-9, "{ch:?}");
+
+    // Hirth: B on a 2.5° grid reaches 31.25° as 32.5 (or 30): the residual is reported
+    // and the remaining frame turns the rest.
+    let mut bh = b;
+    bh.hirth = Some(Hirth {
+        offset: 0.0,
+        step: 2.5,
+    });
+    let m4 = machine(&[axis(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]), bh]);
+    let t = elementary(Axis::Y, 31.0);
+    let ch = m4.choose(&t, [0.0; 3], Rule::Plus(1)).unwrap();
+    assert!(
+        (ch.axes[1] - 30.0).abs() < 1e-12 && (ch.residual[1] + 1.0).abs() < 1e-12,
+        "{ch:?}"
+    );
+    assert!(common::max_diff(&ch.remaining, &elementary(Axis::Y, 1.0)) < 1e-14);
+}
+
+#[test]
+fn follow_up_keeps_the_tip_on_the_workpiece() {
+    let mut rng = Rng::new(13);
+    for _ in 0..500 {
+        let n = 1 + (rng.next_u64() % 3) as usize;
+        let (m, _) = random_machine(&mut rng, n);
+        let (from, to) = (angles(&mut rng, n), angles(&mut rng, n));
+        let linear = [
+            rng.range(-300.0, 300.0),
+            rng.range(-300.0, 300.0),
+            rng.range(-300.0, 300.0),
+        ];
+        let len = rng.range(0.0, 300.0);
+        let next = m.follow_tool_tip(from, to, linear, len).unwrap();
+        let a = m.tool_tip(from, linear, len).unwrap();
+        let b = m.tool_tip(to, next, len).unwrap();
+        for k in 0..3 {
+            assert!((a[k] - b[k]).abs() < 1e-9, "{a:?} {b:?}");
+        }
+    }
+}
+
+/// Targets a hair away from the pole (the tool along the outer axis): still reproduced to
+/// 1e-12, both branches, and exactly at the pole one free family.
+#[test]
+fn near_the_pole() {
+    let s = 0.5f64.sqrt();
+    let heads = [
+        machine(&[
+            axis(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]),
+            axis(Side::Tool, [0.0, 1.0, 0.0], [0.0, 0.0, 200.0]),
+        ]),
+        machine(&[
+            axis(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]),
+            axis(Side::Tool, [0.0, s, s], [0.0, 0.0, 200.0]),
+        ]),
+        machine(&[
+            axis(Side::Work, [1.0, 0.0, 0.0], [0.0; 3]),
+            axis(Side::Work, [0.0, 0.0, -1.0], [10.0, 20.0, 0.0]),
+        ]),
+    ];
+    for m in &heads {
+        for tilt_rad in [1e-3, 1e-6, 1e-9, 1e-11, 1e-12, 1e-13, 1e-15, 0.0] {
+            for azimuth in [0.0, 37.0, -120.0] {
+                let target = mul(
+                    &elementary(Axis::Z, azimuth),
+                    &elementary(Axis::X, f64::to_degrees(tilt_rad)),
+                );
+                let sol = m.inverse(&target).unwrap();
+                for row in sol.as_slice() {
+                    assert!(
+                        miss(m, *row, &target) < 1e-12,
+                        "{tilt_rad} {row:?} {} {:?}",
+                        miss(m, *row, &target),
+                        m.axes()
+                    );
+                }
+                if tilt_rad == 0.0 {
+                    assert!(sol.free, "{sol:?}");
+                }
+            }
+        }
+    }
+}
