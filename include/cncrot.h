@@ -102,6 +102,38 @@
 #define CNCROT_FORM_MAX_WORDS 9
 
 /**
+ * Capacity of `cncrot_machine.axes`.
+ */
+#define CNCROT_MACHINE_AXES 3
+
+/**
+ * The most solutions `cncrot_machine_inverse` returns.
+ */
+#define CNCROT_MACHINE_SOLUTIONS_MAX 2
+
+/**
+ * `cncrot_machine_choose`: the solution closest to the current positions.
+ */
+#define CNCROT_CHOOSE_CLOSEST 0
+
+/**
+ * `cncrot_machine_choose`: the lower position of the reference axis (CYCLE800 "minus",
+ * Heidenhain `SEQ-` on the master axis).
+ */
+#define CNCROT_CHOOSE_MINUS 1
+
+/**
+ * `cncrot_machine_choose`: the higher position of the reference axis (CYCLE800 "plus",
+ * Heidenhain `SEQ+`).
+ */
+#define CNCROT_CHOOSE_PLUS 2
+
+/**
+ * `cncrot_machine_choose`: the other solution of the pair (CYCLE600 `_ROT_INV = 1`).
+ */
+#define CNCROT_CHOOSE_INVERSE 3
+
+/**
  * Siemens SINUMERIK: `CYCLE800(…)`, `CYCLE600(…)`, `ROT`/`AROT`/`CROT`, `ROTS`/`AROTS`/`CROTS`,
  * `TRANS`/`ATRANS`; blocks of at most 512 bytes.
  */
@@ -162,6 +194,17 @@ enum cncrot_status
    */
   CNCROT_STATUS_SINGULAR = 1,
   /**
+   * Success at a singular pose of the machine: a rotary axis is free (the target
+   * direction lies along it) and was kept at its current position (at 0 in
+   * `cncrot_machine_inverse`, which returns the family once).
+   */
+  CNCROT_STATUS_FREE_AXIS = 2,
+  /**
+   * Success; a Hirth axis was snapped to its grid: the residual is in the remaining
+   * frame.
+   */
+  CNCROT_STATUS_SNAPPED = 3,
+  /**
    * A pointer argument is NULL.
    */
   CNCROT_STATUS_NULL_POINTER = -1,
@@ -195,7 +238,7 @@ enum cncrot_status
    */
   CNCROT_STATUS_BAD_ARGUMENT = -8,
   /**
-   * Not available in this version (needs the machine kinematics).
+   * Not available without a machine description (rotary-axis positions need one).
    */
   CNCROT_STATUS_NOT_AVAILABLE = -9,
   /**
@@ -257,6 +300,14 @@ enum cncrot_status
    * The caller's text buffer is too small.
    */
   CNCROT_STATUS_NO_ROOM = -23,
+  /**
+   * No positions of the machine's rotary axes give the orientation.
+   */
+  CNCROT_STATUS_UNREACHABLE = -24,
+  /**
+   * The orientation is reachable only outside the rotary axes' travel limits.
+   */
+  CNCROT_STATUS_OUT_OF_TRAVEL = -25,
   /**
    * Internal failure (a caught panic): a bug in cncrot, please report it.
    */
@@ -385,6 +436,79 @@ typedef struct cncrot_cycle600_gud {
 } cncrot_cycle600_gud;
 
 /**
+ * One rotary axis of a `cncrot_machine`: a direction and a point on it (machine
+ * coordinates, every axis at its initial position).
+ */
+typedef struct cncrot_machine_axis {
+  /**
+   * 0: the axis turns the tool; 1: it turns the workpiece.
+   */
+  int32_t work_side;
+  /**
+   * Zero.
+   */
+  int32_t reserved;
+  /**
+   * Direction; positive rotation is the right-hand turn about it (any length, not 0).
+   */
+  double direction[3];
+  /**
+   * A point on the axis, mm.
+   */
+  double point[3];
+  /**
+   * The position the axis reads in the described initial state, degrees
+   * (`$TC_CARR24/25`).
+   */
+  double offset_deg;
+  /**
+   * Travel limits, degrees; both 0: a modulo axis without limits.
+   */
+  double min_deg;
+  /**
+   * See `min_deg`.
+   */
+  double max_deg;
+  /**
+   * Hirth grid: a tooth position, degrees.
+   */
+  double hirth_offset_deg;
+  /**
+   * Hirth grid: tooth spacing, degrees; 0: no grid.
+   */
+  double hirth_step_deg;
+} cncrot_machine_axis;
+
+/**
+ * A machine: up to three rotary axes, outermost first (an axis added after another on the
+ * same side is carried by it), the tool's base direction and a name. A caller-owned plain
+ * struct; zeroed, it is a machine without rotary axes whose tool points along +Z. Every
+ * call checks it; the fields may be written directly (offsets, Hirth grids, limits).
+ */
+typedef struct cncrot_machine {
+  /**
+   * How many entries of `axes` are used (0..3).
+   */
+  int32_t count;
+  /**
+   * Zero.
+   */
+  int32_t reserved;
+  /**
+   * The tool's direction with every axis at its initial position; all 0: +Z.
+   */
+  double tool_direction[3];
+  /**
+   * The axes, outermost first.
+   */
+  struct cncrot_machine_axis axes[CNCROT_MACHINE_AXES];
+  /**
+   * A name, NUL-terminated (`$TC_CARR34`).
+   */
+  char name[CNCROT_NAME_SIZE];
+} cncrot_machine;
+
+/**
  * The modal state of a part program, owned by the caller: the active frame and what the
  * controller keeps between blocks. All zero bytes is a program with nothing active, ready
  * for its first block (then `options` may be set). The fields are the library's to write:
@@ -487,7 +611,8 @@ int32_t cncrot_head_table_parse(struct cncrot_head_table *table,
  * `_POS_*_R` after it forms a frame; `_ROT_AD = 1` adds it to the frame stored in `gud`
  * (intrinsic input on the right, extrinsic on the left). Its rotation is decomposed for
  * `_INEXOUT`/`_BIN_OUT` into `cyc600_2..4`. `_SW_REC = 1` recalculates only; `_SW_REC = 0`
- * (positioning the head) returns `CNCROT_STATUS_NOT_AVAILABLE`. `_ROT_INV` and `_RETR_Z`
+ * (positioning the head) recalculates the same way, and `cncrot_cycle600_position` then
+ * gives the axis positions for the accessory's machine. `_ROT_INV` and `_RETR_Z`
  * (0/1) are kept in `gud`. The stored rotation is kept orthonormal however many additive
  * calls follow. `_MIHEAD` is printable ASCII without spaces or quotes, or empty without a
  * table (`CNCROT_STATUS_BAD_ARGUMENT` otherwise). The table is read in place: only its
@@ -529,6 +654,32 @@ int32_t cncrot_cycle600(struct cncrot_cycle600_gud *gud,
                         int32_t rot_ad,
                         int32_t rot_inv,
                         int32_t retr_z);
+
+/**
+ * `_SW_REC = 0`: the rotary-axis positions of `machine` for the frame the last
+ * `cncrot_cycle600` call left in `gud`, seen from the current positions `current_deg`:
+ * the solution closest to them, or with `_ROT_INV = 1` stored in `gud` the other one of
+ * the pair. Outputs and statuses as `cncrot_machine_choose` with rule
+ * `CNCROT_CHOOSE_CLOSEST` / `CNCROT_CHOOSE_INVERSE`; `CNCROT_STATUS_BAD_STATE` for a
+ * `gud` this library did not write. `_RETR_Z` (in `gud`) is the calling cycle's: retract
+ * before moving the axes.
+ *
+ * # Safety
+ * `gud` points to a state, `machine` to a `cncrot_machine`, `current_deg`, `axes_deg`,
+ * `residual_deg` to 3 and `remaining` to 16 doubles.
+ *
+ * ```c
+ * double cur[3] = {0, 0, 0}, ax[3], res[3], rem[16];
+ * cncrot_cycle600(&gud, &heads, 1, "H", 0, 7, 0, 0, 0, 30, 40, 0, 0, 0, 0, 1, 39, 0, 0, 0);
+ * cncrot_cycle600_position(&gud, &m, cur, ax, res, rem);   // ax = {30, 40, 0}
+ * ```
+ */
+int32_t cncrot_cycle600_position(const struct cncrot_cycle600_gud *gud,
+                                 const struct cncrot_machine *machine,
+                                 const double *current_deg,
+                                 double *axes_deg,
+                                 double *residual_deg,
+                                 double *remaining);
 
 /**
  * How many words a form has (the `count` that `cncrot_form_frame` and `cncrot_form_values`
@@ -683,6 +834,221 @@ int32_t cncrot_frame_inverse(const double *frame, double *out);
  * ```
  */
 int32_t cncrot_frame_transform_point(const double *frame, const double *point, double *out);
+
+/**
+ * Reads SINUMERIK swivel data set `data_set` (1-based) from `$TC_CARR…` assignments
+ * (`len` bytes of `text`, no NUL needed) into `machine`: type T (both axes turn the tool,
+ * pivots `−l1` and `−l1 − l2`), P (both turn the workpiece, `l2` and `l2 + l3`), M (axis
+ * 1 turns the tool about `l2`, axis 2 the workpiece about `l3`); vectors v1, v2 (7-12),
+ * offsets (24, 25), Hirth grids (26-29), limits (30-33), name (34), fine offsets (41-65,
+ * added). Other data sets, other tool data, `CHANDATA(…)` and comments are skipped.
+ *
+ * Returns 0 with `machine` written, or with it untouched: `CNCROT_STATUS_PARSE`,
+ * `CNCROT_STATUS_UNKNOWN_WORD` (a parameter that does not exist, anything that is not an
+ * assignment), `CNCROT_STATUS_NAME_TOO_LONG`, `CNCROT_STATUS_UNKNOWN_HEAD` (no parameter
+ * of that data set), `CNCROT_STATUS_BAD_ARGUMENT` (`data_set` < 1, a type other than
+ * T/P/M, v2 without v1, parallel axes, negative Hirth increment). The line of an error:
+ * `cncrot_machine_carr_error_line`.
+ *
+ * # Safety
+ * `machine` points to a writable `cncrot_machine`, `text` to `len` readable bytes.
+ *
+ * ```c
+ * const char *t = "$TC_CARR10[1]=0 $TC_CARR11[1]=0 $TC_CARR12[1]=-1\n"
+ *                 "$TC_CARR7[1]=1 $TC_CARR8[1]=0 $TC_CARR9[1]=0\n$TC_CARR23[1]=\"P\"\n";
+ * cncrot_machine m;
+ * cncrot_machine_from_carr(&m, t, strlen(t), 1);   // table A carrying C
+ * ```
+ */
+int32_t cncrot_machine_from_carr(struct cncrot_machine *machine,
+                                 const char *text,
+                                 size_t len,
+                                 int32_t data_set);
+
+/**
+ * The line at which `cncrot_machine_from_carr` refuses the same text: its status, and the
+ * 1-based line in `*line` (0 when the text was read, or for an error of the whole data
+ * set such as `CNCROT_STATUS_UNKNOWN_HEAD`).
+ *
+ * # Safety
+ * `text` points to `len` readable bytes, `line` to a writable `int32_t`.
+ *
+ * ```c
+ * int32_t line;
+ * if (cncrot_machine_carr_error_line(t, strlen(t), 1, &line) < 0) printf("line %d\n", line);
+ * ```
+ */
+int32_t cncrot_machine_carr_error_line(const char *text,
+                                       size_t len,
+                                       int32_t data_set,
+                                       int32_t *line);
+
+/**
+ * The accessory `name` (NUL-terminated) of a HEAD_DEF table as a two-axis swivel head
+ * with axis directions `v1` (outer) and `v2` (inner): HEAD_DEF gives the lengths, the
+ * directions come from the caller. Pivots [derived]: the tool adapter at the origin,
+ * `p2 = (OFFS_L2_X, OFFS_L2_Y, DELTA_L2)`,
+ * `p1 = p2 + (OFFS_L1_X, OFFS_L1_Y, DELTA_L1) + (OFFS_H1_X, DELTA_H1, OFFS_H1_Z)`.
+ *
+ * Returns 0 with `machine` written, or with it untouched: `CNCROT_STATUS_UNKNOWN_HEAD`,
+ * `CNCROT_STATUS_NAME_TOO_LONG`, `CNCROT_STATUS_BAD_ARGUMENT` (a zero or parallel
+ * direction, a corrupt table), `CNCROT_STATUS_NOT_FINITE`.
+ *
+ * # Safety
+ * `machine` points to a writable `cncrot_machine`, `heads` to a table (aligned as
+ * `cncrot_head_table`), `name` to a NUL-terminated string, `v1`, `v2` to 3 doubles.
+ *
+ * ```c
+ * double z[3] = {0, 0, 1}, x[3] = {1, 0, 0};
+ * cncrot_machine_from_head(&m, &heads, "IFVW207S", z, x);
+ * ```
+ */
+int32_t cncrot_machine_from_head(struct cncrot_machine *machine,
+                                 const struct cncrot_head_table *heads,
+                                 const char *name,
+                                 const double *v1,
+                                 const double *v2);
+
+/**
+ * Adds a rotary axis to `machine`: it turns the tool (`work_side` 0) or the workpiece (1)
+ * about the line through `point` along `direction` (machine coordinates, every axis at its
+ * initial position), and is carried by the axes already on its side. `min_deg`,
+ * `max_deg`: travel limits, both 0 for a modulo axis without limits. The direction is
+ * stored as a unit vector; offset and Hirth grid may be set in the struct afterwards.
+ *
+ * Returns 0, or with `machine` untouched: `CNCROT_STATUS_TABLE_FULL` (three axes already),
+ * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_BAD_ARGUMENT` (a
+ * zero direction, `min > max`, an axis parallel to its neighbour in the chain, a corrupt
+ * description).
+ *
+ * # Safety
+ * `machine` points to a writable `cncrot_machine`, `direction` and `point` to 3 doubles.
+ *
+ * ```c
+ * cncrot_machine m = {0};
+ * double z[3] = {0, 0, 1}, y[3] = {0, 1, 0}, o[3] = {0, 0, 0}, p[3] = {0, 0, 150};
+ * cncrot_machine_add_axis(&m, 0, z, o, 0, 0);        // C, modulo
+ * cncrot_machine_add_axis(&m, 0, y, p, -100, 100);   // B on C, pivot 150 above the adapter
+ * ```
+ */
+int32_t cncrot_machine_add_axis(struct cncrot_machine *machine,
+                                int32_t work_side,
+                                const double *direction,
+                                const double *point,
+                                double min_deg,
+                                double max_deg);
+
+/**
+ * The tool frame relative to the workpiece, `F = W⁻¹·T` (with the tool's base direction
+ * turned onto +Z), at axis positions `axes_deg` (degrees, in the order the axes were
+ * added; unused ones 0): its third column is the tool direction in workpiece coordinates,
+ * `F·(0, 0, −L, 1)` the tool tip of a tool of length L.
+ *
+ * Returns 0, or with `frame` untouched: `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_BAD_ARGUMENT` (an unused position not 0, a corrupt description),
+ * `CNCROT_STATUS_OUT_OF_RANGE`.
+ *
+ * # Safety
+ * `machine` points to a `cncrot_machine`, `axes_deg` to 3 and `frame` to 16 doubles.
+ *
+ * ```c
+ * double ax[3] = {90, 30, 0}, f[16];
+ * cncrot_machine_forward(&m, ax, f);   // tool direction (f[2], f[6], f[10])
+ * ```
+ */
+int32_t cncrot_machine_forward(const struct cncrot_machine *machine,
+                               const double *axes_deg,
+                               double *frame);
+
+/**
+ * Every isolated set of axis positions, each within (-180, 180], whose tool frame has the
+ * orientation of `frame` (its translation is not used): the whole rotation with three
+ * axes, the tool direction (third column) with fewer. Travel limits are ignored (see
+ * `cncrot_machine_choose`). `solutions_deg` receives `*count` rows of 3 (unused axes 0).
+ *
+ * Returns 0; `CNCROT_STATUS_FREE_AXIS` at a singular pose (the target direction along an
+ * axis, which is free: the family once, the free axis at 0); or with nothing written:
+ * `CNCROT_STATUS_UNREACHABLE`, `CNCROT_STATUS_NO_ROOM` (`capacity` below the count; 2
+ * always suffice), `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_BAD_ARGUMENT`.
+ *
+ * # Safety
+ * `machine` points to a `cncrot_machine`, `frame` to 16 doubles, `solutions_deg` to
+ * `3·capacity` writable doubles, `count` to a writable `size_t`.
+ *
+ * ```c
+ * double sol[2 * 3]; size_t n;
+ * cncrot_machine_inverse(&m, f, sol, 2, &n);
+ * ```
+ */
+int32_t cncrot_machine_inverse(const struct cncrot_machine *machine,
+                               const double *frame,
+                               double *solutions_deg,
+                               size_t capacity,
+                               size_t *count);
+
+/**
+ * The axis positions to move to for the orientation of `frame`, seen from the current
+ * positions `current_deg`: every solution brought to the whole turn nearest to the
+ * current position (computed 10°, current 750° → 730°), or within the travel limits, and
+ * snapped to Hirth grids; solutions outside the travel are skipped. `rule`:
+ * `CNCROT_CHOOSE_CLOSEST` (`reference_axis` 0), `CNCROT_CHOOSE_MINUS` / `_PLUS` (the
+ * lower / higher position of axis `reference_axis`, 1-based: CYCLE800's direction
+ * reference, Heidenhain `SEQ-` / `SEQ+` on the master axis), `CNCROT_CHOOSE_INVERSE`
+ * (`reference_axis` 0; the other solution of the pair: CYCLE600 `_ROT_INV`). A free axis
+ * (singular pose) stays at its current position.
+ *
+ * Outputs: `axes_deg` (unused 0), `residual_deg` (Hirth: position minus exact value),
+ * `remaining` (the rotation the axes leave to the frame, `Fᵀ·target`: about the tool axis
+ * with fewer than three axes, plus the Hirth residual; no translation).
+ *
+ * Returns 0, `CNCROT_STATUS_FREE_AXIS`, `CNCROT_STATUS_SNAPPED` (a Hirth axis left a
+ * residual), or with nothing written: `CNCROT_STATUS_UNREACHABLE`,
+ * `CNCROT_STATUS_OUT_OF_TRAVEL`, `CNCROT_STATUS_BAD_ARGUMENT` (rule, reference axis, an
+ * unused current position not 0), `CNCROT_STATUS_OUT_OF_RANGE` (a current position
+ * beyond ±65536°), `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_FINITE`.
+ *
+ * # Safety
+ * `machine` points to a `cncrot_machine`, `frame` and `remaining` to 16 doubles,
+ * `current_deg`, `axes_deg`, `residual_deg` to 3.
+ *
+ * ```c
+ * double cur[3] = {750, 0, 0}, ax[3], res[3], rem[16];
+ * cncrot_machine_choose(&m, f, cur, CNCROT_CHOOSE_CLOSEST, 0, ax, res, rem);
+ * ```
+ */
+int32_t cncrot_machine_choose(const struct cncrot_machine *machine,
+                              const double *frame,
+                              const double *current_deg,
+                              int32_t rule,
+                              int32_t reference_axis,
+                              double *axes_deg,
+                              double *residual_deg,
+                              double *remaining);
+
+/**
+ * Tool-tip follow-up: the linear-axis positions `linear_to` that keep the tip of a tool
+ * of length `tool_length` (mm) on the same workpiece point when the rotary axes move from
+ * `from_deg` to `to_deg`, the linear axes being at `linear_from` before (machine
+ * coordinates of the tool adapter's reference point, the origin of the axis points).
+ *
+ * Returns 0, or with `linear_to` untouched: `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_OUT_OF_RANGE`.
+ *
+ * # Safety
+ * `machine` points to a `cncrot_machine`, the arrays to 3 doubles each.
+ *
+ * ```c
+ * double from[3] = {0, 0, 0}, to[3] = {0, 90, 0}, lin[3] = {0, 0, 0}, next[3];
+ * cncrot_machine_follow(&m, from, to, lin, 100.0, next);
+ * ```
+ */
+int32_t cncrot_machine_follow(const struct cncrot_machine *machine,
+                              const double *from_deg,
+                              const double *to_deg,
+                              const double *linear_from,
+                              double tool_length,
+                              double *linear_to);
 
 /**
  * The paper's flange probing: two points along the machine's X (`a1`, `a2`) and two along

@@ -7,6 +7,7 @@
 //! untouched.
 
 use super::head_def::{valid_name, HeadTable, NAME_MAX};
+use crate::kinematics::{Choice, Machine, Rule, MAX_AXES};
 use crate::{angles_from_matrix, matrix_from_angles, AxisCode, Convention, Error, Frame, Kind};
 
 /// The paper's 18 documented parameters, in its order.
@@ -16,7 +17,7 @@ pub struct Call<'a> {
     pub inexin: i32,
     /// `_MIHEAD`: the accessory's name (at most 31 bytes).
     pub mihead: &'a [u8],
-    /// `_SW_REC`: 1 recalculation only; 0 also positions the head (needs the kinematics).
+    /// `_SW_REC`: 1 recalculation only; 0 also positions the head ([`position`]).
     pub sw_rec: i32,
     /// `_BIN_IN`: axis-sequence code of the input rotation (`00` pairs allowed).
     pub bin_in: i32,
@@ -32,7 +33,7 @@ pub struct Call<'a> {
     pub bin_out: i32,
     /// `_ROT_AD`: 1 adds the rotation to the one stored by the previous call.
     pub rot_ad: i32,
-    /// `_ROT_INV`: 1 use the inverse head position (kept for the calling cycle).
+    /// `_ROT_INV`: 1 use the inverse head position (the other solution, see [`position`]).
     pub rot_inv: i32,
     /// `_RETR_Z`: 1 retract before rotating (kept for the calling cycle).
     pub retr_z: i32,
@@ -109,8 +110,8 @@ fn flag(v: i32) -> Result<bool, Error> {
 /// stored frame: on the right for an intrinsic input, on the left for an extrinsic one. Its
 /// rotation is decomposed for `inexout`/`bin_out`. With a head table, `mihead` must name one
 /// of its accessories ([`Error::UnknownHead`]); without one the name is only recorded.
-/// `sw_rec = 0` (positioning the head) returns [`Error::NotAvailable`] after validation; a
-/// frame that overflows (positions near `f64::MAX`) returns [`Error::OutOfRange`]. The name
+/// `sw_rec = 0` (positioning the head) recalculates the same way; the axis positions then
+/// come from [`position`] with the accessory's machine. A frame that overflows (positions near `f64::MAX`) returns [`Error::OutOfRange`]. The name
 /// must be printable ASCII without spaces or quotes ([`valid_name`]; empty is allowed
 /// without a table), else [`Error::BadArgument`].
 pub fn cycle600(state: &State, heads: Option<&HeadTable>, call: &Call) -> Result<State, Error> {
@@ -147,9 +148,9 @@ pub fn cycle600_in(
             return Err(Error::UnknownHead);
         }
     }
-    if !recalc_only {
-        return Err(Error::NotAvailable);
-    }
+    // `_SW_REC = 0` recalculates the same way; positioning is [`position`]'s, with the
+    // machine the accessory stands for.
+    let _ = recalc_only;
 
     let rotation = matrix_from_angles(kind_in, code_in, call.ang);
     let input = Frame::with_translations(call.pos, rotation, call.pos_r);
@@ -184,4 +185,39 @@ pub fn cycle600_in(
     };
     next.name[..call.mihead.len()].copy_from_slice(call.mihead);
     Ok(next)
+}
+
+/// `_SW_REC = 0`: the positions of the accessory's rotary axes for the frame a call left in
+/// `state`, seen from the current positions: the solution closest to them, or with
+/// `_ROT_INV = 1` the other one of the pair (the same orientation "by an inverse rotation of
+/// 180° in both axes" — exactly that only for perpendicular axes, so the other solution is
+/// computed, not derived by that rule). Errors as [`Machine::choose`].
+///
+/// ```
+/// use cncrot::dialects::cycle600::{cycle600, position, Call, State};
+/// use cncrot::kinematics::{Machine, RotaryAxis, Side};
+/// let head = Machine::new([0.0, 0.0, 1.0]).unwrap()
+///     .with_axis(RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3])).unwrap()
+///     .with_axis(RotaryAxis::new(Side::Tool, [1.0, 0.0, 0.0], [0.0; 3])).unwrap();
+/// // Intrinsic Z, X' = 30°, 40°, swivelled with the head.
+/// let call = Call { inexin: 1, mihead: b"H", sw_rec: 0, bin_in: 7, pos: [0.0; 3],
+///     ang: [30.0, 40.0, 0.0], pos_r: [0.0; 3], inexout: 1, bin_out: 39, rot_ad: 0,
+///     rot_inv: 0, retr_z: 0 };
+/// let s = cycle600(&State::default(), None, &call).unwrap();
+/// let c = position(&s, &head, [0.0; 3]).unwrap();
+/// assert!((c.axes[0] - 30.0).abs() < 1e-9 && (c.axes[1] - 40.0).abs() < 1e-9);
+/// let inv = position(&State { rot_inv: true, ..s }, &head, [0.0; 3]).unwrap();
+/// assert!((inv.axes[0] + 150.0).abs() < 1e-9 && (inv.axes[1] + 40.0).abs() < 1e-9);
+/// ```
+pub fn position(
+    state: &State,
+    machine: &Machine,
+    current: [f64; MAX_AXES],
+) -> Result<Choice, Error> {
+    let rule = if state.rot_inv {
+        Rule::Inverse
+    } else {
+        Rule::Closest
+    };
+    machine.choose(&state.frame.rotation, current, rule)
 }

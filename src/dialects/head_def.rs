@@ -12,7 +12,8 @@
 //! known `_KEY=value` variables, `GOTOF`/`GOTOB`/`GOTO` jumps, `RET`/`M17`/`M30`, comments
 //! after `;`. Anything else is an error that names its line: nothing is skipped silently.
 
-use crate::Error;
+use crate::kinematics::{Machine, RotaryAxis, Side};
+use crate::{Error, Vector};
 
 /// Longest accessory name in bytes (the field holds one more, the terminating NUL).
 pub const NAME_MAX: usize = 31;
@@ -38,6 +39,36 @@ impl Head {
     /// The name as bytes.
     pub fn name(&self) -> &[u8] {
         &self.name[..usize::from(self.len).min(NAME_MAX)]
+    }
+
+    /// The accessory as a two-axis swivel head whose axes have the directions `v1` (outer)
+    /// and `v2` (inner, carried by the first); HEAD_DEF gives lengths, not directions.
+    ///
+    /// The lengths become pivots [derived; the paper names the variables but does not
+    /// draw their geometry, so this is the reading the library documents]: the tool adapter
+    /// is the origin, the tool points along +Z; `_DELTA_L2` is the height of the inner
+    /// axis above the tool adapter and `_DELTA_L1` that of the outer axis above the inner
+    /// one, `_DELTA_H1` the horizontal (Y) distance of the outer axis from the spindle; the
+    /// `_OFFS_*` are the small errors across each length:
+    /// `p2 = (OFFS_L2_X, OFFS_L2_Y, DELTA_L2)`,
+    /// `p1 = p2 + (OFFS_L1_X, OFFS_L1_Y, DELTA_L1) + (OFFS_H1_X, DELTA_H1, OFFS_H1_Z)`.
+    ///
+    /// ```
+    /// use cncrot::dialects::head_def::HeadTable;
+    /// let t = HeadTable::parse(b"_HEAD_NAME=\"H\"\n_DELTA_L1=500 _DELTA_L2=250 _DELTA_H1=20\n").unwrap();
+    /// let m = t.find(b"H").unwrap().machine([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]).unwrap();
+    /// assert_eq!(m.axes()[1].point, [0.0, 0.0, 250.0]);
+    /// assert_eq!(m.axes()[0].point, [0.0, 20.0, 750.0]);
+    /// ```
+    pub fn machine(&self, v1: Vector, v2: Vector) -> Result<Machine, Error> {
+        let [l1, l2, h1] = self.delta;
+        let [l1x, l1y, l2x, l2y, h1x, h1z] = self.offsets;
+        let p2 = [l2x, l2y, l2];
+        let p1 = [l2x + l1x + h1x, l2y + l1y + h1, l2 + l1 + h1z];
+        Machine::new([0.0, 0.0, 1.0])?
+            .with_axis(RotaryAxis::new(Side::Tool, v1, p1))?
+            .with_axis(RotaryAxis::new(Side::Tool, v2, p2))?
+            .with_name(self.name())
     }
 }
 

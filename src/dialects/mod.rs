@@ -1,5 +1,6 @@
 //! Controller dialects: the commands of the controllers, on top of the rotation mathematics.
 
+pub mod carr;
 pub mod cycle600;
 pub mod fanuc;
 pub mod form;

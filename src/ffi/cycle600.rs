@@ -135,10 +135,11 @@ fn bit(v: i32) -> Result<bool, Error> {
 
 /// The caller's head table, read in place: a lookup checks the count and the entry it
 /// finds, nothing else, so a call costs the same whatever the table holds.
-struct CHeads<'a>(&'a cncrot_head_table);
+pub(super) struct CHeads<'a>(pub(super) &'a cncrot_head_table);
 
-impl HeadLookup for CHeads<'_> {
-    fn contains(&self, name: &[u8]) -> Result<bool, Error> {
+impl CHeads<'_> {
+    /// The entry named `name`, checked; `None` when there is none.
+    pub(super) fn find(&self, name: &[u8]) -> Result<Option<&cncrot_head>, Error> {
         let t = self.0;
         let count = usize::try_from(t.count)
             .ok()
@@ -160,10 +161,16 @@ impl HeadLookup for CHeads<'_> {
                 if !h.delta.iter().chain(&h.offsets).all(|x| x.is_finite()) {
                     return Err(Error::NotFinite);
                 }
-                return Ok(true);
+                return Ok(Some(h));
             }
         }
-        Ok(false)
+        Ok(None)
+    }
+}
+
+impl HeadLookup for CHeads<'_> {
+    fn contains(&self, name: &[u8]) -> Result<bool, Error> {
+        Ok(self.find(name)?.is_some())
     }
 }
 
@@ -383,7 +390,8 @@ pub unsafe extern "C" fn cncrot_head_table_parse(
 /// `_POS_*_R` after it forms a frame; `_ROT_AD = 1` adds it to the frame stored in `gud`
 /// (intrinsic input on the right, extrinsic on the left). Its rotation is decomposed for
 /// `_INEXOUT`/`_BIN_OUT` into `cyc600_2..4`. `_SW_REC = 1` recalculates only; `_SW_REC = 0`
-/// (positioning the head) returns `CNCROT_STATUS_NOT_AVAILABLE`. `_ROT_INV` and `_RETR_Z`
+/// (positioning the head) recalculates the same way, and `cncrot_cycle600_position` then
+/// gives the axis positions for the accessory's machine. `_ROT_INV` and `_RETR_Z`
 /// (0/1) are kept in `gud`. The stored rotation is kept orthonormal however many additive
 /// calls follow. `_MIHEAD` is printable ASCII without spaces or quotes, or empty without a
 /// table (`CNCROT_STATUS_BAD_ARGUMENT` otherwise). The table is read in place: only its
@@ -470,5 +478,49 @@ pub unsafe extern "C" fn cncrot_cycle600(
         store(gud, &next);
         let singular = next.results.is_some_and(|r| r.singular);
         Ok(super::status_of(singular))
+    })
+}
+
+/// `_SW_REC = 0`: the rotary-axis positions of `machine` for the frame the last
+/// `cncrot_cycle600` call left in `gud`, seen from the current positions `current_deg`:
+/// the solution closest to them, or with `_ROT_INV = 1` stored in `gud` the other one of
+/// the pair. Outputs and statuses as `cncrot_machine_choose` with rule
+/// `CNCROT_CHOOSE_CLOSEST` / `CNCROT_CHOOSE_INVERSE`; `CNCROT_STATUS_BAD_STATE` for a
+/// `gud` this library did not write. `_RETR_Z` (in `gud`) is the calling cycle's: retract
+/// before moving the axes.
+///
+/// # Safety
+/// `gud` points to a state, `machine` to a `cncrot_machine`, `current_deg`, `axes_deg`,
+/// `residual_deg` to 3 and `remaining` to 16 doubles.
+///
+/// ```c
+/// double cur[3] = {0, 0, 0}, ax[3], res[3], rem[16];
+/// cncrot_cycle600(&gud, &heads, 1, "H", 0, 7, 0, 0, 0, 30, 40, 0, 0, 0, 0, 1, 39, 0, 0, 0);
+/// cncrot_cycle600_position(&gud, &m, cur, ax, res, rem);   // ax = {30, 40, 0}
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_cycle600_position(
+    gud: *const cncrot_cycle600_gud,
+    machine: *const super::cncrot_machine,
+    current_deg: *const f64,
+    axes_deg: *mut f64,
+    residual_deg: *mut f64,
+    remaining: *mut f64,
+) -> i32 {
+    guard(|| {
+        non_null(&[
+            gud.is_null(),
+            machine.is_null(),
+            current_deg.is_null(),
+            axes_deg.is_null(),
+            residual_deg.is_null(),
+            remaining.is_null(),
+        ])?;
+        let state = load(gud)?;
+        let m = super::machine::load(machine)?;
+        let current = super::read_finite::<3>(current_deg)?;
+        let c = cycle600::position(&state, &m, current)?;
+        super::machine::write_choice(&c, axes_deg, residual_deg, remaining)
     })
 }

@@ -15,6 +15,7 @@
 mod cycle600;
 mod dialects;
 mod frame;
+mod machine;
 mod probe;
 mod program;
 mod rotation;
@@ -22,6 +23,7 @@ mod rotation;
 pub use cycle600::*;
 pub use dialects::*;
 pub use frame::*;
+pub use machine::*;
 pub use probe::*;
 pub use program::*;
 pub use rotation::*;

@@ -67,6 +67,21 @@ const BAD: [f64; 3] = [f64::NAN, 0.0, 0.0];
 
 pub type Call = (&'static str, fn(&mut Trace));
 
+/// A head from swivel data: C about Z carrying B about Y, pivot 150 mm above the adapter.
+const CARR: &[u8] = b"$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1
+$TC_CARR10[1]=0 $TC_CARR11[1]=1 $TC_CARR12[1]=0
+$TC_CARR4[1]=0 $TC_CARR5[1]=0 $TC_CARR6[1]=-150 $TC_CARR23[1]=\"T\"
+$TC_CARR31[1]=-100 $TC_CARR33[1]=100 $TC_CARR34[1]=\"BC\"
+";
+
+/// The CARR head as a machine.
+fn head() -> cncrot_machine {
+    let mut m: cncrot_machine = unsafe { std::mem::zeroed() };
+    let s = unsafe { cncrot_machine_from_carr(&mut m, CARR.as_ptr().cast(), CARR.len(), 1) };
+    assert_eq!(s, 0);
+    m
+}
+
 /// Each entry calls its function on a success path, a singular or remark path where there
 /// is one, and error paths (NULL, NaN, bad codes, non-rotation).
 pub fn table() -> Vec<Call> {
@@ -651,6 +666,426 @@ pub fn table() -> Vec<Call> {
                 8,
             ));
             t.bytes(&out);
+        }),
+        ("cncrot_machine_from_carr", |t| unsafe {
+            let mut m: cncrot_machine = std::mem::zeroed();
+            t.status(cncrot_machine_from_carr(
+                &mut m,
+                CARR.as_ptr().cast(),
+                CARR.len(),
+                1,
+            ));
+            t.bytes(&m);
+            t.status(cncrot_machine_from_carr(
+                &mut m,
+                CARR.as_ptr().cast(),
+                CARR.len(),
+                2,
+            ));
+            let bad = b"$TC_CARR50[1]=1\n";
+            t.status(cncrot_machine_from_carr(
+                &mut m,
+                bad.as_ptr().cast(),
+                bad.len(),
+                1,
+            ));
+            t.status(cncrot_machine_from_carr(&mut m, null(), 0, 1));
+            t.bytes(&m);
+        }),
+        ("cncrot_machine_carr_error_line", |t| unsafe {
+            let mut line = -1;
+            let bad = b"$TC_CARR7[1]=1\n$TC_CARR8[1]=x\n";
+            t.status(cncrot_machine_carr_error_line(
+                bad.as_ptr().cast(),
+                bad.len(),
+                1,
+                &mut line,
+            ));
+            t.word(line as u64);
+            t.status(cncrot_machine_carr_error_line(
+                CARR.as_ptr().cast(),
+                CARR.len(),
+                1,
+                &mut line,
+            ));
+            t.word(line as u64);
+            t.status(cncrot_machine_carr_error_line(
+                bad.as_ptr().cast(),
+                bad.len(),
+                1,
+                null_mut(),
+            ));
+        }),
+        ("cncrot_machine_from_head", |t| unsafe {
+            let mut table: cncrot_head_table = std::mem::zeroed();
+            let text = b"_HEAD_NAME=\"H\"\n_DELTA_L1=500 _DELTA_L2=250\n";
+            t.status(cncrot_head_table_parse(
+                &mut table,
+                text.as_ptr().cast(),
+                text.len(),
+                null_mut(),
+            ));
+            let mut m: cncrot_machine = std::mem::zeroed();
+            let (z, x) = ([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]);
+            t.status(cncrot_machine_from_head(
+                &mut m,
+                &table,
+                c"H".as_ptr(),
+                z.as_ptr(),
+                x.as_ptr(),
+            ));
+            t.bytes(&m);
+            t.status(cncrot_machine_from_head(
+                &mut m,
+                &table,
+                c"X".as_ptr(),
+                z.as_ptr(),
+                x.as_ptr(),
+            ));
+            t.status(cncrot_machine_from_head(
+                &mut m,
+                &table,
+                c"H".as_ptr(),
+                z.as_ptr(),
+                z.as_ptr(),
+            ));
+            t.status(cncrot_machine_from_head(
+                &mut m,
+                &table,
+                c"H".as_ptr(),
+                BAD.as_ptr(),
+                x.as_ptr(),
+            ));
+            t.bytes(&m);
+        }),
+        ("cncrot_machine_add_axis", |t| unsafe {
+            let mut m: cncrot_machine = std::mem::zeroed();
+            let (z, y, o) = ([0.0, 0.0, 1.0], [0.0, 2.0, 0.0], [0.0, 0.0, 150.0]);
+            t.status(cncrot_machine_add_axis(
+                &mut m,
+                0,
+                z.as_ptr(),
+                o.as_ptr(),
+                0.0,
+                0.0,
+            ));
+            t.status(cncrot_machine_add_axis(
+                &mut m,
+                0,
+                y.as_ptr(),
+                o.as_ptr(),
+                -100.0,
+                100.0,
+            ));
+            t.status(cncrot_machine_add_axis(
+                &mut m,
+                2,
+                z.as_ptr(),
+                o.as_ptr(),
+                0.0,
+                0.0,
+            ));
+            t.status(cncrot_machine_add_axis(
+                &mut m,
+                1,
+                [0.0; 3].as_ptr(),
+                o.as_ptr(),
+                0.0,
+                0.0,
+            ));
+            t.status(cncrot_machine_add_axis(
+                &mut m,
+                1,
+                z.as_ptr(),
+                BAD.as_ptr(),
+                0.0,
+                0.0,
+            ));
+            t.status(cncrot_machine_add_axis(
+                &mut m,
+                1,
+                z.as_ptr(),
+                o.as_ptr(),
+                5.0,
+                1.0,
+            ));
+            t.status(cncrot_machine_add_axis(
+                &mut m,
+                1,
+                z.as_ptr(),
+                o.as_ptr(),
+                0.0,
+                0.0,
+            ));
+            t.status(cncrot_machine_add_axis(
+                &mut m,
+                1,
+                y.as_ptr(),
+                o.as_ptr(),
+                0.0,
+                0.0,
+            ));
+            t.bytes(&m);
+        }),
+        ("cncrot_machine_forward", |t| unsafe {
+            let m = head();
+            let mut f = [0.0; 16];
+            t.status(cncrot_machine_forward(
+                &m,
+                [30.0, 40.0, 0.0].as_ptr(),
+                f.as_mut_ptr(),
+            ));
+            t.f64s(&f);
+            t.status(cncrot_machine_forward(
+                &m,
+                [30.0, 40.0, 1.0].as_ptr(),
+                f.as_mut_ptr(),
+            ));
+            t.status(cncrot_machine_forward(&m, BAD.as_ptr(), f.as_mut_ptr()));
+            let mut broken = m;
+            broken.count = 4;
+            t.status(cncrot_machine_forward(&broken, A.as_ptr(), f.as_mut_ptr()));
+            t.f64s(&f);
+        }),
+        ("cncrot_machine_inverse", |t| unsafe {
+            let m = head();
+            let mut f = [0.0; 16];
+            t.status(cncrot_machine_forward(
+                &m,
+                [30.0, 40.0, 0.0].as_ptr(),
+                f.as_mut_ptr(),
+            ));
+            let (mut sol, mut n) = ([0.0; 6], 0usize);
+            t.status(cncrot_machine_inverse(
+                &m,
+                f.as_ptr(),
+                sol.as_mut_ptr(),
+                2,
+                &mut n,
+            ));
+            t.f64s(&sol);
+            t.word(n as u64);
+            t.status(cncrot_machine_inverse(
+                &m,
+                IDF.as_ptr(),
+                sol.as_mut_ptr(),
+                2,
+                &mut n,
+            ));
+            t.status(cncrot_machine_inverse(
+                &m,
+                f.as_ptr(),
+                sol.as_mut_ptr(),
+                1,
+                &mut n,
+            ));
+            t.status(cncrot_machine_inverse(
+                &m,
+                [2.0; 16].as_ptr(),
+                sol.as_mut_ptr(),
+                2,
+                &mut n,
+            ));
+            let tilt = [
+                1.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0,
+            ];
+            let mut one: cncrot_machine = std::mem::zeroed();
+            t.status(cncrot_machine_add_axis(
+                &mut one,
+                1,
+                [0.0, 0.0, 1.0].as_ptr(),
+                [0.0; 3].as_ptr(),
+                0.0,
+                0.0,
+            ));
+            t.status(cncrot_machine_inverse(
+                &one,
+                tilt.as_ptr(),
+                sol.as_mut_ptr(),
+                2,
+                &mut n,
+            ));
+            t.f64s(&sol);
+            t.word(n as u64);
+        }),
+        ("cncrot_machine_choose", |t| unsafe {
+            let m = head();
+            let mut f = [0.0; 16];
+            t.status(cncrot_machine_forward(
+                &m,
+                [30.0, 40.0, 0.0].as_ptr(),
+                f.as_mut_ptr(),
+            ));
+            let (mut ax, mut res, mut rem) = ([0.0; 3], [0.0; 3], [0.0; 16]);
+            let cur = [750.0, 0.0, 0.0];
+            for (rule, axis) in [(0, 0), (1, 2), (2, 2), (3, 0), (1, 0), (4, 0), (0, 1)] {
+                t.status(cncrot_machine_choose(
+                    &m,
+                    f.as_ptr(),
+                    cur.as_ptr(),
+                    rule,
+                    axis,
+                    ax.as_mut_ptr(),
+                    res.as_mut_ptr(),
+                    rem.as_mut_ptr(),
+                ));
+                t.f64s(&ax);
+            }
+            t.status(cncrot_machine_choose(
+                &m,
+                IDF.as_ptr(),
+                cur.as_ptr(),
+                0,
+                0,
+                ax.as_mut_ptr(),
+                res.as_mut_ptr(),
+                rem.as_mut_ptr(),
+            ));
+            t.status(cncrot_machine_choose(
+                &m,
+                f.as_ptr(),
+                [1e9, 0.0, 0.0].as_ptr(),
+                0,
+                0,
+                ax.as_mut_ptr(),
+                res.as_mut_ptr(),
+                rem.as_mut_ptr(),
+            ));
+            let mut hirth = m;
+            hirth.axes[1].hirth_step_deg = 7.0;
+            hirth.axes[1].min_deg = -50.0;
+            hirth.axes[1].max_deg = 50.0;
+            t.status(cncrot_machine_choose(
+                &hirth,
+                f.as_ptr(),
+                cur.as_ptr(),
+                0,
+                0,
+                ax.as_mut_ptr(),
+                res.as_mut_ptr(),
+                rem.as_mut_ptr(),
+            ));
+            t.f64s(&res);
+            t.f64s(&rem);
+            hirth.axes[1].max_deg = -45.0;
+            t.status(cncrot_machine_choose(
+                &hirth,
+                f.as_ptr(),
+                cur.as_ptr(),
+                0,
+                0,
+                ax.as_mut_ptr(),
+                res.as_mut_ptr(),
+                rem.as_mut_ptr(),
+            ));
+            t.f64s(&ax);
+        }),
+        ("cncrot_machine_follow", |t| unsafe {
+            let m = head();
+            let mut next = [0.0; 3];
+            let (from, to) = ([0.0; 3], [0.0, 90.0, 0.0]);
+            t.status(cncrot_machine_follow(
+                &m,
+                from.as_ptr(),
+                to.as_ptr(),
+                [1.0, 2.0, 3.0].as_ptr(),
+                100.0,
+                next.as_mut_ptr(),
+            ));
+            t.f64s(&next);
+            t.status(cncrot_machine_follow(
+                &m,
+                from.as_ptr(),
+                to.as_ptr(),
+                [1.0, 2.0, 3.0].as_ptr(),
+                f64::NAN,
+                next.as_mut_ptr(),
+            ));
+            t.status(cncrot_machine_follow(
+                &m,
+                from.as_ptr(),
+                BAD.as_ptr(),
+                [1.0, 2.0, 3.0].as_ptr(),
+                1.0,
+                next.as_mut_ptr(),
+            ));
+            t.f64s(&next);
+        }),
+        ("cncrot_cycle600_position", |t| unsafe {
+            let m = head();
+            let mut gud: cncrot_cycle600_gud = std::mem::zeroed();
+            let (mut ax, mut res, mut rem) = ([0.0; 3], [0.0; 3], [0.0; 16]);
+            t.status(cncrot_cycle600(
+                &mut gud,
+                null(),
+                1,
+                c"H".as_ptr(),
+                0,
+                7,
+                0.0,
+                0.0,
+                0.0,
+                30.0,
+                40.0,
+                0.0,
+                0.0,
+                0.0,
+                0.0,
+                1,
+                39,
+                0,
+                0,
+                0,
+            ));
+            t.status(cncrot_cycle600_position(
+                &gud,
+                &m,
+                [0.0; 3].as_ptr(),
+                ax.as_mut_ptr(),
+                res.as_mut_ptr(),
+                rem.as_mut_ptr(),
+            ));
+            t.f64s(&ax);
+            t.status(cncrot_cycle600(
+                &mut gud,
+                null(),
+                1,
+                c"H".as_ptr(),
+                0,
+                7,
+                0.0,
+                0.0,
+                0.0,
+                30.0,
+                40.0,
+                0.0,
+                0.0,
+                0.0,
+                0.0,
+                1,
+                39,
+                0,
+                1,
+                0,
+            ));
+            t.status(cncrot_cycle600_position(
+                &gud,
+                &m,
+                [0.0; 3].as_ptr(),
+                ax.as_mut_ptr(),
+                res.as_mut_ptr(),
+                rem.as_mut_ptr(),
+            ));
+            t.f64s(&ax);
+            gud.cyc600_2 += 1.0;
+            t.status(cncrot_cycle600_position(
+                &gud,
+                &m,
+                [0.0; 3].as_ptr(),
+                ax.as_mut_ptr(),
+                res.as_mut_ptr(),
+                rem.as_mut_ptr(),
+            ));
         }),
         ("cncrot_cycle600_gud_size", |t| {
             t.word(cncrot_cycle600_gud_size() as u64);

@@ -1,0 +1,623 @@
+//! Exports of the swivel kinematics: a caller-owned machine description, its forward and
+//! inverse computation, the choice of positions and the tool-tip follow-up.
+
+use super::cycle600::{cncrot_head_table, CHeads, CNCROT_NAME_SIZE};
+use super::frame::{read_frame, write_frame};
+use super::{cncrot_status, guard, non_null, read_finite, write};
+use crate::dialects::carr::machine_from_carr;
+use crate::dialects::head_def::{Head, NAME_MAX};
+use crate::kinematics::{Choice, Hirth, Machine, RotaryAxis, Rule, Side, MAX_AXES};
+use crate::Frame;
+use core::ffi::c_char;
+
+/// Capacity of `cncrot_machine.axes`.
+pub const CNCROT_MACHINE_AXES: usize = 3;
+/// The most solutions `cncrot_machine_inverse` returns.
+pub const CNCROT_MACHINE_SOLUTIONS_MAX: usize = 2;
+/// `cncrot_machine_choose`: the solution closest to the current positions.
+pub const CNCROT_CHOOSE_CLOSEST: i32 = 0;
+/// `cncrot_machine_choose`: the lower position of the reference axis (CYCLE800 "minus",
+/// Heidenhain `SEQ-` on the master axis).
+pub const CNCROT_CHOOSE_MINUS: i32 = 1;
+/// `cncrot_machine_choose`: the higher position of the reference axis (CYCLE800 "plus",
+/// Heidenhain `SEQ+`).
+pub const CNCROT_CHOOSE_PLUS: i32 = 2;
+/// `cncrot_machine_choose`: the other solution of the pair (CYCLE600 `_ROT_INV = 1`).
+pub const CNCROT_CHOOSE_INVERSE: i32 = 3;
+
+/// One rotary axis of a `cncrot_machine`: a direction and a point on it (machine
+/// coordinates, every axis at its initial position).
+#[allow(non_camel_case_types)]
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct cncrot_machine_axis {
+    /// 0: the axis turns the tool; 1: it turns the workpiece.
+    pub work_side: i32,
+    /// Zero.
+    pub reserved: i32,
+    /// Direction; positive rotation is the right-hand turn about it (any length, not 0).
+    pub direction: [f64; 3],
+    /// A point on the axis, mm.
+    pub point: [f64; 3],
+    /// The position the axis reads in the described initial state, degrees
+    /// (`$TC_CARR24/25`).
+    pub offset_deg: f64,
+    /// Travel limits, degrees; both 0: a modulo axis without limits.
+    pub min_deg: f64,
+    /// See `min_deg`.
+    pub max_deg: f64,
+    /// Hirth grid: a tooth position, degrees.
+    pub hirth_offset_deg: f64,
+    /// Hirth grid: tooth spacing, degrees; 0: no grid.
+    pub hirth_step_deg: f64,
+}
+
+/// A machine: up to three rotary axes, outermost first (an axis added after another on the
+/// same side is carried by it), the tool's base direction and a name. A caller-owned plain
+/// struct; zeroed, it is a machine without rotary axes whose tool points along +Z. Every
+/// call checks it; the fields may be written directly (offsets, Hirth grids, limits).
+#[allow(non_camel_case_types)]
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct cncrot_machine {
+    /// How many entries of `axes` are used (0..3).
+    pub count: i32,
+    /// Zero.
+    pub reserved: i32,
+    /// The tool's direction with every axis at its initial position; all 0: +Z.
+    pub tool_direction: [f64; 3],
+    /// The axes, outermost first.
+    pub axes: [cncrot_machine_axis; CNCROT_MACHINE_AXES],
+    /// A name, NUL-terminated (`$TC_CARR34`).
+    pub name: [c_char; CNCROT_NAME_SIZE],
+}
+
+const EMPTY_AXIS: cncrot_machine_axis = cncrot_machine_axis {
+    work_side: 0,
+    reserved: 0,
+    direction: [0.0; 3],
+    point: [0.0; 3],
+    offset_deg: 0.0,
+    min_deg: 0.0,
+    max_deg: 0.0,
+    hirth_offset_deg: 0.0,
+    hirth_step_deg: 0.0,
+};
+
+/// The Rust machine a C description stands for, checked.
+fn machine_of(m: &cncrot_machine) -> Result<Machine, cncrot_status> {
+    let count = usize::try_from(m.count)
+        .ok()
+        .filter(|&c| c <= MAX_AXES)
+        .ok_or(cncrot_status::BadArgument)?;
+    if m.reserved != 0 {
+        return Err(cncrot_status::BadArgument);
+    }
+    let b = if m.tool_direction == [0.0; 3] {
+        [0.0, 0.0, 1.0]
+    } else {
+        m.tool_direction
+    };
+    let mut machine = Machine::new(b)?;
+    for a in m.axes.iter().take(count) {
+        machine = machine.with_axis(axis_of(a)?)?;
+    }
+    let len = m
+        .name
+        .iter()
+        .position(|&c| c == 0)
+        .ok_or(cncrot_status::NameTooLong)?;
+    let mut name = [0u8; NAME_MAX];
+    for (n, &c) in name.iter_mut().zip(m.name.iter().take(len)) {
+        *n = c as u8;
+    }
+    Ok(machine.with_name(name.get(..len).unwrap_or(&[]))?)
+}
+
+fn axis_of(a: &cncrot_machine_axis) -> Result<RotaryAxis, cncrot_status> {
+    let side = match a.work_side {
+        0 => Side::Tool,
+        1 => Side::Work,
+        _ => return Err(cncrot_status::BadFlag),
+    };
+    if a.reserved != 0 {
+        return Err(cncrot_status::BadArgument);
+    }
+    let numbers = [
+        a.offset_deg,
+        a.min_deg,
+        a.max_deg,
+        a.hirth_offset_deg,
+        a.hirth_step_deg,
+    ];
+    if !numbers
+        .iter()
+        .chain(&a.direction)
+        .chain(&a.point)
+        .all(|x| x.is_finite())
+    {
+        return Err(cncrot_status::NotFinite);
+    }
+    // Written so that NaN would refuse.
+    if !(a.hirth_step_deg >= 0.0) {
+        return Err(cncrot_status::BadArgument);
+    }
+    Ok(RotaryAxis {
+        offset: a.offset_deg,
+        limits: (a.min_deg != 0.0 || a.max_deg != 0.0).then_some([a.min_deg, a.max_deg]),
+        hirth: (a.hirth_step_deg > 0.0).then_some(Hirth {
+            offset: a.hirth_offset_deg,
+            step: a.hirth_step_deg,
+        }),
+        ..RotaryAxis::new(side, a.direction, a.point)
+    })
+}
+
+/// The C description of a machine (directions as unit vectors, unused axes zeroed).
+fn c_of(m: &Machine) -> cncrot_machine {
+    let mut out = cncrot_machine {
+        count: m.axes().len() as i32,
+        reserved: 0,
+        tool_direction: m.tool_direction(),
+        axes: [EMPTY_AXIS; CNCROT_MACHINE_AXES],
+        name: [0; CNCROT_NAME_SIZE],
+    };
+    for (dst, a) in out.axes.iter_mut().zip(m.axes()) {
+        let [lo, hi] = a.limits.unwrap_or([0.0; 2]);
+        let (ho, hs) = a.hirth.map_or((0.0, 0.0), |h| (h.offset, h.step));
+        *dst = cncrot_machine_axis {
+            work_side: i32::from(a.side == Side::Work),
+            reserved: 0,
+            direction: a.direction,
+            point: a.point,
+            offset_deg: a.offset,
+            min_deg: lo,
+            max_deg: hi,
+            hirth_offset_deg: ho,
+            hirth_step_deg: hs,
+        };
+    }
+    for (dst, &b) in out.name.iter_mut().zip(m.name()) {
+        *dst = b as c_char;
+    }
+    out
+}
+
+/// # Safety
+/// `p` is non-NULL and points to a readable `cncrot_machine` (any alignment).
+pub(super) unsafe fn load(p: *const cncrot_machine) -> Result<Machine, cncrot_status> {
+    machine_of(&p.read_unaligned())
+}
+
+/// # Safety
+/// `text` is non-NULL and points to `len` readable bytes.
+unsafe fn bytes<'a>(text: *const c_char, len: usize) -> Result<&'a [u8], cncrot_status> {
+    // No object is larger than isize::MAX bytes.
+    if len > isize::MAX as usize {
+        return Err(cncrot_status::BadArgument);
+    }
+    Ok(core::slice::from_raw_parts(text.cast::<u8>(), len))
+}
+
+/// Reads SINUMERIK swivel data set `data_set` (1-based) from `$TC_CARR…` assignments
+/// (`len` bytes of `text`, no NUL needed) into `machine`: type T (both axes turn the tool,
+/// pivots `−l1` and `−l1 − l2`), P (both turn the workpiece, `l2` and `l2 + l3`), M (axis
+/// 1 turns the tool about `l2`, axis 2 the workpiece about `l3`); vectors v1, v2 (7-12),
+/// offsets (24, 25), Hirth grids (26-29), limits (30-33), name (34), fine offsets (41-65,
+/// added). Other data sets, other tool data, `CHANDATA(…)` and comments are skipped.
+///
+/// Returns 0 with `machine` written, or with it untouched: `CNCROT_STATUS_PARSE`,
+/// `CNCROT_STATUS_UNKNOWN_WORD` (a parameter that does not exist, anything that is not an
+/// assignment), `CNCROT_STATUS_NAME_TOO_LONG`, `CNCROT_STATUS_UNKNOWN_HEAD` (no parameter
+/// of that data set), `CNCROT_STATUS_BAD_ARGUMENT` (`data_set` < 1, a type other than
+/// T/P/M, v2 without v1, parallel axes, negative Hirth increment). The line of an error:
+/// `cncrot_machine_carr_error_line`.
+///
+/// # Safety
+/// `machine` points to a writable `cncrot_machine`, `text` to `len` readable bytes.
+///
+/// ```c
+/// const char *t = "$TC_CARR10[1]=0 $TC_CARR11[1]=0 $TC_CARR12[1]=-1\n"
+///                 "$TC_CARR7[1]=1 $TC_CARR8[1]=0 $TC_CARR9[1]=0\n$TC_CARR23[1]=\"P\"\n";
+/// cncrot_machine m;
+/// cncrot_machine_from_carr(&m, t, strlen(t), 1);   // table A carrying C
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_machine_from_carr(
+    machine: *mut cncrot_machine,
+    text: *const c_char,
+    len: usize,
+    data_set: i32,
+) -> i32 {
+    guard(|| {
+        non_null(&[machine.is_null(), text.is_null()])?;
+        let m = machine_from_carr(bytes(text, len)?, data_set).map_err(|e| e.error)?;
+        machine.write_unaligned(c_of(&m));
+        Ok(cncrot_status::Ok)
+    })
+}
+
+/// The line at which `cncrot_machine_from_carr` refuses the same text: its status, and the
+/// 1-based line in `*line` (0 when the text was read, or for an error of the whole data
+/// set such as `CNCROT_STATUS_UNKNOWN_HEAD`).
+///
+/// # Safety
+/// `text` points to `len` readable bytes, `line` to a writable `int32_t`.
+///
+/// ```c
+/// int32_t line;
+/// if (cncrot_machine_carr_error_line(t, strlen(t), 1, &line) < 0) printf("line %d\n", line);
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_machine_carr_error_line(
+    text: *const c_char,
+    len: usize,
+    data_set: i32,
+    line: *mut i32,
+) -> i32 {
+    guard(|| {
+        non_null(&[text.is_null(), line.is_null()])?;
+        let (status, at) = match machine_from_carr(bytes(text, len)?, data_set) {
+            Ok(_) => (cncrot_status::Ok, 0),
+            Err(e) => (e.error.into(), i32::try_from(e.line).unwrap_or(i32::MAX)),
+        };
+        line.write_unaligned(at);
+        Ok(status)
+    })
+}
+
+/// The accessory `name` (NUL-terminated) of a HEAD_DEF table as a two-axis swivel head
+/// with axis directions `v1` (outer) and `v2` (inner): HEAD_DEF gives the lengths, the
+/// directions come from the caller. Pivots [derived]: the tool adapter at the origin,
+/// `p2 = (OFFS_L2_X, OFFS_L2_Y, DELTA_L2)`,
+/// `p1 = p2 + (OFFS_L1_X, OFFS_L1_Y, DELTA_L1) + (OFFS_H1_X, DELTA_H1, OFFS_H1_Z)`.
+///
+/// Returns 0 with `machine` written, or with it untouched: `CNCROT_STATUS_UNKNOWN_HEAD`,
+/// `CNCROT_STATUS_NAME_TOO_LONG`, `CNCROT_STATUS_BAD_ARGUMENT` (a zero or parallel
+/// direction, a corrupt table), `CNCROT_STATUS_NOT_FINITE`.
+///
+/// # Safety
+/// `machine` points to a writable `cncrot_machine`, `heads` to a table (aligned as
+/// `cncrot_head_table`), `name` to a NUL-terminated string, `v1`, `v2` to 3 doubles.
+///
+/// ```c
+/// double z[3] = {0, 0, 1}, x[3] = {1, 0, 0};
+/// cncrot_machine_from_head(&m, &heads, "IFVW207S", z, x);
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_machine_from_head(
+    machine: *mut cncrot_machine,
+    heads: *const cncrot_head_table,
+    name: *const c_char,
+    v1: *const f64,
+    v2: *const f64,
+) -> i32 {
+    guard(|| {
+        non_null(&[
+            machine.is_null(),
+            heads.is_null(),
+            name.is_null(),
+            v1.is_null(),
+            v2.is_null(),
+        ])?;
+        let mut field = [0u8; CNCROT_NAME_SIZE];
+        let mut len = None;
+        for (k, n) in field.iter_mut().enumerate() {
+            *n = name.add(k).read() as u8;
+            if *n == 0 {
+                len = Some(k);
+                break;
+            }
+        }
+        let len = len.ok_or(cncrot_status::NameTooLong)?;
+        let (v1, v2) = (read_finite::<3>(v1)?, read_finite::<3>(v2)?);
+        if heads.align_offset(core::mem::align_of::<cncrot_head_table>()) != 0 {
+            return Err(cncrot_status::BadArgument);
+        }
+        let Some(table) = heads.as_ref() else {
+            return Err(cncrot_status::NullPointer);
+        };
+        let wanted = field.get(..len).unwrap_or(&[]);
+        let lookup = CHeads(table);
+        let entry = lookup.find(wanted)?;
+        let c = entry.ok_or(cncrot_status::UnknownHead)?;
+        let mut head = Head {
+            len: len as u8,
+            allowed: c.allowed == 1,
+            delta: c.delta,
+            offsets: c.offsets,
+            ..Head::default()
+        };
+        for (d, &s) in head.name.iter_mut().zip(wanted) {
+            *d = s;
+        }
+        let m = head.machine(v1, v2)?;
+        machine.write_unaligned(c_of(&m));
+        Ok(cncrot_status::Ok)
+    })
+}
+
+/// Adds a rotary axis to `machine`: it turns the tool (`work_side` 0) or the workpiece (1)
+/// about the line through `point` along `direction` (machine coordinates, every axis at its
+/// initial position), and is carried by the axes already on its side. `min_deg`,
+/// `max_deg`: travel limits, both 0 for a modulo axis without limits. The direction is
+/// stored as a unit vector; offset and Hirth grid may be set in the struct afterwards.
+///
+/// Returns 0, or with `machine` untouched: `CNCROT_STATUS_TABLE_FULL` (three axes already),
+/// `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_BAD_ARGUMENT` (a
+/// zero direction, `min > max`, an axis parallel to its neighbour in the chain, a corrupt
+/// description).
+///
+/// # Safety
+/// `machine` points to a writable `cncrot_machine`, `direction` and `point` to 3 doubles.
+///
+/// ```c
+/// cncrot_machine m = {0};
+/// double z[3] = {0, 0, 1}, y[3] = {0, 1, 0}, o[3] = {0, 0, 0}, p[3] = {0, 0, 150};
+/// cncrot_machine_add_axis(&m, 0, z, o, 0, 0);        // C, modulo
+/// cncrot_machine_add_axis(&m, 0, y, p, -100, 100);   // B on C, pivot 150 above the adapter
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_machine_add_axis(
+    machine: *mut cncrot_machine,
+    work_side: i32,
+    direction: *const f64,
+    point: *const f64,
+    min_deg: f64,
+    max_deg: f64,
+) -> i32 {
+    guard(|| {
+        non_null(&[machine.is_null(), direction.is_null(), point.is_null()])?;
+        let m = load(machine)?;
+        let new = cncrot_machine_axis {
+            work_side,
+            direction: read_finite::<3>(direction)?,
+            point: read_finite::<3>(point)?,
+            min_deg,
+            max_deg,
+            ..EMPTY_AXIS
+        };
+        let next = m.with_axis(axis_of(&new)?)?;
+        machine.write_unaligned(c_of(&next));
+        Ok(cncrot_status::Ok)
+    })
+}
+
+/// The tool frame relative to the workpiece, `F = W⁻¹·T` (with the tool's base direction
+/// turned onto +Z), at axis positions `axes_deg` (degrees, in the order the axes were
+/// added; unused ones 0): its third column is the tool direction in workpiece coordinates,
+/// `F·(0, 0, −L, 1)` the tool tip of a tool of length L.
+///
+/// Returns 0, or with `frame` untouched: `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_BAD_ARGUMENT` (an unused position not 0, a corrupt description),
+/// `CNCROT_STATUS_OUT_OF_RANGE`.
+///
+/// # Safety
+/// `machine` points to a `cncrot_machine`, `axes_deg` to 3 and `frame` to 16 doubles.
+///
+/// ```c
+/// double ax[3] = {90, 30, 0}, f[16];
+/// cncrot_machine_forward(&m, ax, f);   // tool direction (f[2], f[6], f[10])
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_machine_forward(
+    machine: *const cncrot_machine,
+    axes_deg: *const f64,
+    frame: *mut f64,
+) -> i32 {
+    guard(|| {
+        non_null(&[machine.is_null(), axes_deg.is_null(), frame.is_null()])?;
+        let m = load(machine)?;
+        let f = m.forward(read_finite::<3>(axes_deg)?)?;
+        write_frame(frame, &f)?;
+        Ok(cncrot_status::Ok)
+    })
+}
+
+/// Every isolated set of axis positions, each within (-180, 180], whose tool frame has the
+/// orientation of `frame` (its translation is not used): the whole rotation with three
+/// axes, the tool direction (third column) with fewer. Travel limits are ignored (see
+/// `cncrot_machine_choose`). `solutions_deg` receives `*count` rows of 3 (unused axes 0).
+///
+/// Returns 0; `CNCROT_STATUS_FREE_AXIS` at a singular pose (the target direction along an
+/// axis, which is free: the family once, the free axis at 0); or with nothing written:
+/// `CNCROT_STATUS_UNREACHABLE`, `CNCROT_STATUS_NO_ROOM` (`capacity` below the count; 2
+/// always suffice), `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_BAD_ARGUMENT`.
+///
+/// # Safety
+/// `machine` points to a `cncrot_machine`, `frame` to 16 doubles, `solutions_deg` to
+/// `3·capacity` writable doubles, `count` to a writable `size_t`.
+///
+/// ```c
+/// double sol[2 * 3]; size_t n;
+/// cncrot_machine_inverse(&m, f, sol, 2, &n);
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_machine_inverse(
+    machine: *const cncrot_machine,
+    frame: *const f64,
+    solutions_deg: *mut f64,
+    capacity: usize,
+    count: *mut usize,
+) -> i32 {
+    guard(|| {
+        non_null(&[
+            machine.is_null(),
+            frame.is_null(),
+            solutions_deg.is_null(),
+            count.is_null(),
+        ])?;
+        let m = load(machine)?;
+        let target = read_frame(frame)?;
+        let s = m.inverse(&target.rotation)?;
+        let rows = s.as_slice();
+        if rows.len() > capacity {
+            return Err(cncrot_status::NoRoom);
+        }
+        if !rows.iter().flatten().all(|x| x.is_finite()) {
+            return Err(cncrot_status::OutOfRange);
+        }
+        for (k, row) in rows.iter().enumerate() {
+            write::<3>(solutions_deg.add(3 * k), *row)?;
+        }
+        count.write_unaligned(rows.len());
+        Ok(if s.free {
+            cncrot_status::FreeAxis
+        } else {
+            cncrot_status::Ok
+        })
+    })
+}
+
+/// The axis positions to move to for the orientation of `frame`, seen from the current
+/// positions `current_deg`: every solution brought to the whole turn nearest to the
+/// current position (computed 10°, current 750° → 730°), or within the travel limits, and
+/// snapped to Hirth grids; solutions outside the travel are skipped. `rule`:
+/// `CNCROT_CHOOSE_CLOSEST` (`reference_axis` 0), `CNCROT_CHOOSE_MINUS` / `_PLUS` (the
+/// lower / higher position of axis `reference_axis`, 1-based: CYCLE800's direction
+/// reference, Heidenhain `SEQ-` / `SEQ+` on the master axis), `CNCROT_CHOOSE_INVERSE`
+/// (`reference_axis` 0; the other solution of the pair: CYCLE600 `_ROT_INV`). A free axis
+/// (singular pose) stays at its current position.
+///
+/// Outputs: `axes_deg` (unused 0), `residual_deg` (Hirth: position minus exact value),
+/// `remaining` (the rotation the axes leave to the frame, `Fᵀ·target`: about the tool axis
+/// with fewer than three axes, plus the Hirth residual; no translation).
+///
+/// Returns 0, `CNCROT_STATUS_FREE_AXIS`, `CNCROT_STATUS_SNAPPED` (a Hirth axis left a
+/// residual), or with nothing written: `CNCROT_STATUS_UNREACHABLE`,
+/// `CNCROT_STATUS_OUT_OF_TRAVEL`, `CNCROT_STATUS_BAD_ARGUMENT` (rule, reference axis, an
+/// unused current position not 0), `CNCROT_STATUS_OUT_OF_RANGE` (a current position
+/// beyond ±65536°), `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_FINITE`.
+///
+/// # Safety
+/// `machine` points to a `cncrot_machine`, `frame` and `remaining` to 16 doubles,
+/// `current_deg`, `axes_deg`, `residual_deg` to 3.
+///
+/// ```c
+/// double cur[3] = {750, 0, 0}, ax[3], res[3], rem[16];
+/// cncrot_machine_choose(&m, f, cur, CNCROT_CHOOSE_CLOSEST, 0, ax, res, rem);
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_machine_choose(
+    machine: *const cncrot_machine,
+    frame: *const f64,
+    current_deg: *const f64,
+    rule: i32,
+    reference_axis: i32,
+    axes_deg: *mut f64,
+    residual_deg: *mut f64,
+    remaining: *mut f64,
+) -> i32 {
+    guard(|| {
+        non_null(&[
+            machine.is_null(),
+            frame.is_null(),
+            current_deg.is_null(),
+            axes_deg.is_null(),
+            residual_deg.is_null(),
+            remaining.is_null(),
+        ])?;
+        let rule = rule_of(rule, reference_axis)?;
+        let m = load(machine)?;
+        let target = read_frame(frame)?;
+        let current = read_finite::<3>(current_deg)?;
+        let c = m.choose(&target.rotation, current, rule)?;
+        write_choice(&c, axes_deg, residual_deg, remaining)
+    })
+}
+
+/// The Rust rule for the C `rule` and 1-based `reference_axis`.
+pub(super) fn rule_of(rule: i32, reference_axis: i32) -> Result<Rule, cncrot_status> {
+    let axis = usize::try_from(reference_axis)
+        .ok()
+        .and_then(|k| k.checked_sub(1));
+    match (rule, axis) {
+        (CNCROT_CHOOSE_CLOSEST, None) if reference_axis == 0 => Ok(Rule::Closest),
+        (CNCROT_CHOOSE_INVERSE, None) if reference_axis == 0 => Ok(Rule::Inverse),
+        (CNCROT_CHOOSE_MINUS, Some(k)) => Ok(Rule::Minus(k)),
+        (CNCROT_CHOOSE_PLUS, Some(k)) => Ok(Rule::Plus(k)),
+        _ => Err(cncrot_status::BadArgument),
+    }
+}
+
+/// Writes a choice (all outputs checked first) and returns its status.
+///
+/// # Safety
+/// The pointers are non-NULL: `axes`, `residual` to 3, `remaining` to 16 writable doubles.
+pub(super) unsafe fn write_choice(
+    c: &Choice,
+    axes: *mut f64,
+    residual: *mut f64,
+    remaining: *mut f64,
+) -> Result<cncrot_status, cncrot_status> {
+    let rem = Frame::from_rotation(c.remaining);
+    let h = rem.to_homogeneous();
+    let all = c.axes.iter().chain(&c.residual).chain(h.iter().flatten());
+    if !all.into_iter().all(|x| x.is_finite()) {
+        return Err(cncrot_status::OutOfRange);
+    }
+    write::<3>(axes, c.axes)?;
+    write::<3>(residual, c.residual)?;
+    write_frame(remaining, &rem)?;
+    Ok(if c.free {
+        cncrot_status::FreeAxis
+    } else if c.residual.iter().any(|&r| r != 0.0) {
+        cncrot_status::Snapped
+    } else {
+        cncrot_status::Ok
+    })
+}
+
+/// Tool-tip follow-up: the linear-axis positions `linear_to` that keep the tip of a tool
+/// of length `tool_length` (mm) on the same workpiece point when the rotary axes move from
+/// `from_deg` to `to_deg`, the linear axes being at `linear_from` before (machine
+/// coordinates of the tool adapter's reference point, the origin of the axis points).
+///
+/// Returns 0, or with `linear_to` untouched: `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_OUT_OF_RANGE`.
+///
+/// # Safety
+/// `machine` points to a `cncrot_machine`, the arrays to 3 doubles each.
+///
+/// ```c
+/// double from[3] = {0, 0, 0}, to[3] = {0, 90, 0}, lin[3] = {0, 0, 0}, next[3];
+/// cncrot_machine_follow(&m, from, to, lin, 100.0, next);
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_machine_follow(
+    machine: *const cncrot_machine,
+    from_deg: *const f64,
+    to_deg: *const f64,
+    linear_from: *const f64,
+    tool_length: f64,
+    linear_to: *mut f64,
+) -> i32 {
+    guard(|| {
+        non_null(&[
+            machine.is_null(),
+            from_deg.is_null(),
+            to_deg.is_null(),
+            linear_from.is_null(),
+            linear_to.is_null(),
+        ])?;
+        if !tool_length.is_finite() {
+            return Err(cncrot_status::NotFinite);
+        }
+        let m = load(machine)?;
+        let from = read_finite::<3>(from_deg)?;
+        let to = read_finite::<3>(to_deg)?;
+        let lin = read_finite::<3>(linear_from)?;
+        let next = m.follow_tool_tip(from, to, lin, tool_length)?;
+        write::<3>(linear_to, next)?;
+        Ok(cncrot_status::Ok)
+    })
+}
