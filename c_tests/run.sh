@@ -31,7 +31,7 @@ if bash c_tests/symbols.sh "$lib" core >/dev/null; then
   failed=1
 fi
 
-tests=(test_core test_cycle600 test_dialects test_program)
+tests=(test_core test_cycle600 test_dialects test_program test_kinematics)
 for t in "${tests[@]}"; do
   src=c_tests/$t.c
   cc -std=c99 -O1 -g "${warn[@]}" "$src" -L"$lib" -lcncrot -Wl,-rpath,"$root/$lib" -lm -o "$build/${t}_shared"

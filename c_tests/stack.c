@@ -6,7 +6,8 @@
  * and outputs are globals, so the wrapper's own frame is a few words, and the empty
  * wrapper's use is subtracted. Usage: stack LIMIT_HOT LIMIT_SETUP; prints a table and exits
  * 1 if a hot-path function needs more than LIMIT_HOT bytes or a setup function (HEAD_DEF
- * parsing, program lines) more than LIMIT_SETUP. Not built with sanitizers (they change frames). */
+ * parsing, program lines, the machine kinematics: block preparation, not the interpolation
+ * cycle) more than LIMIT_SETUP. Not built with sanitizers (they change frames). */
 #define _XOPEN_SOURCE 700
 #include <stdio.h>
 #include <stdlib.h>
@@ -173,6 +174,54 @@ static void cycle600(void) {
   sink += cncrot_cycle600(&gud, NULL, 1, "IFVW207S", 0, 57, 1, 2, 3, 30, 90, 60, 4, 5, 6, 0, 55, 1, 1, 1);
   sink += cncrot_cycle600(&gud, &table, 1, "NOPE", 1, 57, 1, 2, 3, 30, 90, 60, 4, 5, 6, 0, 55, 1, 1, 1);
 }
+static cncrot_machine mach, head3;
+static const char CARR[] =
+    "N10 $TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1 $TC_CARR10[1]=0 $TC_CARR11[1]=1.5EX0 $TC_CARR12[1]=1\n"
+    "N20 $TC_CARR4[1]=0.011 $TC_CARR5[1]=-0.041 $TC_CARR6[1]=-250.049 $TC_CARR23[1]=\"m\"\n"
+    "N30 $TC_CARR15[1]=10 $TC_CARR28[1]=2.5 $TC_CARR30[1]=-360 $TC_CARR32[1]=360\n"
+    "N40 $TC_CARR34[1]=\"TABLE_AND_HEAD_0123456789\" ; name\n$TC_DP1[1,1]=120\nM17\n";
+static const double TILT[16] = {0.36, -0.48, 0.8, 0, 0.8, 0.6, 0, 0, -0.48, 0.64, 0.6, 0, 0, 0, 0, 1};
+static void machine_from_carr(void) {
+  sink += cncrot_machine_from_carr(&mach, CARR, sizeof CARR - 1, 1) +
+          cncrot_machine_from_carr(&mach, CARR, sizeof CARR - 1, 2);
+}
+static void machine_carr_error_line(void) {
+  sink += cncrot_machine_carr_error_line(CARR, sizeof CARR - 1, 1, &line);
+}
+static void machine_from_head(void) {
+  static const double z[3] = {0, 0, 1}, x[3] = {1, 0, 0};
+  sink += cncrot_machine_from_head(&mach, &table, "IFVW207S", z, x);
+}
+static void machine_add_axis(void) {
+  static const double z[3] = {0, 0, 1}, y[3] = {0, 1, 0}, x[3] = {1, 0, 0}, o[3] = {10, 20, 30};
+  memset(&head3, 0, sizeof head3);
+  sink += cncrot_machine_add_axis(&head3, 1, z, o, 0, 0) + cncrot_machine_add_axis(&head3, 0, y, o, -100, 100) +
+          cncrot_machine_add_axis(&head3, 0, x, o, 0, 0) + cncrot_machine_add_axis(&head3, 0, x, o, 0, 0);
+}
+static void machine_forward(void) {
+  static const double ax[3] = {10, 20, 30};
+  sink += cncrot_machine_forward(&head3, ax, f);
+}
+static void machine_inverse(void) {
+  static double sol[6];
+  static size_t n;
+  sink += cncrot_machine_inverse(&head3, TILT, sol, 2, &n) + cncrot_machine_inverse(&mach, TILT, sol, 2, &n);
+}
+static void machine_choose(void) {
+  static const double cur[3] = {750, 10, -20};
+  static double ax[3], res[3], rem[16];
+  sink += cncrot_machine_choose(&head3, TILT, cur, CNCROT_CHOOSE_CLOSEST, 0, ax, res, rem) +
+          cncrot_machine_choose(&mach, TILT, cur, CNCROT_CHOOSE_MINUS, 2, ax, res, rem);
+}
+static void machine_follow(void) {
+  static const double from[3] = {0, 0, 0}, to[3] = {30, 40, 50}, lin[3] = {1, 2, 3};
+  sink += cncrot_machine_follow(&head3, from, to, lin, 100, out3);
+}
+static void cycle600_position(void) {
+  static const double cur[3] = {0, 0, 0};
+  static double ax[3], res[3], rem[16];
+  sink += cncrot_cycle600_position(&gud, &head3, cur, ax, res, rem);
+}
 
 struct entry {
   const char *name;
@@ -191,6 +240,9 @@ static const struct entry ENTRIES[] = {
     E(form_word_count, 0),   E(probe_flange, 0),       E(probe_plane, 0),
     E(probe_edge, 0),        E(program_line, 1),       E(program_column, 1),
     E(program_frame, 0),     E(program_write, 1),
+    E(machine_from_carr, 1), E(machine_carr_error_line, 1), E(machine_from_head, 1),
+    E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
+    E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),
 };
 
 int main(int argc, char **argv) {

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Worst-case stack of every export (c_tests/stack.c, a painted stack per call), for the std
 # and the real-time build; fails above the documented bounds: 2048 bytes for the hot-path
-# functions, 3584 for text (HEAD_DEF parsing, program lines: setup time). Also fails when a function the header
+# functions, 3584 for setup-time work (HEAD_DEF parsing, program lines, the machine
+# kinematics: block preparation). Also fails when a function the header
 # declares is not measured. Usage: c_tests/stack.sh (after the release and rt builds).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

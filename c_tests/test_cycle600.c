@@ -111,7 +111,7 @@ static void heads_and_invalid(void) {
   CHECK_STATUS(CALL(&gud, &heads, 0, "UFK600", 1, 57, nan, 0, 0, 1, 2, 3, 0, 0, 0, 1, 39, 0), CNCROT_STATUS_NOT_FINITE);
   CHECK_STATUS(CALL(&gud, &heads, 0, "UFK600", 1, 57, 0, 0, 0, 1, inf, 3, 0, 0, 0, 1, 39, 0), CNCROT_STATUS_NOT_FINITE);
   CHECK_STATUS(CALL(&gud, &heads, 0, "UFK600", 1, 57, 0, 0, 0, 1, 2, 3, 0, 0, -inf, 1, 39, 0), CNCROT_STATUS_NOT_FINITE);
-  CHECK_STATUS(CALL(&gud, &heads, 0, "UFK600", 0, 57, 0, 0, 0, 1, 2, 3, 0, 0, 0, 1, 39, 0), CNCROT_STATUS_NOT_AVAILABLE);
+  CHECK_STATUS(CALL(&gud, &heads, 0, "UFK600", 0, 57, 0, 0, 0, 1, 2, 3, 0, 0, 0, 1, 39, 0), CNCROT_STATUS_OK);
   CHECK_STATUS(CALL(&gud, &heads, 0, "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789", 1, 57, 0, 0, 0, 1, 2, 3, 0, 0, 0, 1, 39, 0), CNCROT_STATUS_NAME_TOO_LONG);
   CHECK_STATUS(CALL(&gud, &heads, 0, NULL, 1, 57, 0, 0, 0, 1, 2, 3, 0, 0, 0, 1, 39, 0), CNCROT_STATUS_NULL_POINTER);
   CHECK_STATUS(CALL(NULL, &heads, 0, "UFK600", 1, 57, 0, 0, 0, 1, 2, 3, 0, 0, 0, 1, 39, 0), CNCROT_STATUS_NULL_POINTER);

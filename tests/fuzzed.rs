@@ -11,6 +11,7 @@ fn every_export_is_fuzzed() {
         include_str!("../fuzz/fuzz_targets/cycle600.rs"),
         include_str!("../fuzz/fuzz_targets/head_def.rs"),
         include_str!("../fuzz/fuzz_targets/program.rs"),
+        include_str!("../fuzz/fuzz_targets/kinematics.rs"),
     ];
     // Used in code (called, or taken as a function value), not only named in a comment:
     // the whole identifier on a line that is not a comment.

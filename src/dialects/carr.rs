@@ -286,7 +286,8 @@ fn build(d: &Data) -> Result<Machine, Error> {
             }),
             ..RotaryAxis::new(side, dir, p)
         };
-        m = m.with_axis(axis)?;
+        m.push_axis(axis)?;
     }
-    m.with_name(d.name.get(..d.name_len).unwrap_or(&[]))
+    m.set_name(d.name.get(..d.name_len).unwrap_or(&[]))?;
+    Ok(m)
 }

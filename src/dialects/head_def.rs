@@ -65,10 +65,11 @@ impl Head {
         let [l1x, l1y, l2x, l2y, h1x, h1z] = self.offsets;
         let p2 = [l2x, l2y, l2];
         let p1 = [l2x + l1x + h1x, l2y + l1y + h1, l2 + l1 + h1z];
-        Machine::new([0.0, 0.0, 1.0])?
-            .with_axis(RotaryAxis::new(Side::Tool, v1, p1))?
-            .with_axis(RotaryAxis::new(Side::Tool, v2, p2))?
-            .with_name(self.name())
+        let mut m = Machine::new([0.0, 0.0, 1.0])?;
+        m.push_axis(RotaryAxis::new(Side::Tool, v1, p1))?;
+        m.push_axis(RotaryAxis::new(Side::Tool, v2, p2))?;
+        m.set_name(self.name())?;
+        Ok(m)
     }
 }
 

@@ -84,7 +84,9 @@ const EMPTY_AXIS: cncrot_machine_axis = cncrot_machine_axis {
     hirth_step_deg: 0.0,
 };
 
-/// The Rust machine a C description stands for, checked.
+/// The Rust machine a C description stands for, checked. Not inlined: its temporaries
+/// would otherwise stay in every export's frame (stack bound).
+#[inline(never)]
 fn machine_of(m: &cncrot_machine) -> Result<Machine, cncrot_status> {
     let count = usize::try_from(m.count)
         .ok()
@@ -100,7 +102,7 @@ fn machine_of(m: &cncrot_machine) -> Result<Machine, cncrot_status> {
     };
     let mut machine = Machine::new(b)?;
     for a in m.axes.iter().take(count) {
-        machine = machine.with_axis(axis_of(a)?)?;
+        machine.push_axis(axis_of(a)?)?;
     }
     let len = m
         .name
@@ -111,7 +113,8 @@ fn machine_of(m: &cncrot_machine) -> Result<Machine, cncrot_status> {
     for (n, &c) in name.iter_mut().zip(m.name.iter().take(len)) {
         *n = c as u8;
     }
-    Ok(machine.with_name(name.get(..len).unwrap_or(&[]))?)
+    machine.set_name(name.get(..len).unwrap_or(&[]))?;
+    Ok(machine)
 }
 
 fn axis_of(a: &cncrot_machine_axis) -> Result<RotaryAxis, cncrot_status> {
@@ -183,10 +186,21 @@ fn c_of(m: &Machine) -> cncrot_machine {
     out
 }
 
+/// The machine at `p`, read in place; a pointer not aligned like the C type is refused
+/// (`CNCROT_STATUS_BAD_ARGUMENT`) rather than copied (a copy would cost 352 bytes of stack).
+///
 /// # Safety
-/// `p` is non-NULL and points to a readable `cncrot_machine` (any alignment).
+/// `p` is non-NULL and points to a readable `cncrot_machine`.
 pub(super) unsafe fn load(p: *const cncrot_machine) -> Result<Machine, cncrot_status> {
-    machine_of(&p.read_unaligned())
+    if p.align_offset(core::mem::align_of::<cncrot_machine>()) != 0 {
+        return Err(cncrot_status::BadArgument);
+    }
+    // SAFETY: non-NULL and aligned (checked); every bit pattern of its integer and double
+    // fields is valid.
+    match p.as_ref() {
+        Some(m) => machine_of(m),
+        None => Err(cncrot_status::NullPointer),
+    }
 }
 
 /// # Safety
@@ -372,7 +386,7 @@ pub unsafe extern "C" fn cncrot_machine_add_axis(
 ) -> i32 {
     guard(|| {
         non_null(&[machine.is_null(), direction.is_null(), point.is_null()])?;
-        let m = load(machine)?;
+        let mut m = load(machine)?;
         let new = cncrot_machine_axis {
             work_side,
             direction: read_finite::<3>(direction)?,
@@ -381,8 +395,8 @@ pub unsafe extern "C" fn cncrot_machine_add_axis(
             max_deg,
             ..EMPTY_AXIS
         };
-        let next = m.with_axis(axis_of(&new)?)?;
-        machine.write_unaligned(c_of(&next));
+        m.push_axis(axis_of(&new)?)?;
+        machine.write_unaligned(c_of(&m));
         Ok(cncrot_status::Ok)
     })
 }

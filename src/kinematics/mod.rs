@@ -183,41 +183,58 @@ impl Machine {
     /// consecutive axes of the chain parallel within [`PARALLEL_SINE`]
     /// ([`Error::BadArgument`]).
     pub fn with_axis(&self, axis: RotaryAxis) -> Result<Machine, Error> {
+        let mut next = *self;
+        next.push_axis(axis)?;
+        Ok(next)
+    }
+
+    /// [`Machine::with_axis`] in place (the machine is unchanged on an error): what the C
+    /// boundary uses, so that no copies of the machine pile up on the stack. Not inlined:
+    /// one frame serves every axis added (stack bound of the C exports).
+    #[inline(never)]
+    pub fn push_axis(&mut self, axis: RotaryAxis) -> Result<(), Error> {
         if self.count >= MAX_AXES {
             return Err(Error::TableFull);
         }
-        let mut next = *self;
-        if let Some(slot) = next.axes.get_mut(self.count) {
-            *slot = axis.checked()?;
+        let checked = axis.checked()?;
+        if let Some(slot) = self.axes.get_mut(self.count) {
+            *slot = checked;
         }
-        next.count = self.count + 1;
-        let (chain, n) = next.chain();
+        self.count += 1;
+        let (chain, n) = self.chain();
         for pair in chain.get(..n).unwrap_or(&[]).windows(2) {
             if let [a, b] = pair {
                 let c = cross(a.axis, b.axis);
                 if dot(c, c) < PARALLEL_SINE * PARALLEL_SINE {
+                    self.count -= 1;
                     return Err(Error::BadArgument);
                 }
             }
         }
-        Ok(next)
+        Ok(())
     }
 
     /// The machine with a name (printable ASCII, at most [`MACHINE_NAME_MAX`] bytes).
     pub fn with_name(&self, name: &[u8]) -> Result<Machine, Error> {
+        let mut next = *self;
+        next.set_name(name)?;
+        Ok(next)
+    }
+
+    /// [`Machine::with_name`] in place (unchanged on an error).
+    pub fn set_name(&mut self, name: &[u8]) -> Result<(), Error> {
         if name.len() > MACHINE_NAME_MAX {
             return Err(Error::NameTooLong);
         }
         if !name.iter().all(|b| (0x20..0x7f).contains(b)) {
             return Err(Error::BadArgument);
         }
-        let mut next = *self;
-        next.name = [0; MACHINE_NAME_MAX];
-        if let Some(dst) = next.name.get_mut(..name.len()) {
+        self.name = [0; MACHINE_NAME_MAX];
+        if let Some(dst) = self.name.get_mut(..name.len()) {
             dst.copy_from_slice(name);
         }
-        next.name_len = name.len() as u8;
-        Ok(next)
+        self.name_len = name.len() as u8;
+        Ok(())
     }
 
     /// The axes, in the order they were added.

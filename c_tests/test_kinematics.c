@@ -1,0 +1,304 @@
+/* Swivel kinematics through the C interface: a fork head, a table, a mixed machine from
+ * SINUMERIK swivel data, a 45-degree nutating head and the paper's three-axis machine (a
+ * rotary table with a two-axis head) built axis by axis; the tool direction against hand
+ * geometry with the C library's trigonometry; every inverse solution reproduced by the
+ * forward computation; the choice rules, travel limits, Hirth grids, singular poses; the
+ * tool-tip follow-up; CYCLE600 positioning; refusals with the outputs untouched. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cncrot.h"
+#include "harness.h"
+#include "geometry.h"
+
+static const double Z[3] = {0, 0, 1}, Y[3] = {0, 1, 0}, X[3] = {1, 0, 0}, O[3] = {0, 0, 0};
+
+static cncrot_machine from_carr(const char *text) {
+  cncrot_machine m;
+  memset(&m, 0, sizeof m);
+  CHECK_STATUS(cncrot_machine_from_carr(&m, text, strlen(text), 1), CNCROT_STATUS_OK);
+  return m;
+}
+
+/* The frame of a rotation (no translation). */
+static void frame_of(const double r[9], double f[16]) {
+  memset(f, 0, 16 * sizeof f[0]);
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) f[4 * i + j] = r[3 * i + j];
+  f[15] = 1;
+}
+
+/* Largest difference of the tool direction (or the whole rotation when whole != 0). */
+static double miss(const cncrot_machine *m, const double ax[3], const double target[16], int whole) {
+  double f[16];
+  if (cncrot_machine_forward(m, ax, f) != CNCROT_STATUS_OK) return 1e9;
+  double worst = 0;
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++)
+      if (whole || j == 2) worst = fmax(worst, fabs(f[4 * i + j] - target[4 * i + j]));
+  return worst;
+}
+
+/* Every solution of the inverse reproduces the target; returns the count. */
+static size_t all_reproduce(const cncrot_machine *m, const double target[16], int whole, int32_t expect) {
+  double sol[6];
+  size_t n = 99;
+  CHECK_STATUS(cncrot_machine_inverse(m, target, sol, 2, &n), expect);
+  for (size_t k = 0; k < n && k < 2; k++) CHECK(miss(m, sol + 3 * k, target, whole) < 1e-12, "solution %zu", k);
+  return n;
+}
+
+static const char HEAD_T[] =
+    "; fork head: C about Z carrying B about Y, pivot 150 mm above the adapter\n"
+    "N10 $TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1\n"
+    "N20 $TC_CARR10[1]=0 $TC_CARR11[1]=1 $TC_CARR12[1]=0\n"
+    "N30 $TC_CARR4[1]=0 $TC_CARR5[1]=0 $TC_CARR6[1]=-150 $TC_CARR23[1]=\"T\"\n"
+    "N40 $TC_CARR31[1]=-100 $TC_CARR33[1]=100 $TC_CARR34[1]=\"HEAD_CB\"\nM17\n";
+
+static void fork_head(void) {
+  cncrot_machine m = from_carr(HEAD_T);
+  CHECK(m.count == 2 && strcmp(m.name, "HEAD_CB") == 0, "count %d", m.count);
+  /* p2 = -l1 - l2; $TC_CARR31/33 are axis 2's limits, axis 1 has none. */
+  CHECK(m.axes[1].point[2] == 150 && m.axes[1].min_deg == -100 && m.axes[1].max_deg == 100, "axis 2");
+  CHECK(m.axes[0].min_deg == 0 && m.axes[0].max_deg == 0, "axis 1 modulo");
+  double ax[3] = {30, 40, 0}, f[16];
+  CHECK_STATUS(cncrot_machine_forward(&m, ax, f), CNCROT_STATUS_OK);
+  double c = cos(30 * PI / 180), s = sin(30 * PI / 180), sb = sin(40 * PI / 180), cb = cos(40 * PI / 180);
+  double dir[3] = {c * sb, s * sb, cb}, got[3] = {f[2], f[6], f[10]};
+  CHECK_NEAR(got, dir, 3, 1e-15);
+  /* The adapter turns about the pivot (0, 0, 150): it sits at pivot - 150·dir. */
+  double org[3] = {f[3], f[7], f[11]}, want[3] = {-150 * dir[0], -150 * dir[1], 150 - 150 * dir[2]};
+  CHECK_NEAR(org, want, 3, 1e-12);
+  CHECK(all_reproduce(&m, f, 0, CNCROT_STATUS_OK) == 2, "two solutions");
+
+  /* Choice: closest from C = 750 unwinds to 750 - 720 + 30 = 750? C = 30 + 720 = 750. */
+  double cur[3] = {750, 0, 0}, out[3], res[3], rem[16];
+  CHECK_STATUS(cncrot_machine_choose(&m, f, cur, CNCROT_CHOOSE_CLOSEST, 0, out, res, rem), CNCROT_STATUS_OK);
+  double want_c[3] = {750, 40, 0};
+  CHECK_NEAR(out, want_c, 3, 1e-9);
+  /* A fork head reaches Rz·Ry entirely: nothing remains. */
+  CHECK(fabs(rem[0] - 1) < 1e-14 && fabs(rem[5] - 1) < 1e-14 && fabs(rem[10] - 1) < 1e-14, "remaining");
+  double cur2[3] = {0, 0, 0};
+  CHECK_STATUS(cncrot_machine_choose(&m, f, cur2, CNCROT_CHOOSE_MINUS, 2, out, res, rem), CNCROT_STATUS_OK);
+  double want_m[3] = {-150, -40, 0};
+  CHECK_NEAR(out, want_m, 3, 1e-9);
+  CHECK_STATUS(cncrot_machine_choose(&m, f, cur2, CNCROT_CHOOSE_INVERSE, 0, out, res, rem), CNCROT_STATUS_OK);
+  CHECK_NEAR(out, want_m, 3, 1e-9);
+  /* The other branch turns the tool half a turn about itself: the frame keeps Rz(180). */
+  CHECK(fabs(rem[0] + 1) < 1e-14 && fabs(rem[5] + 1) < 1e-14 && fabs(rem[10] - 1) < 1e-14, "remaining");
+
+  /* Limits: B within 0..100 leaves only B = +40 even for "minus". */
+  cncrot_machine lim = m;
+  lim.axes[1].min_deg = 0;
+  lim.axes[1].max_deg = 100;
+  CHECK_STATUS(cncrot_machine_choose(&lim, f, cur2, CNCROT_CHOOSE_MINUS, 2, out, res, rem), CNCROT_STATUS_OK);
+  CHECK(fabs(out[1] - 40) < 1e-9, "B %g", out[1]);
+  lim.axes[1].max_deg = 20;
+  fill_sentinel(out, 3);
+  CHECK_STATUS(cncrot_machine_choose(&lim, f, cur2, CNCROT_CHOOSE_CLOSEST, 0, out, res, rem),
+               CNCROT_STATUS_OUT_OF_TRAVEL);
+  CHECK(is_sentinel(out, 3), "untouched");
+
+  /* Hirth: B on a 15-degree grid reaches 40 as 45, residual +5; the remaining frame turns
+   * back by 5 degrees about the tilted Y. */
+  cncrot_machine h = m;
+  h.axes[1].hirth_step_deg = 15;
+  CHECK_STATUS(cncrot_machine_choose(&h, f, cur2, CNCROT_CHOOSE_PLUS, 2, out, res, rem), CNCROT_STATUS_SNAPPED);
+  CHECK(fabs(out[1] - 45) < 1e-12 && fabs(res[1] - 5) < 1e-12, "hirth %g %g", out[1], res[1]);
+  double ry[9];
+  elem(2, -5, ry);
+  double rr[9];
+  rot_of(rem, rr);
+  CHECK_NEAR(rr, ry, 9, 1e-14);
+
+  /* Singular: the tool straight down leaves C free at its current position. */
+  double idf[16];
+  double id[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  frame_of(id, idf);
+  double cur3[3] = {123, 5, 0};
+  CHECK_STATUS(cncrot_machine_choose(&m, idf, cur3, CNCROT_CHOOSE_CLOSEST, 0, out, res, rem), CNCROT_STATUS_FREE_AXIS);
+  CHECK(out[0] == 123 && fabs(out[1]) < 1e-12, "free C %g %g", out[0], out[1]);
+  all_reproduce(&m, idf, 0, CNCROT_STATUS_FREE_AXIS);
+
+  /* Tool-tip follow-up: the tip F·(0, 0, -L) stays on the workpiece. */
+  double from[3] = {0, 0, 0}, to[3] = {30, 40, 0}, lin[3] = {10, 20, 30}, next[3];
+  CHECK_STATUS(cncrot_machine_follow(&m, from, to, lin, 100, next), CNCROT_STATUS_OK);
+  /* Tip before: lin + (0, 0, -100); after: next + adapter(to) - 100·dir. */
+  double tip0[3] = {10, 20, -70};
+  double tip1[3] = {next[0] + want[0] - 100 * dir[0], next[1] + want[1] - 100 * dir[1],
+                    next[2] + want[2] - 100 * dir[2]};
+  CHECK_NEAR(tip1, tip0, 3, 1e-9);
+}
+
+static void table_and_mixed(void) {
+  /* Table A (about X) carrying C (about -Z, as commissioned for C+ clockwise). */
+  static const char TABLE_P[] =
+      "$TC_CARR7[1]=1 $TC_CARR8[1]=0 $TC_CARR9[1]=0\n$TC_CARR10[1]=0 $TC_CARR11[1]=0 $TC_CARR12[1]=-1\n"
+      "$TC_CARR4[1]=0 $TC_CARR5[1]=0 $TC_CARR6[1]=-100 $TC_CARR15[1]=0 $TC_CARR16[1]=0 $TC_CARR17[1]=0\n"
+      "$TC_CARR23[1]=\"p\" $TC_CARR30[1]=-120 $TC_CARR32[1]=20\n";
+  cncrot_machine t = from_carr(TABLE_P);
+  CHECK(t.count == 2 && t.axes[0].work_side == 1 && t.axes[1].work_side == 1, "P: both on the work");
+  CHECK(t.axes[0].point[2] == -100 && t.axes[1].point[2] == -100, "P pivots l2, l2 + l3");
+  /* The tool (+Z in the machine) seen from the workpiece: Rz(+C)·Rx(-A)·e_z (C about -Z). */
+  double ax[3] = {-30, 50, 0}, f[16];
+  CHECK_STATUS(cncrot_machine_forward(&t, ax, f), CNCROT_STATUS_OK);
+  double rz[9], rx[9], r[9];
+  elem(3, 50, rz);
+  elem(1, 30, rx);
+  mul3(rz, rx, r);
+  double dir[3] = {r[2], r[5], r[8]}, got[3] = {f[2], f[6], f[10]};
+  CHECK_NEAR(got, dir, 3, 1e-15);
+  all_reproduce(&t, f, 0, CNCROT_STATUS_OK);
+  double cur[3] = {0, 0, 0}, out[3], res[3], rem[16];
+  /* The other solution (A = 30, C = -130) is beyond A's travel -120..20. */
+  CHECK_STATUS(cncrot_machine_choose(&t, f, cur, CNCROT_CHOOSE_PLUS, 1, out, res, rem), CNCROT_STATUS_OK);
+  CHECK(fabs(out[0] + 30) < 1e-9 && fabs(out[1] - 50) < 1e-9, "A %g C %g", out[0], out[1]);
+
+  /* Mixed: B head (tool) and C table (work). */
+  static const char MIXED_M[] =
+      "$TC_CARR7[1]=0 $TC_CARR8[1]=1 $TC_CARR9[1]=0 $TC_CARR10[1]=0 $TC_CARR11[1]=0 $TC_CARR12[1]=1\n"
+      "$TC_CARR4[1]=0 $TC_CARR5[1]=0 $TC_CARR6[1]=200 $TC_CARR15[1]=300 $TC_CARR16[1]=0 $TC_CARR17[1]=0\n"
+      "$TC_CARR23[1]=\"M\" $TC_CARR24[1]=0.5\n";
+  cncrot_machine mx = from_carr(MIXED_M);
+  CHECK(mx.axes[0].work_side == 0 && mx.axes[1].work_side == 1, "M sides");
+  CHECK(mx.axes[0].point[2] == 200 && mx.axes[1].point[0] == 300 && mx.axes[0].offset_deg == 0.5, "M");
+  double am[3] = {20.5, 70, 0};
+  CHECK_STATUS(cncrot_machine_forward(&mx, am, f), CNCROT_STATUS_OK);
+  all_reproduce(&mx, f, 0, CNCROT_STATUS_OK);
+  /* B turns by 20.5 - 0.5 = 20: the tool direction Rz(-70)·Ry(20)·e_z. */
+  double ry[9];
+  elem(3, -70, rz);
+  elem(2, 20, ry);
+  mul3(rz, ry, r);
+  double d2[3] = {r[2], r[5], r[8]}, g2[3] = {f[2], f[6], f[10]};
+  CHECK_NEAR(g2, d2, 3, 1e-15);
+}
+
+static void nutating_and_three_axes(void) {
+  /* 45-degree nutating head: C, then B' about (0, 1, 1)/sqrt 2. Tilt b needs B' = theta with
+   * cos b = (1 + cos theta) / 2. */
+  cncrot_machine n;
+  memset(&n, 0, sizeof n);
+  double v45[3] = {0, 1, 1}, p[3] = {0, 0, 120};
+  CHECK_STATUS(cncrot_machine_add_axis(&n, 0, Z, O, 0, 0), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_add_axis(&n, 0, v45, p, 0, 0), CNCROT_STATUS_OK);
+  CHECK(fabs(n.axes[1].direction[1] - sqrt(0.5)) < 1e-15, "stored as a unit vector");
+  for (double b = 5; b <= 85; b += 20) {
+    double rx[9], f[16], sol[6];
+    elem(1, -b, rx);
+    frame_of(rx, f);
+    size_t cnt = 0;
+    CHECK_STATUS(cncrot_machine_inverse(&n, f, sol, 2, &cnt), CNCROT_STATUS_OK);
+    double theta = acos(2 * cos(b * PI / 180) - 1) * 180 / PI;
+    CHECK(cnt == 2, "two");
+    for (size_t k = 0; k < cnt; k++) {
+      CHECK(fabs(fabs(sol[3 * k + 1]) - theta) < 1e-9, "theta %g %g", sol[3 * k + 1], theta);
+      CHECK(miss(&n, sol + 3 * k, f, 0) < 1e-12, "nutating");
+    }
+  }
+  /* Beyond 90 degrees: unreachable, nothing written. */
+  double rx[9], f[16], sol[6];
+  size_t cnt = 77;
+  elem(1, -120, rx);
+  frame_of(rx, f);
+  fill_sentinel(sol, 6);
+  CHECK_STATUS(cncrot_machine_inverse(&n, f, sol, 2, &cnt), CNCROT_STATUS_UNREACHABLE);
+  CHECK(cnt == 77 && is_sentinel(sol, 6), "untouched");
+
+  /* The paper's machine: a rotary table C (work) and a two-axis head (tool: about Y, then
+   * about X): the whole orientation is reachable. */
+  cncrot_machine three;
+  memset(&three, 0, sizeof three);
+  double piv[3] = {0, 0, 540.735}, piv2[3] = {0.011, -0.041, 250.049}, ctr[3] = {500, 300, 0};
+  CHECK_STATUS(cncrot_machine_add_axis(&three, 1, Z, ctr, 0, 0), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_add_axis(&three, 0, Y, piv, -120, 120), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_add_axis(&three, 0, X, piv2, 0, 0), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_add_axis(&three, 0, X, piv2, 0, 0), CNCROT_STATUS_TABLE_FULL);
+  for (int k = 0; k < 200; k++) {
+    double a[3] = {rnd(-180, 180), rnd(-120, 120), rnd(-180, 180)};
+    CHECK_STATUS(cncrot_machine_forward(&three, a, f), CNCROT_STATUS_OK);
+    all_reproduce(&three, f, 1, CNCROT_STATUS_OK);
+  }
+  /* The paper's Example 3 target (intrinsic Z, X', Y'' = 37.7923, 20.7048, 49.1066). */
+  double fr[16];
+  double ang[3] = {37.7923, 20.7048, 49.1066};
+  CHECK_STATUS(cncrot_frame_from_angles(1, 39, ang, O, O, fr), CNCROT_STATUS_OK);
+  double cur[3] = {0, 0, 0}, out[3], res[3], rem[16];
+  CHECK_STATUS(cncrot_machine_choose(&three, fr, cur, CNCROT_CHOOSE_CLOSEST, 0, out, res, rem), CNCROT_STATUS_OK);
+  CHECK(miss(&three, out, fr, 1) < 1e-12, "paper target reached whole");
+  CHECK(fabs(rem[0] - 1) < 1e-12 && fabs(rem[5] - 1) < 1e-12 && fabs(rem[10] - 1) < 1e-12, "nothing remains");
+}
+
+static void cycle600_and_refusals(void) {
+  cncrot_machine m = from_carr(HEAD_T);
+  cncrot_cycle600_gud gud;
+  memset(&gud, 0, sizeof gud);
+  /* Intrinsic Z, X' = 30, 40 is C = 30 with the tilt about X; this head tilts about Y:
+   * Rz(30)·Rx(40)·e_z = Rz(30 - 90)·Ry(40)·e_z, so C = -60, B = 40. */
+  CHECK_STATUS(cncrot_cycle600(&gud, NULL, 1, "HEAD_CB", 0, 7, 0, 0, 0, 30, 40, 0, 0, 0, 0, 1, 39, 0, 0, 0),
+               CNCROT_STATUS_OK);
+  double cur[3] = {0, 0, 0}, out[3], res[3], rem[16];
+  CHECK_STATUS(cncrot_cycle600_position(&gud, &m, cur, out, res, rem), CNCROT_STATUS_OK);
+  double want[3] = {-60, 40, 0};
+  CHECK_NEAR(out, want, 3, 1e-9);
+  CHECK_STATUS(cncrot_cycle600(&gud, NULL, 1, "HEAD_CB", 0, 7, 0, 0, 0, 30, 40, 0, 0, 0, 0, 1, 39, 0, 1, 0),
+               CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_cycle600_position(&gud, &m, cur, out, res, rem), CNCROT_STATUS_OK);
+  double inv[3] = {120, -40, 0};
+  CHECK_NEAR(out, inv, 3, 1e-9);
+
+  /* Swivel-data errors name their line. */
+  int32_t line = -1;
+  const char *bad = "$TC_CARR7[1]=1\n\n$TC_CARR8[1]=R1\n";
+  cncrot_machine keep = m;
+  CHECK_STATUS(cncrot_machine_from_carr(&m, bad, strlen(bad), 1), CNCROT_STATUS_NOT_A_NUMBER);
+  CHECK(memcmp(&keep, &m, sizeof m) == 0, "untouched");
+  CHECK_STATUS(cncrot_machine_carr_error_line(bad, strlen(bad), 1, &line), CNCROT_STATUS_NOT_A_NUMBER);
+  CHECK(line == 3, "line %d", line);
+  const char *undef = "$TC_CARR52[1]=0\n";
+  CHECK_STATUS(cncrot_machine_from_carr(&m, undef, strlen(undef), 1), CNCROT_STATUS_UNKNOWN_WORD);
+  CHECK_STATUS(cncrot_machine_from_carr(&m, HEAD_T, strlen(HEAD_T), 2), CNCROT_STATUS_UNKNOWN_HEAD);
+  const char *only2 = "$TC_CARR12[1]=1\n";
+  CHECK_STATUS(cncrot_machine_from_carr(&m, only2, strlen(only2), 1), CNCROT_STATUS_BAD_ARGUMENT);
+
+  /* Description errors, pointers, numbers. */
+  double ax[3] = {0, 0, 0}, f[16];
+  cncrot_machine broken = m;
+  broken.axes[0].work_side = 2;
+  CHECK_STATUS(cncrot_machine_forward(&broken, ax, f), CNCROT_STATUS_BAD_FLAG);
+  broken = m;
+  broken.axes[1].direction[0] = NAN;
+  CHECK_STATUS(cncrot_machine_forward(&broken, ax, f), CNCROT_STATUS_NOT_FINITE);
+  broken = m;
+  broken.name[31] = 'x';
+  memset(broken.name, 'x', sizeof broken.name);
+  CHECK_STATUS(cncrot_machine_forward(&broken, ax, f), CNCROT_STATUS_NAME_TOO_LONG);
+  CHECK_STATUS(cncrot_machine_forward(NULL, ax, f), CNCROT_STATUS_NULL_POINTER);
+  double third[3] = {0, 0, 1};
+  CHECK_STATUS(cncrot_machine_forward(&m, third, f), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_machine_add_axis(&m, 0, Z, O, 0, 0), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_add_axis(&m, 0, Z, O, 0, 0), CNCROT_STATUS_TABLE_FULL);
+  cncrot_machine two;
+  memset(&two, 0, sizeof two);
+  CHECK_STATUS(cncrot_machine_add_axis(&two, 0, Z, O, 0, 0), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_add_axis(&two, 0, Z, O, 0, 0), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_machine_add_axis(&two, 0, Y, O, 10, -10), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK(two.count == 1, "untouched");
+  double id[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, idf[16], sol[6];
+  size_t n;
+  frame_of(id, idf);
+  CHECK_STATUS(cncrot_machine_inverse(&m, idf, sol, 0, &n), CNCROT_STATUS_NO_ROOM);
+  CHECK_STATUS(cncrot_machine_choose(&two, idf, cur, 7, 0, out, res, rem), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_machine_choose(&two, idf, cur, CNCROT_CHOOSE_MINUS, 2, out, res, rem), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_machine_choose(&two, idf, cur, CNCROT_CHOOSE_CLOSEST, 1, out, res, rem), CNCROT_STATUS_BAD_ARGUMENT);
+  idf[0] = 2;
+  CHECK_STATUS(cncrot_machine_choose(&two, idf, cur, CNCROT_CHOOSE_CLOSEST, 0, out, res, rem), CNCROT_STATUS_NOT_A_ROTATION);
+}
+
+int main(void) {
+  fork_head();
+  table_and_mixed();
+  nutating_and_three_axes();
+  cycle600_and_refusals();
+  return finish("test_kinematics");
+}

@@ -1,0 +1,249 @@
+//! Machines and targets from arbitrary bytes: swivel-data text, a HEAD_DEF accessory, axes
+//! added one by one with any numbers, and raw `cncrot_machine` bytes (any field, any
+//! count). No crash, no hang, no read past `len`; outputs untouched on every error; every
+//! solution the inverse returns reproduces the target to 1e-9 through the forward
+//! computation; a choice lies within the travel and on the Hirth grid; the follow-up keeps
+//! the tool tip where it was.
+#![no_main]
+
+#[path = "input.rs"]
+mod input;
+
+use cncrot::ffi::*;
+use libfuzzer_sys::fuzz_target;
+use std::mem::size_of;
+
+fn f64_at(data: &[u8], k: usize) -> f64 {
+    let mut b = [0u8; 8];
+    for (i, x) in b.iter_mut().enumerate() {
+        *x = data.get(8 * k + i).copied().unwrap_or(0);
+    }
+    let v = f64::from_le_bytes(b);
+    // Half the numbers small and meaningful, half raw bit patterns (NaN, ∞, 1e300, -0).
+    if b[7] & 0x80 == 0 {
+        (i64::from_le_bytes(b) % 720_000) as f64 / 1000.0
+    } else {
+        v
+    }
+}
+
+fn as_bytes<T>(v: &T) -> Vec<u8> {
+    // SAFETY: reads the object's own bytes.
+    unsafe { std::slice::from_raw_parts((v as *const T).cast::<u8>(), size_of::<T>()).to_vec() }
+}
+
+/// How far the orientation at `ax` is from the target; 0 when the forward computation
+/// overflows (pivots near `f64::MAX`: the translation, which the inverse does not use).
+fn miss(m: &cncrot_machine, ax: &[f64], target: &[f64; 16], whole: bool) -> f64 {
+    let mut f = [0.0; 16];
+    match unsafe { cncrot_machine_forward(m, ax.as_ptr(), f.as_mut_ptr()) } {
+        0 => {}
+        s if s == cncrot_status::OutOfRange as i32 => return 0.0,
+        _ => return f64::INFINITY,
+    }
+    let mut worst: f64 = 0.0;
+    for i in 0..3 {
+        for j in 0..3 {
+            if whole || j == 2 {
+                worst = worst.max((f[4 * i + j] - target[4 * i + j]).abs());
+            }
+        }
+    }
+    worst
+}
+
+fuzz_target!(|data: &[u8]| {
+    let Some((&mode, rest)) = data.split_first() else {
+        return;
+    };
+    let mut m: Box<cncrot_machine> = Box::new(unsafe { std::mem::zeroed() });
+    match mode % 4 {
+        0 => {
+            // Swivel-data text in a heap buffer of exactly its length.
+            let text: Box<[u8]> = rest.to_vec().into_boxed_slice();
+            let before = as_bytes(&*m);
+            let s = unsafe {
+                cncrot_machine_from_carr(
+                    &mut *m,
+                    text.as_ptr().cast(),
+                    text.len(),
+                    1 + i32::from(mode >> 6),
+                )
+            };
+            let mut line = -1;
+            let s2 = unsafe {
+                cncrot_machine_carr_error_line(
+                    text.as_ptr().cast(),
+                    text.len(),
+                    1 + i32::from(mode >> 6),
+                    &mut line,
+                )
+            };
+            assert_eq!(s, s2);
+            if s < 0 {
+                assert_eq!(before, as_bytes(&*m));
+                let lines = text.iter().filter(|&&b| b == b'\n').count() + 1;
+                assert!(line >= 0 && line as usize <= lines);
+                return;
+            }
+            assert_eq!(line, 0);
+        }
+        1 => {
+            // Axes added one by one.
+            for k in 0..4 {
+                let base = 9 * k;
+                let dir = [
+                    f64_at(rest, base),
+                    f64_at(rest, base + 1),
+                    f64_at(rest, base + 2),
+                ];
+                let p = [
+                    f64_at(rest, base + 3),
+                    f64_at(rest, base + 4),
+                    f64_at(rest, base + 5),
+                ];
+                let (lo, hi) = (f64_at(rest, base + 6), f64_at(rest, base + 7));
+                let side = (f64_at(rest, base + 8).abs() as i32) % 3;
+                let before = as_bytes(&*m);
+                let s = unsafe {
+                    cncrot_machine_add_axis(&mut *m, side, dir.as_ptr(), p.as_ptr(), lo, hi)
+                };
+                if s < 0 {
+                    assert_eq!(before, as_bytes(&*m));
+                }
+            }
+        }
+        2 => {
+            // Raw bytes as a description: every call must check it.
+            let mut raw = [0u8; size_of::<cncrot_machine>()];
+            for (d, s) in raw.iter_mut().zip(rest) {
+                *d = *s;
+            }
+            // SAFETY: integers and doubles accept every bit pattern; the name is c_char.
+            *m = unsafe {
+                std::mem::transmute::<[u8; size_of::<cncrot_machine>()], cncrot_machine>(raw)
+            };
+        }
+        _ => {
+            // A HEAD_DEF accessory with given directions.
+            let text = b"_HEAD_NAME=\"H\"\n_DELTA_L1=540.735 _DELTA_L2=250.049 _DELTA_H1=200.007\n";
+            let mut table: Box<cncrot_head_table> = Box::new(unsafe { std::mem::zeroed() });
+            unsafe {
+                cncrot_head_table_parse(
+                    &mut *table,
+                    text.as_ptr().cast(),
+                    text.len(),
+                    std::ptr::null_mut(),
+                )
+            };
+            let v1 = [f64_at(rest, 0), f64_at(rest, 1), f64_at(rest, 2)];
+            let v2 = [f64_at(rest, 3), f64_at(rest, 4), f64_at(rest, 5)];
+            let before = as_bytes(&*m);
+            if unsafe {
+                cncrot_machine_from_head(&mut *m, &*table, c"H".as_ptr(), v1.as_ptr(), v2.as_ptr())
+            } < 0
+            {
+                assert_eq!(before, as_bytes(&*m));
+            }
+        }
+    }
+    // Positions and a target from the tail of the input.
+    let tail = rest.len().saturating_sub(64);
+    let t = &rest[tail..];
+    let ax = [f64_at(t, 0), f64_at(t, 1), f64_at(t, 2)];
+    let n = usize::try_from(m.count).unwrap_or(0).min(3);
+    let mut pos = [0.0; 3];
+    pos[..n].copy_from_slice(&ax[..n]);
+    let mut f = [0.0; 16];
+    let s = unsafe { cncrot_machine_forward(&*m, pos.as_ptr(), f.as_mut_ptr()) };
+    if s < 0 {
+        return;
+    }
+    assert!(f.iter().all(|x| x.is_finite()));
+    let mut sol = [7.0; 6];
+    let mut count = 99usize;
+    let s = unsafe { cncrot_machine_inverse(&*m, f.as_ptr(), sol.as_mut_ptr(), 2, &mut count) };
+    if s >= 0 {
+        for row in sol.chunks(3).take(count) {
+            assert!(miss(&m, row, &f, n == 3) < 1e-9, "{row:?} {m:?}");
+        }
+    } else {
+        assert!(sol == [7.0; 6] && count == 99);
+    }
+    let cur = [f64_at(t, 3), f64_at(t, 4), f64_at(t, 5)];
+    let mut current = [0.0; 3];
+    current[..n].copy_from_slice(&cur[..n]);
+    let rule = (f64_at(t, 6).abs() as i32) % 5;
+    let refax = (f64_at(t, 7).abs() as i32) % 4;
+    let (mut out, mut res, mut rem) = ([5.0; 3], [5.0; 3], [5.0; 16]);
+    let s = unsafe {
+        cncrot_machine_choose(
+            &*m,
+            f.as_ptr(),
+            current.as_ptr(),
+            rule,
+            refax,
+            out.as_mut_ptr(),
+            res.as_mut_ptr(),
+            rem.as_mut_ptr(),
+        )
+    };
+    if s >= 0 {
+        for (k, a) in m.axes.iter().enumerate().take(n) {
+            if a.min_deg != 0.0 || a.max_deg != 0.0 {
+                assert!(out[k] >= a.min_deg && out[k] <= a.max_deg, "{out:?} {a:?}");
+            }
+        }
+        assert!(out.iter().chain(&res).chain(&rem).all(|x| x.is_finite()));
+    } else {
+        assert!(out == [5.0; 3] && res == [5.0; 3] && rem == [5.0; 16]);
+    }
+    let lin = [f64_at(t, 6), f64_at(t, 7), 0.0];
+    let mut next = [3.0; 3];
+    let s = unsafe {
+        cncrot_machine_follow(
+            &*m,
+            pos.as_ptr(),
+            current.as_ptr(),
+            lin.as_ptr(),
+            100.0,
+            next.as_mut_ptr(),
+        )
+    };
+    if s < 0 {
+        assert_eq!(next, [3.0; 3]);
+    }
+    let mut gud: Box<cncrot_cycle600_gud> = Box::new(unsafe { std::mem::zeroed() });
+    unsafe {
+        cncrot_cycle600(
+            &mut *gud,
+            std::ptr::null(),
+            1,
+            c"".as_ptr(),
+            0,
+            57,
+            0.0,
+            0.0,
+            0.0,
+            ax[0],
+            ax[1],
+            ax[2],
+            0.0,
+            0.0,
+            0.0,
+            1,
+            39,
+            0,
+            i32::from(mode & 1),
+            0,
+        );
+        cncrot_cycle600_position(
+            &*gud,
+            &*m,
+            current.as_ptr(),
+            out.as_mut_ptr(),
+            res.as_mut_ptr(),
+            rem.as_mut_ptr(),
+        );
+    }
+});
