@@ -666,6 +666,192 @@ fn main() {
             report("cncrot_program_write", class, &h, &mut rows);
         }
     }
+    {
+        // Kinematics: a fork head from swivel data (two axes) and the paper's three-axis
+        // machine (table C, head about Y then X), at random positions.
+        const CARR: &[u8] =
+            b"$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1 $TC_CARR10[1]=0 $TC_CARR11[1]=1
+$TC_CARR12[1]=0 $TC_CARR6[1]=-150 $TC_CARR23[1]=\"T\" $TC_CARR31[1]=-100 $TC_CARR33[1]=100
+$TC_CARR34[1]=\"HEAD_CB\"
+";
+        let mut head: cncrot_machine = unsafe { std::mem::zeroed() };
+        let mut three: cncrot_machine = unsafe { std::mem::zeroed() };
+        unsafe {
+            cncrot_machine_from_carr(&mut head, CARR.as_ptr().cast(), CARR.len(), 1);
+            let (z, y, x) = ([0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]);
+            cncrot_machine_add_axis(
+                &mut three,
+                1,
+                z.as_ptr(),
+                [500.0, 300.0, 0.0].as_ptr(),
+                0.0,
+                0.0,
+            );
+            cncrot_machine_add_axis(
+                &mut three,
+                0,
+                y.as_ptr(),
+                [0.0, 0.0, 540.0].as_ptr(),
+                -120.0,
+                120.0,
+            );
+            cncrot_machine_add_axis(
+                &mut three,
+                0,
+                x.as_ptr(),
+                [0.0, 0.0, 250.0].as_ptr(),
+                0.0,
+                0.0,
+            );
+        }
+        let mut seed = 0x1234_5678_9abc_def0u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let positions: Vec<[f64; 3]> = (0..1024)
+            .map(|_| {
+                [
+                    360.0 * next() - 180.0,
+                    200.0 * next() - 100.0,
+                    360.0 * next() - 180.0,
+                ]
+            })
+            .collect();
+        let mut f = [0.0; 16];
+        for (class, m) in [("fork head", &head), ("three axes", &three)] {
+            let pos: Vec<[f64; 3]> = positions
+                .iter()
+                .map(|p| {
+                    if class == "fork head" {
+                        [p[0], p[1], 0.0]
+                    } else {
+                        *p
+                    }
+                })
+                .collect();
+            let targets: Vec<[f64; 16]> = pos
+                .iter()
+                .map(|p| {
+                    let mut g = [0.0; 16];
+                    unsafe { cncrot_machine_forward(m, p.as_ptr(), g.as_mut_ptr()) };
+                    g
+                })
+                .collect();
+            measure(
+                &mut h,
+                n("cncrot_machine_forward", class),
+                overhead,
+                &pos,
+                &mut |p| unsafe { cncrot_machine_forward(m, p.as_ptr(), f.as_mut_ptr()) },
+            );
+            report("cncrot_machine_forward", class, &h, &mut rows);
+            let (mut sol, mut cnt) = ([0.0; 6], 0usize);
+            measure(
+                &mut h,
+                n("cncrot_machine_inverse", class),
+                overhead,
+                &targets,
+                &mut |t| unsafe {
+                    cncrot_machine_inverse(m, t.as_ptr(), sol.as_mut_ptr(), 2, &mut cnt)
+                },
+            );
+            report("cncrot_machine_inverse", class, &h, &mut rows);
+            let (mut ax, mut res, mut rem) = ([0.0; 3], [0.0; 3], [0.0; 16]);
+            let cur = [750.0, 0.0, 0.0];
+            measure(
+                &mut h,
+                n("cncrot_machine_choose", class),
+                overhead,
+                &targets,
+                &mut |t| unsafe {
+                    cncrot_machine_choose(
+                        m,
+                        t.as_ptr(),
+                        cur.as_ptr(),
+                        0,
+                        0,
+                        ax.as_mut_ptr(),
+                        res.as_mut_ptr(),
+                        rem.as_mut_ptr(),
+                    )
+                },
+            );
+            report("cncrot_machine_choose", class, &h, &mut rows);
+            let mut lin = [0.0; 3];
+            measure(
+                &mut h,
+                n("cncrot_machine_follow", class),
+                overhead,
+                &pos,
+                &mut |p| unsafe {
+                    cncrot_machine_follow(
+                        m,
+                        [0.0; 3].as_ptr(),
+                        p.as_ptr(),
+                        [1.0, 2.0, 3.0].as_ptr(),
+                        100.0,
+                        lin.as_mut_ptr(),
+                    )
+                },
+            );
+            report("cncrot_machine_follow", class, &h, &mut rows);
+        }
+        let mut m: cncrot_machine = unsafe { std::mem::zeroed() };
+        measure(
+            &mut h,
+            n("cncrot_machine_from_carr", "4 lines"),
+            overhead,
+            &[CARR],
+            &mut |t| unsafe { cncrot_machine_from_carr(&mut m, t.as_ptr().cast(), t.len(), 1) },
+        );
+        report("cncrot_machine_from_carr", "4 lines", &h, &mut rows);
+        let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
+        unsafe {
+            cncrot_cycle600(
+                &mut gud,
+                std::ptr::null(),
+                1,
+                c"H".as_ptr(),
+                0,
+                7,
+                0.0,
+                0.0,
+                0.0,
+                30.0,
+                40.0,
+                0.0,
+                0.0,
+                0.0,
+                0.0,
+                1,
+                39,
+                0,
+                0,
+                0,
+            );
+        }
+        let (mut ax, mut res, mut rem) = ([0.0; 3], [0.0; 3], [0.0; 16]);
+        measure(
+            &mut h,
+            n("cncrot_cycle600_position", "fork head"),
+            overhead,
+            &positions,
+            &mut |p| unsafe {
+                cncrot_cycle600_position(
+                    &gud,
+                    &head,
+                    [p[0], 0.0, 0.0].as_ptr(),
+                    ax.as_mut_ptr(),
+                    res.as_mut_ptr(),
+                    rem.as_mut_ptr(),
+                )
+            },
+        );
+        report("cncrot_cycle600_position", "fork head", &h, &mut rows);
+    }
     for (class, inputs) in &angle_classes {
         // CYCLE600 recalculation (paper, Example 3 with these angles), then the additive call.
         let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
