@@ -154,5 +154,32 @@ int main(void) {
       printf("\n");
     }
   }
+  /* Kinematics: the fork head and the three-axis machine of matlab/tests (rows
+   * [work_side v p min max offset hirth_offset hirth_step]); forward, inverse, choice. */
+  static const double MACH[2][3][12] = {
+      {{0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0}, {0, 0, 1, 0, 0, 0, 150, -100, 100, 0, 0, 0}},
+      {{1, 0, 0, 1, 500, 300, 0, 0, 0, 0, 0, 0}, {0, 0, 1, 0, 0, 0, 540, -120, 120, 0, 0, 0},
+       {0, 1, 0, 0, 0, 0, 250, 0, 0, 0, 0, 0}}};
+  for (int k = 0; k < 2; k++) {
+    cncrot_machine m;
+    memset(&m, 0, sizeof m);
+    for (int r = 0; r < 2 + k; r++)
+      cncrot_machine_add_axis(&m, (int32_t)MACH[k][r][0], MACH[k][r] + 1, MACH[k][r] + 4, MACH[k][r][7], MACH[k][r][8]);
+    for (int j = 0; j < 12; j++) {
+      double ax[3] = {rnd(-180, 180), rnd(-100, 100), k ? rnd(-180, 180) : 0}, f[16], sol[6] = {0}, cur[3] = {rnd(-720, 720), 0, 0};
+      double out[3], res[3], rem[16];
+      size_t n = 0;
+      if (cncrot_machine_forward(&m, ax, f) < 0) continue;
+      printf("KF %d", k), hexes(ax, 3), hexes(f, 16), printf("\n");
+      int32_t s = cncrot_machine_inverse(&m, f, sol, 2, &n);
+      printf("KI %d", k), hexes(f, 16), printf(" %d", (int)n), hexes(sol, 6), printf(" %d\n", s);
+      int32_t rule = j % 4, ref = rule == 1 || rule == 2 ? 2 : 0;
+      s = cncrot_machine_choose(&m, f, cur, rule, ref, out, res, rem);
+      if (s >= 0) {
+        printf("KC %d %d %d", k, rule, ref), hexes(f, 16), hexes(cur, 3), hexes(out, 3), hexes(res, 3), hexes(rem, 16);
+        printf(" %d\n", s);
+      }
+    }
+  }
   return 0;
 }

@@ -10,7 +10,7 @@ function build_mex()
     error('cncrot:build', 'missing %s: run cargo build --release first', lib);
   end
   inc = ['-I' fullfile(root, 'include')];
-  names = {'cncrot_matrix', 'cncrot_angles', 'cncrot_convert', 'cycle600', 'cncrot_form_frame', 'cncrot_form_values', 'cncrot_probe_flange', 'cncrot_probe_plane', 'cncrot_probe_edge', 'cncrot_program_lines', 'cncrot_program_write'};
+  names = {'cncrot_matrix', 'cncrot_angles', 'cncrot_convert', 'cycle600', 'cncrot_form_frame', 'cncrot_form_values', 'cncrot_probe_flange', 'cncrot_probe_plane', 'cncrot_probe_edge', 'cncrot_program_lines', 'cncrot_program_write', 'cncrot_machine_forward', 'cncrot_machine_inverse', 'cncrot_machine_choose'};
   for k = 1:numel(names)
     src = fullfile(here, 'src', [names{k} '.c']);
     if exist('OCTAVE_VERSION', 'builtin')

@@ -117,6 +117,16 @@ static void to_col_major(const double *row, double *col) {
     for (int j = 0; j < 3; j++) col[i + 3 * j] = row[3 * i + j];
 }
 
+/* The same for 4x4 frames. */
+static void frame_to_row_major(const double *col, double *row) {
+  for (int i = 0; i < 4; i++)
+    for (int j = 0; j < 4; j++) row[4 * i + j] = col[i + 4 * j];
+}
+static void frame_to_col_major(const double *row, double *col) {
+  for (int i = 0; i < 4; i++)
+    for (int j = 0; j < 4; j++) col[i + 4 * j] = row[4 * i + j];
+}
+
 /* Raises the MATLAB error of a negative status (after the library has returned). `row` is
  * the 0-based row of a batch, or -1: it is named only for statuses that belong to one row
  * (a value, not a flag or a code) in a batch of more than one. */
@@ -148,9 +158,41 @@ static const char *status_id(int32_t s, int *per_row) {
     case CNCROT_STATUS_MISSING_WORD: id = "cncrot:missingWord"; break;
     case CNCROT_STATUS_LINE_TOO_LONG: id = "cncrot:lineTooLong"; break;
     case CNCROT_STATUS_NO_ROOM: id = "cncrot:noRoom"; break;
+    case CNCROT_STATUS_UNREACHABLE: id = "cncrot:unreachable"; break;
+    case CNCROT_STATUS_OUT_OF_TRAVEL: id = "cncrot:outOfTravel"; break;
     default: id = "cncrot:internal"; break;
   }
   return id;
+}
+
+/* A machine: SINUMERIK swivel-data text (data set 1), or a K-by-12 matrix, one row per
+ * axis outermost first: [work_side vx vy vz px py pz min max offset hirth_offset hirth_step].
+ * Errors are raised here, after the library has returned. */
+static void machine_arg(const mxArray *a, cncrot_machine *m) {
+  memset(m, 0, sizeof *m);
+  if (mxIsChar(a)) {
+    char *t = mxArrayToString(a);
+    if (t == NULL) mexErrMsgIdAndTxt("cncrot:badType", "machine text could not be read");
+    size_t len = strlen(t);
+    int32_t s = cncrot_machine_from_carr(m, t, len, 1), line = 0;
+    if (s < 0) cncrot_machine_carr_error_line(t, len, 1, &line);
+    mxFree(t);
+    if (s < 0) mexErrMsgIdAndTxt(status_id(s, &(int){0}), "swivel data line %d: %s", (int)line, cncrot_status_str(s));
+    return;
+  }
+  size_t k = rows_arg(a, "machine", 12);
+  if (k > 3) mexErrMsgIdAndTxt("cncrot:badSize", "machine has at most 3 axes (rows)");
+  const double *d = real_data(a, "machine");
+  for (size_t r = 0; r < k; r++) {
+    double row[12];
+    for (int c = 0; c < 12; c++) row[c] = d[r + k * c];
+    int32_t side = row[0] == 0 ? 0 : row[0] == 1 ? 1 : 2;
+    int32_t s = cncrot_machine_add_axis(m, side, row + 1, row + 4, row[7], row[8]);
+    if (s < 0) raise_status(s, (long)r, k);
+    m->axes[r].offset_deg = row[9];
+    m->axes[r].hirth_offset_deg = row[10];
+    m->axes[r].hirth_step_deg = row[11];
+  }
 }
 
 static void raise_status(int32_t s, long row, size_t n) {

@@ -62,7 +62,10 @@ function test_cncrot(cases_file)
   catch err
     check(strcmp(err.identifier, 'cncrot:nargout'), ['nargout: got ' err.identifier]);
   end
-  expect_error('cncrot:notAvailable', @() cycle600(0, 'H', 0, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'SW_REC 0');
+  % _SW_REC = 0 recalculates as 1 does (positioning is cncrot_machine_choose's).
+  g0 = cycle600(0, 'H', 0, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0);
+  g1 = cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0);
+  check(isequal(g0.CYC600_2, g1.CYC600_2) && isequal(g0.CYC600_4, g1.CYC600_4), 'SW_REC 0');
   expect_error('cncrot:nameTooLong', @() cycle600(0, repmat('A', 1, 40), 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'long name');
   expect_error('cncrot:badClass', @() cycle600(0, 5, 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'name class');
   expect_error('cncrot:badFlag', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,2,0), 'ROT_INV 2');
@@ -223,6 +226,21 @@ function test_cncrot(cases_file)
   check(isequal(size(cncrot_program_write(d.FANUC, 'G68.2', zeros(4, 4, 0))), [0 1]), 'no frames, no lines');
 
   % Parity with the C harness, bit for bit.
+  % The machines of c_tests/parity.c: a fork head and a table with a two-axis head.
+  machines = {[0 0 0 1 0 0 0 0 0 0 0 0; 0 0 1 0 0 0 150 -100 100 0 0 0], ...
+              [1 0 0 1 500 300 0 0 0 0 0 0; 0 0 1 0 0 0 540 -120 120 0 0 0; 0 1 0 0 0 0 250 0 0 0 0 0]};
+  head = machines{1};
+  F = cncrot_machine_forward(head, [30 40 0]);
+  check(abs(F(1, 3) - cosd(30) * sind(40)) < 1e-15 && abs(F(3, 3) - cosd(40)) < 1e-15, 'machine: tool direction by hand');
+  S = cncrot_machine_inverse(head, F);
+  check(size(S, 1) == 2 && any(all(abs(S - [30 40 0]) < 1e-9, 2)) && any(all(abs(S - [-150 -40 0]) < 1e-9, 2)), 'machine: both solutions');
+  check(all(abs(cncrot_machine_choose(head, F, [750 0 0]) - [750 40 0]) < 1e-9), 'machine: unwinding 750');
+  check(all(abs(cncrot_machine_choose(head, F, [0 0 0], 1, 2) - [-150 -40 0]) < 1e-9), 'machine: minus on B');
+  expect_error('cncrot:unreachable', @() cncrot_machine_inverse([0 0 0 1 0 0 0 0 0 0 0 0], [1 0 0 0; 0 0 -1 0; 0 1 0 0; 0 0 0 1]), 'machine: unreachable');
+  expect_error('cncrot:outOfTravel', @() cncrot_machine_choose([0 0 0 1 0 0 0 0 0 0 0 0; 0 0 1 0 0 0 150 -10 10 0 0 0], F, [0 0 0]), 'machine: travel');
+  expect_error('cncrot:parse', @() cncrot_machine_forward('$TC_CARR7[1]=1x', [0 0 0]), 'machine: swivel text');
+  carr = sprintf('$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1\n$TC_CARR10[1]=0 $TC_CARR11[1]=1 $TC_CARR12[1]=0\n$TC_CARR6[1]=-150\n');
+  check(max(max(abs(cncrot_machine_forward(carr, [30 40 0]) - F))) < 1e-12, 'machine: swivel text = matrix');
   fid = fopen(cases_file, 'r');
   check(fid >= 0, 'cases file');
   n = 0;
@@ -273,6 +291,18 @@ function test_cncrot(cases_file)
       case 'L'
         F = cncrot_program_lines(str2double(t{2}), unhex(t{3}));
         check(same(reshape(F.', 1, 16), 4), ['parity ' line]);
+      case 'KF'
+        F = cncrot_machine_forward(machines{str2double(t{2}) + 1}, hv(3, 3));
+        check(same(reshape(F.', 1, 16), 6), ['parity ' line]);
+      case 'KI'
+        cnt = str2double(t{19});
+        [S, fr] = cncrot_machine_inverse(machines{str2double(t{2}) + 1}, reshape(hv(3, 16), 4, 4).');
+        sol = hv(20, 6);
+        check(size(S, 1) == cnt && same(reshape(S.', 1, []), 20) && fr == (str2double(t{26}) == 2), ['parity ' line]);
+      case 'KC'
+        [a, R, res, st] = cncrot_machine_choose(machines{str2double(t{2}) + 1}, reshape(hv(5, 16), 4, 4).', ...
+                                                hv(21, 3), str2double(t{3}), str2double(t{4}));
+        check(same(a, 24) && same(res, 27) && same(reshape(R.', 1, 16), 30) && st == str2double(t{46}), ['parity ' line]);
       case 'PE'
         [a, F2] = cncrot_probe_edge(reshape(hv(2, 16), 4, 4).', hv(18, 3), hv(21, 3));
         check(same(a, 24) && same(reshape(F2.', 1, 16), 25), ['parity ' line]);

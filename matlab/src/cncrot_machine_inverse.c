@@ -1,0 +1,20 @@
+/* [S, free] = cncrot_machine_inverse(machine, F): see cncrot_machine_inverse.m. */
+#include "gateway.h"
+
+void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
+  check_nargs(nrhs, 2, 2, nlhs, 2);
+  cncrot_machine m;
+  machine_arg(prhs[0], &m);
+  if (squares_arg(prhs[1], "F", 4) != 1) mexErrMsgIdAndTxt("cncrot:badSize", "F must be 4-by-4");
+  double f[16], sol[6];
+  frame_to_row_major(real_data(prhs[1], "F"), f);
+  size_t n = 0;
+  int32_t s = cncrot_machine_inverse(&m, f, sol, 2, &n);
+  if (s < 0) raise_status(s, -1, 0);
+  mxArray *out = mxCreateDoubleMatrix(n, 3, mxREAL);
+  double *o = mxGetDoubles(out);
+  for (size_t r = 0; r < n; r++)
+    for (int c = 0; c < 3; c++) o[r + n * c] = sol[3 * r + c];
+  plhs[0] = out;
+  if (nlhs > 1) plhs[1] = mxCreateLogicalScalar(s == CNCROT_STATUS_FREE_AXIS);
+}
