@@ -141,8 +141,8 @@ fn axis_of(a: &cncrot_machine_axis) -> Result<RotaryAxis, cncrot_status> {
     {
         return Err(cncrot_status::NotFinite);
     }
-    // Written so that NaN would refuse.
-    if !(a.hirth_step_deg >= 0.0) {
+    // Finite (checked above), so a plain comparison decides.
+    if a.hirth_step_deg < 0.0 {
         return Err(cncrot_status::BadArgument);
     }
     Ok(RotaryAxis {
