@@ -338,7 +338,7 @@ fn fanuc_and_haas() {
 #[test]
 fn refusals_name_their_column() {
     let active = read(Dialect::Sinumerik, &["ROT Z30"]);
-    let cases: [(Dialect, &str, Error, &str); 22] = [
+    let cases: [(Dialect, &str, Error, &str); 21] = [
         (Dialect::Sinumerik, "ROT X=R1", Error::NotANumber, "R1"),
         (Dialect::Sinumerik, "ROT X10 A5", Error::UnknownWord, "A5"),
         (Dialect::Sinumerik, "ROT X10 X20", Error::UnknownWord, "X20"),
@@ -375,12 +375,6 @@ fn refusals_name_their_column() {
             "CYCLE800(0,\"TC1\",0,57",
             Error::MissingWord,
             "",
-        ),
-        (
-            Dialect::Sinumerik,
-            "CYCLE600(0,\"UFK600\",0,57,0,0,0,30,45,60,0,0,0,1,39,0,0,0)",
-            Error::NotAvailable,
-            "CYCLE600",
         ),
         (
             Dialect::Heidenhain,
@@ -657,4 +651,19 @@ fn writers_refuse() {
         w(Dialect::Fanuc, "G68.2", &far, -1, &mut buf),
         Err(Error::OutOfRange)
     );
+}
+
+/// `_SW_REC = 0` (swivel with the accessory) reads as the recalculation `_SW_REC = 1`: the
+/// positions come from the machine (`cycle600::position`), not from the line.
+#[test]
+fn cycle600_sw_rec_0_recalculates() {
+    let a = read(
+        Dialect::Sinumerik,
+        &["CYCLE600(0,\"UFK600\",0,57,0,0,0,30,45,60,0,0,0,1,39,0,0,0)"],
+    );
+    let b = read(
+        Dialect::Sinumerik,
+        &["CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1,39,0,0,0)"],
+    );
+    assert_eq!(a.frame, b.frame);
 }
