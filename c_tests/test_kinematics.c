@@ -71,7 +71,7 @@ static void fork_head(void) {
   CHECK_NEAR(org, want, 3, 1e-12);
   CHECK(all_reproduce(&m, f, 0, CNCROT_STATUS_OK) == 2, "two solutions");
 
-  /* Choice: closest from C = 750 unwinds to 750 - 720 + 30 = 750? C = 30 + 720 = 750. */
+  /* Choice: from C = 750 the closest turn of C = 30 is 30 + 720 = 750. */
   double cur[3] = {750, 0, 0}, out[3], res[3], rem[16];
   CHECK_STATUS(cncrot_machine_choose(&m, f, cur, CNCROT_CHOOSE_CLOSEST, 0, out, res, rem), CNCROT_STATUS_OK);
   double want_c[3] = {750, 40, 0};
@@ -270,7 +270,6 @@ static void cycle600_and_refusals(void) {
   broken.axes[1].direction[0] = NAN;
   CHECK_STATUS(cncrot_machine_forward(&broken, ax, f), CNCROT_STATUS_NOT_FINITE);
   broken = m;
-  broken.name[31] = 'x';
   memset(broken.name, 'x', sizeof broken.name);
   CHECK_STATUS(cncrot_machine_forward(&broken, ax, f), CNCROT_STATUS_NAME_TOO_LONG);
   CHECK_STATUS(cncrot_machine_forward(NULL, ax, f), CNCROT_STATUS_NULL_POINTER);

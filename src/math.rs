@@ -33,6 +33,10 @@ mod imp {
     pub fn round(x: f64) -> f64 {
         x.round()
     }
+    #[inline]
+    pub fn ceil(x: f64) -> f64 {
+        x.ceil()
+    }
 }
 
 #[cfg(any(not(feature = "std"), feature = "pure-rust-math"))]
@@ -61,9 +65,13 @@ mod imp {
     pub fn round(x: f64) -> f64 {
         libm::round(x)
     }
+    #[inline]
+    pub fn ceil(x: f64) -> f64 {
+        libm::ceil(x)
+    }
 }
 
-pub use imp::{atan2, round, sqrt};
+pub use imp::{atan2, ceil, round, sqrt};
 use imp::{cos, fmod, sin};
 
 /// `|x|` without `std` (clears the sign bit).

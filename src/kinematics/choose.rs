@@ -2,7 +2,7 @@
 //! the controllers' rules (CYCLE800 minus/plus, Heidenhain `SEQ±`, CYCLE600 `_ROT_INV`).
 
 use super::{Machine, RotaryAxis, MAX_AXES, MAX_SOLUTIONS};
-use crate::math::{round, turns_toward};
+use crate::math::{ceil, round, turns_toward};
 use crate::{check_rotation, mul, transpose, Error, Matrix, CLOSEST_MAX};
 
 /// Which solution [`Machine::choose`] takes.
@@ -44,9 +44,9 @@ fn place(axis: &RotaryAxis, angle: f64, current: f64) -> Option<(f64, f64)> {
     let mut x = angle + turns_toward(angle, current) + 0.0;
     if let Some([lo, hi]) = axis.limits {
         if x > hi {
-            x -= 360.0 * libm_ceil((x - hi) / 360.0);
+            x -= 360.0 * ceil((x - hi) / 360.0);
         } else if x < lo {
-            x += 360.0 * libm_ceil((lo - x) / 360.0);
+            x += 360.0 * ceil((lo - x) / 360.0);
         }
     }
     let exact = x;
@@ -62,16 +62,6 @@ fn place(axis: &RotaryAxis, angle: f64, current: f64) -> Option<(f64, f64)> {
     }
     let fits = axis.limits.map_or(true, |[lo, hi]| x >= lo && x <= hi);
     fits.then_some((x, x - exact + 0.0))
-}
-
-/// `ceil` for the small positive quotients of `place` (no `std`).
-fn libm_ceil(x: f64) -> f64 {
-    let r = round(x);
-    if r < x {
-        r + 1.0
-    } else {
-        r
-    }
 }
 
 impl Machine {
