@@ -1,0 +1,802 @@
+//! The subcommands: each reads its input with `input`, computes with the library, and
+//! reports with `output`. No mathematics here beyond choosing what to print.
+
+use crate::input::{self, Failure, Target};
+use crate::output::{num, nums, Json};
+use crate::{run, Common, Report};
+use cncrot::dialects::cycle600::{self, Call, State};
+use cncrot::dialects::head_def::HeadTable;
+use cncrot::dialects::program::{write_line, Dialect, Program};
+use cncrot::kinematics::{Machine, RotaryAxis, Rule, Side, MAX_AXES};
+use cncrot::{
+    angles_from_matrix, closest_of, decompose, matrix_from_angles, probe, second_solution,
+    AxisCode, Convention, Error, Frame, Kind, Matrix, Sequence, Vector,
+};
+
+/// Prefixes an option's name to its failure.
+fn option(name: &'static str) -> impl Fn(Failure) -> Failure {
+    move |f| Failure::new(format!("{name}: {}", f.message))
+}
+
+/// The positional arguments as one input (they may be split by the shell).
+fn joined(args: &[String]) -> Option<String> {
+    let args: Vec<&str> = args.iter().map(|a| a.trim()).collect();
+    (!args.is_empty()).then(|| args.join(" "))
+}
+
+fn kind_name(k: Kind) -> &'static str {
+    match k {
+        Kind::Intrinsic => "intrinsic",
+        Kind::Extrinsic => "extrinsic",
+    }
+}
+
+fn letters(code: AxisCode) -> String {
+    code.axes()
+        .iter()
+        .map(|a| match a.map(|a| a.bits()) {
+            Some(1) => 'X',
+            Some(2) => 'Y',
+            Some(3) => 'Z',
+            _ => '0',
+        })
+        .collect()
+}
+
+fn convention_name(kind: Kind, code: AxisCode) -> String {
+    format!("{} {} ({})", kind_name(kind), letters(code), code.code())
+}
+
+/// The angles of a rotation given in `code`: three numbers, or one per rotation the code
+/// has (a skipped rotation's angle is 0).
+fn angles_for(code: AxisCode, text: &str) -> Result<[f64; 3], Failure> {
+    let given = input::numbers(text)?;
+    if given.len() == 3 {
+        return Ok([given[0], given[1], given[2]]);
+    }
+    let present = code.axes().iter().filter(|a| a.is_some()).count();
+    if given.len() != present {
+        return Err(Failure::at(
+            text.len() + 1,
+            format!("expected 3 angles, found {}", given.len()),
+        ));
+    }
+    let mut out = [0.0; 3];
+    let mut it = given.into_iter();
+    for (slot, axis) in out.iter_mut().zip(code.axes()) {
+        if axis.is_some() {
+            *slot = it.next().unwrap_or(0.0);
+        }
+    }
+    Ok(out)
+}
+
+pub fn convert(
+    from: &str,
+    to: &str,
+    near: Option<&str>,
+    angles: &[String],
+    common: &Common,
+) -> Result<bool, Failure> {
+    let (kind, code) = input::convention(from, true).map_err(option("--from"))?;
+    let conv = input::full_convention(to).map_err(option("--to"))?;
+    let near = near
+        .map(|t| input::exactly::<3>(t, "angles"))
+        .transpose()
+        .map_err(option("--near"))?;
+    let d = common.decimals;
+    run(common, joined(angles), |text| {
+        let given = angles_for(code, text)?;
+        let first = decompose(conv, &matrix_from_angles(kind, code, given));
+        let second = second_solution(conv.sequence, first);
+        let to_name = convention_name(conv.kind, conv.sequence.into());
+        let mut full = format!("{}: {}\n", convention_name(kind, code), nums(&given, d));
+        let mut json = Json::Obj(vec![
+            ("intrinsic", Json::Int(conv.kind.flag().into())),
+            ("code", Json::Int(conv.sequence.code().into())),
+        ]);
+        let brief = match near {
+            Some(reference) => {
+                let c = closest_of(conv.sequence, first, reference)?;
+                full += &format!(
+                    "{to_name}: {}  (nearest to {})\n",
+                    nums(&c.angles, d),
+                    nums(&reference, d)
+                );
+                json = json.with("angles", Json::nums(&c.angles));
+                nums(&c.angles, d)
+            }
+            None => {
+                full += &format!("{to_name}: {}\n", nums(&first.angles, d));
+                full += &format!("  second solution: {}\n", nums(&second.angles, d));
+                json = json
+                    .with("angles", Json::nums(&first.angles))
+                    .with("second", Json::nums(&second.angles));
+                nums(&first.angles, d)
+            }
+        };
+        if first.singular {
+            full += "  singular: the middle angle is at its singular value; only the first and \
+                     third rotations together are determined, the third is set to 0\n";
+        }
+        Ok(Report {
+            full,
+            brief,
+            json: json.with("singular", Json::Bool(first.singular)),
+        })
+    })
+}
+
+/// What writing one target gave: the line, whether its origin has to be set apart, or why
+/// it could not be written.
+struct Written {
+    target: Target,
+    result: Result<(String, bool), Error>,
+}
+
+/// The frame's lines for every target. A form without origin words writes the rotation
+/// about the datum, which is the same frame once the datum is shifted to its origin.
+fn write_targets(frame: &Frame, targets: &[Target], decimals: i32) -> Vec<Written> {
+    let mut buf = [0u8; 1024];
+    let mut write = |target: &Target, f: &Frame| {
+        write_line(
+            target.dialect,
+            target.form.as_bytes(),
+            f,
+            decimals,
+            &mut buf,
+        )
+        .map(|(n, _)| String::from_utf8_lossy(&buf[..n]).into_owned())
+    };
+    targets
+        .iter()
+        .map(|t| {
+            let result = match write(t, frame) {
+                Err(Error::BadArgument) if frame.translation != [0.0; 3] => {
+                    write(t, &Frame::from_rotation(frame.rotation)).map(|s| (s, true))
+                }
+                other => other.map(|s| (s, false)),
+            };
+            Written {
+                target: t.clone(),
+                result,
+            }
+        })
+        .collect()
+}
+
+/// A frame and its lines as a report; a target that could not be written fails the input.
+fn frame_report(
+    frame: &Frame,
+    targets: &[Target],
+    d: i32,
+    mut full: String,
+    json: Json,
+) -> Result<Report, Failure> {
+    let origin = nums(&frame.translation, d);
+    full += &format!("origin: {origin}\nrotation:\n");
+    for row in frame.rotation {
+        full += &format!("  {}\n", nums(&row, d));
+    }
+    let written = write_targets(frame, targets, d);
+    let mut brief = Vec::new();
+    let mut lines = Vec::new();
+    let mut failed = Vec::new();
+    for w in &written {
+        let name = input::dialect_name(w.target.dialect);
+        match &w.result {
+            Ok((text, apart)) => {
+                let shown = frame.translation.iter().any(|&t| num(t, d) != num(0.0, d));
+                let note = if *apart && shown {
+                    format!("  [origin {origin}: shift the datum there first]")
+                } else {
+                    String::new()
+                };
+                full += &format!("{name:<10} {text}{note}\n");
+                brief.push(format!("{text}{note}"));
+                lines.push(Json::Obj(vec![
+                    ("dialect", Json::str(name)),
+                    ("form", Json::str(w.target.form.clone())),
+                    ("text", Json::str(text.clone())),
+                    ("origin_apart", Json::Bool(*apart)),
+                ]));
+            }
+            Err(e) => failed.push(format!("{name} {}: {}", w.target.form, e.message())),
+        }
+    }
+    if !failed.is_empty() {
+        return Err(Failure::new(failed.join("; ")));
+    }
+    Ok(Report {
+        full,
+        brief: brief.join("\t"),
+        json: json
+            .with("origin", Json::nums(&frame.translation))
+            .with("rotation", Json::matrix(&frame.rotation))
+            .with("lines", Json::Arr(lines)),
+    })
+}
+
+fn targets(to: &[String]) -> Result<Vec<Target>, Failure> {
+    if to.is_empty() {
+        return Ok(input::all_targets());
+    }
+    to.iter()
+        .map(|t| input::target(t))
+        .collect::<Result<_, _>>()
+        .map_err(option("--to"))
+}
+
+pub fn line(
+    from: &str,
+    to: &[String],
+    euler: bool,
+    text: Option<&str>,
+    common: &Common,
+) -> Result<bool, Failure> {
+    let dialect = input::dialect(from).map_err(option("--from"))?;
+    let targets = targets(to)?;
+    let mut program = Program {
+        euler: euler && dialect == Dialect::Sinumerik,
+        ..Program::default()
+    };
+    let d = common.decimals;
+    run(common, text.map(str::to_string), |line| {
+        program = program
+            .line(dialect, line.as_bytes())
+            .map_err(|e| Failure::at(e.column, e.error.message()))?;
+        frame_report(
+            &program.frame,
+            &targets,
+            d,
+            String::new(),
+            Json::Obj(vec![]),
+        )
+    })
+}
+
+/// A points file: one point per line; `#` lines, blank lines and a first line that is not
+/// numbers (a header) are skipped.
+fn points_of_file(source: &str) -> Result<Vec<Vector>, Vec<(usize, Failure)>> {
+    let text = input::read_source(source).map_err(|f| vec![(0, f)])?;
+    let mut points = Vec::new();
+    let mut errors = Vec::new();
+    let mut first = true;
+    for (i, line) in text.lines().enumerate() {
+        let t = line.trim();
+        if t.is_empty() || t.starts_with('#') {
+            continue;
+        }
+        match input::exactly::<3>(line, "a point") {
+            Ok(p) => points.push(p),
+            Err(_)
+                if first && !t.starts_with(|c: char| c.is_ascii_digit() || "+-.".contains(c)) => {}
+            Err(f) => errors.push((i + 1, f)),
+        }
+        first = false;
+    }
+    if errors.is_empty() {
+        Ok(points)
+    } else {
+        Err(errors)
+    }
+}
+
+pub fn probe(
+    args: &[String],
+    file: Option<&str>,
+    to: &[String],
+    json: bool,
+    d: i32,
+) -> Result<bool, Failure> {
+    let targets = targets(to)?;
+    let points: Vec<Vector> = match (file, args.is_empty()) {
+        (Some(_), false) => {
+            return Err(Failure::new(
+                "give the points as arguments or --points-file, not both",
+            ))
+        }
+        (Some(source), true) => match points_of_file(source) {
+            Ok(p) => p,
+            Err(errors) => {
+                for (line, f) in errors {
+                    let column = f
+                        .column
+                        .map(|c| format!(", column {c}"))
+                        .unwrap_or_default();
+                    let place = if line > 0 {
+                        format!("line {line}{column}: ")
+                    } else {
+                        String::new()
+                    };
+                    eprintln!("cncrot: {place}{}", f.message);
+                }
+                return Ok(false);
+            }
+        },
+        (None, _) => {
+            let mut v = Vec::new();
+            for (k, a) in args.iter().enumerate() {
+                match input::exactly::<3>(a, "a point") {
+                    Ok(p) => v.push(p),
+                    Err(f) => {
+                        let column = f
+                            .column
+                            .map(|c| format!(", column {c}"))
+                            .unwrap_or_default();
+                        eprintln!("cncrot: point {}{column}: {}", k + 1, f.message);
+                        return Ok(false);
+                    }
+                }
+            }
+            v
+        }
+    };
+    let plane = match probe::plane(&points) {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("cncrot: {} points: {}", points.len(), e.message());
+            return Ok(false);
+        }
+    };
+    let angles = angles_from_matrix(
+        Convention::new(Kind::Extrinsic, Sequence::XYZ),
+        &plane.frame.rotation,
+    )?;
+    let full = format!(
+        "points: {}\nflatness: {} mm\nrms: {} mm\nnormal (Z'): {}\nas extrinsic XYZ (CYCLE600 _BIN_IN 57): {}\n",
+        points.len(),
+        num(plane.flatness, d),
+        num(plane.rms, d),
+        nums(&column(&plane.frame.rotation, 2), d),
+        nums(&angles.angles, d)
+    );
+    let j = Json::Obj(vec![
+        ("points", Json::Int(points.len() as i64)),
+        ("flatness", Json::Num(plane.flatness)),
+        ("rms", Json::Num(plane.rms)),
+        ("normal", Json::nums(&column(&plane.frame.rotation, 2))),
+        ("extrinsic_xyz", Json::nums(&angles.angles)),
+    ]);
+    match frame_report(&plane.frame, &targets, d, full, j) {
+        Ok(r) if json => println!("{}", r.json.text()),
+        Ok(r) => print!("{}", r.full),
+        Err(f) => {
+            eprintln!("cncrot: {}", f.message);
+            return Ok(false);
+        }
+    }
+    Ok(true)
+}
+
+fn column(m: &Matrix, k: usize) -> [f64; 3] {
+    [m[0][k], m[1][k], m[2][k]]
+}
+
+/// The parameters of a CYCLE600 call with their columns: `CYCLE600(a, b, …)` (after an
+/// optional block number, with an optional `;` comment after it), or the bare list.
+fn call_parameters(text: &str) -> Result<Vec<(usize, String)>, Failure> {
+    let trimmed = text.trim_start();
+    let lead = text.len() - trimmed.len();
+    let Some(open) = text.find('(') else {
+        return Ok(input::tokens(text)
+            .into_iter()
+            .map(|(c, t)| (c, t.to_string()))
+            .collect());
+    };
+    let head = text[..open].trim();
+    let head = match head.split_once(char::is_whitespace) {
+        Some((n, rest)) if n.starts_with(['N', 'n']) => rest.trim(),
+        _ => head,
+    };
+    if !head.eq_ignore_ascii_case("CYCLE600") {
+        return Err(Failure::at(
+            lead + 1,
+            "expected CYCLE600(...) or the list of parameters",
+        ));
+    }
+    let Some(close) = text.rfind(')').filter(|&c| c > open) else {
+        return Err(Failure::at(text.len() + 1, "missing ')'"));
+    };
+    let rest = text[close + 1..].trim_start();
+    if !(rest.is_empty() || rest.starts_with(';')) {
+        return Err(Failure::at(
+            text.len() - rest.len() + 1,
+            "text after the call",
+        ));
+    }
+    let mut out = Vec::new();
+    let mut start = open + 1;
+    for part in text[open + 1..close].split(',') {
+        let t = part.trim();
+        let column = start + (part.len() - part.trim_start().len()) + 1;
+        out.push((column, t.to_string()));
+        start += part.len() + 1;
+    }
+    Ok(out)
+}
+
+fn int_param(p: &(usize, String)) -> Result<i32, Failure> {
+    if p.1.is_empty() {
+        return Ok(0);
+    }
+    p.1.parse::<i32>()
+        .map_err(|_| Failure::at(p.0, format!("'{}' is not a whole number", p.1)))
+}
+
+fn real_param(p: &(usize, String)) -> Result<f64, Failure> {
+    if p.1.is_empty() {
+        return Ok(0.0);
+    }
+    input::number(&p.1).map_err(|m| Failure::at(p.0, m))
+}
+
+/// A call as read: its parameters with their columns, the integer ones (`_INEXIN`,
+/// `_SW_REC`, `_BIN_IN`, `_INEXOUT`, `_BIN_OUT`, `_ROT_AD`, `_ROT_INV`, `_RETR_Z`) and the
+/// real ones (`_POS`, `_ANG`, `_POS_R`).
+struct CallText {
+    params: Vec<(usize, String)>,
+    ints: [i32; 8],
+    reals: [f64; 9],
+}
+
+fn read_call(text: &str) -> Result<CallText, Failure> {
+    let params = call_parameters(text)?;
+    if params.len() < 15 || params.len() > 18 {
+        return Err(Failure::at(
+            text.len() + 1,
+            format!("CYCLE600 has 15 to 18 parameters, found {}", params.len()),
+        ));
+    }
+    let mut ints = [0; 8];
+    for (slot, k) in ints.iter_mut().zip([0, 2, 3, 13, 14, 15, 16, 17]) {
+        if let Some(p) = params.get(k) {
+            *slot = int_param(p)?;
+        }
+    }
+    let mut reals = [0.0; 9];
+    for (slot, p) in reals.iter_mut().zip(&params[4..13]) {
+        *slot = real_param(p)?;
+    }
+    Ok(CallText {
+        params,
+        ints,
+        reals,
+    })
+}
+
+fn name_param(p: &(usize, String)) -> &str {
+    let t = p.1.as_str();
+    t.strip_prefix('"')
+        .and_then(|s| s.strip_suffix('"'))
+        .unwrap_or(t)
+}
+
+/// The machine of the options: swivel data, or axes given one by one.
+pub struct MachineArgs<'a> {
+    pub carr: Option<&'a str>,
+    pub set: i32,
+    pub axis: &'a [String],
+    pub tool: &'a str,
+}
+
+fn carr_machine(source: &str, set: i32) -> Result<Machine, Failure> {
+    let text = input::read_source(source)?;
+    cncrot::dialects::carr::machine_from_carr(text.as_bytes(), set).map_err(|e| {
+        let place = if e.line > 0 {
+            format!(", line {}", e.line)
+        } else {
+            String::new()
+        };
+        Failure::new(format!("{source}{place}: {}", e.error.message()))
+    })
+}
+
+fn machine(a: &MachineArgs) -> Result<Machine, Failure> {
+    if let Some(source) = a.carr {
+        if !a.axis.is_empty() {
+            return Err(Failure::new(
+                "describe the machine by --carr or by --axis, not both",
+            ));
+        }
+        return carr_machine(source, a.set);
+    }
+    if a.axis.is_empty() {
+        return Err(Failure::new(
+            "describe the machine: --carr FILE (swivel data) or --axis SIDE:DX,DY,DZ[@PX,PY,PZ]",
+        ));
+    }
+    let tool = input::exactly::<3>(a.tool, "direction").map_err(option("--tool"))?;
+    let mut m = Machine::new(tool).map_err(|e| Failure::new(format!("--tool: {}", e.message())))?;
+    for (k, spec) in a.axis.iter().enumerate() {
+        let what = format!("--axis {}", k + 1);
+        let (side, rest) = spec
+            .split_once(':')
+            .ok_or_else(|| Failure::new(format!("{what}: expected SIDE:DX,DY,DZ[@PX,PY,PZ]")))?;
+        let side = match side.to_ascii_lowercase().as_str() {
+            "tool" | "head" => Side::Tool,
+            "work" | "table" => Side::Work,
+            other => {
+                return Err(Failure::new(format!(
+                    "{what}: '{other}' is neither tool (a head) nor work (a table)"
+                )))
+            }
+        };
+        let (dir, point) = rest.split_once('@').unwrap_or((rest, "0,0,0"));
+        let dir = input::exactly::<3>(dir, "direction").map_err(option("--axis"))?;
+        let point = input::exactly::<3>(point, "point").map_err(option("--axis"))?;
+        m.push_axis(RotaryAxis::new(side, dir, point))
+            .map_err(|e| {
+                let why = match e {
+                    Error::BadArgument => "a zero direction, or parallel to the axis before it",
+                    Error::TableFull => "a machine has at most three rotary axes",
+                    e => e.message(),
+                };
+                Failure::new(format!("{what}: {why}"))
+            })?;
+    }
+    Ok(m)
+}
+
+/// Axis positions: 1 to 3 numbers, the unused ones 0.
+fn positions(text: &str, n: usize, what: &str) -> Result<[f64; MAX_AXES], Failure> {
+    let v = input::numbers(text)?;
+    if v.is_empty()
+        || v.len() > MAX_AXES.max(n)
+        || (v.len() > n && v[n..].iter().any(|&x| x != 0.0))
+    {
+        return Err(Failure::at(
+            text.len() + 1,
+            format!(
+                "{what}: the machine has {n} rotary axes, found {} positions",
+                v.len()
+            ),
+        ));
+    }
+    let mut out = [0.0; MAX_AXES];
+    out[..v.len().min(MAX_AXES)].copy_from_slice(&v[..v.len().min(MAX_AXES)]);
+    Ok(out)
+}
+
+fn axes_text(axes: &[f64], d: i32) -> String {
+    axes.iter()
+        .enumerate()
+        .map(|(k, &a)| format!("axis {} = {}", k + 1, num(a, d)))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+pub fn cycle600(
+    call: &[String],
+    heads: Option<&str>,
+    carr: Option<&str>,
+    set: i32,
+    current: Option<&str>,
+    common: &Common,
+) -> Result<bool, Failure> {
+    let table = heads
+        .map(|source| {
+            let text = input::read_source(source)?;
+            HeadTable::parse(text.as_bytes()).map_err(|e| {
+                Failure::new(format!("{source}, line {}: {}", e.line, e.error.message()))
+            })
+        })
+        .transpose()
+        .map_err(option("--heads"))?;
+    let head = carr
+        .map(|c| carr_machine(c, set))
+        .transpose()
+        .map_err(option("--carr"))?;
+    let n = head.as_ref().map_or(MAX_AXES, |m| m.axes().len());
+    let current = current
+        .map(|t| positions(t, n, "positions"))
+        .transpose()
+        .map_err(option("--current"))?
+        .unwrap_or([0.0; MAX_AXES]);
+    let d = common.decimals;
+    let mut state = State::default();
+    run(common, joined(call), |text| {
+        let CallText {
+            params,
+            ints,
+            reals,
+        } = read_call(text)?;
+        let name = name_param(&params[1]);
+        let c = Call {
+            inexin: ints[0],
+            mihead: name.as_bytes(),
+            sw_rec: ints[1],
+            bin_in: ints[2],
+            pos: [reals[0], reals[1], reals[2]],
+            ang: [reals[3], reals[4], reals[5]],
+            pos_r: [reals[6], reals[7], reals[8]],
+            inexout: ints[3],
+            bin_out: ints[4],
+            rot_ad: ints[5],
+            rot_inv: ints[6],
+            retr_z: ints[7],
+        };
+        let next = cycle600::cycle600(&state, table.as_ref(), &c)?;
+        let Some(r) = next.results else {
+            return Err(Failure::new("the cycle stored no results"));
+        };
+        let positioned = match (&head, c.sw_rec) {
+            (Some(m), 0) => Some(cycle600::position(&next, m, current)?),
+            _ => None,
+        };
+        state = next;
+        let gud_name = String::from_utf8_lossy(next.name()).into_owned();
+        let flag = r.convention.kind.flag();
+        let code = r.convention.sequence.code();
+        let mut full = format!("_CYC600_1 = \"{gud_name}\"\n");
+        for (k, a) in r.angles.iter().enumerate() {
+            full += &format!("_CYC600_{} = {}\n", k + 2, num(*a, d));
+        }
+        full += &format!("_CYC600_5 = {flag}\n_CYC600_6 = {code}\n");
+        full += &format!("frame origin: {}\n", nums(&next.frame.translation, d));
+        if r.singular {
+            full += "singular: only the first and third rotations together are determined; \
+                     the third is set to 0\n";
+        }
+        let mut brief = format!("\"{gud_name}\" {} {flag} {code}", nums(&r.angles, d));
+        let mut json = Json::Obj(vec![
+            ("name", Json::str(gud_name)),
+            ("angles", Json::nums(&r.angles)),
+            ("intrinsic", Json::Int(flag.into())),
+            ("code", Json::Int(code.into())),
+            ("singular", Json::Bool(r.singular)),
+            ("origin", Json::nums(&next.frame.translation)),
+        ]);
+        match (positioned, c.sw_rec) {
+            (Some(p), _) => {
+                let used = &p.axes[..n];
+                full += &format!("head positions: {}\n", axes_text(used, d));
+                brief += &format!(" axes {}", nums(used, d));
+                json = json.with("axes", Json::nums(used));
+            }
+            (None, 0) => {
+                full += "_SW_REC = 0 positions the head: give its swivel data with --carr\n"
+            }
+            _ => {}
+        }
+        Ok(Report { full, brief, json })
+    })
+}
+
+/// What to compute with a machine.
+pub struct AxesArgs<'a> {
+    pub from: &'a str,
+    pub current: Option<&'a str>,
+    pub rule: &'a str,
+    pub all: bool,
+    pub forward: bool,
+}
+
+fn rule(text: &str, n: usize) -> Result<Rule, Failure> {
+    let lower = text.to_ascii_lowercase();
+    let axis = |k: &str| -> Result<usize, Failure> {
+        match k.parse::<usize>() {
+            Ok(k) if (1..=n).contains(&k) => Ok(k - 1),
+            _ => Err(Failure::new(format!(
+                "--rule: '{k}' is not an axis of the machine (1..{n})"
+            ))),
+        }
+    };
+    match lower.split_once(':') {
+        None if lower == "closest" => Ok(Rule::Closest),
+        None if lower == "inverse" => Ok(Rule::Inverse),
+        Some(("minus", k)) => Ok(Rule::Minus(axis(k)?)),
+        Some(("plus", k)) => Ok(Rule::Plus(axis(k)?)),
+        _ => Err(Failure::new(format!(
+            "--rule: '{text}': closest, inverse, minus:K or plus:K"
+        ))),
+    }
+}
+
+pub fn axes(
+    m: &MachineArgs,
+    a: &AxesArgs,
+    values: &[String],
+    common: &Common,
+) -> Result<bool, Failure> {
+    let machine = machine(m)?;
+    let n = machine.axes().len();
+    let (kind, code) = input::convention(a.from, true).map_err(option("--from"))?;
+    let current = a
+        .current
+        .map(|t| positions(t, n, "positions"))
+        .transpose()
+        .map_err(option("--current"))?
+        .unwrap_or([0.0; MAX_AXES]);
+    let rule = rule(a.rule, n)?;
+    let d = common.decimals;
+    run(common, joined(values), |text| {
+        if a.forward {
+            let p = positions(text, n, "positions")?;
+            let f = machine.forward(p)?;
+            let tool = column(&f.rotation, 2);
+            let mut full = format!(
+                "tool direction: {}\norigin: {}\n",
+                nums(&tool, d),
+                nums(&f.translation, d)
+            );
+            let mut json = Json::Obj(vec![
+                ("tool", Json::nums(&tool)),
+                ("origin", Json::nums(&f.translation)),
+                ("rotation", Json::matrix(&f.rotation)),
+            ]);
+            let mut brief = nums(&tool, d);
+            if let Ok(conv) = Sequence::from_axis_code(code).map(|s| Convention::new(kind, s)) {
+                let ang = angles_from_matrix(conv, &f.rotation)?;
+                full += &format!(
+                    "{}: {}\n",
+                    convention_name(kind, code),
+                    nums(&ang.angles, d)
+                );
+                brief = nums(&ang.angles, d);
+                json = json.with("angles", Json::nums(&ang.angles));
+            }
+            return Ok(Report { full, brief, json });
+        }
+        let target = matrix_from_angles(kind, code, angles_for(code, text)?);
+        if a.all {
+            let s = machine.inverse(&target)?;
+            let rows: Vec<&[f64]> = s.as_slice().iter().map(|r| &r[..n]).collect();
+            let mut full = String::new();
+            for (k, r) in rows.iter().enumerate() {
+                full += &format!("solution {}: {}\n", k + 1, axes_text(r, d));
+            }
+            if s.free {
+                full += "singular pose: one axis is free (shown at its position 0)\n";
+            }
+            let brief = rows
+                .iter()
+                .map(|r| nums(r, d))
+                .collect::<Vec<_>>()
+                .join("\t");
+            let json = Json::Obj(vec![
+                (
+                    "solutions",
+                    Json::Arr(rows.iter().map(|r| Json::nums(r)).collect()),
+                ),
+                ("free", Json::Bool(s.free)),
+            ]);
+            return Ok(Report { full, brief, json });
+        }
+        let c = machine.choose(&target, current, rule)?;
+        let used = &c.axes[..n];
+        let mut full = format!("{}\n", axes_text(used, d));
+        if c.residual.iter().any(|&r| r != 0.0) {
+            full += &format!("Hirth residual: {}\n", nums(&c.residual[..n], d));
+        }
+        if c.free {
+            full += "singular pose: a free axis stays at its current position\n";
+        }
+        let identity = c
+            .remaining
+            .iter()
+            .flatten()
+            .zip(cncrot::IDENTITY.iter().flatten())
+            .all(|(x, y)| (x - y).abs() <= 1e-12);
+        let mut json = Json::Obj(vec![
+            ("axes", Json::nums(used)),
+            ("residual", Json::nums(&c.residual[..n])),
+            ("free", Json::Bool(c.free)),
+            ("remaining", Json::matrix(&c.remaining)),
+        ]);
+        if !identity {
+            let conv = Convention::new(Kind::Extrinsic, Sequence::XYZ);
+            let r = angles_from_matrix(conv, &c.remaining)?;
+            full += &format!(
+                "left to the frame (the axes cannot turn about the tool), as extrinsic XYZ: {}\n",
+                nums(&r.angles, d)
+            );
+            json = json.with("remaining_extrinsic_xyz", Json::nums(&r.angles));
+        }
+        Ok(Report {
+            full,
+            brief: nums(used, d),
+            json,
+        })
+    })
+}

@@ -1,0 +1,301 @@
+//! Reading what people type: numbers, conventions, dialects, points, and one input per line
+//! for batch mode. Every refusal names the column of the first character it could not use.
+
+use cncrot::dialects::program::Dialect;
+use cncrot::{AxisCode, Convention, Kind, Sequence};
+
+/// A refused input: why, and the 1-based column (byte) where reading stopped, if the
+/// input is text that has columns.
+#[derive(Debug)]
+pub struct Failure {
+    pub message: String,
+    pub column: Option<usize>,
+}
+
+impl Failure {
+    pub fn new(message: impl Into<String>) -> Failure {
+        Failure {
+            message: message.into(),
+            column: None,
+        }
+    }
+
+    pub fn at(column: usize, message: impl Into<String>) -> Failure {
+        Failure {
+            message: message.into(),
+            column: Some(column),
+        }
+    }
+}
+
+impl From<cncrot::Error> for Failure {
+    fn from(e: cncrot::Error) -> Failure {
+        Failure::new(e.message())
+    }
+}
+
+/// The numbers of a text, separated by spaces, tabs, commas or semicolons, each with the
+/// column it starts at. A token that is not a finite number is refused at its column.
+pub fn numbers(text: &str) -> Result<Vec<f64>, Failure> {
+    let mut out = Vec::new();
+    for (column, token) in tokens(text) {
+        out.push(number(token).map_err(|m| Failure::at(column, m))?);
+    }
+    Ok(out)
+}
+
+/// Exactly `n` numbers.
+pub fn exactly<const N: usize>(text: &str, what: &str) -> Result<[f64; N], Failure> {
+    let v = numbers(text)?;
+    <[f64; N]>::try_from(v.as_slice()).map_err(|_| {
+        Failure::at(
+            text.len() + 1,
+            format!("{what}: expected {N} numbers, found {}", v.len()),
+        )
+    })
+}
+
+/// The tokens of a text with their 1-based columns.
+pub fn tokens(text: &str) -> Vec<(usize, &str)> {
+    let sep = |c: char| c.is_whitespace() || c == ',' || c == ';';
+    let mut out = Vec::new();
+    let mut start = None;
+    for (i, c) in text.char_indices() {
+        match (sep(c), start) {
+            (true, Some(s)) => {
+                out.push((s + 1, &text[s..i]));
+                start = None;
+            }
+            (false, None) => start = Some(i),
+            _ => {}
+        }
+    }
+    if let Some(s) = start {
+        out.push((s + 1, &text[s..]));
+    }
+    out
+}
+
+/// One finite number in the usual decimal notation (`1`, `-2.5`, `1e3`).
+pub fn number(token: &str) -> Result<f64, String> {
+    let plain = token
+        .bytes()
+        .all(|b| b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.' | b'e' | b'E'));
+    match token.parse::<f64>() {
+        Ok(x) if plain && x.is_finite() => Ok(x),
+        Ok(_) if plain => Err(format!("'{token}' is too large")),
+        _ => Err(format!("'{token}' is not a number")),
+    }
+}
+
+/// A convention as `KIND:SEQUENCE`: kind `intrinsic`/`i`/`1` (about the workpiece axes) or
+/// `extrinsic`/`e`/`0` (about the machine axes); the sequence as letters (`ZXY`, primes
+/// allowed: `ZX'Y''`) or as the code (`39`). `partial` allows skipped rotations (`0` for
+/// a letter, or a code with `00` pairs), which only a rotation to compose may have.
+pub fn convention(text: &str, partial: bool) -> Result<(Kind, AxisCode), Failure> {
+    let Some((kind, seq)) = text.split_once(':') else {
+        return Err(Failure::at(
+            1,
+            format!("'{text}': expected KIND:SEQUENCE, e.g. extrinsic:XYZ or intrinsic:ZXY"),
+        ));
+    };
+    let kind = match kind.to_ascii_lowercase().as_str() {
+        "intrinsic" | "i" | "1" => Kind::Intrinsic,
+        "extrinsic" | "e" | "0" => Kind::Extrinsic,
+        other => {
+            return Err(Failure::at(
+                1,
+                format!("'{other}' is neither intrinsic (i, 1) nor extrinsic (e, 0)"),
+            ))
+        }
+    };
+    let column = kind_len(text) + 2;
+    let code = if seq.bytes().all(|b| b.is_ascii_digit()) && !seq.is_empty() {
+        seq.parse::<i32>().unwrap_or(-1)
+    } else {
+        let mut code = 0;
+        let mut k = 0;
+        for (i, c) in seq.char_indices() {
+            let bits = match c.to_ascii_uppercase() {
+                'X' => 1,
+                'Y' => 2,
+                'Z' => 3,
+                '0' | '-' => 0,
+                '\'' | '"' => continue,
+                _ => {
+                    return Err(Failure::at(
+                        column + i,
+                        format!("'{c}' is not an axis letter (X, Y, Z)"),
+                    ))
+                }
+            };
+            if k == 3 {
+                return Err(Failure::at(column + i, "more than three rotations"));
+            }
+            code += bits << (2 * k);
+            k += 1;
+        }
+        code
+    };
+    let axis_code = AxisCode::new(code)
+        .map_err(|e| Failure::at(column, format!("'{seq}': {}", e.message())))?;
+    if !partial && Sequence::from_axis_code(axis_code).is_err() {
+        return Err(Failure::at(
+            column,
+            format!("'{seq}': the result needs three rotations (one of the 12 sequences)"),
+        ));
+    }
+    Ok((kind, axis_code))
+}
+
+fn kind_len(text: &str) -> usize {
+    text.find(':').unwrap_or(0)
+}
+
+/// A target convention: one of the 12 sequences.
+pub fn full_convention(text: &str) -> Result<Convention, Failure> {
+    let (kind, code) = convention(text, false)?;
+    let sequence = Sequence::from_axis_code(code)?;
+    Ok(Convention::new(kind, sequence))
+}
+
+/// A controller family by name.
+pub fn dialect(name: &str) -> Result<Dialect, Failure> {
+    match name.trim().to_ascii_lowercase().as_str() {
+        "sinumerik" | "siemens" => Ok(Dialect::Sinumerik),
+        "heidenhain" | "tnc" => Ok(Dialect::Heidenhain),
+        "fanuc" => Ok(Dialect::Fanuc),
+        "syntec" => Ok(Dialect::Syntec),
+        "twincat" | "beckhoff" => Ok(Dialect::Twincat),
+        "haas" => Ok(Dialect::Haas),
+        other => Err(Failure::new(format!(
+            "'{other}' is not a dialect: sinumerik, heidenhain, fanuc, syntec, twincat, haas"
+        ))),
+    }
+}
+
+/// The name a dialect is given on the command line.
+pub fn dialect_name(d: Dialect) -> &'static str {
+    match d {
+        Dialect::Sinumerik => "sinumerik",
+        Dialect::Heidenhain => "heidenhain",
+        Dialect::Fanuc => "fanuc",
+        Dialect::Syntec => "syntec",
+        Dialect::Twincat => "twincat",
+        Dialect::Haas => "haas",
+    }
+}
+
+/// The command each dialect writes when no form is named.
+pub fn default_form(d: Dialect) -> &'static str {
+    match d {
+        Dialect::Sinumerik => "CYCLE800",
+        Dialect::Heidenhain => "PLANE SPATIAL",
+        Dialect::Fanuc => "G68.2",
+        Dialect::Syntec => "G158",
+        Dialect::Twincat => "ROT",
+        Dialect::Haas => "G268",
+    }
+}
+
+/// A line to write: `DIALECT` or `DIALECT:FORM` (`heidenhain:PLANE EULER`).
+#[derive(Clone, Debug)]
+pub struct Target {
+    pub dialect: Dialect,
+    pub form: String,
+}
+
+pub fn target(text: &str) -> Result<Target, Failure> {
+    let (name, form) = match text.split_once(':') {
+        Some((n, f)) => (n, f.trim().to_string()),
+        None => (text, String::new()),
+    };
+    let dialect = dialect(name)?;
+    let form = if form.is_empty() {
+        default_form(dialect).to_string()
+    } else {
+        form
+    };
+    Ok(Target { dialect, form })
+}
+
+/// Every dialect in its default form.
+pub fn all_targets() -> Vec<Target> {
+    Dialect::ALL
+        .iter()
+        .map(|&dialect| Target {
+            dialect,
+            form: default_form(dialect).to_string(),
+        })
+        .collect()
+}
+
+/// The inputs of a batch: the lines of a file (`-`: standard input), each with its 1-based
+/// number; lines of only spaces are skipped, a `\r` before the line end is dropped.
+pub fn batch_lines(source: &str) -> Result<Vec<(usize, String)>, Failure> {
+    let text = read_source(source)?;
+    Ok(text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty())
+        .map(|(i, l)| (i + 1, l.to_string()))
+        .collect())
+}
+
+/// The whole text of a file, or of standard input for `-`.
+pub fn read_source(source: &str) -> Result<String, Failure> {
+    let bytes = if source == "-" {
+        let mut v = Vec::new();
+        std::io::Read::read_to_end(&mut std::io::stdin(), &mut v)
+            .map_err(|e| Failure::new(format!("standard input: {e}")))?;
+        v
+    } else {
+        std::fs::read(source).map_err(|e| Failure::new(format!("{source}: {e}")))?
+    };
+    String::from_utf8(bytes).map_err(|e| {
+        Failure::new(format!(
+            "{source}: not UTF-8 text (byte {})",
+            e.utf8_error().valid_up_to() + 1
+        ))
+    })
+}
+
+/// The decimals option: a count from 0 to 15, or `exact` (the shortest numbers that read
+/// back to the same double).
+pub fn decimals(text: &str) -> Result<i32, String> {
+    let text = text.trim();
+    if text.eq_ignore_ascii_case("exact") {
+        return Ok(-1);
+    }
+    match text.parse::<i32>() {
+        Ok(d) if (0..=15).contains(&d) => Ok(d),
+        _ => Err(format!("'{text}': a count of decimals 0..15, or 'exact'")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn conventions_in_letters_and_codes() {
+        // Codes from the definition a1 + 4·a2 + 16·a3 with X = 1, Y = 2, Z = 3.
+        let (k, c) = convention("extrinsic:XYZ", false).unwrap();
+        assert_eq!((k, c.code()), (Kind::Extrinsic, 57));
+        let (k, c) = convention("i:ZX'Y''", false).unwrap();
+        assert_eq!((k, c.code()), (Kind::Intrinsic, 39));
+        assert_eq!(convention("1:39", false).unwrap().1.code(), 39);
+        assert_eq!(convention("e:Z0X", true).unwrap().1.code(), 3 + 16);
+        assert!(convention("e:ZX", false).is_err());
+        assert_eq!(convention("e:XXZ", true).unwrap_err().column, Some(3));
+        assert_eq!(convention("e:XQZ", true).unwrap_err().column, Some(4));
+        assert!(convention("XYZ", false).is_err());
+    }
+
+    #[test]
+    fn numbers_with_columns() {
+        assert_eq!(numbers("30, 45;60").unwrap(), vec![30.0, 45.0, 60.0]);
+        assert_eq!(numbers("30 4x5").unwrap_err().column, Some(4));
+        assert!(numbers("nan").is_err() && numbers("inf").is_err() && numbers("1e999").is_err());
+    }
+}

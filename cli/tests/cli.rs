@@ -1,0 +1,711 @@
+//! The command-line tool as its users run it: the paper's and the manuals' numbers, every
+//! subcommand, batch mode, JSON, bad input (a message with line and column, a non-zero
+//! exit, never a panic trace).
+
+use std::io::Write;
+use std::process::{Command, Stdio};
+
+struct Run {
+    code: i32,
+    stdout: String,
+    stderr: String,
+}
+
+fn cncrot(args: &[&str], stdin: &str) -> Run {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_cncrot"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary starts");
+    child
+        .stdin
+        .take()
+        .expect("piped")
+        .write_all(stdin.as_bytes())
+        .expect("stdin written");
+    let out = child.wait_with_output().expect("the binary ends");
+    let run = Run {
+        code: out.status.code().expect("exited, not killed"),
+        stdout: String::from_utf8(out.stdout).expect("UTF-8"),
+        stderr: String::from_utf8(out.stderr).expect("UTF-8"),
+    };
+    assert!(
+        !run.stderr.contains("panicked") && !run.stderr.contains("RUST_BACKTRACE"),
+        "{args:?}: {}",
+        run.stderr
+    );
+    run
+}
+
+fn ok(args: &[&str]) -> String {
+    let r = cncrot(args, "");
+    assert_eq!(r.code, 0, "{args:?}: {}", r.stderr);
+    r.stdout
+}
+
+/// The numbers of a text (tokens that read as numbers; quotes and words skipped).
+fn numbers(text: &str) -> Vec<f64> {
+    text.split(|c: char| c.is_whitespace() || c == ',')
+        .filter_map(|t| t.parse::<f64>().ok())
+        .collect()
+}
+
+fn close(got: &[f64], want: &[f64], tol: f64) {
+    assert_eq!(got.len(), want.len(), "{got:?} vs {want:?}");
+    for (g, w) in got.iter().zip(want) {
+        assert!((g - w).abs() <= tol, "{got:?} vs {want:?}");
+    }
+}
+
+// The paper, Examples 2 and 3: probe angles (30, 45, 60) about the machine axes X, Y, Z.
+const PROBE: [&str; 3] = ["30", "45", "60"];
+// As printed in the paper (4 decimals): intrinsic Z, X', Y'' and extrinsic Z, X, Y.
+const I39: [f64; 3] = [37.7923, 20.7048, 49.1066];
+const E39: [f64; 3] = [39.6392, -16.2799, 50.3607];
+
+#[test]
+fn convert_gives_the_papers_numbers() {
+    let mut args = vec![
+        "convert",
+        "--from",
+        "extrinsic:XYZ",
+        "--to",
+        "intrinsic:ZXY",
+    ];
+    args.extend(PROBE);
+    let out = ok(&args);
+    let lines: Vec<&str> = out.lines().collect();
+    assert!(lines[1].starts_with("intrinsic ZXY (39): "), "{out}");
+    close(&numbers(lines[1]), &I39, 1e-4);
+    // Codes and letters (with primes) are the same conventions.
+    let mut args = vec![
+        "convert", "--from", "0:57", "--to", "e:ZX'Y''", "--batch", "-",
+    ];
+    args.push("--decimals");
+    args.push("exact");
+    let r = cncrot(&args, "30 45 60\n30,45,60\n");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(lines.len(), 2);
+    assert_eq!(lines[0], lines[1]);
+    close(&numbers(lines[0]), &E39, 1e-4);
+}
+
+#[test]
+fn convert_second_solution_nearest_and_singular() {
+    // The second decomposition of a Tait-Bryan rotation is (θ1+180, 180-θ2, θ3+180).
+    let out = ok(&[
+        "convert", "--from", "e:XYZ", "--to", "e:XYZ", "10", "20", "30",
+    ]);
+    let second = out.lines().find(|l| l.contains("second")).expect("second");
+    close(&numbers(second), &[-170.0, 160.0, -150.0], 1e-9);
+    // Nearest to angles one turn on: the second solution, unwound.
+    let out = ok(&[
+        "convert",
+        "--from",
+        "e:XYZ",
+        "--to",
+        "e:XYZ",
+        "--near",
+        "190,160,210",
+        "10",
+        "20",
+        "30",
+    ]);
+    close(
+        &numbers(out.lines().nth(1).expect("result"))[..3],
+        &[190.0, 160.0, 210.0],
+        1e-9,
+    );
+    // Negative numbers are numbers, not options.
+    let out = ok(&[
+        "convert", "--from", "e:XYZ", "--to", "e:XYZ", "-10", "-20", "-30",
+    ]);
+    close(
+        &numbers(out.lines().nth(1).expect("result")),
+        &[-10.0, -20.0, -30.0],
+        1e-9,
+    );
+    // Intrinsic Z, Y', X'' with Y' = 90: singular, θ3 = 0, θ1 carries θ1 - θ3.
+    let out = ok(&[
+        "convert", "--from", "i:ZYX", "--to", "i:ZYX", "40", "90", "10",
+    ]);
+    assert!(out.contains("singular"), "{out}");
+    close(
+        &numbers(out.lines().nth(1).expect("result")),
+        &[30.0, 90.0, 0.0],
+        1e-9,
+    );
+    // A skipped rotation: X then Z (code 1 + 3·16 = 49) given with two angles.
+    let a = ok(&["convert", "--from", "e:X0Z", "--to", "e:XYZ", "30", "60"]);
+    let b = ok(&[
+        "convert", "--from", "e:XYZ", "--to", "e:XYZ", "30", "0", "60",
+    ]);
+    assert_eq!(a.lines().nth(1), b.lines().nth(1));
+}
+
+#[test]
+fn convert_json() {
+    let out = ok(&[
+        "convert", "--from", "e:XYZ", "--to", "i:ZXY", "--json", "30", "45", "60",
+    ]);
+    assert!(
+        out.starts_with("{\"intrinsic\":1,\"code\":39,\"angles\":[37.792"),
+        "{out}"
+    );
+    assert!(out.trim_end().ends_with("\"singular\":false}"), "{out}");
+    assert_eq!(out.lines().count(), 1);
+}
+
+#[test]
+fn bad_input_is_a_message_with_its_place() {
+    // A malformed command line: exit 2.
+    let r = cncrot(
+        &["convert", "--from", "XYZ", "--to", "i:ZXY", "1", "2", "3"],
+        "",
+    );
+    assert_eq!(r.code, 2);
+    assert!(
+        r.stderr.contains("--from") && r.stderr.contains("KIND:SEQUENCE"),
+        "{}",
+        r.stderr
+    );
+    let r = cncrot(
+        &["convert", "--from", "e:XYZ", "--to", "i:ZX", "1", "2", "3"],
+        "",
+    );
+    assert_eq!(r.code, 2, "{}", r.stderr);
+    let r = cncrot(&["frobnicate"], "");
+    assert_eq!(r.code, 2);
+    // A bad input: exit 1, with its column.
+    let r = cncrot(
+        &[
+            "convert", "--from", "e:XYZ", "--to", "i:ZXY", "30", "4x5", "60",
+        ],
+        "",
+    );
+    assert_eq!(r.code, 1);
+    assert!(
+        r.stderr.contains("column 4") && r.stderr.contains("'4x5'"),
+        "{}",
+        r.stderr
+    );
+    for bad in ["nan", "inf", "1e999"] {
+        let r = cncrot(
+            &["convert", "--from", "e:XYZ", "--to", "i:ZXY", "1", bad, "3"],
+            "",
+        );
+        assert_eq!(r.code, 1, "{bad}");
+        assert!(r.stdout.is_empty());
+    }
+    let r = cncrot(
+        &["convert", "--from", "e:XYZ", "--to", "i:ZXY", "1", "2"],
+        "",
+    );
+    assert_eq!(r.code, 1);
+    assert!(r.stderr.contains("expected 3 angles"), "{}", r.stderr);
+    // Both an argument and a batch: refused before anything is read.
+    let r = cncrot(
+        &[
+            "convert", "--from", "e:XYZ", "--to", "i:ZXY", "--batch", "-", "1 2 3",
+        ],
+        "",
+    );
+    assert_eq!(r.code, 2);
+    let r = cncrot(
+        &[
+            "convert",
+            "--from",
+            "e:XYZ",
+            "--to",
+            "i:ZXY",
+            "--batch",
+            "/nonexistent",
+        ],
+        "",
+    );
+    assert_eq!(r.code, 2);
+    assert!(r.stderr.contains("/nonexistent"), "{}", r.stderr);
+    let r = cncrot(
+        &[
+            "convert",
+            "--from",
+            "e:XYZ",
+            "--to",
+            "i:ZXY",
+            "--decimals",
+            "99",
+            "1 2 3",
+        ],
+        "",
+    );
+    assert_eq!(r.code, 2);
+}
+
+#[test]
+fn batch_reports_each_line_and_fails_if_any_failed() {
+    let input = "30 45 60\n\n1 2 x\r\n0,90,10\n";
+    let args = [
+        "convert", "--from", "e:XYZ", "--to", "i:ZYX", "--batch", "-",
+    ];
+    let r = cncrot(&args, input);
+    assert_eq!(r.code, 1);
+    // Line 2 is blank (skipped), line 3 fails at its 5th column, lines 1 and 4 are written.
+    assert_eq!(r.stdout.lines().count(), 2, "{}", r.stdout);
+    assert_eq!(
+        r.stderr.trim(),
+        "cncrot: line 3, column 5: 'x' is not a number"
+    );
+    // Extrinsic X, Y, Z = (0, 90, 10) is intrinsic Z, Y', X'' = (10, 90, 0).
+    close(
+        &numbers(r.stdout.lines().nth(1).expect("line 4")),
+        &[10.0, 90.0, 0.0],
+        1e-9,
+    );
+    // JSON: one object per input line, errors in place.
+    let mut json = args.to_vec();
+    json.push("--json");
+    let r = cncrot(&json, input);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(lines.len(), 3);
+    assert!(lines[0].ends_with("\"line\":1}"));
+    assert_eq!(
+        lines[1],
+        "{\"error\":\"'x' is not a number\",\"column\":5,\"line\":3}"
+    );
+    // All good: exit 0.
+    let r = cncrot(&args, "1 2 3\n4 5 6\n");
+    assert_eq!((r.code, r.stdout.lines().count()), (0, 2));
+}
+
+#[test]
+fn line_translates_between_dialects() {
+    // TwinCAT's ROT X30 is a rotation of 30° about X: PLANE SPATIAL SPA+30.
+    let out = ok(&["line", "--from", "twincat", "--to", "heidenhain", "ROT X30"]);
+    assert!(
+        out.contains("heidenhain PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY"),
+        "{out}"
+    );
+    // Without --to: every dialect.
+    let out = ok(&[
+        "line",
+        "--from",
+        "heidenhain",
+        "PLANE SPATIAL SPA+0 SPB+0 SPC+30 STAY",
+    ]);
+    for name in [
+        "sinumerik",
+        "heidenhain",
+        "fanuc",
+        "syntec",
+        "twincat",
+        "haas",
+    ] {
+        assert!(out.lines().any(|l| l.starts_with(name)), "{name}: {out}");
+    }
+    assert!(out.contains("twincat    ROT X0 Y0 Z30"), "{out}");
+    // The TwinCAT manual: ROT Z30, then AROT Z15, is 45° about Z. A program's lines carry
+    // their modal state in batch mode; a bad line is refused at its column and the next
+    // line still sees the state before it.
+    let r = cncrot(
+        &[
+            "line", "--from", "twincat", "--to", "twincat", "--to", "fanuc", "--batch", "-",
+        ],
+        "N65 ROT Z30\nN70 ROT Z=R1\nN90 AROT Z15\n",
+    );
+    assert_eq!(r.code, 1);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(lines.len(), 2, "{}", r.stdout);
+    assert!(
+        lines[1].starts_with("ROT X0 Y0 Z45\tG68.2 "),
+        "{}",
+        lines[1]
+    );
+    assert!(r.stderr.contains("line 2, column 11:"), "{}", r.stderr);
+    // A named form, and the origin kept where the form has no origin words.
+    let out = ok(&[
+        "line",
+        "--from",
+        "fanuc",
+        "--to",
+        "heidenhain:PLANE EULER",
+        "--to",
+        "syntec",
+        "G68.2 X10 Y0 Z0 I0 J30 K0",
+    ]);
+    assert!(
+        out.contains("PLANE EULER EULPR+0 EULNU+30 EULROT+0"),
+        "{out}"
+    );
+    assert!(
+        out.contains("[origin 10.0000 0.0000 0.0000: shift the datum there first]"),
+        "{out}"
+    );
+    assert!(out.contains("G158 P10157 X10. "), "{out}");
+    // Unknown dialect or form.
+    let r = cncrot(&["line", "--from", "mazak", "G68.2 I0 J0 K0"], "");
+    assert_eq!(r.code, 2);
+    assert!(r.stderr.contains("'mazak' is not a dialect"));
+    let r = cncrot(
+        &[
+            "line",
+            "--from",
+            "fanuc",
+            "--to",
+            "heidenhain:PLANE FLAT",
+            "G68.2 X0 Y0 Z0 I0 J0 K0",
+        ],
+        "",
+    );
+    assert_eq!(r.code, 1);
+    assert!(r.stderr.contains("PLANE FLAT"), "{}", r.stderr);
+}
+
+#[test]
+fn probe_plane_flatness_and_lines() {
+    // Two opposite corners 0.01 mm above z = 5, the other two 0.01 below: by symmetry the
+    // plane is z = 5, the flatness 0.02 and the RMS 0.01; X' runs from the first point to
+    // the second, here +X, so the plane is not rotated, only shifted to z = 5.
+    let out = ok(&[
+        "probe",
+        "0,0,5.01",
+        "100,0,4.99",
+        "100,100,5.01",
+        "0,100,4.99",
+        "--to",
+        "heidenhain",
+    ]);
+    assert!(out.contains("[origin 0.0000 0.0000 5.0000: shift"), "{out}");
+    assert!(
+        out.contains("flatness: 0.0200 mm") && out.contains("rms: 0.0100 mm"),
+        "{out}"
+    );
+    assert!(
+        out.contains("PLANE SPATIAL SPA+0 SPB+0 SPC+0 STAY"),
+        "{out}"
+    );
+    // A plane rising 10 mm over 100 mm along X: tilted atan(0.1) = 5.7106° about -Y.
+    let file = std::env::temp_dir().join(format!("cncrot_probe_{}.csv", std::process::id()));
+    std::fs::write(
+        &file,
+        "x;y;z\n# probed\n0;0;0\n100;0;10\n100;50;10\n0;50;0\n",
+    )
+    .expect("written");
+    let path = file.to_str().expect("UTF-8 path");
+    let out = ok(&["probe", "--points-file", path, "--to", "twincat", "--json"]);
+    assert!(out.contains("\"points\":4"), "{out}");
+    assert!(
+        out.contains("\"extrinsic_xyz\":[0,-5.71059313749964"),
+        "{out}"
+    );
+    // A bad point names its line and column.
+    std::fs::write(&file, "0 0 0\n100 0 10\n100 5O 10\n").expect("written");
+    let r = cncrot(&["probe", "--points-file", path], "");
+    assert_eq!(r.code, 1);
+    assert!(
+        r.stderr.contains("line 3, column 5: '5O' is not a number"),
+        "{}",
+        r.stderr
+    );
+    std::fs::remove_file(&file).ok();
+    // Too few, or collinear: the library's reasons.
+    let r = cncrot(&["probe", "0,0,0", "1,0,0"], "");
+    assert_eq!(r.code, 1);
+    assert!(r.stderr.contains("too few points"), "{}", r.stderr);
+    let r = cncrot(&["probe", "0,0,0", "1,0,0", "2,0,0"], "");
+    assert!(r.code == 1 && r.stderr.contains("one line"), "{}", r.stderr);
+    // Points from standard input, negative coordinates.
+    let r = cncrot(
+        &["probe", "--points-file", "-", "--to", "fanuc"],
+        "-1 -1 0\n1 -1 0\n1 1 0\n",
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+}
+
+#[test]
+fn cycle600_the_papers_example_3() {
+    let call = "CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1,39,0,0,0)";
+    let out = ok(&["cycle600", call]);
+    assert!(out.starts_with("_CYC600_1 = \"UFK600\"\n"), "{out}");
+    let values: Vec<f64> = out
+        .lines()
+        .filter(|l| l.starts_with("_CYC600_") && !l.starts_with("_CYC600_1"))
+        .flat_map(numbers)
+        .collect();
+    close(&values, &[I39[0], I39[1], I39[2], 1.0, 39.0], 1e-4);
+    // The second call (_INEXOUT = 0) as a bare list of parameters, in batch with the first.
+    let r = cncrot(
+        &["cycle600", "--batch", "-"],
+        &format!("N120 {call} ; intrinsic\n0 UFK600 1 57 0 0 0 30 45 60 0 0 0 0 39\n"),
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(lines.len(), 2);
+    close(
+        &numbers(lines[1]),
+        &[E39[0], E39[1], E39[2], 0.0, 39.0],
+        1e-4,
+    );
+    // _ROT_AD = 1: Z 30 then Z 15 added (intrinsic, code 3 = Z alone) is Z 45, and the
+    // state carries from line to line.
+    let r = cncrot(
+        &["cycle600", "--batch", "-"],
+        "CYCLE600(1,\"\",1,3,,,,30,,,,,,1,39)\nCYCLE600(1,\"\",1,3,,,,15,,,,,,1,39,1)\n",
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    close(
+        &numbers(r.stdout.lines().nth(1).expect("2nd")),
+        &[45.0, 0.0, 0.0, 1.0, 39.0],
+        1e-12,
+    );
+}
+
+#[test]
+fn cycle600_refusals() {
+    // An unknown accessory with a HEAD_DEF table, a bad flag, a bad number, too few.
+    let heads = std::env::temp_dir().join(format!("cncrot_heads_{}.spf", std::process::id()));
+    std::fs::write(&heads, "_HEAD_NAME=\"UFK600\"\nM17\n").expect("written");
+    let h = heads.to_str().expect("UTF-8 path");
+    let good = "CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1,39)";
+    assert_eq!(cncrot(&["cycle600", "--heads", h, good], "").code, 0);
+    let r = cncrot(
+        &["cycle600", "--heads", h, &good.replace("UFK600", "UFK700")],
+        "",
+    );
+    assert!(
+        r.code == 1 && r.stderr.contains("not found in the head table"),
+        "{}",
+        r.stderr
+    );
+    std::fs::remove_file(&heads).ok();
+    let r = cncrot(&["cycle600", &good.replace("(0,", "(2,")], "");
+    assert!(r.code == 1 && r.stderr.contains("flag"), "{}", r.stderr);
+    let r = cncrot(&["cycle600", &good.replace("30,45", "30,4.5.")], "");
+    assert!(
+        r.code == 1 && r.stderr.contains("column 35"),
+        "{}",
+        r.stderr
+    );
+    let r = cncrot(&["cycle600", "CYCLE600(0,\"A\",1,57)"], "");
+    assert!(
+        r.code == 1 && r.stderr.contains("15 to 18 parameters"),
+        "{}",
+        r.stderr
+    );
+    let r = cncrot(&["cycle600", "CYCLE800(0,\"A\",1,57)"], "");
+    assert!(r.code == 1 && r.stderr.contains("column 1"), "{}", r.stderr);
+}
+
+/// A head C about Z carrying B about Y (the library's documented example).
+const HEAD: [&str; 4] = ["--axis", "tool:0,0,1", "--axis", "tool:0,1,0"];
+
+#[test]
+fn axes_of_a_swivel_head() {
+    // The plane tilted 30° about Y, from C = 750°: C = 720° (whole turns toward the
+    // current position), B = 30°.
+    let mut args = vec!["axes"];
+    args.extend(HEAD);
+    args.extend(["--current", "750,0", "0", "30", "0"]);
+    let out = ok(&args);
+    assert_eq!(out.trim(), "axis 1 = 720.0000, axis 2 = 30.0000");
+    // "Minus" on B: B = -30° (C = 180°).
+    let mut args = vec!["axes"];
+    args.extend(HEAD);
+    args.extend(["--rule", "minus:2", "--batch", "-"]);
+    let r = cncrot(&args, "0 30 0\n");
+    let got = numbers(&r.stdout);
+    // C = ±180° are one position, equally far from 0.
+    assert!(
+        (got[0].abs() - 180.0).abs() < 1e-9 && (got[1] + 30.0).abs() < 1e-9,
+        "{got:?}"
+    );
+    // Every solution.
+    let mut args = vec!["axes"];
+    args.extend(HEAD);
+    args.extend(["--all", "0", "30", "0"]);
+    let out = ok(&args);
+    assert_eq!(out.lines().count(), 2, "{out}");
+    // Forward: B = 30° tilts the tool +Z toward +X: (sin 30°, 0, cos 30°).
+    let mut args = vec!["axes"];
+    args.extend(HEAD);
+    args.extend(["--forward", "--decimals", "exact", "0", "30"]);
+    let out = ok(&args);
+    let tool = out.lines().next().expect("tool line");
+    close(&numbers(tool), &[0.5, 0.0, 3f64.sqrt() / 2.0], 1e-15);
+    // A head with a C axis alone cannot tilt: unreachable, exit 1.
+    let r = cncrot(&["axes", "--axis", "tool:0,0,1", "30", "0", "0"], "");
+    assert!(
+        r.code == 1 && r.stderr.contains("no rotary-axis positions"),
+        "{}",
+        r.stderr
+    );
+    // ...but turns about the tool are left to the frame.
+    let out = ok(&["axes", "--axis", "tool:1,0,0", "0", "0", "30"]);
+    assert!(out.contains("left to the frame"), "{out}");
+}
+
+#[test]
+fn axes_from_swivel_data_and_refusals() {
+    // Swivel data of a head C (about Z) carrying B (about Y), as the library's example.
+    let carr = std::env::temp_dir().join(format!("cncrot_carr_{}.mpf", std::process::id()));
+    std::fs::write(
+        &carr,
+        "$TC_CARR7[1]=0 $TC_CARR8[1]=1 $TC_CARR9[1]=0\n$TC_CARR10[1]=0 $TC_CARR11[1]=0 $TC_CARR12[1]=1\n\
+         $TC_CARR23[1]=\"T\"\n$TC_CARR34[1]=\"HEAD_BC\"\n",
+    )
+    .expect("written");
+    let c = carr.to_str().expect("UTF-8 path");
+    let out = ok(&["axes", "--carr", c, "--all", "0", "30", "0"]);
+    assert_eq!(out.lines().count(), 2, "{out}");
+    // CYCLE600 positioning the same head (_SW_REC = 0).
+    let out = ok(&[
+        "cycle600",
+        "--carr",
+        c,
+        "CYCLE600(0,\"H\",0,57,0,0,0,0,30,0,0,0,0,1,39)",
+    ]);
+    assert!(out.contains("head positions: "), "{out}");
+    let r = cncrot(&["axes", "--carr", c, "--set", "2", "0", "30", "0"], "");
+    assert_eq!(r.code, 2, "{}", r.stderr);
+    std::fs::write(&carr, "$TC_CARR7[1]=0\n$TC_CARR50[1]=1\n").expect("written");
+    let r = cncrot(&["axes", "--carr", c, "0", "30", "0"], "");
+    assert!(r.code == 2 && r.stderr.contains("line 2"), "{}", r.stderr);
+    std::fs::remove_file(&carr).ok();
+    // Machines that cannot be.
+    for (axes, why) in [
+        (&["--axis", "tool:0,0,0"][..], "zero direction"),
+        (
+            &["--axis", "tool:0,0,1", "--axis", "tool:0,0,2"][..],
+            "parallel",
+        ),
+        (&["--axis", "arm:0,0,1"][..], "neither tool"),
+        (&["--axis", "tool:0,0"][..], "expected 3 numbers"),
+        (&[][..], "describe the machine"),
+    ] {
+        let mut args = vec!["axes"];
+        args.extend(axes);
+        args.extend(["0", "0", "0"]);
+        let r = cncrot(&args, "");
+        assert!(
+            r.code == 2 && r.stderr.contains(why),
+            "{axes:?}: {}",
+            r.stderr
+        );
+    }
+    let mut args = vec!["axes"];
+    args.extend(HEAD);
+    args.extend(["--rule", "minus:3", "0", "0", "0"]);
+    assert_eq!(cncrot(&args, "").code, 2);
+}
+
+#[test]
+fn every_subcommand_has_help_with_an_example() {
+    for sub in ["convert", "line", "probe", "cycle600", "axes", "kinematics"] {
+        let out = ok(&[sub, "--help"]);
+        assert!(out.contains("Example"), "{sub}: {out}");
+    }
+    let out = ok(&["--help"]);
+    for sub in ["convert", "line", "probe", "cycle600", "axes"] {
+        assert!(out.contains(sub), "{out}");
+    }
+}
+
+#[test]
+fn hostile_input_never_panics() {
+    let huge = "1e308";
+    let cases: Vec<Vec<&str>> = vec![
+        vec![
+            "convert", "--from", "e:XYZ", "--to", "i:ZXY", huge, huge, huge,
+        ],
+        vec![
+            "convert",
+            "--from",
+            "e:XYZ",
+            "--to",
+            "i:ZXY",
+            "--near",
+            "1e308,0,0",
+            "1",
+            "2",
+            "3",
+        ],
+        vec!["convert", "--from", "e:", "--to", "i:ZXY", "1", "2", "3"],
+        vec![
+            "convert",
+            "--from",
+            "e:99999999999999999999",
+            "--to",
+            "i:ZXY",
+            "1",
+            "2",
+            "3",
+        ],
+        vec!["line", "--from", "sinumerik", ""],
+        vec!["line", "--from", "sinumerik", "TRANS X1e308 Y1e308"],
+        vec![
+            "line",
+            "--from",
+            "heidenhain",
+            "PLANE SPATIAL SPA+1e400 SPB+0 SPC+0 STAY",
+        ],
+        vec!["line", "--from", "fanuc", "\u{1F600}"],
+        vec![
+            "probe",
+            "1e308,1e308,1e308",
+            "-1e308,-1e308,-1e308",
+            "1e308,-1e308,0",
+        ],
+        vec!["probe"],
+        vec!["cycle600", "CYCLE600("],
+        vec!["cycle600", ")CYCLE600("],
+        vec![
+            "cycle600",
+            "CYCLE600(0,\"\u{e9}\",1,57,0,0,0,1,2,3,0,0,0,1,39)",
+        ],
+        vec![
+            "cycle600",
+            "CYCLE600(0,\"A\",1,57,1e308,0,0,1,2,3,1e308,0,0,1,39)",
+        ],
+        vec!["axes", "--axis", "tool:1e308,1e308,0", "1", "2", "3"],
+        vec![
+            "axes",
+            "--axis",
+            "tool:0,0,1",
+            "--current",
+            "1e300",
+            "1",
+            "2",
+            "3",
+        ],
+        vec!["axes", "--axis", "tool:0,0,1", "--forward", "1e308"],
+    ];
+    for args in cases {
+        let r = cncrot(&args, "");
+        assert!(r.code == 0 || r.code == 1 || r.code == 2, "{args:?}");
+        if r.code != 0 {
+            assert!(
+                r.stderr.starts_with("cncrot: ") || r.stderr.starts_with("error: "),
+                "{args:?}: {}",
+                r.stderr
+            );
+        }
+    }
+    // Bytes that are not UTF-8 in a batch file.
+    let file = std::env::temp_dir().join(format!("cncrot_bytes_{}.txt", std::process::id()));
+    std::fs::write(&file, b"1 2 3\n\xff\xfe 2 3\n").expect("written");
+    let path = file.to_str().expect("UTF-8 path");
+    let r = cncrot(
+        &[
+            "convert", "--from", "e:XYZ", "--to", "i:ZXY", "--batch", path,
+        ],
+        "",
+    );
+    assert!(
+        r.code == 2 && r.stderr.contains("not UTF-8 text (byte 7)"),
+        "{}",
+        r.stderr
+    );
+    std::fs::remove_file(&file).ok();
+}
