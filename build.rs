@@ -1,28 +1,24 @@
-//! Generates the C header `include/cncrot.h` with cbindgen.
+//! Gives the shared library its soname, so that programs linked against it find the
+//! installed library by its ABI version (`libcncrot.so.0.1` for 0.1.z, `libcncrot.so.N` for
+//! N.y.z: Cargo's semver-compatibility rule, the one cargo-c follows).
 //!
-//! The header is always written to `$OUT_DIR/cncrot.h`. The committed copy in `include/` is
-//! refreshed too, unless `CNCROT_FROZEN_HEADER` is set: the test command sets it, so that a
-//! committed header that no longer matches the sources fails the `header_is_fresh` test
-//! instead of being silently rewritten.
-
-use std::path::PathBuf;
+//! The C header is not generated here: `tests/header.rs` generates it with cbindgen and
+//! fails when the committed `include/cncrot.h` differs (`CNCROT_BLESS=1` rewrites it), so a
+//! build of the library needs no build dependency.
 
 fn main() {
-    println!("cargo:rerun-if-changed=src");
-    println!("cargo:rerun-if-changed=cbindgen.toml");
-    println!("cargo:rerun-if-env-changed=CNCROT_FROZEN_HEADER");
-
-    let crate_dir = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").expect("set by cargo"));
-    let out_dir = PathBuf::from(std::env::var("OUT_DIR").expect("set by cargo"));
-    let config = cbindgen::Config::from_file(crate_dir.join("cbindgen.toml"))
-        .expect("cbindgen.toml is readable");
-    let bindings = cbindgen::Builder::new()
-        .with_crate(&crate_dir)
-        .with_config(config)
-        .generate()
-        .expect("cbindgen generates the header");
-    bindings.write_to_file(out_dir.join("cncrot.h"));
-    if std::env::var_os("CNCROT_FROZEN_HEADER").is_none() {
-        bindings.write_to_file(crate_dir.join("include").join("cncrot.h"));
+    println!("cargo:rerun-if-changed=build.rs");
+    let os = std::env::var("CARGO_CFG_TARGET_OS").unwrap_or_default();
+    let family = std::env::var("CARGO_CFG_TARGET_FAMILY").unwrap_or_default();
+    let major = std::env::var("CARGO_PKG_VERSION_MAJOR").unwrap_or_default();
+    let minor = std::env::var("CARGO_PKG_VERSION_MINOR").unwrap_or_default();
+    let abi = if major == "0" {
+        format!("0.{minor}")
+    } else {
+        major
+    };
+    // ELF platforms; Apple platforms use install names and Windows import libraries.
+    if family == "unix" && !matches!(os.as_str(), "macos" | "ios") {
+        println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,libcncrot.so.{abi}");
     }
 }

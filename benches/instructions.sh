@@ -9,7 +9,6 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
-export CNCROT_FROZEN_HEADER=1
 features=${1:-}
 bin=$(cargo bench --bench timing ${features:+--features "$features"} --no-run 2>&1 |
   grep -oE 'target/release/deps/timing-[0-9a-f]+' | tail -1)

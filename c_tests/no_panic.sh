@@ -10,7 +10,6 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
-export CNCROT_FROZEN_HEADER=1
 
 proof() {
   cargo rustc --quiet --release --lib --crate-type cdylib --target-dir target/no-panic \

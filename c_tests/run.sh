@@ -9,10 +9,16 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 build=c_tests/build
 mkdir -p "$build"
-CNCROT_FROZEN_HEADER=1 cargo build --release --quiet
-CNCROT_FROZEN_HEADER=1 cargo build --profile rt --no-default-features --lib --quiet
+cargo build --release --quiet
+cargo build --profile rt --no-default-features --lib --quiet
 lib=target/release
 rt=target/rt
+# The shared library carries its soname (libcncrot.so.0.1): a program linked against it
+# asks for that file, which cargo leaves in the build tree only as libcncrot.so.
+for d in "$lib" "$rt"; do
+  so=$(objdump -p "$d/libcncrot.so" | awk '$1 == "SONAME" {print $2}')
+  [ -n "$so" ] && ln -sf libcncrot.so "$d/$so"
+done
 warn=(-Wall -Wextra -Werror -pedantic -Iinclude -Ic_tests)
 
 echo "== header compiles as C99 and C++"

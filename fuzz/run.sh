@@ -19,7 +19,6 @@ if rustup toolchain list 2>/dev/null | grep -q '^nightly'; then
 else
   export RUSTC_BOOTSTRAP=1
 fi
-export CNCROT_FROZEN_HEADER=1
 cargo "${toolchain[@]}" fuzz build -O 2>&1 | grep -vE '^\s*(Compiling|Finished)' || true
 failed=0
 for target in $(cargo "${toolchain[@]}" fuzz list); do

@@ -1,15 +1,23 @@
-function build_mex()
-% BUILD_MEX  Builds the cncrot MEX functions into this folder, in MATLAB or GNU Octave.
-%   Needs the static library: run `cargo build --release` in the repository first.
+function build_mex(prefix, outdir)
+% BUILD_MEX  Builds the cncrot MEX functions, in MATLAB or GNU Octave.
+%   BUILD_MEX() finds the library by itself, in this order: the environment variable
+%   CNCROT_PREFIX; an installation this folder belongs to (PREFIX/share/cncrot/matlab, as
+%   install.sh puts it: PREFIX/lib/libcncrot.a, PREFIX/include/cncrot/cncrot.h); the
+%   repository this folder belongs to, after `cargo build --release`; pkg-config.
+%   BUILD_MEX(PREFIX) uses the installation under PREFIX.
+%   BUILD_MEX(PREFIX, OUTDIR) writes the MEX files to OUTDIR (default: this folder); add
+%   OUTDIR and this folder (for the help texts) to the MATLAB path.
 %   MATLAB: mex -R2018a (interleaved complex API); Octave: mkoctfile --mex with
 %   MX_HAS_INTERLEAVED_COMPLEX=1, which declares the same API, and CNCROT_OCTAVE.
   here = fileparts(mfilename('fullpath'));
-  root = fileparts(here);
-  lib = fullfile(root, 'target', 'release', 'libcncrot.a');
-  if ~exist(lib, 'file')
-    error('cncrot:build', 'missing %s: run cargo build --release first', lib);
+  if nargin < 1
+    prefix = '';
   end
-  inc = ['-I' fullfile(root, 'include')];
+  if nargin < 2 || isempty(outdir)
+    outdir = here;
+  end
+  [lib, incdir] = find_library(here, prefix);
+  inc = ['-I' incdir];
   names = {'cncrot_matrix', 'cncrot_angles', 'cncrot_convert', 'cycle600', 'cncrot_form_frame', 'cncrot_form_values', 'cncrot_probe_flange', 'cncrot_probe_plane', 'cncrot_probe_edge', 'cncrot_program_lines', 'cncrot_program_write', 'cncrot_machine_forward', 'cncrot_machine_inverse', 'cncrot_machine_choose'};
   for k = 1:numel(names)
     src = fullfile(here, 'src', [names{k} '.c']);
@@ -17,12 +25,47 @@ function build_mex()
       % CNCROT_OCTAVE: read inputs with the accessor that Octave's compact ranges, diagonal
       % and permutation matrices support (see src/gateway.h).
       [out, status] = mkoctfile('--mex', '-DMX_HAS_INTERLEAVED_COMPLEX=1', '-DCNCROT_OCTAVE', inc, src, lib, ...
-                                '-lm', '-lpthread', '-ldl', '-o', fullfile(here, [names{k} '.mex']));
+                                '-lm', '-lpthread', '-ldl', '-o', fullfile(outdir, [names{k} '.mex']));
       if status ~= 0
         error('cncrot:build', 'mkoctfile failed for %s: %s', names{k}, out);
       end
     else
-      mex('-R2018a', inc, src, lib, '-lm', '-lpthread', '-ldl', '-outdir', here);
+      mex('-R2018a', inc, src, lib, '-lm', '-lpthread', '-ldl', '-outdir', outdir);
     end
   end
+  % The session saw only the .m help files when it started: look again, so that the new
+  % MEX files are the ones called.
+  rehash;
+end
+
+function [lib, incdir] = find_library(here, prefix)
+% The static library and the folder of cncrot.h: the first place that has both.
+  places = {};
+  if ~isempty(prefix)
+    places = {prefix};
+  elseif ~isempty(getenv('CNCROT_PREFIX'))
+    places = {getenv('CNCROT_PREFIX')};
+  else
+    installed = fileparts(fileparts(fileparts(here)));   % PREFIX/share/cncrot/matlab
+    places = {installed, fileparts(here)};                % then the repository
+    [status, libdir] = system('pkg-config --variable=libdir cncrot');
+    if status == 0
+      places{end + 1} = fileparts(strtrim(libdir));
+    end
+  end
+  for k = 1:numel(places)
+    p = places{k};
+    candidates = {fullfile(p, 'lib', 'libcncrot.a'), fullfile(p, 'include', 'cncrot'); ...
+                  fullfile(p, 'target', 'release', 'libcncrot.a'), fullfile(p, 'include')};
+    for c = 1:size(candidates, 1)
+      if exist(candidates{c, 1}, 'file') && exist(fullfile(candidates{c, 2}, 'cncrot.h'), 'file')
+        lib = candidates{c, 1};
+        incdir = candidates{c, 2};
+        return;
+      end
+    end
+  end
+  error('cncrot:build', ['no cncrot library found in %s: install it (install.sh), ' ...
+        'or run cargo build --release in the repository, or give its prefix: ' ...
+        'build_mex(PREFIX)'], strjoin(places, ', '));
 end

@@ -4,7 +4,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
-CNCROT_FROZEN_HEADER=1 cargo build --release --quiet
+cargo build --release --quiet
 mkdir -p c_tests/build
 cc -std=c99 -O1 -Wall -Wextra -Werror -pedantic -Iinclude -Ic_tests c_tests/parity.c \
   target/release/libcncrot.a -lm -lpthread -ldl -o c_tests/build/parity

@@ -45,9 +45,11 @@ pub use error::Error;
 pub use frame::Frame;
 pub use rotation::{
     add_rotation, angles_from_matrix, check_rotation, closest_angles, closest_of, convert,
-    decompose, determinant, elementary, from_nalgebra, matrix_from_angles, mul, nearest_rotation,
-    orthonormality_error, rotate, rotate_inverse, second_solution, to_nalgebra, transpose,
-    Decomposition, Matrix, Vector, CLOSEST_MAX, ELEMENT_MAX, IDENTITY, ROTATION_TOLERANCE,
+    decompose, determinant, elementary, matrix_from_angles, mul, nearest_rotation,
+    orthonormality_error, rotate, rotate_inverse, second_solution, transpose, Decomposition,
+    Matrix, Vector, CLOSEST_MAX, ELEMENT_MAX, IDENTITY, ROTATION_TOLERANCE,
 };
+#[cfg(feature = "nalgebra")]
+pub use rotation::{from_nalgebra, to_nalgebra};
 pub use sequence::{Axis, AxisCode, Convention, Kind, Sequence};
 pub use vector::{rotation_from_x_y, rotation_from_z_x, unit_vector, MIN_SINE};

@@ -588,17 +588,25 @@ pub fn rotate_inverse(m: &Matrix, v: Vector) -> Vector {
     rotate(&transpose(m), v)
 }
 
-/// The matrix as an `nalgebra` matrix, for Rust callers that work in nalgebra.
+/// The matrix as an `nalgebra` matrix, for Rust callers that work in nalgebra (feature
+/// `nalgebra`).
 ///
 /// ```
 /// let m = cncrot::to_nalgebra(&cncrot::IDENTITY);
 /// assert_eq!(m, nalgebra::Matrix3::identity());
 /// ```
+#[cfg(feature = "nalgebra")]
 pub fn to_nalgebra(m: &Matrix) -> nalgebra::Matrix3<f64> {
     nalgebra::Matrix3::from_fn(|i, j| m[i][j])
 }
 
-/// An `nalgebra` matrix as a row-major matrix.
+/// An `nalgebra` matrix as a row-major matrix (feature `nalgebra`).
+///
+/// ```
+/// let m = nalgebra::Matrix3::new(0.0, -1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0);
+/// assert_eq!(cncrot::from_nalgebra(&m), cncrot::elementary(cncrot::Axis::Z, 90.0));
+/// ```
+#[cfg(feature = "nalgebra")]
 pub fn from_nalgebra(m: &nalgebra::Matrix3<f64>) -> Matrix {
     core::array::from_fn(|i| core::array::from_fn(|j| m[(i, j)]))
 }

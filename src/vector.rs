@@ -41,7 +41,7 @@ pub fn unit_vector(v: Vector) -> Result<Vector, Error> {
 
 /// Below this sine between a direction and the one that should be independent of it (a
 /// hint parallel to the main axis, collinear points) the second axis is not determined:
-/// what is left is rounding, not a direction [choice].
+/// what is left is rounding, not a direction \[choice\].
 pub const MIN_SINE: f64 = 1e-12;
 
 /// `hint` made perpendicular to the unit vector `main`, as a unit vector: Gram–Schmidt,

@@ -172,6 +172,7 @@ fn frames_compose_and_invert() {
     }
 }
 
+#[cfg(feature = "nalgebra")]
 #[test]
 fn nalgebra_interop_round_trips() {
     let mut rng = Rng::new(31);

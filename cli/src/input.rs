@@ -260,7 +260,7 @@ pub fn read_source(source: &str) -> Result<String, Failure> {
     })
 }
 
-/// The decimals option: a count from 0 to 15, or `exact` (the shortest numbers that read
+/// The decimals option: a count from 0 to 17, or `exact` (the shortest numbers that read
 /// back to the same double).
 pub fn decimals(text: &str) -> Result<i32, String> {
     let text = text.trim();
@@ -268,8 +268,8 @@ pub fn decimals(text: &str) -> Result<i32, String> {
         return Ok(-1);
     }
     match text.parse::<i32>() {
-        Ok(d) if (0..=15).contains(&d) => Ok(d),
-        _ => Err(format!("'{text}': a count of decimals 0..15, or 'exact'")),
+        Ok(d) if (0..=17).contains(&d) => Ok(d),
+        _ => Err(format!("'{text}': a count of decimals 0..17, or 'exact'")),
     }
 }
 

@@ -42,7 +42,7 @@ struct Common {
     /// One JSON object per result (JSON Lines), numbers at full precision.
     #[arg(long)]
     json: bool,
-    /// Decimals of the numbers written (0..15), or 'exact' for the shortest numbers that
+    /// Decimals of the numbers written (0..17), or 'exact' for the shortest numbers that
     /// read back to the same double.
     #[arg(long, default_value = "4", value_parser = input::decimals)]
     decimals: i32,
@@ -123,7 +123,7 @@ enum Command {
         /// One JSON object.
         #[arg(long)]
         json: bool,
-        /// Decimals of the numbers written (0..15), or 'exact'.
+        /// Decimals of the numbers written (0..17), or 'exact'.
         #[arg(long, default_value = "4", value_parser = input::decimals)]
         decimals: i32,
     },

@@ -34,10 +34,10 @@ pub fn g68_2_angles(m: &Matrix) -> Result<Decomposition, Error> {
     angles_from_matrix(Convention::new(Kind::Intrinsic, Sequence::ZXZ), m)
 }
 
-/// `G68.3 R`: the plane from the tool axis [doc]: the new Z is the tool direction `tool`,
+/// `G68.3 R`: the plane from the tool axis \[doc\]: the new Z is the tool direction `tool`,
 /// the new X is `P × Z` with `P` the vertical axis's direction (a machine parameter, +Z on
 /// most machines), the new Y is `Z × X`; then `R` turns about the new Z. When the tool is
-/// along `P` the cross product vanishes and the new X is the machine's X [choice]. A zero
+/// along `P` the cross product vanishes and the new X is the machine's X \[choice\]. A zero
 /// or non-finite `tool` or `vertical` is refused ([`Error::Degenerate`]).
 ///
 /// ```
@@ -77,7 +77,7 @@ pub fn g68_3_r(m: &Matrix, vertical: Vector) -> Result<f64, Error> {
 }
 
 /// `G68.4`: the same words as `G68.2`, applied incrementally on the active plane, in its
-/// system: `active · call` [derived].
+/// system: `active · call` \[derived\].
 pub fn g68_4(active: &Frame, call: &Frame) -> Frame {
     active.compose(call)
 }
@@ -126,7 +126,7 @@ pub(crate) fn read_g68(p: &Program, c: &mut Cursor) -> Option<Result<Program, Li
 }
 
 /// One block of a Fanuc-style program: `G68.2 X Y Z I J K` (omitted words are 0; a new
-/// `G68.2` replaces the active plane [choice]), `G68.4` (the same, on the active plane),
+/// `G68.2` replaces the active plane \[choice\]), `G68.4` (the same, on the active plane),
 /// `G69` (cancel), `G53.1`/`G53.6` (no frame change), `G68.3` (needs the tool direction from
 /// the machine: [`Error::NotAvailable`]), with a block number, `/`, `( … )` and `;`.
 /// Numbers without a point are whole units (calculator-type input [choice: a parameter of

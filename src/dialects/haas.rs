@@ -12,7 +12,7 @@ use crate::{
 /// about X by I, then about the fixed Y by J, then about the fixed Z by K:
 /// `F = Rz(K)·Ry(J)·Rx(I)` [3rd: the main CAM post writes it so]. Only the six orders of the
 /// three axes are accepted ([`Error::BadSequence`]); Haas's default for a missing `Q` is not
-/// public, so `Q` is required here [choice].
+/// public, so `Q` is required here \[choice\].
 ///
 /// ```
 /// use cncrot::dialects::haas::q_order;
@@ -73,7 +73,7 @@ const SYNTAX: Syntax = super::program::G_WORDS;
 /// One block of a Haas program: `G268 X Y Z I J K Q` (omitted `X … K` are 0; `Q` is
 /// required [choice: Haas's default is not public]), `G269` (cancel), `G253` (orients the
 /// spindle: no frame change), with a block number and `( … )` comments. A `G268` while one
-/// is active replaces it [choice].
+/// is active replaces it \[choice\].
 #[inline(never)]
 pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
     let mut c = Cursor::new(text);

@@ -2,15 +2,15 @@
 //! `VECTOR`, `POINTS`, `PROJECTED`, `RELATIV` and `RESET`, the inverse of each form that can
 //! express a plane (what a writer of a measured plane needs), and its program lines.
 //!
-//! Confidence as in [`crate::dialects::sinumerik`]: **[doc]**, **[3rd]**, **[derived]**,
-//! **[choice]**.
+//! Confidence as in [`crate::dialects::sinumerik`]: **\[doc\]**, **\[3rd\]**, **\[derived\]**,
+//! **\[choice\]**.
 
 use crate::{
     angles_from_matrix, matrix_from_angles, Axis, Convention, Decomposition, Error, Frame, Kind,
     Matrix, Sequence, Vector,
 };
 
-/// `PLANE SPATIAL SPA SPB SPC`: about the fixed machine axes, A then B then C [doc]:
+/// `PLANE SPATIAL SPA SPB SPC`: about the fixed machine axes, A then B then C \[doc\]:
 /// `F = Rz(SPC)·Ry(SPB)·Rx(SPA)` (extrinsic X, Y, Z, exactly the paper's probe angles).
 ///
 /// ```
@@ -32,7 +32,7 @@ pub fn spatial_angles(m: &Matrix) -> Result<Decomposition, Error> {
 }
 
 /// `PLANE EULER EULPR EULNU EULROT`: `F = Rz(EULPR)·Rx(EULNU)·Rz(EULROT)` (intrinsic Z, X', Z'')
-/// [doc].
+/// \[doc\].
 ///
 /// ```
 /// use cncrot::dialects::heidenhain::euler;
@@ -50,9 +50,9 @@ pub fn euler_angles(m: &Matrix) -> Result<Decomposition, Error> {
 }
 
 /// `PLANE VECTOR BX BY BZ NX NY NZ`: `N` is the new Z axis, `B` the new X axis; neither need
-/// be of unit length [doc]. The manual's own example is not orthogonal (B·N = -0.349) and
+/// be of unit length \[doc\]. The manual's own example is not orthogonal (B·N = -0.349) and
 /// the control's correction is not documented: `N` is kept and `B` projected onto the plane
-/// normal to it [choice]. A zero `N`, or `B` parallel to `N` (a sine of at most
+/// normal to it \[choice\]. A zero `N`, or `B` parallel to `N` (a sine of at most
 /// [`crate::MIN_SINE`]), is refused ([`Error::Degenerate`]).
 ///
 /// ```
@@ -70,8 +70,8 @@ pub fn vector_of(m: &Matrix) -> (Vector, Vector) {
 }
 
 /// `PLANE POINTS P1 P2 P3`: the new X axis from P1 to P2, the new Z axis
-/// `(P2 − P1) × (P3 − P1)` (so P3 lies on the positive-Y side), `Y = Z × X` [doc]; the frame's
-/// origin is not moved (the control tilts about the active datum) [doc]. Coincident or
+/// `(P2 − P1) × (P3 − P1)` (so P3 lies on the positive-Y side), `Y = Z × X` \[doc\]; the frame's
+/// origin is not moved (the control tilts about the active datum) \[doc\]. Coincident or
 /// collinear points (a sine of at most [`crate::MIN_SINE`] at P1) are refused
 /// ([`Error::Coincident`], [`Error::Collinear`]). Other controls' three-point rules
 /// (TwinCAT CNC turns the new Z to positive z) can give the opposite tool axis for the same
@@ -97,7 +97,7 @@ pub fn points(p1: Vector, p2: Vector, p3: Vector) -> Result<Matrix, Error> {
 }
 
 /// `PLANE RELATIV SPA|SPB|SPC angle`: one incremental spatial angle, about the axis of the
-/// plane already tilted: `F_new = F_active·R_axis(angle)` [derived].
+/// plane already tilted: `F_new = F_active·R_axis(angle)` \[derived\].
 pub fn relativ(active: &Frame, axis: Axis, angle: f64) -> Frame {
     active.compose(&Frame::from_rotation(crate::elementary(axis, angle)))
 }

@@ -57,8 +57,8 @@ impl Dialect {
     }
 
     /// The longest block the dialect's reader accepts, in bytes without the line end:
-    /// SINUMERIK 512 (its manual's limit for a block), Heidenhain 254 [choice], the others
-    /// 256 [choice].
+    /// SINUMERIK 512 (its manual's limit for a block), Heidenhain 254 \[choice\], the others
+    /// 256 \[choice\].
     pub fn max_line(self) -> usize {
         match self {
             Dialect::Sinumerik => 512,
@@ -191,7 +191,7 @@ impl Program {
 /// and returns its length and whether the decomposition was singular (the free angle then
 /// sits where the dialect's rule puts it). `decimals < 0` writes the shortest numbers that
 /// read back exactly; otherwise every number is rounded to that many decimals (at most
-/// [`decimal::MAX_DECIMALS`]).
+/// 17).
 ///
 /// The forms, as written (upper or lower case, single spaces):
 ///

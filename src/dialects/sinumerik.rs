@@ -2,9 +2,9 @@
 //! `ROT`/`AROT`/`CROT` in RPY and Euler mode with the control's read-back, `ROTS`
 //! (projection angles), and the tool orientation of `ORIRPY`/`ORIEULER`/`A3 B3 C3`.
 //!
-//! Confidence of each behaviour, as the project's documentation lists it: **[doc]** stated by
-//! the vendor's manual, **[3rd]** how widely used post-processors treat it, **[derived]**
-//! follows from the manual's wording by geometry, **[choice]** ours where nothing public
+//! Confidence of each behaviour, as the project's documentation lists it: **\[doc\]** stated by
+//! the vendor's manual, **\[3rd\]** how widely used post-processors treat it, **\[derived\]**
+//! follows from the manual's wording by geometry, **\[choice\]** ours where nothing public
 //! decides. A frame's rotation `F` has the new axes as its columns (`p_old = t + F·p_new`).
 
 use crate::math::{atan2_deg, sin_cos_deg, sqrt};
@@ -31,18 +31,18 @@ pub enum SwivelMode {
     /// output to it]. A `00` pair skips a rotation.
     AxisByAxis(AxisCode),
     /// Bits 01: solid angle: `_A` turns about Z, `_B` tilts about the new Y, so the tool axis
-    /// is `(cos A sin B, sin A sin B, cos B)` [derived]; `_C` turns about the new Z
-    /// [choice]: `F = Rz(A)·Ry(B)·Rz(C)`. Bits 5..0 are not used [choice].
+    /// is `(cos A sin B, sin A sin B, cos B)` \[derived\]; `_C` turns about the new Z
+    /// \[choice\]: `F = Rz(A)·Ry(B)·Rz(C)`. Bits 5..0 are not used \[choice\].
     SolidAngle,
-    /// Bits 10: projection angles, as `ROTS` defines them [derived]: for `Sequence::XYZ`, `_A`
+    /// Bits 10: projection angles, as `ROTS` defines them \[derived\]: for `Sequence::XYZ`, `_A`
     /// and `_B` are the projected angles about X and Y and `_C` turns about the new Z
     /// (`F = Ry(B)·Rx(γ)·Rz(C)`, `tan γ = tan A · cos B`); `Sequence::YZX` and
-    /// `Sequence::ZXY` are the same with the axes exchanged cyclically [derived]. Which bits
-    /// code the three positions is not public: these three codes are our [choice].
+    /// `Sequence::ZXY` are the same with the axes exchanged cyclically \[derived\]. Which bits
+    /// code the three positions is not public: these three codes are our \[choice\].
     Projection(Sequence),
     /// Bits 11: the rotary-axis positions themselves; the frame needs the machine's
     /// kinematics ([`Error::NotAvailable`] until the library has them). Bits 5..0 are not
-    /// used [choice].
+    /// used \[choice\].
     Direct,
 }
 
@@ -101,7 +101,7 @@ pub fn cycle800_rotation(mode: SwivelMode, abc: [f64; 3]) -> Result<Matrix, Erro
     }
 }
 
-/// The frame of a CYCLE800 call: `Trans(_X0, _Y0, _Z0)·Rot·Trans(_X1, _Y1, _Z1)` [derived].
+/// The frame of a CYCLE800 call: `Trans(_X0, _Y0, _Z0)·Rot·Trans(_X1, _Y1, _Z1)` \[derived\].
 pub fn cycle800_frame(
     mode: SwivelMode,
     abc: [f64; 3],
@@ -117,7 +117,7 @@ pub fn cycle800_frame(
 
 /// `_ST`'s swivel: a new plane replaces the active frame; an additive one (`_ST` units
 /// digit 1 [choice: the digit coding of `_ST` is not public]) applies in the already swivelled
-/// system, on the right, as `AROT` does [derived].
+/// system, on the right, as `AROT` does \[derived\].
 pub fn cycle800_apply(active: &Frame, additive: bool, call: &Frame) -> Frame {
     if additive {
         active.compose(call)
@@ -204,10 +204,10 @@ pub(crate) fn projection_angles(s: Sequence, m: &Matrix) -> Result<Decomposition
 /// `$MN_FRAME_ANGLE_CHOICE`/MD10600 = 2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum AngleMode {
-    /// `F = Rz(z)·Ry(y)·Rx(x)`: intrinsic Z, Y', X'' with the letters z, y, x [doc].
+    /// `F = Rz(z)·Ry(y)·Rx(x)`: intrinsic Z, Y', X'' with the letters z, y, x \[doc\].
     Rpy,
-    /// Intrinsic Z, X', Z'' with x the nutation [doc]; which of y and z is the first Z
-    /// rotation is not public: `F = Rz(z)·Rx(x)·Rz(y)` [choice].
+    /// Intrinsic Z, X', Z'' with x the nutation \[doc\]; which of y and z is the first Z
+    /// rotation is not public: `F = Rz(z)·Rx(x)·Rz(y)` \[choice\].
     Euler,
 }
 
@@ -220,8 +220,8 @@ impl AngleMode {
     }
 }
 
-/// The rotation of `ROT X=x Y=y Z=z` (omitted words are 0), also `CROT` [derived] and each
-/// step of `AROT` (which applies on the right of the active frame [doc]).
+/// The rotation of `ROT X=x Y=y Z=z` (omitted words are 0), also `CROT` \[derived\] and each
+/// step of `AROT` (which applies on the right of the active frame \[doc\]).
 ///
 /// ```
 /// use cncrot::dialects::sinumerik::{rot, AngleMode};
@@ -256,7 +256,7 @@ pub fn readback(mode: AngleMode, m: &Matrix) -> Result<([f64; 3], bool), Error> 
     Ok((xyz, d.singular))
 }
 
-/// The projected axes of `ROTS`/`AROTS`/`CROTS`: `X Y`, `Y Z` or `Z X` [doc].
+/// The projected axes of `ROTS`/`AROTS`/`CROTS`: `X Y`, `Y Z` or `Z X` \[doc\].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RotsPlane {
     /// `ROTS X=α Y=β`.
@@ -269,7 +269,7 @@ pub enum RotsPlane {
 
 /// The rotation of `ROTS` with the first letter's angle `alpha` and the second's `beta`
 /// ("Y gives the angle by which the X axis must rotate around the Y axis to bring it to the
-/// line of intersection" [doc]; the closed form [derived]).
+/// line of intersection" \[doc\]; the closed form \[derived\]).
 ///
 /// ```
 /// use cncrot::dialects::sinumerik::{rots, RotsPlane};
@@ -287,7 +287,7 @@ pub fn rots(plane: RotsPlane, alpha: f64, beta: f64) -> Matrix {
 }
 
 /// The tool direction of `ORIRPY` angles `A2 B2 C2`: "first with C2 around Z, then with B2
-/// around the new Y, finally with A2 around the new X" applied to +Z [doc]:
+/// around the new Y, finally with A2 around the new X" applied to +Z \[doc\]:
 /// `Rz(C2)·Ry(B2)·Rx(A2)·e_z`.
 ///
 /// ```
@@ -300,7 +300,7 @@ pub fn orirpy_vector([a2, b2, c2]: [f64; 3]) -> Vector {
 }
 
 /// The tool direction of `ORIEULER` angles `A2 B2 (C2)`: "A2 around Z, then B2 around the new
-/// X, lastly C2 around the new Z" [doc]; C2 does not move a tool on +Z:
+/// X, lastly C2 around the new Z" \[doc\]; C2 does not move a tool on +Z:
 /// `Rz(A2)·Rx(B2)·e_z`.
 ///
 /// ```
@@ -312,7 +312,7 @@ pub fn orieuler_vector([a2, b2]: [f64; 2]) -> Vector {
     [m[0][2], m[1][2], m[2][2]]
 }
 
-/// A direction vector `A3 B3 C3` as a unit vector: its length is irrelevant [doc]; a zero
+/// A direction vector `A3 B3 C3` as a unit vector: its length is irrelevant \[doc\]; a zero
 /// (or non-finite, or overflowing) vector is refused ([`Error::Degenerate`]).
 ///
 /// ```
@@ -485,8 +485,8 @@ fn at(column: usize) -> impl Fn(Error) -> LineError {
 
 /// `CYCLE800(_FR, _TC, _ST, _MODE, _X0, _Y0, _Z0, _A, _B, _C, _X1, _Y1, _Z1, _DIR, _FR_I,
 /// _DMODE)`: at least the four up to `_MODE` (omitted and empty arguments are 0);
-/// `CYCLE800()` and `_TC = "0"` deselect the swivel [doc]; `_ST` units digit 0 new plane,
-/// 1 additive [choice], the higher digits (tool alignment, …) do not change the plane;
+/// `CYCLE800()` and `_TC = "0"` deselect the swivel \[doc\]; `_ST` units digit 0 new plane,
+/// 1 additive \[choice\], the higher digits (tool alignment, …) do not change the plane;
 /// `_DIR`, `_FR`, `_FR_I`, `_DMODE` choose motion and solution, not the plane.
 fn cycle800_line(p: &Program, c: &mut Cursor) -> Result<Program, LineError> {
     let args = Args::<16>::read(c, 1)?;
@@ -521,7 +521,7 @@ fn cycle800_line(p: &Program, c: &mut Cursor) -> Result<Program, LineError> {
 /// `CYCLE600(_INEXIN, _MIHEAD, _SW_REC, _BIN_IN, _POS_X, _POS_Y, _POS_Z, _ANG_1, _ANG_2,
 /// _ANG_3, _POS_X_R, _POS_Y_R, _POS_Z_R, _INEXOUT, _BIN_OUT, _ROT_AD, _ROT_INV, _RETR_Z)`:
 /// at least up to `_BIN_OUT`. The frame the cycle computes becomes the active one, as when
-/// its results are passed on to CYCLE800 [choice]; `_ROT_AD = 1` adds to the active frame.
+/// its results are passed on to CYCLE800 \[choice\]; `_ROT_AD = 1` adds to the active frame.
 fn cycle600_line(p: &Program, c: &mut Cursor, column: usize) -> Result<Program, LineError> {
     let args = Args::<18>::read(c, 1)?;
     c.end(true, false)?;
@@ -555,10 +555,10 @@ fn cycle600_line(p: &Program, c: &mut Cursor, column: usize) -> Result<Program, 
 
 /// One block of a SINUMERIK program: `ROT`, `AROT`, `CROT` (`X Y Z`, with or without `=`,
 /// in the program's angle mode; `ROT`/`CROT` without words cancel, and replace the whole
-/// programmable frame as the control's substituting commands do [doc]; `CROT` reads like
-/// `ROT` [choice]), `ROTS`/`AROTS`/`CROTS` (two of `X Y Z`), `TRANS`/`ATRANS`, `CYCLE800(…)`
+/// programmable frame as the control's substituting commands do \[doc\]; `CROT` reads like
+/// `ROT` \[choice\]), `ROTS`/`AROTS`/`CROTS` (two of `X Y Z`), `TRANS`/`ATRANS`, `CYCLE800(…)`
 /// and `CYCLE600(…)`, after a block number (`N10`, `:10`), a skip mark or a label, with `;`
-/// comments. "Frame instructions are programmed in their own block" [doc]: nothing else may
+/// comments. "Frame instructions are programmed in their own block" \[doc\]: nothing else may
 /// stand on the line.
 #[inline(never)]
 pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
@@ -632,7 +632,7 @@ pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> 
 }
 
 /// `CYCLE800(0,"",0,_MODE,_X0,_Y0,_Z0,_A,_B,_C,_X1,_Y1,_Z1,-1,0,0)` (`_DIR` −1, "minus"
-/// [choice]) or `ROT X=… Y=… Z=…`.
+/// \[choice\]) or `ROT X=… Y=… Z=…`.
 #[inline(never)]
 pub(crate) fn write_line(
     spec: &FormSpec,

@@ -5,18 +5,18 @@
 
 use crate::{matrix_from_angles, AxisCode, Error, Frame, Kind, Matrix, Sequence, Vector};
 
-/// How `G158` reads `A B C`: the rotation mode [doc].
+/// How `G158` reads `A B C`: the rotation mode \[doc\].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Mode {
     /// 0: no rotation.
     None,
     /// 1: three rotations in the order code, each about the axes already turned ("the
-    /// rotation in the latter order is based on the last rotation") [doc]: intrinsic.
+    /// rotation in the latter order is based on the last rotation") \[doc\]: intrinsic.
     Order(AxisCode),
     /// 2: the rotary-axis positions themselves (needs the machine's kinematics:
     /// [`Error::NotAvailable`] until the library has them).
     Direct,
-    /// 3: `A B C` is the tool direction, the new Z axis [doc].
+    /// 3: `A B C` is the tool direction, the new Z axis \[doc\].
     Normal,
     /// 4: projection angles [doc wording; signs are our reading, see [`rotation`]].
     Projection,
@@ -35,7 +35,7 @@ impl PWord {
     /// Decodes `P`: the last two digits are the order code, the digit before them the mode
     /// [derived from the manual's four examples: `P10157` mode 1 order 57, `P10200`, `P10400`,
     /// `P01159` mode 1 order 59 "increment and then turn"]; the leading digits `10` mean
-    /// absolute and `01` incremental (our reading of the same examples [choice]); other
+    /// absolute and `01` incremental (our reading of the same examples \[choice\]); other
     /// leading digits are refused ([`Error::BadArgument`]). Mode 1 needs a three-rotation
     /// or shorter valid order code ([`Error::BadSequence`]); the other modes ignore it.
     ///
@@ -74,7 +74,7 @@ impl PWord {
 ///   leaves the plane's turn about the tool open and says to turn it with another block];
 /// - mode 4: the new X lies in the old XZ plane at the angle A above the old XY plane, and
 ///   the new XY plane makes the angle B with the old Y axis; C turns in the new XY plane
-///   [doc]: `F = Ry(−A)·Rx(B)·Rz(C)` [choice of signs: positive A lifts the new X towards +Z,
+///   \[doc\]: `F = Ry(−A)·Rx(B)·Rz(C)` [choice of signs: positive A lifts the new X towards +Z,
 ///   positive B lifts the new Y towards +Z; unverified on a control].
 ///
 /// ```
@@ -97,8 +97,8 @@ pub fn rotation(mode: Mode, abc: [f64; 3]) -> Result<Matrix, Error> {
 }
 
 /// The frame of a `G158` block: `Trans(X, Y, Z)·Rot·Trans(U, V, W)`, `U V W` in the rotated
-/// system [doc]; omitted words are 0. An incremental `P` applies it on the active plane,
-/// in its system (`active · call`) [derived].
+/// system \[doc\]; omitted words are 0. An incremental `P` applies it on the active plane,
+/// in its system (`active · call`) \[derived\].
 ///
 /// ```
 /// use cncrot::dialects::syntec::{frame, PWord};
@@ -143,7 +143,7 @@ use super::program::{address_words, whole, Cursor, LineError, Program, Syntax};
 const SYNTAX: Syntax = super::program::G_WORDS;
 
 /// One block of a Syntec program: `G158 L P X Y Z A B C U V W` (omitted words are 0, `L`
-/// accepted and ignored [choice: not documented]; `G158` without words cancels [choice]),
+/// accepted and ignored [choice: not documented]; `G158` without words cancels \[choice\]),
 /// and the Fanuc-style `G68.2`, `G68.4`, `G69`, `G53.1` of its G68.2 mode, with a block
 /// number, `( … )` and `;` comments.
 #[inline(never)]

@@ -12,7 +12,7 @@ use crate::{
 /// The rotation TwinCAT NC I keeps: the angles `[x, y, z]` of the last `ROT` plus every
 /// `AROT` since. The control keeps angles, not a matrix ("`CalcRot` rotates through the
 /// current rotation angle; the rotation angles had been determined by `ROT` or `AROT`"
-/// [doc]), so `AROT` adds to them [derived]. The default is no rotation.
+/// \[doc\]), so `AROT` adds to them \[derived\]. The default is no rotation.
 ///
 /// ```
 /// use cncrot::dialects::twincat::Rotation;
@@ -36,7 +36,7 @@ impl Rotation {
         Rotation { angles: xyz }
     }
 
-    /// `AROT X Y Z`: adds to the active angles [derived].
+    /// `AROT X Y Z`: adds to the active angles \[derived\].
     pub fn arot(self, xyz: [f64; 3]) -> Rotation {
         Rotation {
             angles: core::array::from_fn(|k| self.angles[k] + xyz[k]),
@@ -44,17 +44,17 @@ impl Rotation {
     }
 
     /// The rotation matrix: about the global axes Z, then Y, then X, whatever the order of
-    /// the words [doc]: `F = Rx(x)·Ry(y)·Rz(z)`.
+    /// the words \[doc\]: `F = Rx(x)·Ry(y)·Rz(z)`.
     pub fn matrix(&self) -> Matrix {
         matrix(self.angles)
     }
 
-    /// `CalcRot`: the vector rotated by the active rotation, `F·v` [doc].
+    /// `CalcRot`: the vector rotated by the active rotation, `F·v` \[doc\].
     pub fn calc_rot(&self, v: Vector) -> Vector {
         rotate(&self.matrix(), v)
     }
 
-    /// `CalcInvRot`: turned back, `Fᵀ·v` ("the signs inverted, the order X, Y, Z") [doc].
+    /// `CalcInvRot`: turned back, `Fᵀ·v` ("the signs inverted, the order X, Y, Z") \[doc\].
     pub fn calc_inv_rot(&self, v: Vector) -> Vector {
         rotate_inverse(&self.matrix(), v)
     }
@@ -66,14 +66,14 @@ pub fn matrix([x, y, z]: [f64; 3]) -> Matrix {
 }
 
 /// `RotVec[x; y; z; α; β; γ]`: the vector rotated by the given angles in the order of `ROT`,
-/// without touching the active rotation [doc].
+/// without touching the active rotation \[doc\].
 pub fn rot_vec(v: Vector, xyz: [f64; 3]) -> Vector {
     rotate(&matrix(xyz), v)
 }
 
 /// `[x, y, z]` for a `ROT` of a rotation: y in [-90, 90], x and z in (-180, 180]. At
 /// y = ±90 only one combination of x and z is determined: the last rotation's angle, x, is
-/// set to 0 and z carries it (`singular`), the library's rule in rotation order [choice].
+/// set to 0 and z carries it (`singular`), the library's rule in rotation order \[choice\].
 pub fn rot_angles(m: &Matrix) -> Result<([f64; 3], bool), Error> {
     let d = angles_from_matrix(Convention::new(Kind::Extrinsic, Sequence::ZYX), m)?;
     let [z, y, x] = d.angles;
@@ -89,7 +89,7 @@ const SYNTAX: Syntax = super::program::G_WORDS;
 
 /// One block of a TwinCAT NC I program: `ROT X Y Z` (no words: cancel), `AROT X Y Z`, and
 /// `RotExOn`/`RotExOff` (no frame change), with a block number and `( … )` or `;`
-/// comments. "The rotation instructions must be programmed in their own block" [doc]:
+/// comments. "The rotation instructions must be programmed in their own block" \[doc\]:
 /// nothing else may stand on the line.
 #[inline(never)]
 pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {

@@ -284,7 +284,7 @@ pub unsafe extern "C" fn cncrot_machine_carr_error_line(
 
 /// The accessory `name` (NUL-terminated) of a HEAD_DEF table as a two-axis swivel head
 /// with axis directions `v1` (outer) and `v2` (inner): HEAD_DEF gives the lengths, the
-/// directions come from the caller. Pivots [derived]: the tool adapter at the origin,
+/// directions come from the caller. Pivots \[derived\]: the tool adapter at the origin,
 /// `p2 = (OFFS_L2_X, OFFS_L2_Y, DELTA_L2)`,
 /// `p1 = p2 + (OFFS_L1_X, OFFS_L1_Y, DELTA_L1) + (OFFS_H1_X, DELTA_H1, OFFS_H1_Z)`.
 ///

@@ -284,44 +284,6 @@ pub extern "C" fn cncrot_no_panic_canary(index: usize) -> i32 {
 
 #[cfg(all(test, feature = "std"))]
 mod tests {
-    /// The committed header is what cbindgen makes of the current sources.
-    #[test]
-    fn header_is_fresh() {
-        let generated = include_str!(concat!(env!("OUT_DIR"), "/cncrot.h"));
-        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/include/cncrot.h");
-        let committed = std::fs::read_to_string(path).unwrap_or_default();
-        assert!(
-            committed == generated,
-            "include/cncrot.h is stale: run `cargo build` and commit it"
-        );
-    }
-
-    /// Every name the header defines or declares is prefixed: cbindgen exports every
-    /// C-compatible public item of the crate, so a new public constant of the Rust API leaks
-    /// into the header unless `cbindgen.toml` excludes it.
-    #[test]
-    fn every_header_name_is_prefixed() {
-        let header = include_str!(concat!(env!("OUT_DIR"), "/cncrot.h"));
-        for line in header.lines() {
-            let l = line.trim_start();
-            let name = if let Some(rest) = l.strip_prefix("#define ") {
-                rest.split_whitespace().next()
-            } else if let Some(rest) = l.strip_prefix("typedef struct ") {
-                rest.split_whitespace().next()
-            } else if let Some(rest) = l.strip_prefix("typedef enum ") {
-                rest.split_whitespace().next()
-            } else {
-                None
-            };
-            if let Some(name) = name {
-                let ok = name.starts_with("cncrot_")
-                    || name.starts_with("CNCROT_")
-                    || name == "CNCROT_H";
-                assert!(ok, "unprefixed name in the header: {line}");
-            }
-        }
-    }
-
     #[test]
     fn tolerance_constant_matches_the_rust_api() {
         assert_eq!(super::CNCROT_ROTATION_TOLERANCE, crate::ROTATION_TOLERANCE);

@@ -44,10 +44,10 @@ pub const MAX_SOLUTIONS: usize = 2;
 /// Longest machine name in bytes (SINUMERIK `$TC_CARR34` holds 32 characters).
 pub const MACHINE_NAME_MAX: usize = 31;
 /// Below this sine two consecutive axes of the chain count as parallel: such a machine
-/// loses a degree of freedom everywhere and is refused [choice].
+/// loses a degree of freedom everywhere and is refused \[choice\].
 pub const PARALLEL_SINE: f64 = 1e-6;
 /// A target closer than this (in radians of direction) to the reachable orientations is
-/// reached at the nearest reachable one; farther is [`Error::Unreachable`] [choice]. Well
+/// reached at the nearest reachable one; farther is [`Error::Unreachable`] \[choice\]. Well
 /// below any measurable angle (2e-8°), well above the rounding of a target computed in
 /// doubles (1e-15).
 pub const REACH_TOLERANCE: f64 = 1e-10;
@@ -284,7 +284,7 @@ impl Machine {
     }
 
     /// `B`: the rotation that turns +Z onto the tool's base direction along the shortest
-    /// arc (a half turn about X for −Z) [choice].
+    /// arc (a half turn about X for −Z) \[choice\].
     pub(crate) fn base(&self) -> Matrix {
         let b = self.tool_direction;
         if b[2] <= -1.0 {

@@ -34,7 +34,7 @@ struct Phis {
     free: bool,
 }
 
-/// A direction within this sine of an axis is along it: the axis is free [choice]. Below
+/// A direction within this sine of an axis is along it: the axis is free \[choice\]. Below
 /// the verification bound 1e-12 by a margin (the pose is treated as exactly singular, which
 /// moves the result by at most this), above the rounding of a computed target (1e-16).
 pub const POLE_SINE: f64 = 1e-14;
