@@ -9,13 +9,17 @@
 #   PREFIX/share/cncrot/matlab (the MEX sources; build_mex there finds this installation)
 #   PREFIX/share/doc/cncrot (README and docs)
 #
-# Usage: ./install.sh [--prefix DIR] [--libdir DIR] [--destdir DIR] [--realtime]
+# Usage: ./install.sh [--prefix DIR] [--libdir DIR] [--destdir DIR] [--realtime] [--target T]
 #   --prefix   where the library is to live (default /usr/local)
 #   --libdir   default PREFIX/lib
 #   --destdir  stage the files under DIR (for packagers); the paths written into the
 #              pkg-config files are still PREFIX's
 #   --realtime install the real-time build (core only, panic = abort, no allocator)
-# Needs cargo, and objdump (binutils) to read the soname.
+#   --target   build for Windows on this machine (docs/windows.md):
+#              x86_64-pc-windows-gnu: PREFIX/bin/cncrot.dll, PREFIX/lib/libcncrot.dll.a,
+#                libcncrot.a and cncrot.def (no pkg-config or CMake files);
+#              x86_64-pc-windows-msvc (with --realtime): PREFIX/lib/cncrot.lib
+# Needs cargo, and objdump (binutils) to read the soname; for Windows MinGW-w64.
 set -euo pipefail
 root=$(cd "$(dirname "$0")" && pwd)
 cd "$root"
@@ -24,6 +28,7 @@ prefix=/usr/local
 libdir=
 destdir=
 realtime=0
+target=
 while [ $# -gt 0 ]; do
   case "$1" in
     --prefix) prefix=$2; shift 2 ;;
@@ -33,7 +38,9 @@ while [ $# -gt 0 ]; do
     --destdir) destdir=$2; shift 2 ;;
     --destdir=*) destdir=${1#*=}; shift ;;
     --realtime) realtime=1; shift ;;
-    -h|--help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --target) target=$2; shift 2 ;;
+    --target=*) target=${1#*=}; shift ;;
+    -h|--help) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "install.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -48,6 +55,39 @@ major=${version%%.*}
 rest=${version#*.}
 minor=${rest%%.*}
 if [ "$major" = 0 ]; then abi=0.$minor; else abi=$major; fi
+
+if [ -n "$target" ]; then
+  case "$target" in
+    x86_64-pc-windows-gnu) ;;
+    x86_64-pc-windows-msvc)
+      [ $realtime -eq 1 ] || { echo "install.sh: for MSVC only the real-time static library can be built here (--realtime): the DLL needs link.exe" >&2; exit 2; } ;;
+    *) echo "install.sh: --target $target: x86_64-pc-windows-gnu or x86_64-pc-windows-msvc" >&2; exit 2 ;;
+  esac
+  rustup target list --installed | grep -qx "$target" || rustup target add "$target"
+  if [ $realtime -eq 1 ]; then profile=rt; flags=(--profile rt --no-default-features); else profile=release; flags=(--release); fi
+  echo "install.sh: building cncrot $version ($profile) for $target"
+  built=${CARGO_TARGET_DIR:-target}/$target/$profile
+  install -d "$destdir$includedir/cncrot" "$destdir$libdir" "$destdir$datadir/cncrot/matlab/src" \
+    "$destdir$datadir/cncrot/matlab/tests" "$destdir$datadir/doc/cncrot/docs"
+  if [ "$target" = x86_64-pc-windows-msvc ]; then
+    cargo rustc "${flags[@]}" --lib --target "$target" --crate-type staticlib --quiet
+    install -m 644 "$built/cncrot.lib" "$destdir$libdir/cncrot.lib"
+  else
+    cargo build "${flags[@]}" --lib --target "$target" --quiet
+    install -d "$destdir$prefix/bin"
+    install -m 755 "$built/cncrot.dll" "$destdir$prefix/bin/cncrot.dll"
+    install -m 644 "$built/libcncrot.dll.a" "$built/libcncrot.a" "$destdir$libdir/"
+    install -m 644 include/cncrot.def "$destdir$libdir/cncrot.def"
+  fi
+  install -m 644 include/cncrot.h "$destdir$includedir/cncrot/cncrot.h"
+  install -m 644 matlab/*.m "$destdir$datadir/cncrot/matlab/"
+  install -m 644 matlab/src/*.c matlab/src/*.h "$destdir$datadir/cncrot/matlab/src/"
+  install -m 644 matlab/tests/*.m "$destdir$datadir/cncrot/matlab/tests/"
+  install -m 644 README.md "$destdir$datadir/doc/cncrot/"
+  install -m 644 docs/*.md "$destdir$datadir/doc/cncrot/docs/"
+  echo "install.sh: cncrot $version for $target installed under $destdir$prefix"
+  exit 0
+fi
 
 # One build gives the libraries and what the static one needs from the system.
 if [ $realtime -eq 1 ]; then

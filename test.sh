@@ -4,10 +4,10 @@
 # property and concurrency tests, every CLI subcommand), the no-panic proof, the C harness
 # (shared and static library, ASan+UBSan, valgrind, header as C99 and C++, the real-time
 # build and its symbols), the installed packages (pkg-config, CMake, MATLAB from the
-# installed copy), the system-call check of the timing benchmark, every fuzz target for
+# installed copy), the Windows builds (symbols, C harness under Wine), the system-call check of the timing benchmark, every fuzz target for
 # 20 s, and the MATLAB/Octave suite.
-# Installs what the tests need (C compiler, valgrind, strace, pkg-config, CMake, GNU Octave,
-# cargo-fuzz) when missing. Long runs (fuzzing for 10 minutes a target, timing over 10^7 calls): .ci/long-runs
+# Installs what the tests need (C compiler, valgrind, strace, pkg-config, CMake, MinGW-w64,
+# Wine, GNU Octave, cargo-fuzz; the Rust Windows targets) when missing. Long runs (fuzzing for 10 minutes a target, timing over 10^7 calls): .ci/long-runs
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -18,6 +18,8 @@ command -v valgrind >/dev/null || need+=(valgrind)
 command -v strace >/dev/null || need+=(strace)
 command -v pkg-config >/dev/null || need+=(pkg-config)
 command -v cmake >/dev/null || need+=(cmake)
+command -v x86_64-w64-mingw32-gcc >/dev/null || need+=(mingw-w64)
+command -v wine >/dev/null || need+=(wine wine64)
 command -v mkoctfile >/dev/null || need+=(octave liboctave-dev)
 if [ ${#need[@]} -gt 0 ]; then
   echo "== installing ${need[*]}"
@@ -46,6 +48,8 @@ echo "== C harness"
 bash c_tests/run.sh
 echo "== installed packages: pkg-config, CMake, MATLAB"
 bash c_tests/package.sh
+echo "== Windows: MinGW-w64 and MSVC builds, symbols, C harness under Wine (smoke)"
+bash c_tests/windows.sh smoke
 echo "== no system calls on the hot path"
 bash benches/syscalls.sh
 bash benches/syscalls.sh pure-rust-math

@@ -7,6 +7,8 @@ function build_mex(prefix, outdir)
 %   BUILD_MEX(PREFIX) uses the installation under PREFIX.
 %   BUILD_MEX(PREFIX, OUTDIR) writes the MEX files to OUTDIR (default: this folder); add
 %   OUTDIR and this folder (for the help texts) to the MATLAB path.
+%   On Windows it takes PREFIX/lib/cncrot.lib (MSVC) or PREFIX/lib/libcncrot.a (MinGW-w64)
+%   of the real-time build (docs/windows.md).
 %   MATLAB: mex -R2018a (interleaved complex API); Octave: mkoctfile --mex with
 %   MX_HAS_INTERLEAVED_COMPLEX=1, which declares the same API, and CNCROT_OCTAVE.
   here = fileparts(mfilename('fullpath'));
@@ -18,6 +20,13 @@ function build_mex(prefix, outdir)
   end
   [lib, incdir] = find_library(here, prefix);
   inc = ['-I' incdir];
+  if ispc
+    % Windows: the real-time build (install.sh --realtime --target ...) needs nothing but
+    % the C runtime's memory functions, which every compiler links anyway.
+    syslibs = {};
+  else
+    syslibs = {'-lm', '-lpthread', '-ldl'};
+  end
   names = {'cncrot_matrix', 'cncrot_angles', 'cncrot_convert', 'cycle600', 'cncrot_form_frame', 'cncrot_form_values', 'cncrot_probe_flange', 'cncrot_probe_plane', 'cncrot_probe_edge', 'cncrot_program_lines', 'cncrot_program_write', 'cncrot_machine_forward', 'cncrot_machine_inverse', 'cncrot_machine_choose'};
   for k = 1:numel(names)
     src = fullfile(here, 'src', [names{k} '.c']);
@@ -25,12 +34,12 @@ function build_mex(prefix, outdir)
       % CNCROT_OCTAVE: read inputs with the accessor that Octave's compact ranges, diagonal
       % and permutation matrices support (see src/gateway.h).
       [out, status] = mkoctfile('--mex', '-DMX_HAS_INTERLEAVED_COMPLEX=1', '-DCNCROT_OCTAVE', inc, src, lib, ...
-                                '-lm', '-lpthread', '-ldl', '-o', fullfile(outdir, [names{k} '.mex']));
+                                syslibs{:}, '-o', fullfile(outdir, [names{k} '.mex']));
       if status ~= 0
         error('cncrot:build', 'mkoctfile failed for %s: %s', names{k}, out);
       end
     else
-      mex('-R2018a', inc, src, lib, '-lm', '-lpthread', '-ldl', '-outdir', outdir);
+      mex('-R2018a', inc, src, lib, syslibs{:}, '-outdir', outdir);
     end
   end
   % The session saw only the .m help files when it started: look again, so that the new
@@ -57,6 +66,11 @@ function [lib, incdir] = find_library(here, prefix)
     p = places{k};
     candidates = {fullfile(p, 'lib', 'libcncrot.a'), fullfile(p, 'include', 'cncrot'); ...
                   fullfile(p, 'target', 'release', 'libcncrot.a'), fullfile(p, 'include')};
+    if ispc
+      % MSVC (cncrot.lib, install.sh --realtime --target x86_64-pc-windows-msvc) first,
+      % then MinGW-w64 (libcncrot.a, --target x86_64-pc-windows-gnu).
+      candidates = [{fullfile(p, 'lib', 'cncrot.lib'), fullfile(p, 'include', 'cncrot')}; candidates];
+    end
     for c = 1:size(candidates, 1)
       if exist(candidates{c, 1}, 'file') && exist(fullfile(candidates{c, 2}, 'cncrot.h'), 'file')
         lib = candidates{c, 1};

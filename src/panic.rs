@@ -52,11 +52,22 @@ fn trap() -> ! {
 
 // The precompiled `core` carries unwind tables that name `rust_eh_personality` even when the
 // crate is built with `panic = "abort"`: without a definition, linking the `core`-only library
-// into a C program fails on that symbol. Nothing unwinds, so nothing calls it. On ELF targets
-// it is defined hidden, so that the shared library exports nothing but `cncrot_*` (a Rust
-// `#[no_mangle]` definition would be exported); elsewhere it is a plain Rust function.
+// into a C program fails on that symbol. Nothing unwinds, so nothing calls it. It is defined in
+// assembly, not as a Rust `#[no_mangle]` function, because Rust exports those from a shared
+// library, and the library must export nothing but `cncrot_*`: on ELF targets the symbol is
+// hidden; on Windows a plain global label, which the DLL's export list (written by rustc from
+// the Rust exports) does not name. Elsewhere it is a plain Rust function.
 #[cfg(all(not(feature = "std"), not(test)))]
 mod personality {
+    #[cfg(all(
+        not(any(target_os = "windows", target_vendor = "apple")),
+        any(
+            target_arch = "x86",
+            target_arch = "x86_64",
+            target_arch = "aarch64",
+            target_arch = "arm"
+        )
+    ))]
     macro_rules! hidden_empty_function {
         ($ret:literal) => {
             core::arch::global_asm!(
@@ -84,13 +95,31 @@ mod personality {
     ))]
     hidden_empty_function!("bx lr");
 
-    #[cfg(not(all(
-        not(any(target_os = "windows", target_vendor = "apple")),
-        any(
-            target_arch = "x86",
-            target_arch = "x86_64",
-            target_arch = "aarch64",
-            target_arch = "arm"
+    // COFF: no symbol visibility; an undecorated name on 64-bit targets.
+    #[cfg(all(
+        target_os = "windows",
+        any(target_arch = "x86_64", target_arch = "aarch64")
+    ))]
+    core::arch::global_asm!(
+        ".text",
+        ".globl rust_eh_personality",
+        "rust_eh_personality:",
+        "ret",
+    );
+
+    #[cfg(not(any(
+        all(
+            not(any(target_os = "windows", target_vendor = "apple")),
+            any(
+                target_arch = "x86",
+                target_arch = "x86_64",
+                target_arch = "aarch64",
+                target_arch = "arm"
+            )
+        ),
+        all(
+            target_os = "windows",
+            any(target_arch = "x86_64", target_arch = "aarch64")
         )
     )))]
     #[no_mangle]
