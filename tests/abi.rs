@@ -204,8 +204,8 @@ fn the_check_fails_on_each_kind_of_break_and_allows_additions() {
             "fn cncrot_convert removed",
         ),
         (
-            "int32_t sequence_out,\n",
-            "int64_t sequence_out,\n",
+            "int32_t cncrot_convert(int32_t intrinsic_in,",
+            "int32_t cncrot_convert(int64_t intrinsic_in,",
             "fn cncrot_convert changed",
         ),
         (

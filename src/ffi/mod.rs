@@ -12,6 +12,7 @@
 //!   also runs under `catch_unwind`, and a panic would become `CNCROT_STATUS_INTERNAL`;
 //! - integers from C are validated, never transmuted into Rust enums.
 
+mod batch;
 mod cycle600;
 mod dialects;
 mod frame;
@@ -20,6 +21,7 @@ mod probe;
 mod program;
 mod rotation;
 
+pub use batch::*;
 pub use cycle600::*;
 pub use dialects::*;
 pub use frame::*;

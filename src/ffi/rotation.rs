@@ -2,9 +2,9 @@
 
 use super::{
     cncrot_status, convention, guard, kind, non_null, read_finite, read_matrix, status_of, write,
-    write_matrix,
+    write_matrix, Outcome,
 };
-use crate::{AxisCode, Sequence};
+use crate::{AxisCode, Convention, Kind, Sequence};
 
 /// The rotation matrix of three angles in a convention.
 ///
@@ -35,11 +35,25 @@ pub unsafe extern "C" fn cncrot_matrix_from_angles(
         non_null(&[angles_deg.is_null(), matrix.is_null()])?;
         let kind = kind(intrinsic)?;
         let code = AxisCode::new(sequence)?;
-        let angles = read_finite::<3>(angles_deg)?;
-        let m = crate::matrix_from_angles(kind, code, angles);
-        write_matrix(matrix, &m)?;
-        Ok(cncrot_status::Ok)
+        matrix_row(kind, code, angles_deg, matrix)
     })
+}
+
+/// One row of `cncrot_matrix_from_angles` (also each row of `cncrot_matrices_from_angles`,
+/// so that both give the same bits).
+///
+/// # Safety
+/// `angles_deg` points to 3 readable, `matrix` to 9 writable doubles.
+pub(super) unsafe fn matrix_row(
+    kind: Kind,
+    code: AxisCode,
+    angles_deg: *const f64,
+    matrix: *mut f64,
+) -> Outcome {
+    let angles = read_finite::<3>(angles_deg)?;
+    let m = crate::matrix_from_angles(kind, code, angles);
+    write_matrix(matrix, &m)?;
+    Ok(cncrot_status::Ok)
 }
 
 /// The angles of a rotation matrix in a convention (one of the 12 three-rotation codes), in
@@ -70,11 +84,23 @@ pub unsafe extern "C" fn cncrot_angles_from_matrix(
     guard(|| {
         non_null(&[matrix.is_null(), angles_deg.is_null()])?;
         let conv = convention(intrinsic, sequence)?;
-        let m = read_matrix(matrix)?;
-        let d = crate::angles_from_matrix(conv, &m)?;
-        write(angles_deg, d.angles)?;
-        Ok(status_of(d.singular))
+        angles_row(conv, matrix, angles_deg)
     })
+}
+
+/// One row of `cncrot_angles_from_matrix` and `cncrot_angles_from_matrices`.
+///
+/// # Safety
+/// `matrix` points to 9 readable, `angles_deg` to 3 writable doubles.
+pub(super) unsafe fn angles_row(
+    conv: Convention,
+    matrix: *const f64,
+    angles_deg: *mut f64,
+) -> Outcome {
+    let m = read_matrix(matrix)?;
+    let d = crate::angles_from_matrix(conv, &m)?;
+    write(angles_deg, d.angles)?;
+    Ok(status_of(d.singular))
 }
 
 /// Converts angles from one convention to another: `sequence_in` may skip rotations (00
@@ -104,11 +130,26 @@ pub unsafe extern "C" fn cncrot_convert(
         let kind_in = kind(intrinsic_in)?;
         let code_in = AxisCode::new(sequence_in)?;
         let to = convention(intrinsic_out, sequence_out)?;
-        let angles = read_finite::<3>(angles_in_deg)?;
-        let d = crate::convert(kind_in, code_in, angles, to);
-        write(angles_out_deg, d.angles)?;
-        Ok(status_of(d.singular))
+        convert_row(kind_in, code_in, to, angles_in_deg, angles_out_deg)
     })
+}
+
+/// One row of `cncrot_convert` and `cncrot_convert_many`. The input is read whole before
+/// the output is written, so the two may be the same array.
+///
+/// # Safety
+/// `angles_in_deg` points to 3 readable, `angles_out_deg` to 3 writable doubles.
+pub(super) unsafe fn convert_row(
+    kind_in: Kind,
+    code_in: AxisCode,
+    to: Convention,
+    angles_in_deg: *const f64,
+    angles_out_deg: *mut f64,
+) -> Outcome {
+    let angles = read_finite::<3>(angles_in_deg)?;
+    let d = crate::convert(kind_in, code_in, angles, to);
+    write(angles_out_deg, d.angles)?;
+    Ok(status_of(d.singular))
 }
 
 /// The other decomposition of the rotation given by `angles_in_deg`:
