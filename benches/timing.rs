@@ -975,6 +975,88 @@ $TC_CARR34[1]=\"HEAD_CB\"
         );
         report("cncrot_cycle600", "16 heads, last named", &h, &mut rows);
     }
+    // Batches of 64 rows per call (the per-row cost is the median / 64): random rows, and
+    // every row singular.
+    const BATCH: usize = 64;
+    let batch_of =
+        |v: &[[f64; 3]]| -> Vec<f64> { v.iter().cycle().take(BATCH).flatten().copied().collect() };
+    let batch_m =
+        |v: &[[f64; 9]]| -> Vec<f64> { v.iter().cycle().take(BATCH).flatten().copied().collect() };
+    let angle_batch = [batch_of(&angle_classes[0].1)];
+    let matrix_batches = [
+        ("64 random rows", batch_m(&matrix_classes[0].1)),
+        ("64 singular rows", batch_m(&matrix_classes[1].1)),
+    ];
+    let mut many9 = vec![0.0; 9 * BATCH];
+    let mut many3 = vec![0.0; 3 * BATCH];
+    measure(
+        &mut h,
+        n("cncrot_matrices_from_angles", "64 random rows"),
+        overhead,
+        &angle_batch,
+        &mut |a| unsafe {
+            cncrot_matrices_from_angles(
+                1,
+                code,
+                a.as_ptr(),
+                BATCH,
+                many9.as_mut_ptr(),
+                std::ptr::null_mut(),
+            )
+        },
+    );
+    report(
+        "cncrot_matrices_from_angles",
+        "64 random rows",
+        &h,
+        &mut rows,
+    );
+    for (class, m) in &matrix_batches {
+        measure(
+            &mut h,
+            n("cncrot_angles_from_matrices", class),
+            overhead,
+            std::slice::from_ref(m),
+            &mut |m| unsafe {
+                cncrot_angles_from_matrices(
+                    1,
+                    code,
+                    m.as_ptr(),
+                    BATCH,
+                    many3.as_mut_ptr(),
+                    std::ptr::null_mut(),
+                )
+            },
+        );
+        report("cncrot_angles_from_matrices", class, &h, &mut rows);
+    }
+    measure(
+        &mut h,
+        n("cncrot_convert_many", "64 random rows"),
+        overhead,
+        &angle_batch,
+        &mut |a| unsafe {
+            cncrot_convert_many(
+                0,
+                57,
+                a.as_ptr(),
+                BATCH,
+                1,
+                code,
+                many3.as_mut_ptr(),
+                std::ptr::null_mut(),
+            )
+        },
+    );
+    report("cncrot_convert_many", "64 random rows", &h, &mut rows);
+    for r in rows.iter().filter(|r| r.class.starts_with("64 ")) {
+        println!(
+            "per row: {} {}: {:.1} ns",
+            r.function,
+            r.class,
+            r.median / BATCH as f64
+        );
+    }
     if std::env::args().any(|a| a == "--syscall-canary") {
         // For benches/syscalls.sh: a row that does make a system call per call, to show
         // that the check sees one.

@@ -37,7 +37,7 @@ if bash c_tests/symbols.sh "$lib" core >/dev/null; then
   failed=1
 fi
 
-tests=(test_core test_cycle600 test_dialects test_program test_kinematics)
+tests=(test_core test_cycle600 test_dialects test_program test_kinematics test_batch)
 for t in "${tests[@]}"; do
   src=c_tests/$t.c
   cc -std=c99 -O1 -g "${warn[@]}" "$src" -L"$lib" -lcncrot -Wl,-rpath,"$root/$lib" -lm -o "$build/${t}_shared"

@@ -80,6 +80,21 @@ static void convert(void) {
   sink += cncrot_convert(0, 57, A, 1, 39, out3) + cncrot_convert(0, 57, HUGE_A, 1, 55, out3) +
           cncrot_convert(0, 57, nan_a, 1, 39, out3);
 }
+/* Batches: three rows (good, singular or huge, NaN), with statuses. */
+static double rows3[9] = {30, 45, 60, 30, 90, 60, 1e300, -1e15, 7e20}, mats[27], outs[9];
+static int32_t sts[3];
+static void matrices_from_angles(void) {
+  sink += cncrot_matrices_from_angles(0, 57, rows3, 3, mats, sts) +
+          cncrot_matrices_from_angles(0, 64, rows3, 3, mats, NULL);
+}
+static void angles_from_matrices(void) {
+  sink += cncrot_angles_from_matrices(1, 39, mats, 3, outs, sts) +
+          cncrot_angles_from_matrices(1, 39, ILL, 1, outs, NULL);
+}
+static void convert_many(void) {
+  sink += cncrot_convert_many(0, 57, rows3, 3, 1, 39, outs, sts) +
+          cncrot_convert_many(0, 57, nan_a, 1, 1, 39, outs, sts);
+}
 static void second_solution(void) {
   sink += cncrot_second_solution(57, HUGE_A, out3) + cncrot_second_solution(55, B, out3);
 }
@@ -243,6 +258,7 @@ static const struct entry ENTRIES[] = {
     E(machine_from_carr, 1), E(machine_carr_error_line, 1), E(machine_from_head, 1),
     E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
     E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),
+    E(matrices_from_angles, 0), E(angles_from_matrices, 0), E(convert_many, 0),
 };
 
 int main(int argc, char **argv) {

@@ -78,7 +78,7 @@ done
 
 echo "== C harness under Wine"
 if [ "$mode" = full ]; then
-  tests=(test_core test_cycle600 test_dialects test_program test_kinematics)
+  tests=(test_core test_cycle600 test_dialects test_program test_kinematics test_batch)
 else
   tests=(test_core test_cycle600)
 fi

@@ -93,7 +93,7 @@ fn orthonormality(m: &[f64]) -> f64 {
 
 fuzz_target!(|data: &[u8]| {
     let mut inp = Input(data);
-    let op = inp.u8() % 23;
+    let op = inp.u8() % 24;
     let (n1, n2, n3, n4) = (inp.null(), inp.null(), inp.null(), inp.null());
     // SAFETY (every call below): each pointer is NULL or a heap buffer of the documented size.
     unsafe {
@@ -355,6 +355,7 @@ fuzz_target!(|data: &[u8]| {
                 );
                 check_outputs(s, &[&a, &out]);
             }
+            22 => batch(&mut inp, n1, n2),
             _ => {
                 assert_eq!(
                     cncrot_cycle600_gud_size(),
@@ -395,4 +396,111 @@ fn buffer_from(v: &[f64]) -> Box<[f64]> {
 
 fn bits(v: &[f64]) -> Vec<u64> {
     v.iter().map(|x| x.to_bits()).collect()
+}
+
+/// A batch call with `n` rows in exactly sized buffers (or in place): a refusal before the
+/// rows (NULL, a bad flag or code: what the single call gives on a valid row) writes
+/// nothing; otherwise each row's status and output equal the single call's, failing rows
+/// keep their contents, and the batch status is the first error's, else the first remark's.
+///
+/// # Safety
+/// Calls the exports with buffers of the documented sizes.
+unsafe fn batch(inp: &mut Input, null_in: bool, null_out: bool) {
+    let n = usize::from(inp.u8() % 9);
+    let which = inp.u8() % 4;
+    let (k1, c1, k2, c2) = (inp.int(), inp.int(), inp.int(), inp.int());
+    let with_statuses = inp.u8().is_multiple_of(2);
+    let (width_in, width_out) = match which {
+        0 => (3, 9),
+        1 => (9, 3),
+        _ => (3, 3),
+    };
+    let mut input = buffer(width_in * n, 0.0);
+    for row in input.chunks_mut(width_in) {
+        if width_in == 9 {
+            row.copy_from_slice(&matrix(inp));
+        } else {
+            row.copy_from_slice(&inp.f64s::<3>());
+        }
+    }
+    // The single call, on any row.
+    let single = |row: *const f64, out: *mut f64| match which {
+        0 => cncrot_matrix_from_angles(k1, c1, row, out),
+        1 => cncrot_angles_from_matrix(k1, c1, row, out),
+        _ => cncrot_convert(k1, c1, row, k2, c2, out),
+    };
+    const GOOD: [f64; 9] = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+    let mut scratch = [0.0; 9];
+    let global = if null_in || null_out {
+        Some(cncrot_status::NullPointer as i32)
+    } else {
+        let s = single(GOOD.as_ptr(), scratch.as_mut_ptr());
+        (s < 0).then_some(s)
+    };
+    let in_place = which == 3;
+    let before = input.clone();
+    let mut out = if in_place {
+        input.clone()
+    } else {
+        buffer(width_out * n, SENTINEL)
+    };
+    let mut st = vec![i32::MIN; n].into_boxed_slice();
+    let st_ptr = if with_statuses {
+        st.as_mut_ptr()
+    } else {
+        core::ptr::null_mut()
+    };
+    let (src, dst) = (ptr(&before, null_in), ptr_mut(&mut out, null_out));
+    let r = match which {
+        0 => cncrot_matrices_from_angles(k1, c1, src, n, dst, st_ptr),
+        1 => cncrot_angles_from_matrices(k1, c1, src, n, dst, st_ptr),
+        2 => cncrot_convert_many(k1, c1, src, n, k2, c2, dst, st_ptr),
+        _ if null_in || null_out => cncrot_convert_many(k1, c1, src, n, k2, c2, dst, st_ptr),
+        _ => {
+            let p = out.as_mut_ptr();
+            cncrot_convert_many(k1, c1, p, n, k2, c2, p, st_ptr)
+        }
+    };
+    assert_known(r);
+    let untouched = |out: &[f64]| {
+        if in_place {
+            out.iter()
+                .zip(before.iter())
+                .all(|(a, b)| a.to_bits() == b.to_bits())
+        } else {
+            out.iter().all(|x| x.to_bits() == SENTINEL.to_bits())
+        }
+    };
+    if let Some(g) = global {
+        assert_eq!(r, g, "refusal");
+        assert!(
+            untouched(&out) && st.iter().all(|&x| x == i32::MIN),
+            "a refused batch wrote"
+        );
+        return;
+    }
+    let mut first_error = None;
+    let mut first_remark = None;
+    for i in 0..n {
+        let row = &before[width_in * i..width_in * (i + 1)];
+        let mut one = buffer(width_out, SENTINEL);
+        let s = single(row.as_ptr(), one.as_mut_ptr());
+        let got = &out[width_out * i..width_out * (i + 1)];
+        let want: &[f64] = if s < 0 && in_place { row } else { &one };
+        assert!(
+            got.iter()
+                .zip(want)
+                .all(|(a, b)| a.to_bits() == b.to_bits()),
+            "row {i}"
+        );
+        if with_statuses {
+            assert_eq!(st[i], s, "row {i}");
+        }
+        if s < 0 && first_error.is_none() {
+            first_error = Some(s);
+        } else if s > 0 && first_remark.is_none() {
+            first_remark = Some(s);
+        }
+    }
+    assert_eq!(r, first_error.or(first_remark).unwrap_or(0));
 }

@@ -133,6 +133,90 @@ pub fn table() -> Vec<Call> {
             t.status(cncrot_convert(0, 57, A.as_ptr(), 1, 64, a.as_mut_ptr()));
             t.f64s(&a);
         }),
+        ("cncrot_matrices_from_angles", |t| unsafe {
+            // Rows: good, NaN (fails, its matrix untouched), good; then a bad code.
+            let a = [30.0, 45.0, 60.0, f64::NAN, 0.0, 0.0, 0.0, 90.0, 0.0];
+            let mut m = [0.0; 27];
+            let mut st = [7i32; 3];
+            t.status(cncrot_matrices_from_angles(
+                0,
+                57,
+                a.as_ptr(),
+                3,
+                m.as_mut_ptr(),
+                st.as_mut_ptr(),
+            ));
+            t.status(cncrot_matrices_from_angles(
+                0,
+                57,
+                a.as_ptr(),
+                3,
+                m.as_mut_ptr(),
+                null_mut(),
+            ));
+            t.status(cncrot_matrices_from_angles(
+                0,
+                64,
+                a.as_ptr(),
+                3,
+                m.as_mut_ptr(),
+                null_mut(),
+            ));
+            t.status(cncrot_matrices_from_angles(
+                0,
+                57,
+                a.as_ptr(),
+                usize::MAX,
+                m.as_mut_ptr(),
+                null_mut(),
+            ));
+            t.f64s(&m);
+            st.iter().for_each(|&s| t.status(s));
+        }),
+        ("cncrot_angles_from_matrices", |t| unsafe {
+            let mut m = [0.0; 27];
+            m[..9].copy_from_slice(&ID);
+            m[9..18].copy_from_slice(&[2.0; 9]);
+            m[18..].copy_from_slice(&ID);
+            let mut a = [0.0; 9];
+            let mut st = [7i32; 3];
+            t.status(cncrot_angles_from_matrices(
+                1,
+                57,
+                m.as_ptr(),
+                3,
+                a.as_mut_ptr(),
+                st.as_mut_ptr(),
+            ));
+            t.status(cncrot_angles_from_matrices(
+                1,
+                25,
+                m.as_ptr(),
+                3,
+                a.as_mut_ptr(),
+                null_mut(),
+            ));
+            t.status(cncrot_angles_from_matrices(
+                1,
+                57,
+                null(),
+                3,
+                a.as_mut_ptr(),
+                null_mut(),
+            ));
+            t.f64s(&a);
+            st.iter().for_each(|&s| t.status(s));
+        }),
+        ("cncrot_convert_many", |t| unsafe {
+            let mut a = [30.0, 45.0, 60.0, 30.0, 90.0, 60.0, f64::NAN, 0.0, 0.0];
+            let mut st = [7i32; 3];
+            let p = a.as_mut_ptr();
+            t.status(cncrot_convert_many(0, 57, p, 3, 1, 39, p, st.as_mut_ptr()));
+            t.status(cncrot_convert_many(0, 57, p, 3, 1, 64, p, null_mut()));
+            t.status(cncrot_convert_many(0, 57, p, 0, 1, 39, p, null_mut()));
+            t.f64s(&a);
+            st.iter().for_each(|&s| t.status(s));
+        }),
         ("cncrot_second_solution", |t| unsafe {
             let mut a = [0.0; 3];
             t.status(cncrot_second_solution(57, A.as_ptr(), a.as_mut_ptr()));
