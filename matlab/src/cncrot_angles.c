@@ -1,4 +1,5 @@
-/* [angles, status] = cncrot_angles(intrinsic, sequence, R): see cncrot_angles.m. */
+/* [angles, status] = cncrot_angles(intrinsic, sequence, R): see cncrot_angles.m. One call
+ * of cncrot_angles_from_matrices for all matrices. */
 #include "gateway.h"
 
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
@@ -7,30 +8,24 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   int32_t sequence = integer_arg(prhs[1], "sequence");
   size_t n = matrices_arg(prhs[2], "R");
   const double *r = real_data(prhs[2], "R");
-  int32_t status;
-  if (n == 0) {
-    double id[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, angles[3];
-    status = cncrot_angles_from_matrix(intrinsic, sequence, id, angles);
-    if (status < 0) raise_status(status, -1, 0);
-  }
+  size_t k, rows = n ? n : 1;
+  double *m = (double *)mxCalloc(9 * rows, sizeof(double));
+  double *angles = (double *)mxCalloc(3 * rows, sizeof(double));
+  int32_t *st = batch_statuses(n);
+  for (k = 0; k < n; k++) to_row_major(r + 9 * k, m + 9 * k);
+  raise_batch(cncrot_angles_from_matrices(intrinsic, sequence, m, n, angles, st), st, n);
   mxArray *out = mxCreateDoubleMatrix(n, 3, mxREAL);
-  mxArray *st = mxCreateDoubleMatrix(n, 1, mxREAL);
-  double *a = mxGetDoubles(out), *s = mxGetDoubles(st);
-  size_t k;
+  mxArray *sts = mxCreateDoubleMatrix(n, 1, mxREAL);
+  double *a = mxGetDoubles(out), *s = mxGetDoubles(sts);
   for (k = 0; k < n; k++) {
-    double m[9], angles[3];
-    to_row_major(r + 9 * k, m);
-    status = cncrot_angles_from_matrix(intrinsic, sequence, m, angles);
-    if (status < 0) {
-      mxDestroyArray(out);
-      mxDestroyArray(st);
-      raise_status(status, (long)k, n);
-    }
-    a[k] = angles[0];
-    a[k + n] = angles[1];
-    a[k + 2 * n] = angles[2];
-    s[k] = status;
+    a[k] = angles[3 * k];
+    a[k + n] = angles[3 * k + 1];
+    a[k + 2 * n] = angles[3 * k + 2];
+    s[k] = st[k];
   }
+  mxFree(m);
+  mxFree(angles);
+  mxFree(st);
   plhs[0] = out;
-  if (nlhs > 1) plhs[1] = st; else mxDestroyArray(st);
+  if (nlhs > 1) plhs[1] = sts; else mxDestroyArray(sts);
 }

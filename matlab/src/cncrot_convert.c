@@ -1,5 +1,5 @@
 /* angles_out = cncrot_convert(intrinsic_in, sequence_in, angles_in, intrinsic_out,
- * sequence_out): see cncrot_convert.m. */
+ * sequence_out): see cncrot_convert.m. One call of cncrot_convert_many for all rows. */
 #include "gateway.h"
 
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
@@ -10,29 +10,29 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   int32_t ko = integer_arg(prhs[3], "intrinsic_out");
   int32_t so = integer_arg(prhs[4], "sequence_out");
   const double *in = real_data(prhs[2], "angles_in");
-  int32_t status;
-  if (n == 0) {
-    double zero[3] = {0, 0, 0}, b[3];
-    status = cncrot_convert(ki, si, zero, ko, so, b);
-    if (status < 0) raise_status(status, -1, 0);
-  }
-  mxArray *out = mxCreateDoubleMatrix(n, 3, mxREAL);
-  mxArray *st = mxCreateDoubleMatrix(n, 1, mxREAL);
-  double *o = mxGetDoubles(out), *s = mxGetDoubles(st);
-  size_t k;
+  size_t k, rows = n ? n : 1;
+  /* Rows contiguous for the library (MATLAB keeps columns contiguous). */
+  double *a = (double *)mxCalloc(3 * rows, sizeof(double));
+  double *b = (double *)mxCalloc(3 * rows, sizeof(double));
+  int32_t *st = batch_statuses(n);
   for (k = 0; k < n; k++) {
-    double a[3] = {in[k], in[k + n], in[k + 2 * n]}, b[3];
-    status = cncrot_convert(ki, si, a, ko, so, b);
-    if (status < 0) {
-      mxDestroyArray(out);
-      mxDestroyArray(st);
-      raise_status(status, (long)k, n);
-    }
-    o[k] = b[0];
-    o[k + n] = b[1];
-    o[k + 2 * n] = b[2];
-    s[k] = status;
+    a[3 * k] = in[k];
+    a[3 * k + 1] = in[k + n];
+    a[3 * k + 2] = in[k + 2 * n];
   }
+  raise_batch(cncrot_convert_many(ki, si, a, n, ko, so, b, st), st, n);
+  mxArray *out = mxCreateDoubleMatrix(n, 3, mxREAL);
+  mxArray *sts = mxCreateDoubleMatrix(n, 1, mxREAL);
+  double *o = mxGetDoubles(out), *s = mxGetDoubles(sts);
+  for (k = 0; k < n; k++) {
+    o[k] = b[3 * k];
+    o[k + n] = b[3 * k + 1];
+    o[k + 2 * n] = b[3 * k + 2];
+    s[k] = st[k];
+  }
+  mxFree(a);
+  mxFree(b);
+  mxFree(st);
   plhs[0] = out;
-  if (nlhs > 1) plhs[1] = st; else mxDestroyArray(st);
+  if (nlhs > 1) plhs[1] = sts; else mxDestroyArray(sts);
 }

@@ -1,4 +1,5 @@
-/* R = cncrot_matrix(intrinsic, sequence, angles): see cncrot_matrix.m. */
+/* R = cncrot_matrix(intrinsic, sequence, angles): see cncrot_matrix.m. One call of
+ * cncrot_matrices_from_angles for all rows. */
 #include "gateway.h"
 
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
@@ -6,26 +7,23 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   int32_t intrinsic = integer_arg(prhs[0], "intrinsic");
   int32_t sequence = integer_arg(prhs[1], "sequence");
   size_t n = rows3_arg(prhs[2], "angles");
-  const double *a = real_data(prhs[2], "angles");
-  int32_t status;
-  if (n == 0) {
-    /* No rows: the flag and code are still the library's to accept. */
-    double zero[3] = {0, 0, 0}, m[9];
-    status = cncrot_matrix_from_angles(intrinsic, sequence, zero, m);
-    if (status < 0) raise_status(status, -1, 0);
+  const double *in = real_data(prhs[2], "angles");
+  size_t k, rows = n ? n : 1;
+  double *a = (double *)mxCalloc(3 * rows, sizeof(double));
+  double *m = (double *)mxCalloc(9 * rows, sizeof(double));
+  int32_t *st = batch_statuses(n);
+  for (k = 0; k < n; k++) {
+    a[3 * k] = in[k];
+    a[3 * k + 1] = in[k + n];
+    a[3 * k + 2] = in[k + 2 * n];
   }
+  raise_batch(cncrot_matrices_from_angles(intrinsic, sequence, a, n, m, st), st, n);
   mwSize dims[3] = {3, 3, (mwSize)n};
   mxArray *out = mxCreateNumericArray(n == 1 ? 2 : 3, dims, mxDOUBLE_CLASS, mxREAL);
   double *r = mxGetDoubles(out);
-  size_t k;
-  for (k = 0; k < n; k++) {
-    double angles[3] = {a[k], a[k + n], a[k + 2 * n]}, m[9];
-    status = cncrot_matrix_from_angles(intrinsic, sequence, angles, m);
-    if (status < 0) {
-      mxDestroyArray(out);
-      raise_status(status, (long)k, n);
-    }
-    to_col_major(m, r + 9 * k);
-  }
+  for (k = 0; k < n; k++) to_col_major(m + 9 * k, r + 9 * k);
+  mxFree(a);
+  mxFree(m);
+  mxFree(st);
   plhs[0] = out;
 }

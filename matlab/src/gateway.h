@@ -195,6 +195,29 @@ static void machine_arg(const mxArray *a, cncrot_machine *m) {
   }
 }
 
+/* Statuses of a batch call are preset to this, which no status has: a row still holding it
+ * was not computed (the call was refused before the rows). */
+#define NOT_COMPUTED INT32_MIN
+
+/* After a batch call that returned `r`: raises the first failing row's error (naming the
+ * row when there are several), or the refusal's. */
+static void raise_batch(int32_t r, const int32_t *st, size_t n) {
+  size_t k;
+  if (r >= 0) return;
+  for (k = 0; k < n; k++)
+    if (st[k] < 0 && st[k] != NOT_COMPUTED) raise_status(st[k], (long)k, n);
+  raise_status(r, -1, 0);
+}
+
+/* A batch's statuses, preset. At least one element, so that a batch of no rows still has
+ * valid pointers to pass. */
+static int32_t *batch_statuses(size_t n) {
+  size_t k, rows = n ? n : 1;
+  int32_t *st = (int32_t *)mxMalloc(rows * sizeof(int32_t));
+  for (k = 0; k < rows; k++) st[k] = NOT_COMPUTED;
+  return st;
+}
+
 static void raise_status(int32_t s, long row, size_t n) {
   int per_row;
   const char *id = status_id(s, &per_row);
