@@ -573,6 +573,82 @@ extern "C" {
 const char *cncrot_status_str(int32_t status);
 
 /**
+ * `cncrot_matrix_from_angles` for `n` rows: `angles_deg` holds `n` rows of 3 angles,
+ * `matrices` receives `n` row-major 3x3 matrices (9 doubles each), contiguous.
+ *
+ * `statuses` (may be NULL) receives each row's status. A row that fails (a non-finite
+ * angle) leaves its matrix untouched; the other rows are still computed. Returns 0 when
+ * every row succeeded, else the status of the first failing row (a positive status when
+ * only remarks occurred). A bad flag or code, a NULL `angles_deg` or `matrices`, or an `n`
+ * whose arrays could not exist (`CNCROT_STATUS_BAD_ARGUMENT`) is refused before any row:
+ * then nothing is written, `statuses` included. Every row equals the single call's result
+ * bit for bit. `n = 0` succeeds and writes nothing.
+ *
+ * # Safety
+ * `angles_deg` points to `3n` readable and `matrices` to `9n` writable doubles, not
+ * overlapping; `statuses` is NULL or points to `n` writable `int32_t`.
+ *
+ * ```c
+ * double a[6] = {30, 45, 60,  0, 90, 0}, m[18];
+ * int32_t st[2];
+ * cncrot_matrices_from_angles(0, 57, a, 2, m, st);   // m[0] = 0.3536 (paper, Example 2)
+ * ```
+ */
+int32_t cncrot_matrices_from_angles(int32_t intrinsic,
+                                    int32_t sequence,
+                                    const double *angles_deg,
+                                    size_t n,
+                                    double *matrices,
+                                    int32_t *statuses);
+
+/**
+ * `cncrot_angles_from_matrix` for `n` rows: `matrices` holds `n` row-major 3x3 matrices
+ * (9 doubles each), `angles_deg` receives `n` rows of 3 angles, contiguous. Statuses,
+ * return value and refusals as `cncrot_matrices_from_angles`: a row that is not a rotation
+ * gets `CNCROT_STATUS_NOT_A_ROTATION` and keeps its output row, a singular row
+ * `CNCROT_STATUS_SINGULAR`.
+ *
+ * # Safety
+ * `matrices` points to `9n` readable and `angles_deg` to `3n` writable doubles, not
+ * overlapping; `statuses` is NULL or points to `n` writable `int32_t`.
+ *
+ * ```c
+ * double out[6];
+ * int32_t s = cncrot_angles_from_matrices(1, 39, m, 2, out, NULL);   // 1: row 2 is singular
+ * ```
+ */
+int32_t cncrot_angles_from_matrices(int32_t intrinsic,
+                                    int32_t sequence,
+                                    const double *matrices,
+                                    size_t n,
+                                    double *angles_deg,
+                                    int32_t *statuses);
+
+/**
+ * `cncrot_convert` for `n` rows of 3 angles, contiguous. Statuses, return value and
+ * refusals as `cncrot_matrices_from_angles`. The output may be the input array itself
+ * (each row is read whole before it is written), but must not overlap it otherwise.
+ *
+ * # Safety
+ * `angles_in_deg` points to `3n` readable and `angles_out_deg` to `3n` writable doubles,
+ * the same array or not overlapping; `statuses` is NULL or points to `n` writable
+ * `int32_t`.
+ *
+ * ```c
+ * double a[6] = {30, 45, 60,  10, 20, 30};
+ * cncrot_convert_many(0, 57, a, 2, 1, 39, a, NULL);   // in place; row 1: 37.7923, 20.7048, 49.1066
+ * ```
+ */
+int32_t cncrot_convert_many(int32_t intrinsic_in,
+                            int32_t sequence_in,
+                            const double *angles_in_deg,
+                            size_t n,
+                            int32_t intrinsic_out,
+                            int32_t sequence_out,
+                            double *angles_out_deg,
+                            int32_t *statuses);
+
+/**
  * `sizeof(cncrot_cycle600_gud)` as the library sees it: compare with the caller's
  * `sizeof` to detect a header/library mismatch before storing states.
  */
