@@ -17,12 +17,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   mxArray *out = mxCreateDoubleMatrix(n, 3, mxREAL);
   mxArray *sts = mxCreateDoubleMatrix(n, 1, mxREAL);
   double *a = mxGetDoubles(out), *s = mxGetDoubles(sts);
-  for (k = 0; k < n; k++) {
-    a[k] = angles[3 * k];
-    a[k + n] = angles[3 * k + 1];
-    a[k + 2 * n] = angles[3 * k + 2];
-    s[k] = st[k];
-  }
+  columns_from_rows(angles, n, a);
+  for (k = 0; k < n; k++) s[k] = st[k];
   mxFree(m);
   mxFree(angles);
   mxFree(st);

@@ -15,21 +15,13 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   double *a = (double *)mxCalloc(3 * rows, sizeof(double));
   double *b = (double *)mxCalloc(3 * rows, sizeof(double));
   int32_t *st = batch_statuses(n);
-  for (k = 0; k < n; k++) {
-    a[3 * k] = in[k];
-    a[3 * k + 1] = in[k + n];
-    a[3 * k + 2] = in[k + 2 * n];
-  }
+  rows_from_columns(in, n, a);
   raise_batch(cncrot_convert_many(ki, si, a, n, ko, so, b, st), st, n);
   mxArray *out = mxCreateDoubleMatrix(n, 3, mxREAL);
   mxArray *sts = mxCreateDoubleMatrix(n, 1, mxREAL);
   double *o = mxGetDoubles(out), *s = mxGetDoubles(sts);
-  for (k = 0; k < n; k++) {
-    o[k] = b[3 * k];
-    o[k + n] = b[3 * k + 1];
-    o[k + 2 * n] = b[3 * k + 2];
-    s[k] = st[k];
-  }
+  columns_from_rows(b, n, o);
+  for (k = 0; k < n; k++) s[k] = st[k];
   mxFree(a);
   mxFree(b);
   mxFree(st);

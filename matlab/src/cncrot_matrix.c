@@ -12,11 +12,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   double *a = (double *)mxCalloc(3 * rows, sizeof(double));
   double *m = (double *)mxCalloc(9 * rows, sizeof(double));
   int32_t *st = batch_statuses(n);
-  for (k = 0; k < n; k++) {
-    a[3 * k] = in[k];
-    a[3 * k + 1] = in[k + n];
-    a[3 * k + 2] = in[k + 2 * n];
-  }
+  rows_from_columns(in, n, a);
   raise_batch(cncrot_matrices_from_angles(intrinsic, sequence, a, n, m, st), st, n);
   mwSize dims[3] = {3, 3, (mwSize)n};
   mxArray *out = mxCreateNumericArray(n == 1 ? 2 : 3, dims, mxDOUBLE_CLASS, mxREAL);

@@ -209,6 +209,24 @@ static void raise_batch(int32_t r, const int32_t *st, size_t n) {
   raise_status(r, -1, 0);
 }
 
+/* An n-by-3 MATLAB array (columns contiguous) as n contiguous rows of 3, and back. */
+static void rows_from_columns(const double *in, size_t n, double *rows) {
+  size_t k;
+  for (k = 0; k < n; k++) {
+    rows[3 * k] = in[k];
+    rows[3 * k + 1] = in[k + n];
+    rows[3 * k + 2] = in[k + 2 * n];
+  }
+}
+static void columns_from_rows(const double *rows, size_t n, double *out) {
+  size_t k;
+  for (k = 0; k < n; k++) {
+    out[k] = rows[3 * k];
+    out[k + n] = rows[3 * k + 1];
+    out[k + 2 * n] = rows[3 * k + 2];
+  }
+}
+
 /* A batch's statuses, preset. At least one element, so that a batch of no rows still has
  * valid pointers to pass. */
 static int32_t *batch_statuses(size_t n) {
