@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs every cargo-fuzz target for a bounded time and records what it covered.
 #   fuzz/run.sh [SECONDS]      default 20 per target (the README's test command); the long
-#                              run is `fuzz/run.sh 600` (see README, "Long runs")
+#                              run is `fuzz/run.sh 600` (.ci/long-runs; docs/realtime.md, "Fuzzing")
 # Starts from the committed seeds (fuzz/seeds/TARGET) plus the corpus of earlier runs
 # (fuzz/corpus/TARGET, not committed). Crashes land in fuzz/artifacts/TARGET and fail the
 # script. Each target's last libFuzzer status line (coverage "cov", features "ft", corpus

@@ -4,7 +4,7 @@
 //! and about the workpiece axes (intrinsic), converted into each other for all twelve axis
 //! sequences, exactly and robustly, with a C ABI (`include/cncrot.h`).
 //!
-//! Conventions (see the README): active right-handed rotations, angles in degrees,
+//! Conventions (docs/conventions.md): active right-handed rotations, angles in degrees,
 //! matrices row-major, axis-sequence codes `a1 + 4·a2 + 16·a3` with X = 1, Y = 2, Z = 3.
 //!
 //! ```

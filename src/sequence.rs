@@ -304,7 +304,7 @@ mod tests {
 
     #[test]
     fn spec_code_table() {
-        // The README's table of the 12 sequences (the paper's and CYCLE800's codes).
+        // The table of the 12 sequences in docs/conventions.md (the paper's and CYCLE800's codes).
         let table = [
             (Sequence::XYZ, 57),
             (Sequence::XZY, 45),
