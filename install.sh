@@ -98,8 +98,11 @@ else
   flags=(--release)
 fi
 echo "install.sh: building cncrot $version ($profile)"
-native=$(cargo rustc "${flags[@]}" --lib --quiet -- --print native-static-libs 2>&1 \
-  | sed -n 's/.*native-static-libs: //p' | tail -n 1)
+if ! out=$(cargo rustc "${flags[@]}" --lib --quiet -- --print native-static-libs 2>&1); then
+  echo "$out" >&2
+  exit 1
+fi
+native=$(sed -n 's/.*native-static-libs: //p' <<<"$out" | tail -n 1)
 if [ -z "$native" ]; then
   # The library was already built with these flags, so rustc did not run again: the
   # real-time build needs nothing; the std build needs libm, threads and the loader.

@@ -53,3 +53,8 @@ pub use rotation::{
 pub use rotation::{from_nalgebra, to_nalgebra};
 pub use sequence::{Axis, AxisCode, Convention, Kind, Sequence};
 pub use vector::{rotation_from_x_y, rotation_from_z_x, unit_vector, MIN_SINE};
+
+/// The README's Rust example runs as a doc test (its C, MATLAB and shell blocks are not Rust).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
