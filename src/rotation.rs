@@ -160,11 +160,14 @@ fn turn_rows(r: &mut Matrix, axis: Axis, s: f64, c: f64) {
 /// assert_eq!(check_rotation(&huge), Err(Error::NotARotation));
 /// ```
 pub fn check_rotation(m: &Matrix) -> Result<(), Error> {
-    if !m.iter().flatten().all(|x| x.is_finite()) {
-        return Err(Error::NotFinite);
-    }
+    // One pass in the common case: every element within the bound is also finite (NaN
+    // fails the comparison). Only a matrix that fails it is looked at again for the reason.
     if !m.iter().flatten().all(|&x| math::abs(x) <= ELEMENT_MAX) {
-        return Err(Error::NotARotation);
+        return Err(if m.iter().flatten().all(|x| x.is_finite()) {
+            Error::NotARotation
+        } else {
+            Error::NotFinite
+        });
     }
     let error = orthonormality_error(m);
     let det = determinant(m);
@@ -186,8 +189,10 @@ pub const ELEMENT_MAX: f64 = 2.0;
 /// refuse such a matrix.
 pub fn orthonormality_error(m: &Matrix) -> f64 {
     let mut worst: f64 = 0.0;
+    // MᵀM is symmetric, and its (i, j) and (j, i) elements are computed from the same
+    // products in the same order, so they are equal bit for bit: the upper triangle decides.
     for i in 0..3 {
-        for j in 0..3 {
+        for j in i..3 {
             let dot = m[0][i] * m[0][j] + m[1][i] * m[1][j] + m[2][i] * m[2][j];
             let target = if i == j { 1.0 } else { 0.0 };
             let e = math::abs(dot - target);
