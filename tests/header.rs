@@ -3,6 +3,9 @@
 //! `include/cncrot.def` (the DLL's exports, from which MSVC's `lib /def:` makes an import
 //! library). `CNCROT_BLESS=1 cargo test --test header` rewrites both (then review and commit).
 
+#[path = "common/exports.rs"]
+mod exports;
+
 use std::path::Path;
 
 /// What cbindgen makes of the current sources, with the version macros of this version.
@@ -79,27 +82,12 @@ fn every_header_name_is_prefixed() {
 
 /// The exports of the header's functions as a Windows module-definition file.
 fn def_file(header: &str) -> String {
-    let mut names: Vec<&str> = header
-        .lines()
-        .filter(|l| !l.trim_start().starts_with('*') && !l.trim_start().starts_with("/*"))
-        .filter_map(|l| {
-            let start = l.find("cncrot_")?;
-            let rest = &l[start..];
-            let end = rest.find('(')?;
-            let name = &rest[..end];
-            name.bytes()
-                .all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_')
-                .then_some(name)
-        })
-        .collect();
-    names.sort_unstable();
-    names.dedup();
     let mut out = String::from(
         "; The exports of cncrot.dll, generated from include/cncrot.h by tests/header.rs.\n\
          ; MSVC: lib /def:cncrot.def /machine:x64 /out:cncrot.lib makes the import library.\n\
          LIBRARY cncrot\nEXPORTS\n",
     );
-    for n in names {
+    for n in exports::functions_of(header) {
         out.push_str("    ");
         out.push_str(n);
         out.push('\n');

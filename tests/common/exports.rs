@@ -1265,7 +1265,12 @@ pub fn table() -> Vec<Call> {
 
 /// The functions `include/cncrot.h` declares.
 pub fn declared_functions() -> Vec<&'static str> {
-    let header = include_str!("../../include/cncrot.h");
+    functions_of(include_str!("../../include/cncrot.h"))
+}
+
+/// The functions a header declares: names `cncrot_…` followed by `(` outside comments,
+/// sorted, once each.
+pub fn functions_of(header: &str) -> Vec<&str> {
     let mut declared: Vec<&str> = header
         .lines()
         .filter(|l| !l.trim_start().starts_with('*') && !l.trim_start().starts_with("/*"))
