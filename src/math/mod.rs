@@ -1,0 +1,750 @@
+//! The one module through which all floating-point functions are called.
+//!
+//! The trigonometry in degrees (`sin_cos_deg`, `atan2_deg`) is the crate's own: exact
+//! reductions in degrees and polynomials with proved error bounds, the same code and the
+//! same bits in every build. For the rest (`sqrt`, `fmod`, `round`, `ceil`, all exact) the
+//! `std` feature uses the platform's libm; without it the pure-Rust `libm` crate, so the
+//! crate needs nothing from a C library. Since those four are exact, every build computes
+//! the same bits. Everything else in the crate calls these functions, never `f64` methods
+//! that need `std`. The feature `pure-rust-math` selects the `libm` crate with `std` too:
+//! the no-panic proof, which needs unwinding and hence `std`, uses it to cover the
+//! real-time build's code.
+
+mod tables;
+
+#[cfg(all(feature = "std", not(feature = "pure-rust-math")))]
+mod imp {
+    #[inline]
+    pub fn sqrt(x: f64) -> f64 {
+        x.sqrt()
+    }
+    #[inline]
+    pub fn fmod(x: f64, y: f64) -> f64 {
+        x % y
+    }
+    #[inline]
+    pub fn round(x: f64) -> f64 {
+        x.round()
+    }
+    #[inline]
+    pub fn ceil(x: f64) -> f64 {
+        x.ceil()
+    }
+}
+
+#[cfg(any(not(feature = "std"), feature = "pure-rust-math"))]
+mod imp {
+    #[inline]
+    pub fn sqrt(x: f64) -> f64 {
+        libm::sqrt(x)
+    }
+    #[inline]
+    pub fn fmod(x: f64, y: f64) -> f64 {
+        libm::fmod(x, y)
+    }
+    #[inline]
+    pub fn round(x: f64) -> f64 {
+        libm::round(x)
+    }
+    #[inline]
+    pub fn ceil(x: f64) -> f64 {
+        libm::ceil(x)
+    }
+}
+
+use imp::fmod;
+pub use imp::{ceil, round, sqrt};
+
+/// `|x|` without `std` (clears the sign bit).
+#[inline]
+pub fn abs(x: f64) -> f64 {
+    f64::from_bits(x.to_bits() & !(1u64 << 63))
+}
+
+/// Degrees per radian as a double-double: `DEG_HI` is the correctly rounded 180/π (the
+/// constant `f64::to_degrees` uses), `DEG_LO` the rest (180/π − DEG_HI, rounded).
+const DEG_HI: f64 = 57.295_779_513_082_32;
+const DEG_LO: f64 = -1.987_849_567_057_628_3e-15;
+const RAD_PER_DEG: f64 = core::f64::consts::PI / 180.0;
+
+/// Sine and cosine of an angle in degrees, exact where the answer is exact.
+///
+/// The argument is reduced in degrees, where the reduction is exact: `fmod` for angles
+/// beyond ±180°, then the nearest whole degree j, whose sine and cosine come from a table of
+/// double-doubles, and the rest `d = r − j` (|d| ≤ ½°, exact). Then
+/// `sin(j + d) = sin j + (sin j·(cos d − 1) + cos j·sin d)` and likewise for the cosine,
+/// with `sin d` and `cos d − 1` from their Taylor series (to d⁵ and d⁶; the remainders of
+/// these alternating series are below d⁷/5040 ≤ 7.6e-19 and d⁸/40320 ≤ 8.4e-22). So
+/// every whole degree whose sine or cosine is a double (0, ±1/2, ±1) gives it exactly, and
+/// every other angle is within ½ ulp + 6e-18 of the true value (at most 6.2e-17): nearly
+/// correctly rounded. The table index and the quadrant come from integer arithmetic, with
+/// no branches (random angles would mispredict them).
+#[inline(always)]
+pub fn sin_cos_deg(deg: f64) -> (f64, f64) {
+    // fmod is slow and exact; most angles need no full-turn reduction at all.
+    let r = if abs(deg) > 180.0 {
+        rem360_cold(deg)
+    } else {
+        deg
+    };
+    // j, the whole degree nearest to r (ties to even), by the 1.5·2^52 trick: |r| < 360,
+    // so the sum's mantissa holds j exactly, as a two's complement integer offset by 2^51.
+    const ROUNDER: f64 = 6_755_399_441_055_744.0;
+    let sum = r + ROUNDER;
+    let j = sum - ROUNDER;
+    // Exact: |r − j| ≤ ½ and both have the same sign (or j = 0).
+    let d = (r - j) * RAD_PER_DEG;
+    // j + 360, in 0..=720 (a NaN gives arbitrary bits here, and NaN results below):
+    // 90·quadrant + within, within in 0..90, the quadrant taken modulo 4 (360° is four of
+    // them). Unsigned, so that the division by 90 is a multiplication and a shift.
+    let turned = (sum.to_bits().wrapping_sub(ROUNDER.to_bits()) as u32).wrapping_add(360);
+    let quadrant = u64::from(turned / 90) & 3;
+    let within = (turned % 90) as usize;
+    let [sin_hi, sin_lo, cos_hi, cos_lo] = tables::SIN_COS[within];
+    let z = d * d;
+    let sin_d = d + d * z * (-1.0 / 6.0 + z * (1.0 / 120.0));
+    let cos_d_minus_1 = z * (-0.5 + z * (1.0 / 24.0 + z * (-1.0 / 720.0)));
+    let s = sin_hi + (sin_lo + (sin_hi * cos_d_minus_1 + cos_hi * sin_d));
+    let c = cos_hi + (cos_lo + (cos_hi * cos_d_minus_1 - sin_hi * sin_d));
+    // sin(q·90 + x), cos(q·90 + x) for q mod 4 = 0, 1, 2, 3: (s, c), (c, −s), (−s, −c),
+    // (−c, s).
+    let (s, c) = if quadrant & 1 != 0 { (c, s) } else { (s, c) };
+    let s_sign = (quadrant >> 1) << 63;
+    let c_sign = ((quadrant ^ (quadrant >> 1)) & 1) << 63;
+    // `+ 0.0` turns -0 into +0 so that no caller ever sees a signed zero.
+    (
+        f64::from_bits(s.to_bits() ^ s_sign) + 0.0,
+        f64::from_bits(c.to_bits() ^ c_sign) + 0.0,
+    )
+}
+
+/// `atan(k/32)` in degrees for k = 0..=32, as double-doubles (hi, lo): computed with 300-bit
+/// arithmetic (mpmath) and checked in the tests against an independent double-double
+/// evaluation.
+const ATAN_DEG: [(f64, f64); 33] = [
+    (0.0, 0.0),
+    (1.789_910_608_246_069_4, -9.401_129_896_368_574e-17),
+    (3.576_334_374_997_351, -4.254_839_715_196_495e-17),
+    (5.355_825_042_855_19, -2.215_457_695_639_642e-16),
+    (7.125_016_348_901_798, -1.294_863_959_501_421_3e-16),
+    (8.880_659_150_520_245, 6.124_245_057_500_033e-16),
+    (10.619_655_276_155_134, 3.935_382_120_676_793_3e-16),
+    (12.339_087_278_326_195, -7.393_337_951_802_165e-16),
+    (14.036_243_467_926_479, -1.178_545_638_282_857e-16),
+    (15.708_637_829_015_744, 6.938_490_390_684_344e-16),
+    (17.354_024_636_261_32, 2.629_325_578_208_967e-16),
+    (18.970_407_808_486_545, -6.975_558_496_105_078e-16),
+    (20.556_045_219_583_464, 7.735_753_643_362_621e-16),
+    (22.109_448_343_751_673, 7.963_414_274_522_683e-16),
+    (23.629_377_730_656_817, -3.857_270_537_916_843e-17),
+    (25.114_834_886_144_56, 7.696_216_651_965_913e-16),
+    (26.565_051_177_077_99, -6.673_432_494_950_659e-16),
+    (27.979_474_388_480_146, -1.162_732_860_185_207_5e-15),
+    (29.357_753_542_791_272, 3.183_231_713_449_758e-16),
+    (30.699_722_550_814_414, -1.602_138_338_873_197_5e-15),
+    (32.005_383_208_083_494, 1.876_164_781_488_643_3e-15),
+    (33.274_887_984_834_92, 3.437_593_383_216_919_3e-15),
+    (34.508_522_987_668_4, 1.665_400_551_874_218_8e-15),
+    (35.706_691_400_602_885, -5.418_249_379_707_592e-16),
+    (36.869_897_645_844_02, 1.334_686_498_990_131_9e-15),
+    (37.998_732_442_504_66, 9.560_752_126_014_594e-16),
+    (39.093_858_886_229_5, 2.335_881_743_638_655e-15),
+    (40.155_999_624_919_32, 3.186_323_872_377_02e-15),
+    (41.185_925_165_709_65, -2.094_259_469_576_667_6e-15),
+    (42.184_443_315_788_77, 2.496_603_208_555_079e-15),
+    (43.152_389_734_005_4, 8.502_900_827_062_482e-16),
+    (44.090_619_550_800_86, -7.914_924_030_299_041e-16),
+    (45.0, 0.0),
+];
+
+/// `atan(num/den)` in degrees for `0 ≤ num ≤ den` (the first octant; `0/0` gives 0, as
+/// `atan2(0, 0)`), without a radian `atan` and without rounding twice.
+///
+/// `t = num/den` (one rounding), `c = k/32` the nearest table point (|t − c| ≤ 1/64), and
+/// `atan t = atan c + atan u` with `u = (t − c)/(1 + t·c)`, |u| ≤ 1/64. `t − c` is exact
+/// (Sterbenz: c/2 ≤ t ≤ 2c for k ≥ 1). `atan u` is its alternating Taylor series to `u⁹/9`,
+/// whose remainder is below `|u|¹¹/11 ≤ 2^-66/11`: the truncation error is proved, not
+/// fitted. The result is `A_hi + (DEG_HI·u + (A_lo + u·(DEG_LO + DEG·(atan u − u)/u)))`.
+///
+/// Error bound (docs/measurements.md derives it), ε = 2^-53: the final rounding ≤ ½ ulp of
+/// the result ≤ 3.56e-15°; the rounding of `t` moves the result by at most
+/// `(180/π)·ε·t/(1+t²) ≤ 3.19e-15°`; the three roundings in `u` at most
+/// `(180/π)·3ε·|u| ≤ 3.0e-16°`; `DEG_HI·u` and the inner sum ≤ 1.2e-16°; table, constants
+/// and truncation below 1e-18°. In all ≤ 7.2e-15° (1.26e-16 rad): as accurate as a correctly
+/// rounded radian `atan2` converted to degrees (≤ 5.6e-17 + 6.2e-17 + 8.7e-17 rad with the
+/// rounding of the constant), at a fraction of the cost.
+#[inline(always)]
+fn atan_octant_deg<const N: usize>(num: [f64; N], den: [f64; N]) -> [f64; N] {
+    // The three odd Taylor coefficients after u, times 180/π (their own rounding is
+    // relative 2^-53 of a term below 7.3e-5°).
+    const P3: f64 = DEG_HI / -3.0;
+    const P5: f64 = DEG_HI / 5.0;
+    const P7: f64 = DEG_HI / -7.0;
+    const P9: f64 = DEG_HI / 9.0;
+    // k = 32t rounded to an integer (ties to even) by the 1.5·2^52 trick, read from the
+    // sum's mantissa; t·32 is exact. A NaN gives arbitrary bits, hence the `min` (and its
+    // result stays NaN through u).
+    const ROUNDER: f64 = 6_755_399_441_055_744.0;
+    let den: [f64; N] = lanes(|i| if den[i] == 0.0 { 1.0 } else { den[i] });
+    let t: [f64; N] = lanes(|i| num[i] / den[i]);
+    let sum: [f64; N] = lanes(|i| t[i] * 32.0 + ROUNDER);
+    let c: [f64; N] = lanes(|i| (sum[i] - ROUNDER) * (1.0 / 32.0));
+    let u: [f64; N] = lanes(|i| (t[i] - c[i]) / (1.0 + t[i] * c[i]));
+    let z: [f64; N] = lanes(|i| u[i] * u[i]);
+    let z2: [f64; N] = lanes(|i| z[i] * z[i]);
+    // DEG_LO·u + DEG·(atan u − u), in one polynomial, evaluated in pairs of terms (Estrin):
+    // a shorter chain of dependent operations than Horner's, on the critical path.
+    let tail: [f64; N] = lanes(|i| {
+        let low = DEG_LO + z[i] * P3;
+        let high = (P5 + z[i] * P7) + z2[i] * P9;
+        u[i] * (low + z2[i] * high)
+    });
+    lanes(|i| {
+        let (hi, lo) = ATAN_DEG[((sum[i].to_bits() & 63) as usize).min(32)];
+        hi + (DEG_HI * u[i] + (lo + tail[i]))
+    })
+}
+
+/// `[f(0), …, f(N − 1)]`: each step of the lane functions is one such loop, which the
+/// compiler turns into vector instructions where it can.
+#[inline(always)]
+fn lanes<const N: usize>(mut f: impl FnMut(usize) -> f64) -> [f64; N] {
+    let mut r = [0.0; N];
+    for (i, v) in r.iter_mut().enumerate() {
+        *v = f(i);
+    }
+    r
+}
+
+/// `fmod(x, 360)`, exactly, in bounded time: the sign of `x`, magnitude below 360.
+///
+/// `fmod`'s cost grows with the exponent of `x` (2.2× the instructions of a whole
+/// `cncrot_matrix_from_angles` at 1.8e308°). At or above 2^53 every double is an integer
+/// `m·2^k` (m < 2^53), and `(m mod 360)·(2^k mod 360) mod 360` is exact integer arithmetic;
+/// `2^k mod 360` repeats with period 12 from k = 3 on (360 = 8·45, and 2 has order 12
+/// modulo 45), so it is a table lookup.
+#[inline]
+pub fn rem360(x: f64) -> f64 {
+    const TWO_53: f64 = 9_007_199_254_740_992.0;
+    if abs(x) < TWO_53 {
+        return fmod(x, 360.0);
+    }
+    // 2^k mod 360 for k = 3 + j, j = 0..12 (k = 3..14): 8, 16, 32, 64, 128, 256, 152, 304,
+    // 248, 136, 272, 184; then it repeats.
+    const POW2_MOD_360: [u64; 12] = [8, 16, 32, 64, 128, 256, 152, 304, 248, 136, 272, 184];
+    let bits = x.to_bits();
+    let exponent = ((bits >> 52) & 0x7ff) as i64 - 1075; // x = m·2^exponent
+    let m = (bits & ((1u64 << 52) - 1)) | (1u64 << 52);
+    // |x| >= 2^53 makes exponent >= 1; finite x makes it at most 971.
+    let k = exponent.max(1) as u64;
+    let p = match k {
+        1 => 2,
+        2 => 4,
+        _ => POW2_MOD_360[((k - 3) % 12) as usize],
+    };
+    let r = ((m % 360) * p % 360) as f64;
+    if x < 0.0 {
+        -r
+    } else {
+        r
+    }
+}
+
+/// [`rem360`] kept out of line: the full-turn reduction is the rare path of
+/// [`sin_cos_deg`], which is inlined three times into every composition.
+#[inline(never)]
+fn rem360_cold(x: f64) -> f64 {
+    rem360(x)
+}
+
+/// Brings an angle in degrees into (-180, 180], never -0.
+#[inline]
+pub fn wrap_deg(deg: f64) -> f64 {
+    // Already in range (every decomposition's output): `fmod` would return it unchanged, at
+    // about 60 instructions a call.
+    if deg > -180.0 && deg <= 180.0 {
+        return deg + 0.0;
+    }
+    let mut r = rem360(deg);
+    if r > 180.0 {
+        r -= 360.0;
+    } else if r <= -180.0 {
+        r += 360.0;
+    }
+    r + 0.0
+}
+
+/// `atan2` in degrees, in (-180, 180], never -0.
+///
+/// Reduced to the first octant (`0 ≤ num ≤ den`), where [`atan_octant_deg`] gives the angle
+/// in degrees to 7.2e-15°; the octant is then added in degrees. Calling a radian `atan2`
+/// directly and converting would round twice at up to 4.4e-16 rad near 180°, which alone
+/// would break the 1e-15 reconstruction goal.
+#[inline(always)]
+pub fn atan2_deg(y: f64, x: f64) -> f64 {
+    atan2_deg_lanes([y], [x])[0]
+}
+
+/// [`atan2_deg`] of N pairs at once, lane by lane the same operations (hence the same
+/// bits), written step by step over the lanes so that the compiler can use vector
+/// instructions: a decomposition's three angles take the time of fewer than two.
+#[inline(always)]
+pub fn atan2_deg_lanes<const N: usize>(y: [f64; N], x: [f64; N]) -> [f64; N] {
+    let ax: [f64; N] = lanes(|i| abs(x[i]));
+    let ay: [f64; N] = lanes(|i| abs(y[i]));
+    // The smaller over the larger, as two separate selects (the `minsd`/`maxsd` pattern):
+    // one swap of the pair became a branch around two copies of the kernel, which random
+    // angles mispredicted half the time. A NaN is let through below.
+    let num: [f64; N] = lanes(|i| if ay[i] < ax[i] { ay[i] } else { ax[i] });
+    let den: [f64; N] = lanes(|i| if ay[i] > ax[i] { ay[i] } else { ax[i] });
+    let t = atan_octant_deg(num, den);
+    // The octant from a table, not from selects (which the optimiser turned back into a
+    // branch): the angle in the upper half plane is off + sign·t, indexed by (swapped,
+    // west). (-0, negative x) is 180 like (+0, negative x): the range is (-180, 180].
+    const OCTANT: [(f64, f64); 4] = [(0.0, 1.0), (90.0, -1.0), (180.0, -1.0), (90.0, 1.0)];
+    const SIGN: [f64; 2] = [1.0, -1.0];
+    lanes(|i| {
+        let (off, sign) = OCTANT[usize::from(ay[i] > ax[i]) | usize::from(x[i] < 0.0) << 1];
+        let upper = off + sign * t[i];
+        let r = SIGN[usize::from((y[i] < 0.0) & (upper != 180.0))] * upper + 0.0;
+        if x[i].is_nan() | y[i].is_nan() {
+            f64::NAN
+        } else {
+            r
+        }
+    })
+}
+
+/// Whole turns (multiples of 360°) that bring `angle` nearest to `reference`.
+#[inline]
+pub fn turns_toward(angle: f64, reference: f64) -> f64 {
+    360.0 * round((reference - angle) / 360.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rem360_is_fmod_exactly() {
+        // fmod is exact, so the two must agree bit for bit, across the whole range.
+        let mut special = vec![
+            0.0,
+            360.0,
+            -360.0,
+            9_007_199_254_740_992.0,  // 2^53
+            -9_007_199_254_740_994.0, // -(2^53 + 2)
+            1.8014398509481984e16,    // 2^54
+            f64::MAX,
+            -f64::MAX,
+            1e300,
+            1e6,
+        ];
+        special.extend((0..1024).map(|k| 2f64.powi(k)));
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        for _ in 0..200_000 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            // Any finite double: random sign, exponent and mantissa bits.
+            let x = f64::from_bits(state & !(0x7ffu64 << 52) | ((state >> 11) % 2047) << 52);
+            special.push(x);
+        }
+        for x in special {
+            assert_eq!(rem360(x).to_bits(), fmod(x, 360.0).to_bits(), "{x:e}");
+        }
+    }
+
+    #[test]
+    fn right_angles_are_exact() {
+        // Values are the exact trigonometric results, written by hand.
+        let cases = [
+            (0.0, 0.0, 1.0),
+            (90.0, 1.0, 0.0),
+            (180.0, 0.0, -1.0),
+            (-90.0, -1.0, 0.0),
+            (-180.0, 0.0, -1.0),
+            (270.0, -1.0, 0.0),
+            (-270.0, 1.0, 0.0),
+            (450.0, 1.0, 0.0),
+            (360.0, 0.0, 1.0),
+            (-720.0, 0.0, 1.0),
+            (1e6 * 360.0 + 90.0, 1.0, 0.0),
+        ];
+        for (deg, s, c) in cases {
+            let (gs, gc) = sin_cos_deg(deg);
+            assert_eq!((gs, gc), (s, c), "{deg}");
+            assert!(gs.is_sign_positive() || gs != 0.0);
+            assert!(gc.is_sign_positive() || gc != 0.0);
+        }
+    }
+
+    #[test]
+    fn general_angles_match_radian_trig() {
+        let mut deg = -1000.0;
+        while deg < 1000.0 {
+            let (s, c) = sin_cos_deg(deg);
+            let rad = deg.to_radians();
+            assert!(
+                (s - rad.sin()).abs() < 2e-15 && (c - rad.cos()).abs() < 2e-15,
+                "{deg}"
+            );
+            deg += 7.3;
+        }
+    }
+
+    #[test]
+    fn atan2_deg_range() {
+        assert_eq!(atan2_deg(0.0, -1.0), 180.0);
+        assert_eq!(atan2_deg(-0.0, -1.0), 180.0);
+        assert_eq!(atan2_deg(1.0, 0.0), 90.0);
+        assert_eq!(atan2_deg(-1.0, 0.0), -90.0);
+        assert!(atan2_deg(-0.0, 1.0).is_sign_positive());
+    }
+
+    #[test]
+    fn wrap_and_turns() {
+        assert_eq!(wrap_deg(-180.0), 180.0);
+        assert_eq!(wrap_deg(540.0), 180.0);
+        assert_eq!(wrap_deg(-190.0), 170.0);
+        // The fast path agrees with the reduction, -0 included.
+        assert!(wrap_deg(-0.0).is_sign_positive());
+        for x in [179.999, -179.999, 1e-300, -1e-300, 180.0 - 2.8e-14] {
+            assert_eq!(wrap_deg(x).to_bits(), (x % 360.0 + 0.0).to_bits());
+        }
+        assert!(wrap_deg(-360.0).is_sign_positive());
+        // Sinumerik: computed 10°, specified 750° -> 730° (the SINUMERIK manual's example).
+        assert_eq!(10.0 + turns_toward(10.0, 750.0), 730.0);
+    }
+
+    /// Double-double arithmetic for the reference values: about 106 bits, from algorithms
+    /// that share nothing with the code under test (argument halving and plain Taylor series,
+    /// π from its two-double expansion).
+    mod dd {
+        #[derive(Clone, Copy, Debug)]
+        pub struct Dd(pub f64, pub f64);
+
+        fn two_sum(a: f64, b: f64) -> Dd {
+            let s = a + b;
+            let v = s - a;
+            Dd(s, (a - (s - v)) + (b - v))
+        }
+        pub fn add(a: Dd, b: Dd) -> Dd {
+            let s = two_sum(a.0, b.0);
+            let t = two_sum(s.1 + a.1 + b.1, 0.0);
+            let r = two_sum(s.0, t.0);
+            Dd(r.0, r.1 + t.1)
+        }
+        pub fn neg(a: Dd) -> Dd {
+            Dd(-a.0, -a.1)
+        }
+        pub fn mul(a: Dd, b: Dd) -> Dd {
+            let p = a.0 * b.0;
+            let e = a.0.mul_add(b.0, -p) + (a.0 * b.1 + a.1 * b.0);
+            two_sum(p, e)
+        }
+        pub fn div(a: Dd, b: Dd) -> Dd {
+            let q1 = a.0 / b.0;
+            let r = add(a, neg(mul(Dd(q1, 0.0), b)));
+            let q2 = r.0 / b.0;
+            let r = add(r, neg(mul(Dd(q2, 0.0), b)));
+            let q3 = r.0 / b.0;
+            add(two_sum(q1, q2), Dd(q3, 0.0))
+        }
+        pub fn sqrt(a: Dd) -> Dd {
+            if a.0 == 0.0 {
+                return Dd(0.0, 0.0);
+            }
+            // One Newton step from the double square root doubles its 53 bits.
+            let x = a.0.sqrt();
+            let e = add(a, neg(mul(Dd(x, 0.0), Dd(x, 0.0))));
+            two_sum(x, e.0 / (2.0 * x))
+        }
+        pub fn pi() -> Dd {
+            Dd(core::f64::consts::PI, 1.224_646_799_147_353_2e-16)
+        }
+        /// atan of a double-double in [0, 1]: three halvings
+        /// `atan x = 2 atan(x / (1 + sqrt(1 + x²)))` bring it below 0.1, then Taylor.
+        pub fn atan(x: Dd) -> Dd {
+            let one = Dd(1.0, 0.0);
+            let mut x = x;
+            for _ in 0..3 {
+                x = div(x, add(one, sqrt(add(one, mul(x, x)))));
+            }
+            let x2 = mul(x, x);
+            let mut term = x;
+            let mut sum = Dd(0.0, 0.0);
+            let mut n = 1.0;
+            while term.0.abs() > 1e-40 * x.0.abs().max(1e-300) && n < 200.0 {
+                sum = add(sum, div(term, Dd(n, 0.0)));
+                term = neg(mul(term, x2));
+                n += 2.0;
+            }
+            mul(sum, Dd(8.0, 0.0))
+        }
+        /// sin and cos of a double-double with |x| ≤ 0.8, by their Taylor series.
+        pub fn sin_cos(x: Dd) -> (Dd, Dd) {
+            let x2 = mul(x, x);
+            let (mut s, mut c) = (Dd(0.0, 0.0), Dd(0.0, 0.0));
+            let (mut ts, mut tc) = (x, Dd(1.0, 0.0));
+            for k in 0..30 {
+                s = add(s, ts);
+                c = add(c, tc);
+                let (a, b) = ((2 * k + 2) as f64, (2 * k + 3) as f64);
+                ts = neg(div(mul(ts, x2), Dd(a * b, 0.0)));
+                tc = neg(div(mul(tc, x2), Dd((2 * k + 1) as f64 * a, 0.0)));
+            }
+            (s, c)
+        }
+        /// 180/π.
+        pub fn deg() -> Dd {
+            div(Dd(180.0, 0.0), pi())
+        }
+    }
+
+    /// num/den as a double-double (the remainder of a division is exact).
+    fn ratio(num: f64, den: f64) -> dd::Dd {
+        let q = num / den;
+        dd::Dd(q, (-q).mul_add(den, num) / den)
+    }
+
+    fn reference_atan_deg(num: f64, den: f64) -> dd::Dd {
+        dd::mul(dd::atan(ratio(num, den)), dd::deg())
+    }
+
+    /// |got − want| without rounding `want` to a double first (`got − want.0` is exact
+    /// when the two are close).
+    fn error(got: f64, want: dd::Dd) -> f64 {
+        ((got - want.0) - want.1).abs()
+    }
+
+    /// Pairs 0 ≤ num ≤ den: random ratios over many magnitudes, and ratios within a few
+    /// ulps of every table point and every midpoint between them (where the table index
+    /// changes), of 0 and 1, tiny and subnormal.
+    fn octant_inputs(random: usize) -> Vec<(f64, f64)> {
+        let mut v = vec![
+            (0.0, 0.0),
+            (0.0, 1.0),
+            (1.0, 1.0),
+            (5e-324, 1.0),
+            (1e-300, 1e300),
+        ];
+        v.extend([
+            (1e300, 1e300),
+            (f64::MAX, f64::MAX),
+            (5e-324, 5e-324),
+            (1.0, 3.0),
+        ]);
+        for j in 0..=64 {
+            let t = j as f64 / 64.0;
+            let mut x = t;
+            let mut y = t;
+            for _ in 0..40 {
+                x = f64::from_bits(x.to_bits().saturating_add(1)).min(1.0);
+                y = f64::from_bits(y.to_bits().saturating_sub(1)).max(0.0);
+                v.push((x, 1.0));
+                v.push((y, 1.0));
+                // The same ratios from other numerators and denominators.
+                v.push((x * 0.7, 0.7));
+                v.push((y * 3.0e-200, 3.0e-200));
+            }
+        }
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        for i in 0..random {
+            let a = (next() >> 11) as f64 / (1u64 << 53) as f64;
+            let b = (next() >> 11) as f64 / (1u64 << 53) as f64;
+            let scale = [1.0, 1e-150, 1e150, 3.7e-3][i % 4];
+            let t = if i % 5 == 0 { a * a * a * 1e-6 } else { a };
+            let (num, den) = (t * (b + 0.5) * scale, (b + 0.5) * scale);
+            v.push((num.min(den), den));
+        }
+        v
+    }
+
+    /// The bound derived at `atan_octant_deg`, in degrees.
+    const ATAN_OCTANT_BOUND: f64 = 7.2e-15;
+
+    #[test]
+    fn atan_table_is_right() {
+        let deg = dd::deg();
+        assert_eq!((DEG_HI, DEG_LO), (deg.0, deg.1));
+        for (k, &(hi, lo)) in ATAN_DEG.iter().enumerate() {
+            let r = dd::mul(dd::atan(dd::Dd(k as f64 / 32.0, 0.0)), deg);
+            // Both parts, to the double-double's own precision.
+            assert_eq!(hi, r.0, "k = {k}");
+            assert!(
+                (lo - r.1).abs() <= 1e-30 * hi.max(1.0),
+                "k = {k}: {lo:e} {:e}",
+                r.1
+            );
+        }
+    }
+
+    #[test]
+    fn atan_octant_within_its_bound_on_millions() {
+        let inputs = octant_inputs(2_000_000);
+        let (mut worst, mut worst_libm, mut worst_rust_libm) = (0.0f64, 0.0f64, 0.0f64);
+        for &(num, den) in &inputs {
+            let got = atan_octant_deg([num], [den])[0];
+            let want = if den == 0.0 {
+                dd::Dd(0.0, 0.0)
+            } else {
+                reference_atan_deg(num, den)
+            };
+            let e = error(got, want);
+            assert!(
+                e <= ATAN_OCTANT_BOUND,
+                "atan({num:e}/{den:e}): {got} vs {want:?}"
+            );
+            worst = worst.max(e);
+            worst_libm = worst_libm.max(error(num.atan2(den).to_degrees(), want));
+            worst_rust_libm = worst_rust_libm.max(error(libm::atan2(num, den) * DEG_HI, want));
+        }
+        // Reported for docs/measurements.md (cargo test -- --nocapture).
+        println!(
+            "atan_octant_deg on {} inputs: worst {worst:.3e}°; platform atan2 → degrees \
+             {worst_libm:.3e}°, libm crate {worst_rust_libm:.3e}°",
+            inputs.len()
+        );
+        // No less accurate than converting a radian atan2, which it replaces.
+        assert!(worst <= worst_libm.max(worst_rust_libm), "{worst:e}");
+    }
+
+    #[test]
+    fn atan2_deg_in_every_octant() {
+        // Each octant adds one rounding of the sum off ± t: ½ ulp(180°) = 1.43e-14°.
+        let pi = dd::pi();
+        assert_eq!(atan2_deg(0.0, 0.0), 0.0);
+        for &(num, den) in octant_inputs(200_000).iter().step_by(3) {
+            if den == 0.0 {
+                continue;
+            }
+            let base = dd::mul(dd::atan(ratio(num, den)), dd::deg());
+            let half = dd::mul(dd::div(pi, dd::Dd(2.0, 0.0)), dd::deg());
+            let full = dd::mul(pi, dd::deg());
+            // (y, x) of each octant and the exact angle there.
+            let cases = [
+                (num, den, base),
+                (den, num, dd::add(half, dd::neg(base))),
+                (den, -num, dd::add(half, base)),
+                (num, -den, dd::add(full, dd::neg(base))),
+                (-num, den, dd::neg(base)),
+                (-den, num, dd::neg(dd::add(half, dd::neg(base)))),
+                (-den, -num, dd::neg(dd::add(half, base))),
+            ];
+            for (y, x, want) in cases {
+                let got = atan2_deg(y, x);
+                assert!(got > -180.0 && got <= 180.0);
+                // atan2(-0, -den) is 180, not -180.
+                let e = if y == 0.0 && x < 0.0 {
+                    (got - 180.0).abs()
+                } else {
+                    error(got, want)
+                };
+                assert!(
+                    e <= ATAN_OCTANT_BOUND + 1.43e-14,
+                    "atan2({y:e}, {x:e}) = {got}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn sin_cos_table_is_right() {
+        let rad = dd::div(dd::pi(), dd::Dd(180.0, 0.0));
+        for (j, &[sh, sl, ch, cl]) in tables::SIN_COS.iter().enumerate() {
+            // Above 45° through the complement, where the series converges well.
+            let (s, c) = if j > 45 {
+                let (s, c) = dd::sin_cos(dd::mul(dd::Dd(90.0 - j as f64, 0.0), rad));
+                (c, s)
+            } else {
+                dd::sin_cos(dd::mul(dd::Dd(j as f64, 0.0), rad))
+            };
+            assert_eq!((sh, ch), (s.0, c.0), "{j}°");
+            // To the double-double reference's own precision, a few units of 2^-106.
+            assert!(
+                (sl - s.1).abs() <= 5e-32 && (cl - c.1).abs() <= 5e-32,
+                "{j}°"
+            );
+        }
+        // The exact ones are exact.
+        assert_eq!(sin_cos_deg(30.0).0, 0.5);
+        assert_eq!(sin_cos_deg(60.0).1, 0.5);
+        assert_eq!(sin_cos_deg(-150.0), (-0.5, -tables::SIN_COS[30][2]));
+    }
+
+    /// The bound of `sin_cos_deg` derived at its definition: ½ ulp below 1 plus 6e-18.
+    const SIN_COS_BOUND: f64 = 6.2e-17;
+
+    /// `sin_cos_deg` as it was before its kernels: the same exact reduction, then the
+    /// platform's `sin` and `cos` of the radian rest.
+    fn sin_cos_deg_platform(d: f64) -> (f64, f64) {
+        let r = rem360(d);
+        let q = (r / 90.0).round();
+        let x = (r - 90.0 * q) * RAD_PER_DEG;
+        let (s, c) = (x.sin(), x.cos());
+        match (q as i64).rem_euclid(4) {
+            0 => (s, c),
+            1 => (c, -s),
+            2 => (-s, -c),
+            _ => (-c, s),
+        }
+    }
+
+    #[test]
+    fn sin_cos_deg_within_its_bound_on_millions() {
+        let rad = dd::div(dd::pi(), dd::Dd(180.0, 0.0));
+        let mut degrees = Vec::new();
+        for q in -8..=8 {
+            // Within 50 ulps of every multiple of 45° (the quadrant changes at the odd ones).
+            let at = 45.0 * q as f64;
+            let ulp = f64::from_bits(at.abs().max(1.0).to_bits() + 1) - at.abs().max(1.0);
+            degrees.extend((-50..=50).map(|k| at + k as f64 * ulp));
+        }
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        for i in 0..2_000_000u64 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            let u = (state >> 11) as f64 / (1u64 << 53) as f64;
+            degrees.push(match i % 4 {
+                0 => 360.0 * u - 180.0,
+                1 => 1e-6 * u,
+                2 => 7.2e5 * u - 3.6e5,
+                _ => u * 90.0,
+            });
+        }
+        let (mut worst, mut worst_libm) = (0.0f64, 0.0f64);
+        for &d in &degrees {
+            let (s, c) = sin_cos_deg(d);
+            // Reference: the exactly reduced rest times π/180 in double-double.
+            let r = rem360(d);
+            let q = (r / 90.0).round();
+            let rest = r - 90.0 * q;
+            let (rs, rc) = dd::sin_cos(dd::mul(dd::Dd(rest, 0.0), rad));
+            let (ws, wc) = match (q as i64).rem_euclid(4) {
+                0 => (rs, rc),
+                1 => (rc, dd::neg(rs)),
+                2 => (dd::neg(rs), dd::neg(rc)),
+                _ => (dd::neg(rc), rs),
+            };
+            let e = error(s, ws).max(error(c, wc));
+            assert!(e <= SIN_COS_BOUND, "{d}: ({s}, {c}) vs ({ws:?}, {wc:?})");
+            worst = worst.max(e);
+            // What it replaces: the platform's sin and cos of the same radian argument.
+            let (ps, pc) = sin_cos_deg_platform(d);
+            worst_libm = worst_libm.max(error(ps, ws).max(error(pc, wc)));
+        }
+        println!(
+            "sin_cos_deg on {} inputs: worst {worst:.3e}; with the platform's sin and cos \
+             {worst_libm:.3e}",
+            degrees.len()
+        );
+    }
+}
