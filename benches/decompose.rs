@@ -3,7 +3,10 @@
 //! ratios at the end. `cargo bench --bench decompose`.
 //!
 //! Each measurement covers a batch of 256 rotations (intrinsic Z, Y', X'', the convention
-//! all three libraries share), so the ratios are per rotation.
+//! all three libraries share), so the ratios are per rotation. `cncrot` is the Rust call,
+//! `cncrot_c` the exported C function one rotation at a time (checks of pointers,
+//! finiteness and, for a matrix, orthonormality included), `cncrot_batch` the batch export
+//! over all 256 in one call.
 
 #[path = "../tests/common/mod.rs"]
 mod common;
@@ -49,6 +52,43 @@ fn benches(c: &mut Criterion) {
                 .sum::<f64>()
         })
     });
+    g.bench_function("cncrot_c", |b| {
+        b.iter(|| {
+            let mut sum = 0.0;
+            for m in &mats {
+                let mut out = [0.0; 3];
+                // SAFETY: 9 readable and 3 writable doubles.
+                unsafe {
+                    cncrot::ffi::cncrot_angles_from_matrix(
+                        1,
+                        27,
+                        black_box(m).as_ptr().cast(),
+                        out.as_mut_ptr(),
+                    )
+                };
+                sum += out[0];
+            }
+            sum
+        })
+    });
+    g.bench_function("cncrot_batch", |b| {
+        let flat: Vec<f64> = mats.iter().flatten().flatten().copied().collect();
+        let mut out = vec![0.0; 3 * BATCH];
+        b.iter(|| {
+            // SAFETY: 9·BATCH readable and 3·BATCH writable doubles.
+            unsafe {
+                cncrot::ffi::cncrot_angles_from_matrices(
+                    1,
+                    27,
+                    black_box(&flat).as_ptr(),
+                    BATCH,
+                    out.as_mut_ptr(),
+                    core::ptr::null_mut(),
+                )
+            };
+            out[0]
+        })
+    });
     g.bench_function("nalgebra", |b| {
         b.iter(|| {
             na.iter()
@@ -76,6 +116,43 @@ fn benches(c: &mut Criterion) {
                         [0][0]
                 })
                 .sum::<f64>()
+        })
+    });
+    g.bench_function("cncrot_c", |b| {
+        b.iter(|| {
+            let mut sum = 0.0;
+            for a in &angles {
+                let mut m = [0.0; 9];
+                // SAFETY: 3 readable and 9 writable doubles.
+                unsafe {
+                    cncrot::ffi::cncrot_matrix_from_angles(
+                        1,
+                        27,
+                        black_box(a).as_ptr(),
+                        m.as_mut_ptr(),
+                    )
+                };
+                sum += m[0];
+            }
+            sum
+        })
+    });
+    g.bench_function("cncrot_batch", |b| {
+        let flat: Vec<f64> = angles.iter().flatten().copied().collect();
+        let mut out = vec![0.0; 9 * BATCH];
+        b.iter(|| {
+            // SAFETY: 3·BATCH readable and 9·BATCH writable doubles.
+            unsafe {
+                cncrot::ffi::cncrot_matrices_from_angles(
+                    1,
+                    27,
+                    black_box(&flat).as_ptr(),
+                    BATCH,
+                    out.as_mut_ptr(),
+                    core::ptr::null_mut(),
+                )
+            };
+            out[0]
         })
     });
     g.bench_function("nalgebra", |b| {
@@ -120,6 +197,47 @@ fn benches(c: &mut Criterion) {
                 .sum::<f64>()
         })
     });
+    g.bench_function("cncrot_c", |b| {
+        b.iter(|| {
+            let mut sum = 0.0;
+            for a in &angles {
+                let mut out = [0.0; 3];
+                // SAFETY: 3 readable and 3 writable doubles.
+                unsafe {
+                    cncrot::ffi::cncrot_convert(
+                        0,
+                        57,
+                        black_box(a).as_ptr(),
+                        1,
+                        39,
+                        out.as_mut_ptr(),
+                    )
+                };
+                sum += out[0];
+            }
+            sum
+        })
+    });
+    g.bench_function("cncrot_batch", |b| {
+        let flat: Vec<f64> = angles.iter().flatten().copied().collect();
+        let mut out = vec![0.0; 3 * BATCH];
+        b.iter(|| {
+            // SAFETY: 3·BATCH readable and 3·BATCH writable doubles.
+            unsafe {
+                cncrot::ffi::cncrot_convert_many(
+                    0,
+                    57,
+                    black_box(&flat).as_ptr(),
+                    BATCH,
+                    1,
+                    39,
+                    out.as_mut_ptr(),
+                    core::ptr::null_mut(),
+                )
+            };
+            out[0]
+        })
+    });
     g.bench_function("nalgebra", |b| {
         let ext = [Vector3::x_axis(), Vector3::y_axis(), Vector3::z_axis()];
         let zxy = [Vector3::z_axis(), Vector3::x_axis(), Vector3::y_axis()];
@@ -162,16 +280,18 @@ fn mean_ns(group: &str, name: &str) -> Option<f64> {
 }
 
 fn ratios() {
-    println!("\nper rotation (mean), and the peers' time relative to cncrot:");
+    println!(
+        "\nper rotation (mean); in brackets cncrot's time over glam's (<= 1: as fast or faster):"
+    );
     for group in ["decompose", "compose", "convert"] {
-        let Some(own) = mean_ns(group, "cncrot") else {
+        let Some(glam) = mean_ns(group, "glam") else {
             continue;
         };
         let per = |t: f64| t / BATCH as f64;
-        let mut line = format!("  {group:<9} cncrot {:6.1} ns", per(own));
-        for peer in ["nalgebra", "glam"] {
-            if let Some(t) = mean_ns(group, peer) {
-                line += &format!("   {peer} {:6.1} ns (x{:.2})", per(t), t / own);
+        let mut line = format!("  {group:<9}");
+        for name in ["cncrot", "cncrot_c", "cncrot_batch", "nalgebra", "glam"] {
+            if let Some(t) = mean_ns(group, name) {
+                line += &format!("  {name} {:5.1} ns ({:.2})", per(t), t / glam);
             }
         }
         println!("{line}");

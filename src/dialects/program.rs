@@ -218,7 +218,7 @@ impl Program {
 /// assert_eq!(&buf[..n], b"PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY");
 /// // The shortest exact numbers show the decomposition's last bit.
 /// let (n, _) = write_line(Dialect::Heidenhain, b"PLANE SPATIAL", &f, -1, &mut buf).unwrap();
-/// assert_eq!(&buf[..n], b"PLANE SPATIAL SPA+29.999999999999996 SPB+0 SPC+0 STAY");
+/// assert_eq!(&buf[..n], b"PLANE SPATIAL SPA+30.000000000000004 SPB+0 SPC+0 STAY");
 /// ```
 pub fn write_line(
     dialect: Dialect,
