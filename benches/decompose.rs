@@ -6,7 +6,9 @@
 //! all three libraries share), so the ratios are per rotation. `cncrot` is the Rust call,
 //! `cncrot_c` the exported C function one rotation at a time (checks of pointers,
 //! finiteness and, for a matrix, orthonormality included), `cncrot_batch` the batch export
-//! over all 256 in one call.
+//! over all 256 in one call. Every library's whole result goes through `black_box`, so
+//! that none is computed only in part (an inlined composition read for one element was
+//! otherwise reduced to that element).
 
 #[path = "../tests/common/mod.rs"]
 mod common;
@@ -48,7 +50,7 @@ fn benches(c: &mut Criterion) {
     g.bench_function("cncrot", |b| {
         b.iter(|| {
             mats.iter()
-                .map(|m| cncrot::decompose(conv, black_box(m)).angles[0])
+                .map(|m| black_box(cncrot::decompose(conv, black_box(m))).angles[0])
                 .sum::<f64>()
         })
     });
@@ -92,14 +94,14 @@ fn benches(c: &mut Criterion) {
     g.bench_function("nalgebra", |b| {
         b.iter(|| {
             na.iter()
-                .map(|r| black_box(r).euler_angles_ordered(axes, false).0[0])
+                .map(|r| black_box(black_box(r).euler_angles_ordered(axes, false)).0[0])
                 .sum::<f64>()
         })
     });
     g.bench_function("glam", |b| {
         b.iter(|| {
             gl.iter()
-                .map(|m| black_box(m).to_euler(EulerRot::ZYX).0)
+                .map(|m| black_box(black_box(m).to_euler(EulerRot::ZYX)).0)
                 .sum::<f64>()
         })
     });
@@ -112,8 +114,11 @@ fn benches(c: &mut Criterion) {
             angles
                 .iter()
                 .map(|a| {
-                    cncrot::matrix_from_angles(Kind::Intrinsic, Sequence::ZYX.into(), *black_box(a))
-                        [0][0]
+                    black_box(cncrot::matrix_from_angles(
+                        Kind::Intrinsic,
+                        Sequence::ZYX.into(),
+                        *black_box(a),
+                    ))[0][0]
                 })
                 .sum::<f64>()
         })
@@ -163,7 +168,7 @@ fn benches(c: &mut Criterion) {
                     let r = Rotation3::from_axis_angle(&Unit::new_unchecked(*axes[0]), a[0])
                         * Rotation3::from_axis_angle(&axes[1], a[1])
                         * Rotation3::from_axis_angle(&axes[2], a[2]);
-                    r[(0, 0)]
+                    black_box(r)[(0, 0)]
                 })
                 .sum::<f64>()
         })
@@ -173,9 +178,14 @@ fn benches(c: &mut Criterion) {
             rad.iter()
                 .map(|a| {
                     let a = black_box(a);
-                    DMat3::from_quat(DQuat::from_euler(EulerRot::ZYX, a[0], a[1], a[2]))
-                        .x_axis
-                        .x
+                    black_box(DMat3::from_quat(DQuat::from_euler(
+                        EulerRot::ZYX,
+                        a[0],
+                        a[1],
+                        a[2],
+                    )))
+                    .x_axis
+                    .x
                 })
                 .sum::<f64>()
         })
@@ -191,8 +201,13 @@ fn benches(c: &mut Criterion) {
             angles
                 .iter()
                 .map(|a| {
-                    cncrot::convert(Kind::Extrinsic, Sequence::XYZ.into(), *black_box(a), to).angles
-                        [0]
+                    black_box(cncrot::convert(
+                        Kind::Extrinsic,
+                        Sequence::XYZ.into(),
+                        *black_box(a),
+                        to,
+                    ))
+                    .angles[0]
                 })
                 .sum::<f64>()
         })
@@ -248,7 +263,7 @@ fn benches(c: &mut Criterion) {
                     let r = Rotation3::from_axis_angle(&ext[2], a[2])
                         * Rotation3::from_axis_angle(&ext[1], a[1])
                         * Rotation3::from_axis_angle(&ext[0], a[0]);
-                    r.euler_angles_ordered(zxy, false).0[0]
+                    black_box(r.euler_angles_ordered(zxy, false)).0[0]
                 })
                 .sum::<f64>()
         })
@@ -258,9 +273,11 @@ fn benches(c: &mut Criterion) {
             rad.iter()
                 .map(|a| {
                     let a = black_box(a);
-                    DQuat::from_euler(EulerRot::ZYXEx, a[2], a[1], a[0])
-                        .to_euler(EulerRot::ZXY)
-                        .0
+                    black_box(
+                        DQuat::from_euler(EulerRot::ZYXEx, a[2], a[1], a[0])
+                            .to_euler(EulerRot::ZXY),
+                    )
+                    .0
                 })
                 .sum::<f64>()
         })
@@ -268,29 +285,40 @@ fn benches(c: &mut Criterion) {
     g.finish();
 }
 
-/// Mean time of one benchmark, read from criterion's own estimates file.
-fn mean_ns(group: &str, name: &str) -> Option<f64> {
+/// The time of one iteration of a benchmark at its fastest tenth of samples (criterion's
+/// own sample file): on a shared machine other work only ever adds time, and the mean
+/// moved by ±30 % between runs here while this figure stays within a few percent.
+fn fast_ns(group: &str, name: &str) -> Option<f64> {
     let dir = std::env::var("CARGO_TARGET_DIR").unwrap_or_else(|_| "target".into());
-    let path = format!("{dir}/criterion/{group}/{name}/new/estimates.json");
+    let path = format!("{dir}/criterion/{group}/{name}/new/sample.json");
     let text = std::fs::read_to_string(path).ok()?;
-    let mean = &text[text.find("\"mean\"")?..];
-    let pe = &mean[mean.find("\"point_estimate\":")? + 17..];
-    let end = pe.find([',', '}'])?;
-    pe[..end].trim().parse().ok()
+    let numbers = |key: &str| -> Option<Vec<f64>> {
+        let start = text.find(&format!("\"{key}\":["))? + key.len() + 4;
+        let end = start + text[start..].find(']')?;
+        text[start..end]
+            .split(',')
+            .map(|v| v.trim().parse().ok())
+            .collect()
+    };
+    let (iters, times) = (numbers("iters")?, numbers("times")?);
+    let mut per: Vec<f64> = iters.iter().zip(&times).map(|(i, t)| t / i).collect();
+    per.sort_by(f64::total_cmp);
+    per.get(per.len() / 10).copied()
 }
 
 fn ratios() {
     println!(
-        "\nper rotation (mean); in brackets cncrot's time over glam's (<= 1: as fast or faster):"
+        "\nper rotation (fastest tenth of the samples); in brackets the time over glam's \
+         (<= 1: as fast or faster):"
     );
     for group in ["decompose", "compose", "convert"] {
-        let Some(glam) = mean_ns(group, "glam") else {
+        let Some(glam) = fast_ns(group, "glam") else {
             continue;
         };
         let per = |t: f64| t / BATCH as f64;
         let mut line = format!("  {group:<9}");
         for name in ["cncrot", "cncrot_c", "cncrot_batch", "nalgebra", "glam"] {
-            if let Some(t) = mean_ns(group, name) {
+            if let Some(t) = fast_ns(group, name) {
                 line += &format!("  {name} {:5.1} ns ({:.2})", per(t), t / glam);
             }
         }

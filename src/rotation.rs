@@ -4,7 +4,7 @@
 //! Matrices are row-major `[[f64; 3]; 3]` (`m[i-1][j-1]` is the paper's `A_ij`), the layout
 //! of the C boundary's `double[9]`. Angles are in degrees.
 
-use crate::math::{self, atan2_deg, sin_cos_deg, sqrt, wrap_deg};
+use crate::math::{self, sin_cos_deg, sqrt, wrap_deg, Lanes, F4};
 use crate::{Axis, AxisCode, Convention, Error, Kind, Sequence};
 
 /// A 3x3 matrix, row-major: `m[i][j]` is row `i`, column `j` (0-based).
@@ -99,6 +99,17 @@ pub fn transpose(m: &Matrix) -> Matrix {
 /// assert!((m[0][0] - 0.3536).abs() < 1e-4 && (m[2][0] + 0.7071).abs() < 1e-4);
 /// ```
 pub fn matrix_from_angles(kind: Kind, code: AxisCode, angles_deg: [f64; 3]) -> Matrix {
+    matrix_from_angles_inline(kind, code, angles_deg)
+}
+
+/// [`matrix_from_angles`], inlined into the C boundary's row functions, where the matrix
+/// then stays in registers.
+#[inline(always)]
+pub(crate) fn matrix_from_angles_inline(
+    kind: Kind,
+    code: AxisCode,
+    angles_deg: [f64; 3],
+) -> Matrix {
     let Ok(seq) = Sequence::from_axis_code(code) else {
         return matrix_from_slots(kind, code, angles_deg);
     };
@@ -137,13 +148,10 @@ pub fn matrix_from_angles(kind: Kind, code: AxisCode, angles_deg: [f64; 3]) -> M
 #[inline(always)]
 fn parity_sin_cos<const I: usize, const J: usize>(angles: [f64; 3]) -> [(f64, f64); 3] {
     let odd = (I + 1) % 3 != J;
-    // Three calls written out: `array::map` was left as a call of its own, around the
-    // inlined kernels, at a fifth of a composition's instructions.
-    let sc = |deg: f64| {
-        let (s, c) = sin_cos_deg(deg);
-        (if odd { -s } else { s }, c)
-    };
-    [sc(angles[0]), sc(angles[1]), sc(angles[2])]
+    // The three in the lanes of one vector computation.
+    let (s, c) = math::sin_cos_deg4([angles[0], angles[1], angles[2], 0.0]);
+    let s = if odd { s.map(|v| -v) } else { s };
+    [(s[0], c[0]), (s[1], c[1]), (s[2], c[2])]
 }
 
 /// Intrinsic `R_I(a)·R_J(b)·R_K(c)`, I, J, K all different, in closed form: 12
@@ -258,16 +266,29 @@ fn turn_rows(r: &mut Matrix, axis: Axis, s: f64, c: f64) {
 /// ```
 #[inline]
 pub fn check_rotation(m: &Matrix) -> Result<(), Error> {
-    // The same products, summed in the same order, as `orthonormality_error`; all six
-    // compared without the maximum's branches.
-    let gram = |i: usize, j: usize| m[0][i] * m[0][j] + m[1][i] * m[1][j] + m[2][i] * m[2][j];
-    let (g00, g11, g22) = (gram(0, 0), gram(1, 1), gram(2, 2));
-    let (g01, g02, g12) = (gram(0, 1), gram(0, 2), gram(1, 2));
-    let deviations = [g00 - 1.0, g11 - 1.0, g22 - 1.0, g01, g02, g12];
-    let orthonormal = deviations
-        .iter()
-        .fold(true, |ok, &d| ok & (math::abs(d) <= ROTATION_TOLERANCE));
-    if orthonormal & (determinant(m) > 0.0) {
+    // MᵀM − I and the determinant in the lanes of vector registers, from the rows as they
+    // lie in memory: row r, the same row rotated (y, z, x) and (z, x, y). The same
+    // products, summed in the same order, as `orthonormality_error` and `determinant`,
+    // hence the same decision; a third of the instructions.
+    let row = |r: usize| F4::new([m[r][0], m[r][1], m[r][2], 0.0]);
+    let yzx = |r: usize| F4::new([m[r][1], m[r][2], m[r][0], 0.0]);
+    let zxy = |r: usize| F4::new([m[r][2], m[r][0], m[r][1], 0.0]);
+    let (r0, r1, r2) = (row(0), row(1), row(2));
+    let (s0, s1, s2) = (yzx(0), yzx(1), yzx(2));
+    // (g00, g11, g22, 0) and (g01, g12, g20, 0).
+    let diagonal = r0.mul(r0).add(r1.mul(r1)).add(r2.mul(r2));
+    let off = r0.mul(s0).add(r1.mul(s1)).add(r2.mul(s2));
+    let tolerance = F4::splat(ROTATION_TOLERANCE);
+    let orthonormal = diagonal
+        .sub(F4::new([1.0, 1.0, 1.0, 0.0]))
+        .abs()
+        .le(tolerance)
+        .and(off.abs().le(tolerance))
+        .all();
+    // Row 1 × row 2, then its dot product with row 0: the determinant.
+    let cross = s1.mul(zxy(2)).sub(zxy(1).mul(s2)).to_array();
+    let det = m[0][0] * cross[0] + m[0][1] * cross[1] + m[0][2] * cross[2];
+    if orthonormal & (det > 0.0) {
         Ok(())
     } else if m.iter().flatten().all(|x| x.is_finite()) {
         Err(Error::NotARotation)
@@ -445,6 +466,14 @@ pub fn angles_from_matrix(conv: Convention, m: &Matrix) -> Result<Decomposition,
 /// themselves. Never panics; a matrix that is not a rotation gives meaningless angles.
 #[inline]
 pub fn decompose(conv: Convention, m: &Matrix) -> Decomposition {
+    decompose_inline(conv, m)
+}
+
+/// [`decompose`], inlined into the C boundary's row function: returned from a call, its
+/// angles came back through memory stored in pieces and were read whole, which the
+/// processor cannot forward from store to load (a stall on every call).
+#[inline(always)]
+pub(crate) fn decompose_inline(conv: Convention, m: &Matrix) -> Decomposition {
     // An extrinsic sequence is the intrinsic reversed sequence with the angles reversed, so
     // one algorithm serves all 24 conventions. The singular rule zeroes the convention's own
     // third angle, which is the reversed sequence's first.
@@ -452,7 +481,7 @@ pub fn decompose(conv: Convention, m: &Matrix) -> Decomposition {
         Kind::Intrinsic => (conv.sequence, false),
         Kind::Extrinsic => (conv.sequence.reversed(), true),
     };
-    let (mut a, singular) = match seq {
+    let prep = match seq {
         Sequence::XYZ => tait_bryan::<0, 1, 2>(m, zero_first),
         Sequence::XZY => tait_bryan::<0, 2, 1>(m, zero_first),
         Sequence::YXZ => tait_bryan::<1, 0, 2>(m, zero_first),
@@ -465,6 +494,15 @@ pub fn decompose(conv: Convention, m: &Matrix) -> Decomposition {
         Sequence::YZY => proper_euler::<1, 2, 0>(m, zero_first),
         Sequence::ZXZ => proper_euler::<2, 0, 1>(m, zero_first),
         Sequence::ZYZ => proper_euler::<2, 1, 0>(m, zero_first),
+    };
+    // One `atan2` of four lanes after the match, not three in each of its 12 arms: the
+    // compact code runs at one speed wherever it lands (two identical copies of the
+    // inlined version differed by a quarter).
+    let r = math::atan2_deg4(prep.y, prep.x);
+    let (mut a, singular) = match prep.singular_middle {
+        None => ([r[0], r[1], r[2]], false),
+        Some(b) if zero_first => ([0.0, b, r[0]], true),
+        Some(b) => ([r[0], b, 0.0], true),
     };
     if conv.kind == Kind::Extrinsic {
         a.swap(0, 2);
@@ -487,7 +525,7 @@ pub fn decompose(conv: Convention, m: &Matrix) -> Decomposition {
 fn tait_bryan<const I: usize, const J: usize, const K: usize>(
     m: &Matrix,
     zero_first: bool,
-) -> ([f64; 3], bool) {
+) -> Prepared {
     let e = if (I + 1) % 3 == J { 1.0 } else { -1.0 };
     let sa = -e * m[J][K];
     let ca = m[K][K];
@@ -496,16 +534,44 @@ fn tait_bryan<const I: usize, const J: usize, const K: usize>(
         // (sa, ca) are cos b times the sine and cosine of a; atan2 needs no normalisation.
         let sc = e * ca * m[J][I] + sa * m[K][I];
         let cc = ca * m[J][J] + e * sa * m[K][J];
-        let [a, b, c, _] = math::atan2_deg_lanes([sa, e * m[I][K], sc, 0.0], [ca, cb, cc, 1.0]);
-        ([a, b, c], false)
+        Prepared::regular([sa, e * m[I][K], sc], [ca, cb, cc])
     } else {
         let b = if e * m[I][K] >= 0.0 { 90.0 } else { -90.0 };
         if zero_first {
             // R = R_J(b)·R_K(c): row J is (e sin c, cos c) at (I, J).
-            ([0.0, b, atan2_deg(e * m[J][I], m[J][J])], true)
+            Prepared::singular(e * m[J][I], m[J][J], b)
         } else {
             // R = R_I(a)·R_J(b): column J is (cos a, e sin a) at (J, K).
-            ([atan2_deg(e * m[K][J], m[J][J]), b, 0.0], true)
+            Prepared::singular(e * m[K][J], m[J][J], b)
+        }
+    }
+}
+
+/// What a decomposition hands to `atan2`: the (y, x) of its three angles (lane 3 unused),
+/// or at a singular middle angle the one free angle's (y, x) in lane 0 and the middle
+/// angle itself.
+struct Prepared {
+    y: [f64; 4],
+    x: [f64; 4],
+    singular_middle: Option<f64>,
+}
+
+impl Prepared {
+    #[inline(always)]
+    fn regular(y: [f64; 3], x: [f64; 3]) -> Prepared {
+        Prepared {
+            y: [y[0], y[1], y[2], 0.0],
+            x: [x[0], x[1], x[2], 1.0],
+            singular_middle: None,
+        }
+    }
+
+    #[inline(always)]
+    fn singular(y: f64, x: f64, middle: f64) -> Prepared {
+        Prepared {
+            y: [y, 0.0, 0.0, 0.0],
+            x: [x, 1.0, 1.0, 1.0],
+            singular_middle: Some(middle),
         }
     }
 }
@@ -518,7 +584,7 @@ fn tait_bryan<const I: usize, const J: usize, const K: usize>(
 fn proper_euler<const I: usize, const J: usize, const K: usize>(
     m: &Matrix,
     zero_first: bool,
-) -> ([f64; 3], bool) {
+) -> Prepared {
     let e = if (I + 1) % 3 == J { 1.0 } else { -1.0 };
     let sa = m[J][I];
     let ca = -e * m[K][I];
@@ -526,16 +592,15 @@ fn proper_euler<const I: usize, const J: usize, const K: usize>(
         let sb = sqrt(m[I][J] * m[I][J] + m[I][K] * m[I][K]);
         let cc = ca * m[J][J] + e * sa * m[K][J];
         let sc = -e * ca * m[J][K] - sa * m[K][K];
-        let [a, b, c, _] = math::atan2_deg_lanes([sa, sb, sc, 0.0], [ca, m[I][I], cc, 1.0]);
-        ([a, b, c], false)
+        Prepared::regular([sa, sb, sc], [ca, m[I][I], cc])
     } else {
         let b = if m[I][I] >= 0.0 { 0.0 } else { 180.0 };
         if zero_first {
             // R = R_J(b)·R_I(c): row J is (cos c, -e sin c) at (J, K).
-            ([0.0, b, atan2_deg(-e * m[J][K], m[J][J])], true)
+            Prepared::singular(-e * m[J][K], m[J][J], b)
         } else {
             // R = R_I(a)·R_J(b): column J is (cos a, e sin a) at (J, K).
-            ([atan2_deg(e * m[K][J], m[J][J]), b, 0.0], true)
+            Prepared::singular(e * m[K][J], m[J][J], b)
         }
     }
 }
@@ -648,7 +713,21 @@ pub fn convert(
     angles_deg: [f64; 3],
     to: Convention,
 ) -> Decomposition {
-    decompose(to, &matrix_from_angles(from_kind, from_code, angles_deg))
+    convert_inline(from_kind, from_code, angles_deg, to)
+}
+
+/// [`convert`], inlined into the C boundary's row functions.
+#[inline(always)]
+pub(crate) fn convert_inline(
+    from_kind: Kind,
+    from_code: AxisCode,
+    angles_deg: [f64; 3],
+    to: Convention,
+) -> Decomposition {
+    decompose_inline(
+        to,
+        &matrix_from_angles_inline(from_kind, from_code, angles_deg),
+    )
 }
 
 /// An additional rotation applied to an existing one: extrinsic (about the machine axes)
@@ -775,5 +854,69 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn check_decides_as_its_definition() {
+        // The vector check against the definition written plainly: max |MᵀM − I| within
+        // the tolerance and det > 0, on rotations disturbed around the tolerance's edge,
+        // reflections, huge and non-finite elements.
+        let mut state = 0x0DDB_1A5E_5BAD_5EEDu64;
+        let mut unit = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let specials = [
+            f64::NAN,
+            f64::INFINITY,
+            -f64::INFINITY,
+            1e155,
+            -1e200,
+            2.5,
+            1e-300,
+        ];
+        let (mut accepted, mut refused) = (0, 0);
+        for n in 0..200_000 {
+            let a = [unit() * 360.0, unit() * 360.0, unit() * 360.0];
+            let mut m = matrix_from_angles(Kind::Intrinsic, Sequence::ZYX.into(), a);
+            // Disturbances of 0 .. 1.2e-3 / 3, one element or all.
+            let size = unit() * 1.2e-3;
+            if n % 2 == 0 {
+                m[n % 3][(n / 3) % 3] += size;
+            } else {
+                for v in m.iter_mut().flatten() {
+                    *v += (unit() - 0.5) * size;
+                }
+            }
+            if n % 7 == 0 {
+                m[1] = m[1].map(|v| -v);
+            }
+            if n % 11 == 0 {
+                m[(n / 11) % 3][(n / 33) % 3] = specials[(n / 99) % specials.len()];
+            }
+            let definition =
+                orthonormality_error(&m) <= ROTATION_TOLERANCE && determinant(&m) > 0.0;
+            let got = check_rotation(&m);
+            assert_eq!(got.is_ok(), definition, "{m:?}");
+            if got.is_ok() {
+                accepted += 1;
+            } else {
+                refused += 1;
+                let finite = m.iter().flatten().all(|x| x.is_finite());
+                let reason = if finite {
+                    Error::NotARotation
+                } else {
+                    Error::NotFinite
+                };
+                assert_eq!(got, Err(reason));
+            }
+        }
+        // Both sides of the edge were exercised.
+        assert!(
+            accepted > 20_000 && refused > 20_000,
+            "{accepted} {refused}"
+        );
     }
 }

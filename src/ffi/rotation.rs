@@ -51,7 +51,7 @@ pub(super) unsafe fn matrix_row(
     matrix: *mut f64,
 ) -> Outcome {
     let angles = read_finite::<3>(angles_deg)?;
-    let m = crate::matrix_from_angles(kind, code, angles);
+    let m = crate::rotation::matrix_from_angles_inline(kind, code, angles);
     write_matrix(matrix, &m)?;
     Ok(cncrot_status::Ok)
 }
@@ -97,11 +97,16 @@ pub(super) unsafe fn angles_row(
     matrix: *const f64,
     angles_deg: *mut f64,
 ) -> Outcome {
-    // `check_rotation` in `angles_from_matrix` refuses a non-finite element as
-    // `NOT_FINITE` itself; a second pass over the nine here cost a tenth of the call.
-    let d = with_matrix(matrix, |m| crate::angles_from_matrix(conv, m))?;
-    write(angles_deg, d.angles)?;
-    Ok(status_of(d.singular))
+    // `check_rotation` refuses a non-finite element as `NOT_FINITE` itself; a second pass
+    // over the nine here cost a tenth of the call. It and `decompose` are called apart (what
+    // `angles_from_matrix` does): the `Result` of the whole decomposition came back through
+    // memory in pieces, read at offsets its stores could not forward to.
+    with_matrix(matrix, |m| {
+        crate::check_rotation(m)?;
+        let d = crate::rotation::decompose_inline(conv, m);
+        write(angles_deg, d.angles)?;
+        Ok(status_of(d.singular))
+    })
 }
 
 /// Converts angles from one convention to another: `sequence_in` may skip rotations (00
@@ -148,7 +153,7 @@ pub(super) unsafe fn convert_row(
     angles_out_deg: *mut f64,
 ) -> Outcome {
     let angles = read_finite::<3>(angles_in_deg)?;
-    let d = crate::convert(kind_in, code_in, angles, to);
+    let d = crate::rotation::convert_inline(kind_in, code_in, angles, to);
     write(angles_out_deg, d.angles)?;
     Ok(status_of(d.singular))
 }
