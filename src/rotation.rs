@@ -150,8 +150,8 @@ fn parity_sin_cos<const I: usize, const J: usize>(angles: [f64; 3]) -> [(f64, f6
     let odd = (I + 1) % 3 != J;
     // The three in the lanes of one vector computation.
     let (s, c) = math::sin_cos_deg4([angles[0], angles[1], angles[2], 0.0]);
-    let s = if odd { s.map(|v| -v) } else { s };
-    [(s[0], c[0]), (s[1], c[1]), (s[2], c[2])]
+    let e = if odd { -1.0 } else { 1.0 };
+    [(e * s[0], c[0]), (e * s[1], c[1]), (e * s[2], c[2])]
 }
 
 /// Intrinsic `R_I(a)·R_J(b)·R_K(c)`, I, J, K all different, in closed form: 12

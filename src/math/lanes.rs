@@ -33,8 +33,13 @@ pub(crate) trait Lanes: Copy {
     fn unordered(self, o: Self) -> Self;
     /// Whether every lane of a mask is set.
     fn all(self) -> bool;
-    /// `f` applied to each lane's bits, giving `K` values per lane (the table lookups).
-    fn lookup<const K: usize>(self, f: impl Fn(u64) -> [f64; K]) -> [Self; K];
+    /// The table rows `index` chooses from each lane's bits, as `K` lane vectors (row
+    /// element k of every lane in vector k). An index beyond the table gives NaN.
+    fn gather<const K: usize, const N: usize>(
+        self,
+        table: &[[f64; K]; N],
+        index: impl Fn(u64) -> usize,
+    ) -> [Self; K];
 
     /// `mask ? a : b` per lane.
     #[inline(always)]
@@ -51,6 +56,12 @@ pub(crate) trait Lanes: Copy {
     fn negate_where(self, mask: Self) -> Self {
         self.xor(mask.and(Self::splat(-0.0)))
     }
+}
+
+/// Row `i` of a table, or a row of NaN beyond it (never a panic).
+#[inline(always)]
+fn row<const K: usize, const N: usize>(table: &[[f64; K]; N], i: usize) -> &[f64; K] {
+    table.get(i).unwrap_or(&[f64::NAN; K])
 }
 
 #[inline(always)]
@@ -137,8 +148,12 @@ impl Lanes for f64 {
         mask(self.is_nan() | o.is_nan())
     }
     #[inline(always)]
-    fn lookup<const K: usize>(self, f: impl Fn(u64) -> [f64; K]) -> [f64; K] {
-        f(self.to_bits())
+    fn gather<const K: usize, const N: usize>(
+        self,
+        table: &[[f64; K]; N],
+        index: impl Fn(u64) -> usize,
+    ) -> [f64; K] {
+        *row(table, index(self.to_bits()))
     }
 }
 
@@ -203,8 +218,16 @@ mod sse2 {
             unsafe { (_mm_movemask_pd(self.0) & _mm_movemask_pd(self.1)) == 3 }
         }
         #[inline(always)]
-        fn lookup<const K: usize>(self, f: impl Fn(u64) -> [f64; K]) -> [F4; K] {
-            let [a, b, c, d] = self.to_array().map(|x| f(x.to_bits()));
+        fn gather<const K: usize, const N: usize>(
+            self,
+            table: &[[f64; K]; N],
+            index: impl Fn(u64) -> usize,
+        ) -> [F4; K] {
+            // Four row references, then each vector loaded from the rows: gathering the
+            // values into arrays first took K·64 bytes of stack.
+            let [a, b, c, d] = self.to_array().map(f64::to_bits);
+            let (a, b) = (super::row(table, index(a)), super::row(table, index(b)));
+            let (c, d) = (super::row(table, index(c)), super::row(table, index(d)));
             core::array::from_fn(|k| F4::new([a[k], b[k], c[k], d[k]]))
         }
     }
@@ -251,8 +274,14 @@ pub(crate) mod portable {
             self.0.iter().all(|&m| m.all())
         }
         #[inline(always)]
-        fn lookup<const K: usize>(self, f: impl Fn(u64) -> [f64; K]) -> [P4; K] {
-            let [a, b, c, d] = self.0.map(|x| f(x.to_bits()));
+        fn gather<const K: usize, const N: usize>(
+            self,
+            table: &[[f64; K]; N],
+            index: impl Fn(u64) -> usize,
+        ) -> [P4; K] {
+            let [a, b, c, d] = self.0.map(f64::to_bits);
+            let (a, b) = (super::row(table, index(a)), super::row(table, index(b)));
+            let (c, d) = (super::row(table, index(c)), super::row(table, index(d)));
             core::array::from_fn(|k| P4([a[k], b[k], c[k], d[k]]))
         }
     }

@@ -72,8 +72,8 @@ const RAD_PER_DEG: f64 = core::f64::consts::PI / 180.0;
 
 /// Sine and cosine of an angle in degrees, exact where the answer is exact.
 ///
-/// The argument is reduced in degrees, where the reduction is exact: `fmod` for angles
-/// beyond ±180°, then the nearest whole degree j, whose sine and cosine come from a table of
+/// The argument is reduced in degrees, where the reduction is exact: whole turns for angles
+/// beyond ±180° (`turn_reduced`), then the nearest whole degree j, whose sine and cosine come from a table of
 /// double-doubles, and the rest `d = r − j` (|d| ≤ ½°, exact). Then
 /// `sin(j + d) = sin j + (sin j·(cos d − 1) + cos j·sin d)` and likewise for the cosine,
 /// with `sin d` and `cos d − 1` from their Taylor series (to d⁵ and d⁶; the remainders of
@@ -91,20 +91,52 @@ pub fn sin_cos_deg(deg: f64) -> (f64, f64) {
 /// operations, hence the same bits.
 #[inline(always)]
 pub fn sin_cos_deg4(deg: [f64; 4]) -> ([f64; 4], [f64; 4]) {
-    let (s, c) = sin_cos_deg_lanes(F4::new(deg.map(turn_reduced)));
+    // Written out: `array::map` here was compiled as a call, its result read back through
+    // memory with a store-forwarding stall.
+    let [a, b, c, d] = deg;
+    let reduced = [
+        turn_reduced(a),
+        turn_reduced(b),
+        turn_reduced(c),
+        turn_reduced(d),
+    ];
+    let (s, c) = sin_cos_deg_lanes(F4::new(reduced));
     (s.to_array(), c.to_array())
 }
 
-/// `deg` itself within ±180°, else `fmod(deg, 360)`: fmod is slow and exact, and most
-/// angles need no full-turn reduction at all.
+/// An angle within (-360°, 360°) that differs from `deg` by whole turns, exactly.
+///
+/// Within ±180° `deg` itself. Below 2^53, `deg − 360·q` with q the nearest whole number to
+/// `deg/360`: `360·q` is exact (45·q < 2^53) and so is the difference (the two lie within a
+/// factor 2 of each other, Sterbenz), five operations where `fmod` loops over the bits
+/// between 360 and `deg` (a 1e6° angle cost 2.8 times a composition's instructions).
+/// Above, [`rem360`]'s exact integer arithmetic. The kernels below depend only on the
+/// angle modulo 360, so every representative gives the same bits.
 #[inline(always)]
 fn turn_reduced(deg: f64) -> f64 {
-    if abs(deg) > 180.0 {
-        rem360_cold(deg)
-    } else {
+    const ROUNDER: f64 = 6_755_399_441_055_744.0;
+    const TWO_53: f64 = 9_007_199_254_740_992.0;
+    let size = abs(deg);
+    if size <= 180.0 {
         deg
+    } else if size < TWO_53 {
+        // q may be one off where deg/360 is near a half; |deg − 360q| < 181 either way.
+        let q = (deg * (1.0 / 360.0) + ROUNDER) - ROUNDER;
+        deg - 360.0 * q
+    } else {
+        rem360_cold(deg)
     }
 }
+
+/// sin(q·90 + x), cos(q·90 + x) for q mod 4 = 0, 1, 2, 3 are (s, c), (c, −s), (−s, −c),
+/// (−c, s): per quadrant `[a, b, c, d]` with sin = s·a + c·b, cos = s·c + c·d, exact
+/// (products with 0 and ±1, sums with a zero).
+const QUADRANT: [[f64; 4]; 4] = [
+    [1.0, 0.0, 0.0, 1.0],
+    [0.0, 1.0, -1.0, 0.0],
+    [-1.0, 0.0, 0.0, -1.0],
+    [0.0, -1.0, 1.0, 0.0],
+];
 
 /// [`sin_cos_deg`] of angles within (-360°, 360°).
 #[inline(always)]
@@ -116,20 +148,13 @@ fn sin_cos_deg_lanes<V: Lanes>(r: V) -> (V, V) {
     let j = sum.sub(V::splat(ROUNDER));
     // Exact: |r − j| ≤ ½ and both have the same sign (or j = 0).
     let d = r.sub(j).mul(V::splat(RAD_PER_DEG));
-    // sin(q·90 + x), cos(q·90 + x) for q mod 4 = 0, 1, 2, 3 are (s, c), (c, −s), (−s, −c),
-    // (−c, s): whether to swap, and the sign bits, per quadrant.
-    const S: u64 = 1 << 63;
-    const SWAP: u64 = u64::MAX;
-    const QUADRANT: [[u64; 3]; 4] = [[0, 0, 0], [SWAP, 0, S], [0, S, S], [SWAP, S, 0]];
-    let [sin_hi, sin_lo, cos_hi, cos_lo, swap, s_sign, c_sign] = sum.lookup(|bits| {
-        // j + 360, in 0..=720 (a NaN gives arbitrary bits here, and NaN results below):
-        // 90·quadrant + within, within in 0..90, the quadrant taken modulo 4 (360° is four
-        // of them). Unsigned, so that the division by 90 is a multiplication and a shift.
-        let turned = (bits.wrapping_sub(ROUNDER.to_bits()) as u32).wrapping_add(360);
-        let [sh, sl, ch, cl] = tables::SIN_COS[(turned % 90) as usize];
-        let [swap, s_sign, c_sign] = QUADRANT[(turned / 90 % 4) as usize].map(f64::from_bits);
-        [sh, sl, ch, cl, swap, s_sign, c_sign]
-    });
+    // j + 360, in 0..=720 (a NaN gives arbitrary bits here, and NaN results below):
+    // 90·quadrant + within, within in 0..90, the quadrant taken modulo 4 (360° is four of
+    // them). Unsigned, so that the division by 90 is a multiplication and a shift.
+    let turned = |bits: u64| (bits.wrapping_sub(ROUNDER.to_bits()) as u32).wrapping_add(360);
+    let [sin_hi, sin_lo, cos_hi, cos_lo] =
+        sum.gather(&tables::SIN_COS, |bits| (turned(bits) % 90) as usize);
+    let [ss, sc, cs, cc] = sum.gather(&QUADRANT, |bits| (turned(bits) / 90 % 4) as usize);
     let z = d.mul(d);
     let sin_d = d.add(
         d.mul(z)
@@ -139,10 +164,12 @@ fn sin_cos_deg_lanes<V: Lanes>(r: V) -> (V, V) {
         z.mul(V::splat(-0.5).add(z.mul(V::splat(1.0 / 24.0).add(z.mul(V::splat(-1.0 / 720.0))))));
     let s = sin_hi.add(sin_lo.add(sin_hi.mul(cos_d_minus_1).add(cos_hi.mul(sin_d))));
     let c = cos_hi.add(cos_lo.add(cos_hi.mul(cos_d_minus_1).sub(sin_hi.mul(sin_d))));
-    let (s, c) = (V::select(swap, c, s), V::select(swap, s, c));
     // `+ 0.0` turns -0 into +0 so that no caller ever sees a signed zero.
     let zero = V::splat(0.0);
-    (s.xor(s_sign).add(zero), c.xor(c_sign).add(zero))
+    (
+        s.mul(ss).add(c.mul(sc)).add(zero),
+        s.mul(cs).add(c.mul(cc)).add(zero),
+    )
 }
 
 /// `atan(num/den)` in degrees for `0 ≤ num ≤ den` (the first octant; `0/0` gives 0, as
@@ -188,10 +215,7 @@ fn atan_octant_deg<V: Lanes>(num: V, den: V) -> V {
         .add(z.mul(V::splat(P7)))
         .add(z2.mul(V::splat(P9)));
     let tail = u.mul(low.add(z2.mul(high)));
-    let [hi, lo] = sum.lookup(|bits| {
-        let (hi, lo) = tables::ATAN_DEG[(bits & 63) as usize];
-        [hi, lo]
-    });
+    let [hi, lo] = sum.gather(&tables::ATAN_DEG, |bits| (bits & 63) as usize);
     hi.add(V::splat(DEG_HI).mul(u).add(lo.add(tail)))
 }
 
@@ -548,7 +572,7 @@ mod tests {
     fn atan_table_is_right() {
         let deg = dd::deg();
         assert_eq!((DEG_HI, DEG_LO), (deg.0, deg.1));
-        for (k, &(hi, lo)) in tables::ATAN_DEG.iter().take(33).enumerate() {
+        for (k, &[hi, lo]) in tables::ATAN_DEG.iter().take(33).enumerate() {
             let r = dd::mul(dd::atan(dd::Dd(k as f64 / 32.0, 0.0)), deg);
             // Both parts, to the double-double's own precision.
             assert_eq!(hi, r.0, "k = {k}");
@@ -780,6 +804,30 @@ mod tests {
                 assert!(same(vs[i], s) && same(vc[i], c), "sin_cos({})", y[i]);
                 assert!(same(ps[i], s) && same(pc[i], c), "sin_cos({})", y[i]);
             }
+        }
+    }
+
+    #[test]
+    fn turn_reduction_is_exact() {
+        // deg − reduced is a whole number of turns, exactly, and the reduced angle lies
+        // within (-360, 360): checked in integers against the exact fmod.
+        let mut state = 0x1357_9BDF_2468_ACE0u64;
+        for n in 0..1_000_000u64 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            let u = (state >> 11) as f64 / (1u64 << 53) as f64;
+            let deg = match n % 4 {
+                0 => (u - 0.5) * 1e6,
+                1 => (u - 0.5) * 1.8e16,
+                2 => 180.0 * (n as f64) + (u - 0.5) * 1e-9,
+                _ => f64::from_bits(state & !(0x7ffu64 << 52) | ((state >> 11) % 1087) << 52),
+            };
+            let r = turn_reduced(deg);
+            assert!(r.abs() < 360.0, "{deg:e} -> {r:e}");
+            // Same angle modulo 360: the exact remainders agree modulo 360.
+            let diff = (rem360(deg) - rem360(r)).abs();
+            assert!(diff == 0.0 || diff == 360.0, "{deg:e} -> {r:e}");
         }
     }
 }
