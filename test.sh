@@ -40,6 +40,8 @@ cargo clippy --profile rt --lib --no-default-features -- -D warnings
 cargo clippy --manifest-path fuzz/Cargo.toml --all-targets -- -D warnings
 echo "== cargo test"
 cargo test --workspace --features cncrot/nalgebra
+# The trigonometry's bounds and lanes again with the real-time build's libm (sqrt, fmod).
+cargo test --lib --features pure-rust-math math::
 echo "== cargo doc"
 RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --quiet --features nalgebra
 echo "== no-panic proof"

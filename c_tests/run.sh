@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds the C tests against the shared and the static library, with AddressSanitizer +
 # UndefinedBehaviorSanitizer, and under valgrind; then against the real-time build (`core`
-# only, panic = abort) whose symbols c_tests/symbols.sh checks; checks that the header
-# compiles as C99 and as C++. Usage: c_tests/run.sh  (from anywhere; needs a C compiler and
+# only, panic = abort) whose symbols c_tests/symbols.sh checks; checks that both builds give
+# the same bits (c_tests/same_bits.c) and that the header compiles as C99 and as C++. Usage: c_tests/run.sh  (from anywhere; needs a C compiler and
 # valgrind).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -34,6 +34,18 @@ bash c_tests/stack.sh || failed=1
 # The check must be able to fail: the std build imports the allocator and the unwinder.
 if bash c_tests/symbols.sh "$lib" core >/dev/null; then
   echo "symbols: the core check passed the std build, which needs malloc: the check is broken"
+  failed=1
+fi
+
+echo "== the same bits from the std and the real-time build"
+cc -std=c99 -O1 "${warn[@]}" c_tests/same_bits.c "$lib/libcncrot.a" -lm -lpthread -ldl -o "$build/same_bits_std"
+cc -std=c99 -O1 "${warn[@]}" c_tests/same_bits.c "$rt/libcncrot.a" -o "$build/same_bits_rt"
+same_std=$("$build/same_bits_std") || failed=1
+same_rt=$("$build/same_bits_rt") || failed=1
+echo "$same_std (std)"
+echo "$same_rt (real-time)"
+if [ -z "$same_std" ] || [ "$same_std" != "$same_rt" ]; then
+  echo "same_bits: the builds differ"
   failed=1
 fi
 
