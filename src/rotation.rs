@@ -797,6 +797,7 @@ pub fn from_nalgebra(m: &nalgebra::Matrix3<f64>) -> Matrix {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::math::Xorshift;
 
     /// The product of the elementary rotations, the definition the closed forms replace.
     fn by_definition(conv: Convention, a: [f64; 3]) -> Matrix {
@@ -814,13 +815,8 @@ mod tests {
 
     #[test]
     fn closed_forms_are_the_products_of_their_rotations() {
-        let mut state = 0x1234_5678_9ABC_DEF1u64;
-        let mut angle = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 720.0 - 360.0
-        };
+        let mut rng = Xorshift(0x1234_5678_9ABC_DEF1);
+        let mut angle = || rng.unit() * 720.0 - 360.0;
         for conv in Convention::all() {
             let code = AxisCode::from(conv.sequence);
             for _ in 0..2000 {
@@ -861,13 +857,8 @@ mod tests {
         // The vector check against the definition written plainly: max |MᵀM − I| within
         // the tolerance and det > 0, on rotations disturbed around the tolerance's edge,
         // reflections, huge and non-finite elements.
-        let mut state = 0x0DDB_1A5E_5BAD_5EEDu64;
-        let mut unit = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = Xorshift(0x0DDB_1A5E_5BAD_5EED);
+        let mut unit = || rng.unit();
         let specials = [
             f64::NAN,
             f64::INFINITY,

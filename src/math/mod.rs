@@ -319,6 +319,26 @@ pub fn turns_toward(angle: f64, reference: f64) -> f64 {
     360.0 * round((reference - angle) / 360.0)
 }
 
+/// The xorshift generator the unit tests draw their inputs from.
+#[cfg(test)]
+pub(crate) struct Xorshift(pub(crate) u64);
+
+#[cfg(test)]
+impl Xorshift {
+    /// The next state.
+    pub(crate) fn bits(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+
+    /// The next state as a number in [0, 1).
+    pub(crate) fn unit(&mut self) -> f64 {
+        (self.bits() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -339,11 +359,9 @@ mod tests {
             1e6,
         ];
         special.extend((0..1024).map(|k| 2f64.powi(k)));
-        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut rng = Xorshift(0x2545_F491_4F6C_DD1D);
         for _ in 0..200_000 {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
+            let state = rng.bits();
             // Any finite double: random sign, exponent and mantissa bits.
             let x = f64::from_bits(state & !(0x7ffu64 << 52) | ((state >> 11) % 2047) << 52);
             special.push(x);
@@ -547,16 +565,9 @@ mod tests {
                 v.push((y * 3.0e-200, 3.0e-200));
             }
         }
-        let mut state = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut rng = Xorshift(0x9E37_79B9_7F4A_7C15);
         for i in 0..random {
-            let a = (next() >> 11) as f64 / (1u64 << 53) as f64;
-            let b = (next() >> 11) as f64 / (1u64 << 53) as f64;
+            let (a, b) = (rng.unit(), rng.unit());
             let scale = [1.0, 1e-150, 1e150, 3.7e-3][i % 4];
             let t = if i % 5 == 0 { a * a * a * 1e-6 } else { a };
             let (num, den) = (t * (b + 0.5) * scale, (b + 0.5) * scale);
@@ -705,12 +716,9 @@ mod tests {
             let ulp = f64::from_bits(at.abs().max(1.0).to_bits() + 1) - at.abs().max(1.0);
             degrees.extend((-50..=50).map(|k| at + k as f64 * ulp));
         }
-        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut rng = Xorshift(0x2545_F491_4F6C_DD1D);
         for i in 0..2_000_000u64 {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            let u = (state >> 11) as f64 / (1u64 << 53) as f64;
+            let u = rng.unit();
             degrees.push(match i % 4 {
                 0 => 360.0 * u - 180.0,
                 1 => 1e-6 * u,
@@ -774,11 +782,9 @@ mod tests {
             45.0,
             0.5,
         ];
-        let mut state = 0x5DEE_CE66_D1CE_4E5Bu64;
+        let mut rng = Xorshift(0x5DEE_CE66_D1CE_4E5B);
         let mut next = |i: usize| {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
+            let state = rng.bits();
             let u = (state >> 11) as f64 / (1u64 << 53) as f64;
             match i % 5 {
                 0 => specials[(state % 16) as usize],
@@ -811,11 +817,9 @@ mod tests {
     fn turn_reduction_is_exact() {
         // deg − reduced is a whole number of turns, exactly, and the reduced angle lies
         // within (-360, 360): checked in integers against the exact fmod.
-        let mut state = 0x1357_9BDF_2468_ACE0u64;
+        let mut rng = Xorshift(0x1357_9BDF_2468_ACE0);
         for n in 0..1_000_000u64 {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
+            let state = rng.bits();
             let u = (state >> 11) as f64 / (1u64 << 53) as f64;
             let deg = match n % 4 {
                 0 => (u - 0.5) * 1e6,
