@@ -836,6 +836,16 @@ mod tests {
                     );
                 }
             }
+            // A non-finite angle in any slot shows in the matrix (the C boundary refuses
+            // such angles; the Rust API must not turn them into a rotation).
+            for slot in 0..3 {
+                for bad in [f64::NAN, f64::INFINITY, -f64::INFINITY] {
+                    let mut a = [10.0, 20.0, 30.0];
+                    a[slot] = bad;
+                    let m = matrix_from_angles(conv.kind, code, a);
+                    assert!(m.iter().flatten().any(|x| !x.is_finite()), "{conv:?} {a:?}");
+                }
+            }
             // Right angles: exact, and never -0.
             for i in 0..125 {
                 let a = [i % 5, i / 5 % 5, i / 25].map(|k| 90.0 * k as f64 - 180.0);

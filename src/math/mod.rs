@@ -73,8 +73,8 @@ const RAD_PER_DEG: f64 = core::f64::consts::PI / 180.0;
 /// Sine and cosine of an angle in degrees, exact where the answer is exact.
 ///
 /// The argument is reduced in degrees, where the reduction is exact: whole turns for angles
-/// beyond ±180° (`turn_reduced`), then the nearest whole degree j, whose sine and cosine come from a table of
-/// double-doubles, and the rest `d = r − j` (|d| ≤ ½°, exact). Then
+/// beyond ±180° (`turn_reduced`), then the nearest whole degree j, whose sine and cosine
+/// come from a table of double-doubles, and the rest `d = r − j` (|d| ≤ ½°, exact). Then
 /// `sin(j + d) = sin j + (sin j·(cos d − 1) + cos j·sin d)` and likewise for the cosine,
 /// with `sin d` and `cos d − 1` from their Taylor series (to d⁵ and d⁶; the remainders of
 /// these alternating series are below d⁷/5040 ≤ 7.6e-19 and d⁸/40320 ≤ 8.4e-22). So
@@ -235,6 +235,11 @@ pub fn rem360(x: f64) -> f64 {
     // 2^k mod 360 for k = 3 + j, j = 0..12 (k = 3..14): 8, 16, 32, 64, 128, 256, 152, 304,
     // 248, 136, 272, 184; then it repeats.
     const POW2_MOD_360: [u64; 12] = [8, 16, 32, 64, 128, 256, 152, 304, 248, 136, 272, 184];
+    if !(abs(x) <= f64::MAX) {
+        // Infinite or NaN: NaN, as fmod gives (the integer path below would make a finite
+        // number of an infinity's or a NaN's bits).
+        return x - x;
+    }
     let bits = x.to_bits();
     let exponent = ((bits >> 52) & 0x7ff) as i64 - 1075; // x = m·2^exponent
     let m = (bits & ((1u64 << 52) - 1)) | (1u64 << 52);
@@ -407,6 +412,20 @@ mod tests {
             );
             deg += 7.3;
         }
+    }
+
+    #[test]
+    fn non_finite_in_non_finite_out() {
+        for x in [f64::NAN, f64::INFINITY, -f64::INFINITY] {
+            let (s, c) = sin_cos_deg(x);
+            assert!(s.is_nan() && c.is_nan(), "{x}");
+            assert!(rem360(x).is_nan() && turn_reduced(x).is_nan(), "{x}");
+            assert!(atan2_deg(x, 1.0).is_nan() || x.is_infinite());
+            assert!(atan2_deg(f64::NAN, x).is_nan() && atan2_deg(x, f64::NAN).is_nan());
+        }
+        let (s, c) = sin_cos_deg4([f64::NAN, f64::INFINITY, 30.0, -f64::INFINITY]);
+        assert!(s[0].is_nan() && s[1].is_nan() && s[3].is_nan() && c[1].is_nan());
+        assert_eq!(s[2], 0.5);
     }
 
     #[test]
