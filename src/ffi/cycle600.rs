@@ -1,7 +1,7 @@
 //! Exports of CYCLE600 and the HEAD_DEF table. The structs are plain data that C owns; each
 //! is validated when read (a state restored from storage may be corrupt).
 
-use super::{cncrot_status, guard, non_null};
+use super::{byte, cncrot_status, guard, non_null};
 use crate::dialects::cycle600::{self, Call, HeadLookup, Results, State};
 use crate::dialects::head_def::{valid_name, HeadTable, CAPACITY, NAME_MAX};
 use crate::{crc32, Convention, Error, Frame};
@@ -112,7 +112,7 @@ fn field_name(
     let len = field.iter().position(|&c| c == 0).ok_or(fail)?;
     let mut name = [0u8; NAME_MAX];
     for (n, &c) in name.iter_mut().zip(&field[..len]) {
-        *n = c as u8;
+        *n = byte(c);
     }
     Ok((name, len))
 }
@@ -152,7 +152,7 @@ impl CHeads<'_> {
             // A match is the name's bytes followed by the NUL; an entry without a NUL in
             // its field never matches.
             let matches = h.name.get(name.len()) == Some(&0)
-                && h.name.iter().zip(name).all(|(&c, &n)| c as u8 == n);
+                && h.name.iter().zip(name).all(|(&c, &n)| byte(c) == n);
             if matches {
                 bit(h.allowed)?;
                 if h.reserved != 0 {
@@ -442,7 +442,7 @@ pub unsafe extern "C" fn cncrot_cycle600(
         let mut name = [0u8; CNCROT_NAME_SIZE];
         let mut len = None;
         for (k, n) in name.iter_mut().enumerate() {
-            *n = mihead.add(k).read() as u8;
+            *n = byte(mihead.add(k).read());
             if *n == 0 {
                 len = Some(k);
                 break;

@@ -3,7 +3,7 @@
 
 use super::cycle600::{cncrot_head_table, CHeads, CNCROT_NAME_SIZE};
 use super::frame::{read_frame, write_frame};
-use super::{cncrot_status, guard, non_null, read_finite, write};
+use super::{byte, cncrot_status, guard, non_null, read_finite, write};
 use crate::dialects::carr::machine_from_carr;
 use crate::dialects::head_def::{Head, NAME_MAX};
 use crate::kinematics::{Choice, Hirth, Machine, RotaryAxis, Rule, Side, MAX_AXES};
@@ -111,7 +111,7 @@ fn machine_of(m: &cncrot_machine) -> Result<Machine, cncrot_status> {
         .ok_or(cncrot_status::NameTooLong)?;
     let mut name = [0u8; NAME_MAX];
     for (n, &c) in name.iter_mut().zip(m.name.iter().take(len)) {
-        *n = c as u8;
+        *n = byte(c);
     }
     machine.set_name(name.get(..len).unwrap_or(&[]))?;
     Ok(machine)
@@ -320,7 +320,7 @@ pub unsafe extern "C" fn cncrot_machine_from_head(
         let mut field = [0u8; CNCROT_NAME_SIZE];
         let mut len = None;
         for (k, n) in field.iter_mut().enumerate() {
-            *n = name.add(k).read() as u8;
+            *n = byte(name.add(k).read());
             if *n == 0 {
                 len = Some(k);
                 break;

@@ -215,6 +215,14 @@ fn status_of(singular: bool) -> cncrot_status {
     }
 }
 
+/// A C `char` as a byte: `char` is signed on x86-64 and unsigned on AArch64, where the cast
+/// is the identity (hence the allowance).
+#[allow(clippy::unnecessary_cast)]
+#[inline(always)]
+fn byte(c: core::ffi::c_char) -> u8 {
+    c as u8
+}
+
 /// Fails with `NullPointer` when any pointer is NULL.
 fn non_null(ptrs: &[bool]) -> Result<(), cncrot_status> {
     if ptrs.iter().any(|&is_null| is_null) {

@@ -235,10 +235,10 @@ pub fn rem360(x: f64) -> f64 {
     // 2^k mod 360 for k = 3 + j, j = 0..12 (k = 3..14): 8, 16, 32, 64, 128, 256, 152, 304,
     // 248, 136, 272, 184; then it repeats.
     const POW2_MOD_360: [u64; 12] = [8, 16, 32, 64, 128, 256, 152, 304, 248, 136, 272, 184];
-    if !(abs(x) <= f64::MAX) {
+    if !x.is_finite() {
         // Infinite or NaN: NaN, as fmod gives (the integer path below would make a finite
         // number of an infinity's or a NaN's bits).
-        return x - x;
+        return f64::NAN;
     }
     let bits = x.to_bits();
     let exponent = ((bits >> 52) & 0x7ff) as i64 - 1075; // x = m·2^exponent
