@@ -801,7 +801,7 @@ mod tests {
 
     /// The product of the elementary rotations, the definition the closed forms replace.
     fn by_definition(conv: Convention, a: [f64; 3]) -> Matrix {
-        let [x, y, z] = conv.sequence.axes().map(|axis| axis);
+        let [x, y, z] = conv.sequence.axes();
         let [r1, r2, r3] = [
             elementary(x, a[0]),
             elementary(y, a[1]),
@@ -852,10 +852,9 @@ mod tests {
                 let m = matrix_from_angles(conv.kind, code, a);
                 let d = by_definition(conv, a);
                 for (x, y) in m.iter().flatten().zip(d.iter().flatten()) {
-                    assert!(
-                        *x == *y + 0.0 && x.is_sign_positive() || *x < 0.0,
-                        "{conv:?} {a:?}"
-                    );
+                    // Equal to the product of the rotations, and a zero is +0.
+                    assert!(*x == *y, "{conv:?} {a:?}");
+                    assert!(*x != 0.0 || x.is_sign_positive(), "{conv:?} {a:?}");
                     assert!(*x == 0.0 || x.abs() == 1.0);
                 }
             }
