@@ -631,6 +631,15 @@ fn main() {
             &mut |q| unsafe { cncrot_program_frame(q, f.as_mut_ptr()) },
         );
         report("cncrot_program_frame", "active", &h, &mut rows);
+        let mut q = cncrot_program::default();
+        measure(
+            &mut h,
+            n("cncrot_program_init", "Euler"),
+            overhead,
+            &[CNCROT_PROGRAM_SINUMERIK_EULER],
+            &mut |&o| unsafe { cncrot_program_init(&mut q, o) },
+        );
+        report("cncrot_program_init", "Euler", &h, &mut rows);
         let mut out = [0u8; CNCROT_PROGRAM_LINE_MAX + 1];
         for (class, dialect, form, decimals) in [
             ("G68.2 shortest", CNCROT_DIALECT_FANUC, c"G68.2", -1),

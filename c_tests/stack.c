@@ -174,6 +174,7 @@ static void program_column(void) {
           cncrot_program_column(&prog, CNCROT_DIALECT_HEIDENHAIN, "PLANE RELATIV SPA+1.5e", 22, &col);
 }
 static void program_frame(void) { sink += cncrot_program_frame(&prog, f); }
+static void program_init(void) { sink += cncrot_program_init(&prog, CNCROT_PROGRAM_SINUMERIK_EULER); }
 static void program_write(void) {
   static char out[CNCROT_PROGRAM_LINE_MAX + 1];
   /* Shortest digits of numbers near 1e-90 and 1e99 take the longest exact arithmetic. */
@@ -254,7 +255,7 @@ static const struct entry ENTRIES[] = {
     E(cycle600, 0),          E(form_frame, 0),         E(form_values, 0),
     E(form_word_count, 0),   E(probe_flange, 0),       E(probe_plane, 0),
     E(probe_edge, 0),        E(program_line, 1),       E(program_column, 1),
-    E(program_frame, 0),     E(program_write, 1),
+    E(program_frame, 0),     E(program_write, 1),      E(program_init, 0),
     E(machine_from_carr, 1), E(machine_carr_error_line, 1), E(machine_from_head, 1),
     E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
     E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),

@@ -121,13 +121,14 @@ static void dialect_rules(void) {
   CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_SPATIAL, 0, sing, 3, f), 0);
   CHECK_STATUS(cncrot_form_values(CNCROT_FORM_PLANE_SPATIAL, 0, f, w, 3), CNCROT_STATUS_SINGULAR);
   CHECK(w[1] == 90 && w[2] == 0, "%g %g %g", w[0], w[1], w[2]);
-  /* PLANE POINTS: X' from P1 to P2, P3 on the +Y' side; origin at P1. */
+  /* PLANE POINTS: X' from P1 to P2, P3 on the +Y' side; the datum stays where it is (the
+   * Heidenhain manuals: "the position of the active datum is not changed"). */
   double pts[9] = {1, 1, 1, 2, 2, 1, 0, 2, 1}, s2 = sqrt(0.5);
   double ep[9] = {s2, -s2, 0, s2, s2, 0, 0, 0, 1};
   CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_POINTS, 0, pts, 9, f), 0);
   rot_of(f, r);
   CHECK_NEAR(r, ep, 9, 1e-15);
-  CHECK(f[3] == 1 && f[7] == 1 && f[11] == 1, "points origin");
+  CHECK(f[3] == 0 && f[7] == 0 && f[11] == 0, "points do not move the datum");
   /* G68.3: Z' the tool direction, X' = P x Z' (P = +Z), then R about Z'. Tool tilted about
    * Y: X' along +Y. */
   double g683[7] = {1, 2, 3, 0, 1, 0, 1}, s1 = sqrt(0.5);

@@ -143,7 +143,7 @@ static const struct {
     {CNCROT_DIALECT_SINUMERIK, "CYCLE800", 1},       {CNCROT_DIALECT_SINUMERIK, "CYCLE800 27", 1},
     {CNCROT_DIALECT_SINUMERIK, "CYCLE800 64", 1},    {CNCROT_DIALECT_SINUMERIK, "ROT", 0},
     {CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", 0}, {CNCROT_DIALECT_HEIDENHAIN, "PLANE EULER", 0},
-    {CNCROT_DIALECT_HEIDENHAIN, "PLANE VECTOR", 0},  {CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", 1},
+    {CNCROT_DIALECT_HEIDENHAIN, "PLANE VECTOR", 0},  {CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", 0},
     {CNCROT_DIALECT_FANUC, "G68.2", 1},              {CNCROT_DIALECT_SYNTEC, "G158", 1},
     {CNCROT_DIALECT_SYNTEC, "G158 P10139", 1},       {CNCROT_DIALECT_SYNTEC, "G68.2", 1},
     {CNCROT_DIALECT_TWINCAT, "ROT", 0},              {CNCROT_DIALECT_HAAS, "G268 Q321", 1},
@@ -213,7 +213,7 @@ static void refusals(void) {
       {CNCROT_DIALECT_FANUC, "G68.2 J1.2.3", CNCROT_STATUS_PARSE, 11},
       {CNCROT_DIALECT_HAAS, "G268 X0 I0 J30 K0", CNCROT_STATUS_MISSING_WORD, 18},
       {CNCROT_DIALECT_TWINCAT, "ROT Z30 G1", CNCROT_STATUS_UNKNOWN_WORD, 9},
-      {CNCROT_DIALECT_SYNTEC, "G158 P10957 A30", CNCROT_STATUS_BAD_ARGUMENT, 1},
+      {CNCROT_DIALECT_SYNTEC, "G158 P10957 A30", CNCROT_STATUS_BAD_ARGUMENT, 7},
   };
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     cncrot_program p, before;
@@ -252,12 +252,157 @@ static void refusals(void) {
   memset(&p, 0, sizeof p);
   CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_FANUC, "G69 garbage", 3), CNCROT_STATUS_OK);
   CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_FANUC, "G68.2 J30\r\n", 11), CNCROT_STATUS_OK);
-  /* Cancels: all zero again but for the dialect. */
+  /* Cancels: all zero again but for the dialect and the seal. */
   CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_FANUC, "G69 (off)", 9), CNCROT_STATUS_OK);
   cncrot_program zero;
   memset(&zero, 0, sizeof zero);
   zero.dialect = CNCROT_DIALECT_FANUC;
-  CHECK(memcmp(&p, &zero, sizeof p) == 0, "G69 left something active");
+  zero.reserved = p.reserved;
+  CHECK(memcmp(&p, &zero, sizeof p) == 0 && p.reserved != 0, "G69 left something active");
+}
+
+/* A state the library did not write is refused: every single-bit flip of a written state and
+ * of the zero state (the hostile caller's case: origin[0] of G68.2 X10 I0 J30 K0 turned from 10
+ * into 14 was read as another frame), and options set by hand. */
+static void sealed_states(void) {
+  cncrot_program states[3];
+  memset(&states[0], 0, sizeof states[0]);
+  memset(&states[1], 0, sizeof states[1]);
+  CHECK_STATUS(cncrot_program_line(&states[1], CNCROT_DIALECT_FANUC, "G68.2 X10 I0 J30 K0", 19), CNCROT_STATUS_OK);
+  CHECK(states[1].origin[0] == 10, "origin %g", states[1].origin[0]);
+  CHECK_STATUS(cncrot_program_init(&states[2], CNCROT_PROGRAM_SINUMERIK_EULER), CNCROT_STATUS_OK);
+  int accepted = 0;
+  for (int k = 0; k < 3; k++) {
+    for (size_t bit = 0; bit < 8 * sizeof(cncrot_program); bit++) {
+      cncrot_program q = states[k], keep;
+      ((unsigned char *)&q)[bit / 8] ^= (unsigned char)(1u << (bit % 8));
+      keep = q;
+      double f[16];
+      fill_sentinel(f, 16);
+      accepted += cncrot_program_frame(&q, f) != CNCROT_STATUS_BAD_STATE;
+      accepted += cncrot_program_line(&q, CNCROT_DIALECT_FANUC, "G69", 3) != CNCROT_STATUS_BAD_STATE;
+      accepted += !is_sentinel(f, 16) || memcmp(&q, &keep, sizeof q) != 0;
+    }
+  }
+  CHECK(accepted == 0, "%d single-bit flips accepted", accepted);
+  cncrot_program p;
+  memset(&p, 0, sizeof p);
+  p.options = CNCROT_PROGRAM_SINUMERIK_EULER;
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_SINUMERIK, "ROT Z30", 7), CNCROT_STATUS_BAD_STATE);
+  cncrot_program before = states[2];
+  CHECK_STATUS(cncrot_program_init(&states[2], 2), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK(memcmp(&before, &states[2], sizeof before) == 0, "init wrote on error");
+  CHECK_STATUS(cncrot_program_init(NULL, 0), CNCROT_STATUS_NULL_POINTER);
+  /* Euler mode, set by init: ROT Z30 X20 is Rz(30)·Rx(20)·Rz(0), not RPY's Rz·Ry·Rx. */
+  p = states[2];
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_SINUMERIK, "ROT Z30 X20", 11), CNCROT_STATUS_OK);
+  double f[16], r[9], a[9], b[9];
+  CHECK_STATUS(cncrot_program_frame(&p, f), CNCROT_STATUS_OK);
+  rot_of(f, r);
+  elem(3, 30, a);
+  elem(1, 20, b);
+  double want[9];
+  mul3(a, b, want);
+  CHECK_NEAR(r, want, 9, 1e-15);
+}
+
+/* Refusals that name what was wrong: the value's column, not the command's; an unclosed comment
+ * is malformed text; a line no buffer can hold is OUT_OF_RANGE, not NO_ROOM. */
+static void columns_and_reasons(void) {
+  cncrot_program p;
+  memset(&p, 0, sizeof p);
+  size_t col = 0;
+  struct {
+    int32_t dialect;
+    const char *line;
+    int32_t status;
+    size_t column;
+  } cases[] = {
+      {CNCROT_DIALECT_HAAS, "G268 Q123.5", CNCROT_STATUS_BAD_ARGUMENT, 7},
+      {CNCROT_DIALECT_HAAS, "G268 X1 Q0", CNCROT_STATUS_BAD_SEQUENCE, 10},
+      {CNCROT_DIALECT_SYNTEC, "G158 X0 P157", CNCROT_STATUS_BAD_ARGUMENT, 10},
+      {CNCROT_DIALECT_SYNTEC, "G158 P10122 X0", CNCROT_STATUS_BAD_SEQUENCE, 7},
+      {CNCROT_DIALECT_FANUC, "G68.2 X1 (comment", CNCROT_STATUS_PARSE, 10},
+      {CNCROT_DIALECT_FANUC, "N5 (no end", CNCROT_STATUS_PARSE, 4},
+      {CNCROT_DIALECT_SINUMERIK, "CYCLE600(2,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1,39)", CNCROT_STATUS_BAD_FLAG, 10},
+      {CNCROT_DIALECT_SINUMERIK, "CYCLE600(0,\"UFK600\",1,58,0,0,0,30,45,60,0,0,0,1,39)", CNCROT_STATUS_BAD_SEQUENCE, 23},
+      {CNCROT_DIALECT_SINUMERIK, "CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1, 7)", CNCROT_STATUS_INCOMPLETE_SEQUENCE, 50},
+      {CNCROT_DIALECT_SINUMERIK, "CYCLE600(0,\"U K\",1,57,0,0,0,30,45,60,0,0,0,1,39)", CNCROT_STATUS_BAD_ARGUMENT, 12},
+  };
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    const char *l = cases[k].line;
+    CHECK_STATUS(cncrot_program_column(&p, cases[k].dialect, l, strlen(l), &col), cases[k].status);
+    CHECK(col == cases[k].column, "%s: column %zu, expected %zu", l, col, cases[k].column);
+  }
+  /* Nine numbers of about 100 digits: longer than any dialect's line, whatever the buffer. */
+  double a = 1e-97, f[16], r[9], x[9], y[9], z[9], xy[9];
+  elem(1, a, x);
+  elem(2, a, y);
+  elem(3, a, z);
+  mul3(x, y, xy);
+  mul3(xy, z, r);
+  for (int i = 0; i < 3; i++) {
+    for (int j = 0; j < 3; j++) f[4 * i + j] = r[3 * i + j];
+    f[4 * i + 3] = 1e99;
+  }
+  f[12] = f[13] = f[14] = 0;
+  f[15] = 1;
+  static char big[65536];
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_SYNTEC, "G158", f, -1, big, sizeof big), CNCROT_STATUS_OUT_OF_RANGE);
+  /* PLANE POINTS needs no origin: a frame with one is refused as for every form without
+   * origin words, and the rotation alone is written with P1 at the datum. */
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", f, -1, big, sizeof big),
+               CNCROT_STATUS_BAD_ARGUMENT);
+  double id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", id, -1, big, sizeof big), CNCROT_STATUS_OK);
+  CHECK(strcmp(big, "PLANE POINTS P1X+0 P1Y+0 P1Z+0 P2X+1 P2Y+0 P2Z+0 P3X+0 P3Y+1 P3Z+0 STAY") == 0, "%s", big);
+}
+
+/* Writers near their singularities: the frame Ry(90° - 1e-13°)·Rx(30°) as PLANE PROJECTED or
+ * CYCLE800 mode 185 read back 3.9e-3 off with success; now words within
+ * CNCROT_READ_BACK_TOLERANCE or OUT_OF_RANGE, for tilts 1e-3 .. 1e-16 from the singularity. */
+static void near_singularities(void) {
+  struct {
+    int32_t dialect;
+    const char *form;
+    int32_t code, selector;
+  } forms[] = {{CNCROT_DIALECT_HEIDENHAIN, "PLANE PROJECTED", CNCROT_FORM_PLANE_PROJECTED, 0},
+               {CNCROT_DIALECT_SINUMERIK, "CYCLE800 185", CNCROT_FORM_CYCLE800, 185}};
+  int wrong = 0, refused = 0, written = 0;
+  for (int e = 3; e <= 16; e++) {
+    double ry[9], rx[9], r[9], f[16];
+    elem(2, 90 - pow(10, -e), ry);
+    elem(1, 30, rx);
+    mul3(ry, rx, r);
+    for (int i = 0; i < 3; i++) {
+      for (int j = 0; j < 3; j++) f[4 * i + j] = r[3 * i + j];
+      f[4 * i + 3] = 0;
+    }
+    f[12] = f[13] = f[14] = 0;
+    f[15] = 1;
+    for (int k = 0; k < 2; k++) {
+      char out[CNCROT_PROGRAM_LINE_MAX + 1];
+      int32_t s = cncrot_program_write(forms[k].dialect, forms[k].form, f, -1, out, sizeof out);
+      double w[9], g[16];
+      size_t n = 0;
+      cncrot_form_word_count(forms[k].code, &n);
+      int32_t v = cncrot_form_values(forms[k].code, forms[k].selector, f, w, n);
+      if (s == CNCROT_STATUS_OUT_OF_RANGE) {
+        refused++;
+        wrong += v != CNCROT_STATUS_OUT_OF_RANGE;
+        continue;
+      }
+      written++;
+      cncrot_program q;
+      memset(&q, 0, sizeof q);
+      wrong += s < 0 || v < 0 || cncrot_program_line(&q, forms[k].dialect, out, strlen(out)) != 0;
+      cncrot_program_frame(&q, g);
+      wrong += max_abs_diff(f, g, 16) > CNCROT_READ_BACK_TOLERANCE;
+      cncrot_form_frame(forms[k].code, forms[k].selector, w, n, g);
+      wrong += max_abs_diff(f, g, 16) > CNCROT_READ_BACK_TOLERANCE;
+    }
+  }
+  CHECK(wrong == 0 && refused > 0 && written > 0, "%d wrong, %d refused, %d written", wrong, refused, written);
 }
 
 /* The writer: NUL-terminated, refused without writing when the buffer is short. */
@@ -291,5 +436,8 @@ int main(void) {
   every_pair_converts();
   refusals();
   writer_buffers();
+  sealed_states();
+  columns_and_reasons();
+  near_singularities();
   return finish("test_program");
 }

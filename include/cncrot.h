@@ -67,7 +67,9 @@
 #define CNCROT_FORM_PLANE_VECTOR 6
 
 /**
- * Heidenhain `PLANE POINTS`: selector 0; words `P1X P1Y P1Z P2X P2Y P2Z P3X P3Y P3Z`.
+ * Heidenhain `PLANE POINTS`: selector 0; words `P1X P1Y P1Z P2X P2Y P2Z P3X P3Y P3Z`. The
+ * points give the plane's orientation only: the frame has no origin (the control does not
+ * move the datum to P1).
  */
 #define CNCROT_FORM_PLANE_POINTS 7
 
@@ -106,6 +108,14 @@
  * The most words a form has (`count` is exactly the form's number of words).
  */
 #define CNCROT_FORM_MAX_WORDS 9
+
+/**
+ * How far the frame of the words `cncrot_form_values` and `cncrot_program_write` give may
+ * be from the frame asked for: each rotation element, and each origin coordinate relative to
+ * the origin's largest (at least 1). Words that would not read back this close (near a
+ * projection's singularity) are refused with `CNCROT_STATUS_OUT_OF_RANGE`.
+ */
+#define CNCROT_READ_BACK_TOLERANCE 1e-12
 
 /**
  * Capacity of `cncrot_machine.axes`.
@@ -172,8 +182,8 @@
 #define CNCROT_DIALECT_HAAS 6
 
 /**
- * `cncrot_program.options`: SINUMERIK frame angles in Euler mode (machine data 10600 = 2)
- * instead of RPY.
+ * An option of `cncrot_program_init`: SINUMERIK frame angles in Euler mode (machine data
+ * 10600 = 2) instead of RPY.
  */
 #define CNCROT_PROGRAM_SINUMERIK_EULER 1
 
@@ -181,6 +191,12 @@
  * The longest line `cncrot_program_write` writes, without its NUL (SINUMERIK's block limit).
  */
 #define CNCROT_PROGRAM_LINE_MAX 512
+
+/**
+ * Mixed into the seal of every `cncrot_program` this version writes: a state of a version
+ * with another meaning of the same bytes gets another constant, and is refused.
+ */
+#define CNCROT_PROGRAM_FORMAT 1347569457
 
 /**
  * Status of every `cncrot_` function: 0 success, positive success with a remark, negative
@@ -516,9 +532,17 @@ typedef struct cncrot_machine {
 
 /**
  * The modal state of a part program, owned by the caller: the active frame and what the
- * controller keeps between blocks. All zero bytes is a program with nothing active, ready
- * for its first block (then `options` may be set). The fields are the library's to write:
- * a state it did not write is refused with `CNCROT_STATUS_BAD_STATE`.
+ * controller keeps between blocks. Start from all zero bytes (nothing active, no options,
+ * ready for the first block) or from `cncrot_program_init` (to set `options`). Treat it as
+ * opaque: the library seals every state it writes (`reserved` holds a checksum of the
+ * bytes before it), and a state it did not write as it is — a field set or edited by
+ * hand, a bit flipped in storage, a state of another version — is refused with
+ * `CNCROT_STATUS_BAD_STATE`.
+ *
+ * Layout (136 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
+ * `angles` 96, `active` 120, `dialect` 124, `options` 128, `reserved` 132. Accepted on
+ * entry: all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes
+ * 0..132 exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
  */
 typedef struct cncrot_program {
   /**
@@ -542,11 +566,12 @@ typedef struct cncrot_program {
    */
   int32_t dialect;
   /**
-   * `CNCROT_PROGRAM_*` settings of the machine, set by the caller.
+   * `CNCROT_PROGRAM_*` settings of the machine, given to `cncrot_program_init`.
    */
   uint32_t options;
   /**
-   * Zero.
+   * The seal: 0 in the all-zero initial state, else the checksum described above (the
+   * field keeps the name it had when it was reserved, so that the layout is unchanged).
    */
   uint32_t reserved;
 } cncrot_program;
@@ -783,12 +808,14 @@ int32_t cncrot_form_word_count(int32_t form, size_t *count);
  * its words (see the `CNCROT_FORM_*` constants for each form's selector and word order;
  * omitted words are 0). `count` must be the form's number of words.
  *
- * Returns 0, or a negative status with `frame` untouched: `CNCROT_STATUS_BAD_ARGUMENT`
- * (unknown form, wrong `count`, a selector the form does not have),
- * `CNCROT_STATUS_BAD_SEQUENCE` (a bad order code in `_MODE`, `P` or `Q`),
- * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_DEGENERATE` (a zero `PLANE VECTOR` normal, or
- * B along N), `CNCROT_STATUS_COINCIDENT` / `CNCROT_STATUS_COLLINEAR` (`PLANE POINTS`), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes,
- * which need the machine's kinematics), `CNCROT_STATUS_OUT_OF_RANGE`.
+ * Returns 0, or a negative status with `frame` untouched: `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_BAD_ARGUMENT` (unknown form, wrong `count`, a selector the form does not
+ * have), `CNCROT_STATUS_BAD_SEQUENCE` (a bad order code in `_MODE`, `P` or `Q`: an axis
+ * repeated, or a `Q` that is not a permutation of 1, 2, 3), `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_DEGENERATE` (a zero `PLANE VECTOR` normal or B along N, a zero `G68.3`
+ * tool direction or `G158` mode-3 normal), `CNCROT_STATUS_COINCIDENT` /
+ * `CNCROT_STATUS_COLLINEAR` (`PLANE POINTS`), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes, which need the
+ * machine's kinematics), `CNCROT_STATUS_OUT_OF_RANGE` (an origin whose frame overflows).
  *
  * # Safety
  * `words` points to `count` readable doubles, `frame` to 16 writable doubles (or NULL:
@@ -811,13 +838,19 @@ int32_t cncrot_form_frame(int32_t form,
  * dialect's canonical ranges; at the singular middle angle the free angle sits where that
  * dialect's rule puts it and the status is `CNCROT_STATUS_SINGULAR`.
  *
- * Refused, with `words` untouched: `CNCROT_STATUS_BAD_ARGUMENT` for `ROTS` (not every
- * plane is a projection), for a frame with an origin and a form without origin words
- * (SINUMERIK `ROT`, `PLANE SPATIAL/EULER/VECTOR`, TwinCAT `ROT`: pass the rotation alone and
- * the datum in the dialect's own command), for an incremental or mode-0 `G158` `P`;
+ * Refused, with `words` untouched: `CNCROT_STATUS_NULL_POINTER`;
+ * `CNCROT_STATUS_NOT_FINITE`; `CNCROT_STATUS_BAD_ARGUMENT` for an unknown form, a wrong
+ * `count`, `ROTS` (not every plane is a projection), a frame with an origin and a form
+ * without origin words (SINUMERIK `ROT`, `PLANE SPATIAL/EULER/VECTOR/POINTS/PROJECTED`,
+ * TwinCAT `ROT`: pass the rotation alone and the datum in the dialect's own command), an
+ * incremental or mode-0 `G158` `P`, a selector the form does not have;
+ * `CNCROT_STATUS_BAD_SEQUENCE` for a bad order code in `_MODE`, `P` or `Q`;
+ * `CNCROT_STATUS_INCOMPLETE_SEQUENCE` for an axis-by-axis `_MODE` or `G158` order of fewer
+ * than three rotations (`_MODE` 0..3: it cannot express every frame);
  * `CNCROT_STATUS_NOT_AVAILABLE` for direct modes; `CNCROT_STATUS_OUT_OF_RANGE` for a frame
- * a projection mode cannot express; `CNCROT_STATUS_NOT_A_ROTATION` for a frame that is not
- * one.
+ * the form cannot express (a projection at or near its singularity: words that would not
+ * read back within `CNCROT_READ_BACK_TOLERANCE`) or whose words overflow;
+ * `CNCROT_STATUS_NOT_A_ROTATION` for a frame that is not one.
  *
  * # Safety
  * `frame` points to 16 readable doubles, `words` to `count` writable doubles (or NULL:
@@ -1208,6 +1241,24 @@ int32_t cncrot_probe_edge(const double *frame_in,
                           const double *e2,
                           double *angle_deg,
                           double *frame_out);
+
+/**
+ * Writes the initial state of a program read on a machine with `options`
+ * (`CNCROT_PROGRAM_*`, or 0: then it equals the all-zero state in meaning): nothing
+ * active, sealed.
+ *
+ * Returns 0, or `CNCROT_STATUS_BAD_ARGUMENT` (an option bit this version does not know)
+ * with `*program` untouched.
+ *
+ * # Safety
+ * `program` points to a writable `cncrot_program` (or NULL: error).
+ *
+ * ```c
+ * cncrot_program p;
+ * cncrot_program_init(&p, CNCROT_PROGRAM_SINUMERIK_EULER);   // machine data 10600 = 2
+ * ```
+ */
+int32_t cncrot_program_init(struct cncrot_program *program, uint32_t options);
 
 /**
  * Applies one block of a part program (`len` bytes, no NUL needed; a trailing line end is

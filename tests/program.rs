@@ -95,7 +95,8 @@ fn heidenhain_reads_the_worked_numbers_with_real_line_words() {
         ],
     );
     assert!(dist(&f, &mul(&r(Axis::Y, 30.0), &r(Axis::X, 20.0))) < 1e-15);
-    // POINTS: X' from P1 to P2, Z' to P3's side; the origin at P1.
+    // POINTS: X' from P1 to P2, Z' to P3's side; the datum is not moved (P1 is a point of
+    // the plane, not its origin).
     let p = read(
         d,
         &["PLANE POINTS P1X+10 P1Y+0 P1Z+0 P2X+10 P2Y+5 P2Z+0 P3X+0 P3Y+0 P3Z+0 STAY"],
@@ -105,7 +106,7 @@ fn heidenhain_reads_the_worked_numbers_with_real_line_words() {
         p.frame.rotation,
         [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
     );
-    assert_eq!(p.frame.translation, [10.0, 0.0, 0.0]);
+    assert_eq!(p.frame.translation, [0.0; 3]);
     // VECTOR: N is Z', B (made perpendicular) X'.
     let f = rot(d, &["PLANE VECTOR BX+0 BY+1 BZ+0 NX+0 NY+0 NZ+2 STAY"]);
     assert_eq!(f, r(Axis::Z, 90.0));
@@ -338,7 +339,7 @@ fn fanuc_and_haas() {
 #[test]
 fn refusals_name_their_column() {
     let active = read(Dialect::Sinumerik, &["ROT Z30"]);
-    let cases: [(Dialect, &str, Error, &str); 21] = [
+    let cases: [(Dialect, &str, Error, &str); 29] = [
         (Dialect::Sinumerik, "ROT X=R1", Error::NotANumber, "R1"),
         (Dialect::Sinumerik, "ROT X10 A5", Error::UnknownWord, "A5"),
         (Dialect::Sinumerik, "ROT X10 X20", Error::UnknownWord, "X20"),
@@ -415,6 +416,31 @@ fn refusals_name_their_column() {
         (Dialect::Fanuc, "G68.2 X0 P1 Q123", Error::UnknownWord, "P1"),
         (Dialect::Haas, "G268 X0 I0 J30 K0", Error::MissingWord, ""),
         (Dialect::Twincat, "ROT Z30 G1", Error::UnknownWord, "G1"),
+        // A bad value is reported where it stands, not at its command.
+        (Dialect::Haas, "G268 Q123.5", Error::BadArgument, "123.5"),
+        (Dialect::Haas, "G268 X1 Q0", Error::BadSequence, "0"),
+        (Dialect::Syntec, "G158 X0 P157", Error::BadArgument, "157"),
+        (
+            Dialect::Sinumerik,
+            "CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,2,39)",
+            Error::BadFlag,
+            "2,39",
+        ),
+        (
+            Dialect::Sinumerik,
+            "CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1,39,0,5)",
+            Error::BadFlag,
+            "5)",
+        ),
+        // An unclosed comment is malformed text, not an unknown word.
+        (
+            Dialect::Fanuc,
+            "G68.2 X1 (comment",
+            Error::Parse,
+            "(comment",
+        ),
+        (Dialect::Haas, "G269 (comment", Error::Parse, "(comment"),
+        (Dialect::Twincat, "(comment", Error::Parse, "(comment"),
     ];
     for (d, line, error, at) in cases {
         let p = Program {
@@ -480,7 +506,7 @@ const FORMS: [(Dialect, &str); 14] = [
 fn has_origin(form: &str) -> bool {
     !matches!(
         form,
-        "ROT" | "PLANE SPATIAL" | "PLANE EULER" | "PLANE VECTOR"
+        "ROT" | "PLANE SPATIAL" | "PLANE EULER" | "PLANE VECTOR" | "PLANE POINTS"
     )
 }
 
@@ -666,4 +692,19 @@ fn cycle600_sw_rec_0_recalculates() {
         &["CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1,39,0,0,0)"],
     );
     assert_eq!(a.frame, b.frame);
+}
+
+/// Swivel data: an empty index names no data set (`$TC_CARR11[]` was skipped silently, so
+/// that v2 was lost); refused at its line as a malformed one is.
+#[test]
+fn an_empty_swivel_data_index_is_refused_at_its_line() {
+    use cncrot::dialects::carr::machine_from_carr;
+    let text = b"$TC_CARR7[1]=0 $TC_CARR8[1]=1 $TC_CARR9[1]=0\n$TC_CARR10[]=0 $TC_CARR11[]=1 $TC_CARR12[]=0\n";
+    let e = machine_from_carr(text, 1).unwrap_err();
+    assert_eq!((e.error, e.line), (Error::Parse, 2));
+    let e = machine_from_carr(b"$TC_CARR7[ ]=1", 1).unwrap_err();
+    assert_eq!((e.error, e.line), (Error::Parse, 1));
+    // With the index written, the same data set has both axes.
+    let good = b"$TC_CARR7[1]=0 $TC_CARR8[1]=1 $TC_CARR9[1]=0\n$TC_CARR10[1]=0 $TC_CARR11[1]=0 $TC_CARR12[1]=1\n";
+    assert_eq!(machine_from_carr(good, 1).unwrap().axes().len(), 2);
 }

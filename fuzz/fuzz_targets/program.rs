@@ -2,7 +2,9 @@
 //! no crash, no hang, no read past `len`; a refused block leaves the state byte-identical and
 //! `cncrot_program_column` reports the same status with a column inside the line (or one
 //! past it); an accepted one leaves a finite frame whose every writable form writes a line
-//! that its dialect reads back as the same frame.
+//! that its dialect reads back as the same frame, and a sealed state of which single-bit
+//! flips are refused. Frames close to the forms' singularities (tilts of 90° − 10^-k) go
+//! through every writer too: a refusal must be one the documentation names for that frame.
 #![no_main]
 
 #[path = "input.rs"]
@@ -18,22 +20,53 @@ fn as_bytes<T>(v: &T) -> Vec<u8> {
     unsafe { std::slice::from_raw_parts((v as *const T).cast::<u8>(), size_of::<T>()).to_vec() }
 }
 
-/// The forms each dialect writes (what `cncrot_program_write` documents).
-fn forms(dialect: i32) -> &'static [&'static CStr] {
+/// The forms each dialect writes (what `cncrot_program_write` documents), with the form
+/// code and selector of `cncrot_form_values` that give the same words, and whether the form
+/// has origin words.
+fn forms(dialect: i32) -> &'static [(&'static CStr, i32, i32, bool)] {
     match dialect {
-        1 => &[c"CYCLE800", c"CYCLE800 185", c"ROT", c"ROT EULER"],
-        2 => &[
-            c"PLANE SPATIAL",
-            c"PLANE EULER",
-            c"PLANE VECTOR",
-            c"PLANE POINTS",
-            c"PLANE PROJECTED",
+        1 => &[
+            (c"CYCLE800", CNCROT_FORM_CYCLE800, 57, true),
+            (c"CYCLE800 185", CNCROT_FORM_CYCLE800, 185, true),
+            (c"ROT", CNCROT_FORM_SINUMERIK_ROT, 0, false),
+            (c"ROT EULER", CNCROT_FORM_SINUMERIK_ROT, 1, false),
         ],
-        3 => &[c"G68.2"],
-        4 => &[c"G158", c"G158 P10159", c"G68.2"],
-        5 => &[c"ROT"],
-        _ => &[c"G268", c"G268 Q213"],
+        2 => &[
+            (c"PLANE SPATIAL", CNCROT_FORM_PLANE_SPATIAL, 0, false),
+            (c"PLANE EULER", CNCROT_FORM_PLANE_EULER, 0, false),
+            (c"PLANE VECTOR", CNCROT_FORM_PLANE_VECTOR, 0, false),
+            (c"PLANE POINTS", CNCROT_FORM_PLANE_POINTS, 0, false),
+            (c"PLANE PROJECTED", CNCROT_FORM_PLANE_PROJECTED, 0, false),
+        ],
+        3 => &[(c"G68.2", CNCROT_FORM_G68_2, 0, true)],
+        4 => &[
+            (c"G158", CNCROT_FORM_G158, 10157, true),
+            (c"G158 P10159", CNCROT_FORM_G158, 10159, true),
+            (c"G68.2", CNCROT_FORM_G68_2, 0, true),
+        ],
+        5 => &[(c"ROT", CNCROT_FORM_TWINCAT_ROT, 0, false)],
+        _ => &[
+            (c"G268", CNCROT_FORM_G268, 123, true),
+            (c"G268 Q213", CNCROT_FORM_G268, 213, true),
+        ],
     }
+}
+
+fn mul(a: &[f64; 9], b: &[f64; 9]) -> [f64; 9] {
+    std::array::from_fn(|k| (0..3).map(|j| a[3 * (k / 3) + j] * b[3 * j + k % 3]).sum())
+}
+
+/// A rotation about a machine axis (0 X, 1 Y, 2 Z), exact at whole right angles.
+fn about(axis: usize, deg: f64) -> [f64; 9] {
+    let (s, c) = deg.to_radians().sin_cos();
+    let mut m = [0.0; 9];
+    let (i, j) = ((axis + 1) % 3, (axis + 2) % 3);
+    m[4 * axis] = 1.0;
+    m[4 * i] = c;
+    m[4 * j] = c;
+    m[3 * j + i] = s;
+    m[3 * i + j] = -s;
+    m
 }
 
 fn frame(p: &cncrot_program) -> [f64; 16] {
@@ -49,10 +82,14 @@ fuzz_target!(|data: &[u8]| {
         return;
     };
     let dialect = i32::from(head % 8);
-    let mut p = cncrot_program {
-        options: u32::from(head >> 7),
-        ..Default::default()
-    };
+    let mut p = cncrot_program::default();
+    if head >> 7 != 0 {
+        // SAFETY: p is valid.
+        assert_eq!(unsafe { cncrot_program_init(&mut p, u32::from(head >> 7)) }, 0);
+    }
+    if (1..=6).contains(&dialect) {
+        near_singular(dialect, text);
+    }
     for line in text.split(|&b| b == b'\n') {
         // Each block in a heap buffer of exactly its length: AddressSanitizer sees any
         // over-read.
@@ -90,8 +127,48 @@ fuzz_target!(|data: &[u8]| {
         let f = frame(&p);
         assert!(f.iter().all(|x| x.is_finite()));
         round_trips(dialect, &f);
+        flips_are_refused(&p, line.len());
     }
 });
+
+/// Some single-bit flips of an accepted state, spread over all its bytes: each refused.
+fn flips_are_refused(p: &cncrot_program, salt: usize) {
+    let bits = 8 * size_of::<cncrot_program>();
+    for k in 0..8 {
+        let bit = (salt * 31 + k * 137 + 7) % bits;
+        let mut bytes = as_bytes(p);
+        bytes[bit / 8] ^= 1 << (bit % 8);
+        // SAFETY: every bit pattern is a valid cncrot_program (integers and doubles).
+        let q: cncrot_program = unsafe { std::ptr::read_unaligned(bytes.as_ptr().cast()) };
+        let mut f = [0.0; 16];
+        // SAFETY: valid pointers.
+        let s = unsafe { cncrot_program_frame(&q, f.as_mut_ptr()) };
+        assert_eq!(s, CNCROT_STATUS_BAD_STATE, "bit {bit} of an accepted state");
+    }
+}
+
+/// A frame `Rb(θ)·Ra(base ± (90° − 10^-k))·Rb(φ)` with an origin, from the input's bytes:
+/// each form's singularities are at such tilts.
+fn near_singular(dialect: i32, data: &[u8]) {
+    let mut input = input::Input(data);
+    let (a, b) = (usize::from(input.u8() % 3), usize::from(input.u8() % 3));
+    let eps = 10f64.powi(-i32::from(input.u8() % 17));
+    let base = f64::from(input.u8() % 4) * 90.0;
+    let sign = if input.u8() % 2 == 0 { 1.0 } else { -1.0 };
+    let (theta, phi) = (f64::from(input.u8() as i8), f64::from(input.u8() as i8));
+    let r = mul(
+        &mul(&about(b, theta), &about(a, base + sign * (90.0 - eps))),
+        &about(b, phi),
+    );
+    let t = [f64::from(input.u8() as i8), 0.0, f64::from(input.u8() as i8)];
+    let mut f = [0.0; 16];
+    for i in 0..3 {
+        f[4 * i..4 * i + 3].copy_from_slice(&r[3 * i..3 * i + 3]);
+        f[4 * i + 3] = t[i];
+    }
+    f[15] = 1.0;
+    round_trips(dialect, &f);
+}
 
 fn round_trips(dialect: i32, f: &[f64; 16]) {
     let scale = f.iter().fold(1.0f64, |a, x| a.max(x.abs()));
@@ -99,7 +176,7 @@ fn round_trips(dialect: i32, f: &[f64; 16]) {
     for k in [3, 7, 11] {
         rot_only[k] = 0.0;
     }
-    for form in forms(dialect) {
+    for &(form, code, selector, has_origin) in forms(dialect) {
         for g in [f, &rot_only] {
             let mut out = [0x5Au8; CNCROT_PROGRAM_LINE_MAX + 1];
             // SAFETY: valid pointers, out holds cap bytes.
@@ -115,17 +192,15 @@ fn round_trips(dialect: i32, f: &[f64; 16]) {
             };
             input::assert_known(s);
             if s < 0 {
-                // Forms without origin words, projections that cannot express the frame,
-                // numbers beyond 1e100: refused, the buffer untouched.
-                assert!([-8, -14].contains(&s), "{form:?}: {s}");
                 assert!(out.iter().all(|&b| b == 0x5A));
+                refused_as_documented(form, code, selector, has_origin, g, s);
                 continue;
             }
             let n = out.iter().position(|&b| b == 0).expect("NUL");
-            let mut q = cncrot_program {
-                options: u32::from(*form == c"ROT EULER"),
-                ..Default::default()
-            };
+            let mut q = cncrot_program::default();
+            // SAFETY: q is valid.
+            let init = unsafe { cncrot_program_init(&mut q, u32::from(form == c"ROT EULER")) };
+            assert_eq!(init, 0);
             // SAFETY: the line holds n bytes.
             let r = unsafe { cncrot_program_line(&mut q, dialect, out.as_ptr().cast(), n) };
             let line = String::from_utf8_lossy(&out[..n]);
@@ -140,4 +215,39 @@ fn round_trips(dialect: i32, f: &[f64; 16]) {
             assert!(d <= 1e-11 * scale, "{line}: {d:e}");
         }
     }
+}
+
+/// A writer's refusal must be one its documentation names for this frame: an origin for a
+/// form without origin words (`BAD_ARGUMENT`); a frame the form cannot express, near a
+/// projection's singularity (`OUT_OF_RANGE` from the form's own words too); numbers of 1e100
+/// or more, or below 1e-100, or so long that the line exceeds the dialect's (`OUT_OF_RANGE`).
+/// A frame of ordinary numbers that a form can express must be written.
+fn refused_as_documented(
+    form: &CStr,
+    code: i32,
+    selector: i32,
+    has_origin: bool,
+    g: &[f64; 16],
+    s: i32,
+) {
+    let origin = g[3] != 0.0 || g[7] != 0.0 || g[11] != 0.0;
+    if s == CNCROT_STATUS_BAD_ARGUMENT {
+        assert!(!has_origin && origin, "{form:?} refused a frame it writes");
+        return;
+    }
+    assert_eq!(s, CNCROT_STATUS_OUT_OF_RANGE, "{form:?}: {s}");
+    let mut n = 0usize;
+    // SAFETY: valid pointers.
+    assert_eq!(unsafe { cncrot_form_word_count(code, &mut n) }, 0);
+    let mut w = [0.0; 9];
+    // SAFETY: valid pointers, w holds n doubles.
+    let v = unsafe { cncrot_form_values(code, selector, g.as_ptr(), w.as_mut_ptr(), n) };
+    if v == CNCROT_STATUS_OUT_OF_RANGE {
+        return; // the form cannot express this frame: the same answer either way
+    }
+    assert!(v >= 0, "{form:?}: form_values {v}");
+    // Numbers that take many digits: beyond 1e15 or below 1e-15 (or beyond the writable
+    // range): the line may outgrow the dialect's.
+    let long = w[..n].iter().any(|&x| x != 0.0 && !(1e-15..=1e15).contains(&x.abs()));
+    assert!(long, "{form:?} refused ordinary words {:?}", &w[..n]);
 }

@@ -147,9 +147,9 @@ fn read_line(line: &[u8], data_set: i32, data: &mut Data) -> Result<bool, Error>
     }
 }
 
-/// A decimal number of at most 9 digits.
+/// A decimal number of 1 to 9 digits (none is no number: `$TC_CARR10[]` names no data set).
 fn small(digits: &[u8]) -> Option<usize> {
-    if digits.len() > 9 {
+    if digits.is_empty() || digits.len() > 9 {
         return None;
     }
     Some(

@@ -118,6 +118,20 @@ pub fn cycle600(state: &State, heads: Option<&HeadTable>, call: &Call) -> Result
     cycle600_in(state, heads.map(|t| t as &dyn HeadLookup), call)
 }
 
+/// Whether `_MIHEAD` can name an accessory: empty, or at most [`NAME_MAX`] bytes
+/// ([`Error::NameTooLong`]) of printable ASCII without spaces or quotes
+/// ([`Error::BadArgument`]).
+pub(crate) fn check_name(mihead: &[u8]) -> Result<(), Error> {
+    if mihead.len() > NAME_MAX {
+        return Err(Error::NameTooLong);
+    }
+    if mihead.is_empty() || valid_name(mihead) {
+        Ok(())
+    } else {
+        Err(Error::BadArgument)
+    }
+}
+
 /// [`cycle600`] with the accessories looked up through any [`HeadLookup`].
 pub fn cycle600_in(
     state: &State,
@@ -135,12 +149,7 @@ pub fn cycle600_in(
     if !numbers.into_iter().all(|x| x.is_finite()) {
         return Err(Error::NotFinite);
     }
-    if call.mihead.len() > NAME_MAX {
-        return Err(Error::NameTooLong);
-    }
-    if !(call.mihead.is_empty() || valid_name(call.mihead)) {
-        return Err(Error::BadArgument);
-    }
+    check_name(call.mihead)?;
     if let Some(table) = heads {
         // An empty name names no accessory (a corrupt entry with an empty name field must
         // not match it).

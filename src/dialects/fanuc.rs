@@ -115,8 +115,8 @@ pub(crate) fn read_g68(p: &Program, c: &mut Cursor) -> Option<Result<Program, Li
         return None;
     };
     let words = address_words(c, *b"XYZIJK", SYNTAX, false, (true, true));
-    Some(words.and_then(|(w, _)| {
-        let call = super::program::frame_at(column, super::form::Form::G68_2, 0, &w)?;
+    Some(words.and_then(|w| {
+        let call = super::program::frame_at(column, super::form::Form::G68_2, 0, &w.values)?;
         Ok(p.with_frame(if incremental {
             g68_4(&p.frame, &call)
         } else {
@@ -141,10 +141,8 @@ pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> 
     if let Some(result) = read_g68(p, &mut c) {
         return result;
     }
-    if c.at_end() || c.rest_is_comment(true, true) {
-        return Ok(*p);
-    }
-    Err(c.error(Error::UnknownWord))
+    // Only comments may remain; an unclosed `(` is malformed text.
+    c.end(true, true).map(|()| *p)
 }
 
 /// The Fanuc-style lines: `G68.2 X Y Z I J K`, Syntec's `G158 P X Y Z A B C U V W` and

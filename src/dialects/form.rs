@@ -119,12 +119,7 @@ impl Form {
     pub fn has_origin(self) -> bool {
         matches!(
             self,
-            Form::Cycle800
-                | Form::G68_2
-                | Form::G68_3
-                | Form::G158
-                | Form::G268
-                | Form::PlanePoints
+            Form::Cycle800 | Form::G68_2 | Form::G68_3 | Form::G158 | Form::G268
         )
     }
 }
@@ -192,9 +187,13 @@ pub fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Err
         }
         Form::PlanePoints => {
             no_selector(selector)?;
-            let p1 = v3(words, 0);
-            let r = heidenhain::points(p1, v3(words, 3), v3(words, 6))?;
-            Frame::with_translations(p1, r, [0.0; 3])
+            // The points give the plane's orientation only: the control tilts about the
+            // active datum and does not move it to P1 [doc].
+            rot(heidenhain::points(
+                v3(words, 0),
+                v3(words, 3),
+                v3(words, 6),
+            )?)
         }
         Form::G68_2 => {
             no_selector(selector)?;
@@ -295,13 +294,10 @@ pub fn form_values(
         }
         Form::PlanePoints => {
             no_selector(selector)?;
-            // P1 at the origin, P2 along the new X, P3 along the new Y, at a distance of at
-            // least 1 and at least the origin's largest coordinate: a unit step would be
-            // lost in the rounding of an origin far away (found by fuzzing at 1.5e69).
-            let step = t.iter().fold(1.0f64, |a, &x| a.max(crate::math::abs(x)));
-            put(&mut out, 0, t);
-            put(&mut out, 3, core::array::from_fn(|k| t[k] + step * m[k][0]));
-            put(&mut out, 6, core::array::from_fn(|k| t[k] + step * m[k][1]));
+            // P1 at the datum, P2 on the new X axis and P3 on the new Y axis, 1 mm from it:
+            // the plane needs no origin, and unit vectors read back to 1 ulp.
+            put(&mut out, 3, [m[0][0], m[1][0], m[2][0]]);
+            put(&mut out, 6, [m[0][1], m[1][1], m[2][1]]);
             false
         }
         Form::G68_2 => {
@@ -364,10 +360,43 @@ pub fn form_values(
     if !out.iter().all(|x| x.is_finite()) {
         return Err(Error::OutOfRange);
     }
+    // Near a form's singularity its words can be right to the last bit and still not give
+    // the frame back (a projection's tangent multiplies the rounding of its angles by up to
+    // 1e13): words that do not read back are refused, never written.
+    let back = form_frame(form, selector, out.get(..words.len()).unwrap_or(&[]))
+        .map_err(|_| Error::OutOfRange)?;
+    if !reads_back(&back, frame) {
+        return Err(Error::OutOfRange);
+    }
     for (w, o) in words.iter_mut().zip(out) {
         *w = o + 0.0;
     }
     Ok(singular)
+}
+
+/// How far the frame of written words may be from the frame they were written for: each
+/// rotation element, and each origin coordinate relative to the origin's size (at least
+/// 1 mm) \[choice\]. The words of a well-conditioned form read back to a few ulps.
+pub const READ_BACK_TOLERANCE: f64 = 1e-12;
+
+/// Whether `back` is `frame` within [`READ_BACK_TOLERANCE`] (NaN is not).
+fn reads_back(back: &Frame, frame: &Frame) -> bool {
+    let scale = frame
+        .translation
+        .iter()
+        .fold(1.0f64, |a, &x| a.max(crate::math::abs(x)));
+    let rotation = back
+        .rotation
+        .iter()
+        .flatten()
+        .zip(frame.rotation.iter().flatten())
+        .all(|(a, b)| crate::math::abs(a - b) <= READ_BACK_TOLERANCE);
+    let origin = back
+        .translation
+        .iter()
+        .zip(&frame.translation)
+        .all(|(a, b)| crate::math::abs(a - b) <= READ_BACK_TOLERANCE * scale);
+    rotation && origin
 }
 
 fn put(out: &mut [f64; MAX_VALUES], at: usize, v: [f64; 3]) {
@@ -444,20 +473,126 @@ mod tests {
         }
     }
 
-    /// Found by fuzzing: P2 = P1 + X' was P1 again for an origin at 1.5e69.
+    /// PLANE POINTS tilts about the active datum: P1 is a point of the plane, not its
+    /// origin (every Heidenhain manual: "the position of the active datum is not changed").
     #[test]
-    fn points_far_from_the_origin_read_back() {
-        let f = Frame::with_translations([-212.8, 1.47e69, 268.2], crate::IDENTITY, [0.0; 3]);
-        let mut w = [0.0; 9];
-        form_values(Form::PlanePoints, 0, &f, &mut w).unwrap();
-        let g = form_frame(Form::PlanePoints, 0, &w).unwrap();
-        assert_eq!(g.rotation, crate::IDENTITY);
-        assert_eq!(g.translation, f.translation);
-        let far = Frame::with_translations([f64::MAX, 0.0, 0.0], crate::IDENTITY, [0.0; 3]);
+    fn points_do_not_move_the_datum() {
+        let f = form_frame(
+            Form::PlanePoints,
+            0,
+            &[10.0, 0.0, 0.0, 10.0, 5.0, 0.0, 0.0, 0.0, 0.0],
+        )
+        .unwrap();
+        assert_eq!(f.translation, [0.0; 3]);
+        // X' along +Y, P3 on its +Y' side (towards -X): Z' = +Z, a turn of 90° about Z.
+        assert_eq!(f.rotation, crate::elementary(crate::Axis::Z, 90.0));
+        assert!(!Form::PlanePoints.has_origin());
+        let mut w = [7.0; 9];
+        let moved = Frame::with_translations([1e60; 3], crate::IDENTITY, [0.0; 3]);
         assert_eq!(
-            form_values(Form::PlanePoints, 0, &far, &mut w),
-            Err(Error::OutOfRange)
+            form_values(Form::PlanePoints, 0, &moved, &mut w),
+            Err(Error::BadArgument)
         );
+        assert_eq!(w, [7.0; 9]);
+        form_values(Form::PlanePoints, 0, &Frame::IDENTITY, &mut w).unwrap();
+        assert_eq!(w, [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]);
+    }
+
+    /// Every form's writer against its reader on frames approaching each of its
+    /// singularities: words that read back within the tolerance, or `OutOfRange`.
+    #[test]
+    fn writers_near_singularities_read_back_or_refuse() {
+        use crate::{elementary, mul, Axis};
+        let cases: [(Form, &[i32]); 12] = [
+            (
+                Form::Cycle800,
+                &[57, 27, 39, 55, 64, 128 + 57, 128 + 30, 128 + 39],
+            ),
+            (Form::SinumerikRot, &[0, 1]),
+            (Form::PlaneSpatial, &[0]),
+            (Form::PlaneEuler, &[0]),
+            (Form::PlaneVector, &[0]),
+            (Form::PlanePoints, &[0]),
+            (Form::G68_2, &[0]),
+            (Form::G158, &[10157, 10159, 10139]),
+            (Form::TwincatRot, &[0]),
+            (Form::G268, &[123, 321, 213]),
+            (Form::G68_3, &[0]),
+            (Form::PlaneProjected, &[0]),
+        ];
+        let mut refused = 0;
+        let mut written = 0;
+        for e in 3..=16 {
+            let eps = 10f64.powi(-e);
+            for (a, b) in [
+                (Axis::X, Axis::Y),
+                (Axis::Y, Axis::X),
+                (Axis::Y, Axis::Z),
+                (Axis::Z, Axis::X),
+                (Axis::X, Axis::Z),
+            ] {
+                for base in [0.0, 90.0, 180.0] {
+                    for sign in [1.0, -1.0] {
+                        let m = mul(
+                            &mul(
+                                &elementary(b, 30.0),
+                                &elementary(a, base + sign * (90.0 - eps)),
+                            ),
+                            &elementary(b, 30.0),
+                        );
+                        for t in [[0.0; 3], [10.0, -20.0, 5.0]] {
+                            let f = Frame::with_translations(t, m, [0.0; 3]);
+                            for (form, selectors) in cases {
+                                if !form.has_origin() && t != [0.0; 3] {
+                                    continue;
+                                }
+                                for &sel in selectors {
+                                    let n = form.count();
+                                    let mut w = [0.0; MAX_VALUES];
+                                    match form_values(form, sel, &f, &mut w[..n]) {
+                                        Ok(_) => {
+                                            written += 1;
+                                            let g = form_frame(form, sel, &w[..n]).unwrap();
+                                            assert!(reads_back(&g, &f), "{form:?} {sel} {e}");
+                                        }
+                                        Err(err) => {
+                                            refused += 1;
+                                            assert_eq!(err, Error::OutOfRange, "{form:?} {sel}");
+                                        }
+                                    }
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        assert!(
+            written > 10 * refused,
+            "{written} written, {refused} refused"
+        );
+    }
+
+    /// The frame: `Ry(90° − 1e-13°)·Rx(30°)` as PLANE PROJECTED read back 3.9e-3
+    /// off with success.
+    #[test]
+    fn projection_near_its_singularity_is_refused() {
+        use crate::{elementary, mul, Axis};
+        for eps in [1e-13, 1e-14] {
+            let m = mul(&elementary(Axis::Y, 90.0 - eps), &elementary(Axis::X, 30.0));
+            let f = Frame::from_rotation(m);
+            let mut w = [0.0; 9];
+            for (form, sel) in [(Form::PlaneProjected, 0), (Form::Cycle800, 128 + 57)] {
+                let n = form.count();
+                match form_values(form, sel, &f, &mut w[..n]) {
+                    Ok(_) => {
+                        let g = form_frame(form, sel, &w[..n]).unwrap();
+                        assert!(reads_back(&g, &f), "{form:?} {eps:e}");
+                    }
+                    Err(e) => assert_eq!(e, Error::OutOfRange),
+                }
+            }
+        }
     }
 
     #[test]

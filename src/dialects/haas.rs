@@ -80,12 +80,17 @@ pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> 
     c.block_number(b'N');
     let column = c.column();
     if c.keyword(b"G268") {
-        let (w, given) = address_words(&mut c, *b"XYZIJKQ", SYNTAX, false, (true, true))?;
-        let [x, y, z, i, j, k, q] = w;
-        if !given[6] {
+        let w = address_words(&mut c, *b"XYZIJKQ", SYNTAX, false, (true, true))?;
+        let [x, y, z, i, j, k, q] = w.values;
+        if !w.given[6] {
             return Err(c.error(Error::MissingWord));
         }
-        let q = whole(q, column)?;
+        // A bad Q is reported at its value, not at the command.
+        let q = whole(q, w.column(6))?;
+        q_order(q).map_err(|error| LineError {
+            error,
+            column: w.column(6),
+        })?;
         let frame =
             super::program::frame_at(column, super::form::Form::G268, q, &[x, y, z, i, j, k])?;
         return Ok(p.with_frame(frame));
@@ -94,11 +99,9 @@ pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> 
         c.end(true, true)?;
         return Ok(p.with_frame(Frame::IDENTITY));
     }
-    if c.keyword(b"G253") || c.at_end() || c.rest_is_comment(true, true) {
-        c.end(true, true)?;
-        return Ok(*p);
-    }
-    Err(c.error(Error::UnknownWord))
+    c.keyword(b"G253");
+    // Only comments may remain; an unclosed `(` is malformed text.
+    c.end(true, true).map(|()| *p)
 }
 
 #[cfg(test)]

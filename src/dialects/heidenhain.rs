@@ -219,7 +219,7 @@ fn options(c: &mut Cursor) -> Result<(), LineError> {
 /// positioning and solution options, after a line number, with `;` comments; `BEGIN PGM`
 /// and `END PGM` lines change nothing; `PLANE AXIAL` needs the kinematics
 /// ([`Error::NotAvailable`]). A `PLANE` replaces the active one; the datum is not part of
-/// the plane (only `POINTS` has an origin, P1).
+/// the plane (`POINTS` too: P1 is a point of the plane, the datum stays) \[doc\].
 #[inline(never)]
 pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
     let mut c = Cursor::new(text);

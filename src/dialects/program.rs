@@ -207,7 +207,8 @@ impl Program {
 /// Refused: an unknown form ([`Error::BadArgument`]), a frame with an origin for a form
 /// without origin words ([`Error::BadArgument`]), a frame the form cannot express
 /// ([`Error::OutOfRange`]), numbers outside what can be written, or a line longer than the
-/// dialect reads ([`Error::OutOfRange`]), a buffer too small ([`Error::NoRoom`]).
+/// dialect reads ([`Error::OutOfRange`], whatever the buffer), a buffer shorter than the
+/// line that [`Dialect::max_line`] would hold ([`Error::NoRoom`]).
 ///
 /// ```
 /// use cncrot::dialects::program::{write_line, Dialect};
@@ -236,6 +237,9 @@ pub fn write_line(
         frame,
         words.get_mut(..n).ok_or(Error::BadArgument)?,
     )?;
+    // A buffer that holds the dialect's longest line and still overflowed holds a line the
+    // dialect cannot read: no buffer would help.
+    let room = buf.len();
     let mut out = Out::new(buf);
     match dialect {
         Dialect::Sinumerik => sinumerik::write_line(&spec, &words, decimals, &mut out)?,
@@ -245,7 +249,11 @@ pub fn write_line(
         }
         Dialect::Twincat => twincat::write_line(&words, decimals, &mut out)?,
     }
-    let len = out.finish().ok_or(Error::NoRoom)?;
+    let len = match out.finish() {
+        Some(len) => len,
+        None if room >= dialect.max_line() => return Err(Error::OutOfRange),
+        None => return Err(Error::NoRoom),
+    };
     if len > dialect.max_line() {
         return Err(Error::OutOfRange);
     }
@@ -651,30 +659,53 @@ impl<'a> Cursor<'a> {
     }
 }
 
+/// What [`address_words`] read: the values in the order of the letters (0 for omitted
+/// ones), which were given, and the 1-based column of each value (0 for omitted ones), so
+/// that a value refused later is reported where it stands.
+pub(crate) struct Words<const N: usize> {
+    pub values: [f64; N],
+    pub given: [bool; N],
+    pub columns: [usize; N],
+}
+
+impl<const N: usize> Words<N> {
+    /// The column of word `k`'s value.
+    pub fn column(&self, k: usize) -> usize {
+        self.columns.get(k).copied().unwrap_or(0)
+    }
+}
+
 /// Address words such as `X30 I-20.5 K0.`: each letter of `letters` at most once, in any
-/// order, until the end of the line or a comment; the values in the order of `letters`
-/// (0 for omitted ones) and which were given.
+/// order, until the end of the line or a comment.
 pub(crate) fn address_words<const N: usize>(
     c: &mut Cursor,
     letters: [u8; N],
     syntax: Syntax,
     equals: bool,
     comments: (bool, bool),
-) -> Result<([f64; N], [bool; N]), LineError> {
-    let mut values = [0.0; N];
-    let mut given = [false; N];
+) -> Result<Words<N>, LineError> {
+    let mut w = Words {
+        values: [0.0; N],
+        given: [false; N],
+        columns: [0; N],
+    };
     loop {
         c.spaces();
+        // An unclosed `(` comment is malformed text, not an unknown word.
+        if comments.1 && c.peek() == Some(b'(') {
+            c.end(comments.0, comments.1)?;
+            return Ok(w);
+        }
         if c.rest_is_comment(comments.0, comments.1) {
             c.end(comments.0, comments.1)?;
-            return Ok((values, given));
+            return Ok(w);
         }
         let column = c.column();
         let hit = letters.iter().position(|&l| c.letter(l));
         let Some(k) = hit else {
             return Err(c.error(Error::UnknownWord));
         };
-        if given.get(k).copied().unwrap_or(true) {
+        if w.given.get(k).copied().unwrap_or(true) {
             return Err(LineError {
                 error: Error::UnknownWord,
                 column,
@@ -683,10 +714,16 @@ pub(crate) fn address_words<const N: usize>(
         if equals && c.peek() == Some(b'=') {
             c.bump();
         }
+        let at = c.column();
         let v = c.number(syntax)?;
-        if let (Some(slot), Some(g)) = (values.get_mut(k), given.get_mut(k)) {
+        if let (Some(slot), Some(g), Some(col)) = (
+            w.values.get_mut(k),
+            w.given.get_mut(k),
+            w.columns.get_mut(k),
+        ) {
             *slot = v;
             *g = true;
+            *col = at;
         }
     }
 }
@@ -743,6 +780,36 @@ mod tests {
         assert_eq!(read(b"3.0.1").unwrap_err().error, Error::Parse);
         assert_eq!(read(b"30x").unwrap_err().error, Error::Parse);
         assert_eq!(read(b"").unwrap_err().error, Error::MissingWord);
+    }
+
+    /// A line longer than the dialect reads is `OutOfRange` whatever the buffer; `NoRoom`
+    /// only when a buffer that cannot hold the dialect's longest line is the reason.
+    #[test]
+    fn no_room_only_for_the_buffer() {
+        let a = 1e-97;
+        let m = crate::matrix_from_angles(
+            crate::Kind::Intrinsic,
+            crate::AxisCode::new(57).unwrap(),
+            [a, a, a],
+        );
+        let f = Frame::with_translations([1e99; 3], m, [0.0; 3]);
+        // Nine numbers of about 100 digits: more than any buffer of 512 bytes holds.
+        for room in [256, 512, 4096] {
+            let mut buf = vec![0x5Au8; room];
+            assert_eq!(
+                write_line(Dialect::Syntec, b"G158", &f, -1, &mut buf),
+                Err(Error::OutOfRange),
+                "{room}"
+            );
+        }
+        let mut small = [0u8; 40];
+        let g = Frame::from_rotation(m);
+        assert_eq!(
+            write_line(Dialect::Syntec, b"G158", &g, 4, &mut small),
+            Err(Error::NoRoom)
+        );
+        let mut enough = [0u8; 256];
+        assert!(write_line(Dialect::Syntec, b"G158", &g, 4, &mut enough).is_ok());
     }
 
     #[test]

@@ -545,6 +545,25 @@ fn cycle600_line(p: &Program, c: &mut Cursor, column: usize) -> Result<Program, 
         rot_inv: args.int(16)?,
         retr_z: args.int(17)?,
     };
+    // The cycle checks its arguments as a whole; here each is checked first where it
+    // stands, so that a bad one is reported at its own column.
+    let checks: [(usize, Result<(), Error>); 9] = [
+        (0, crate::Kind::from_flag(call.inexin).map(drop)),
+        (1, super::cycle600::check_name(call.mihead)),
+        (2, crate::Kind::from_flag(call.sw_rec).map(drop)),
+        (3, crate::AxisCode::new(call.bin_in).map(drop)),
+        (13, crate::Kind::from_flag(call.inexout).map(drop)),
+        (
+            14,
+            crate::Convention::from_c(call.inexout, call.bin_out).map(drop),
+        ),
+        (15, crate::Kind::from_flag(call.rot_ad).map(drop)),
+        (16, crate::Kind::from_flag(call.rot_inv).map(drop)),
+        (17, crate::Kind::from_flag(call.retr_z).map(drop)),
+    ];
+    for (k, check) in checks {
+        check.map_err(at(args.column(k).max(column)))?;
+    }
     let state = super::cycle600::State {
         frame: p.frame,
         ..Default::default()
@@ -596,7 +615,8 @@ pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> 
     let Some(&(_, additive, kind)) = commands.iter().find(|(name, _, _)| c.keyword(name)) else {
         return Err(c.error(Error::UnknownWord));
     };
-    let (xyz, given) = address_words(&mut c, *b"XYZ", WORDS, true, (true, false))?;
+    let words = address_words(&mut c, *b"XYZ", WORDS, true, (true, false))?;
+    let (xyz, given) = (words.values, words.given);
     let count = given.iter().filter(|&&g| g).count();
     if count == 0 {
         return if additive {

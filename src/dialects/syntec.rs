@@ -156,13 +156,15 @@ pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> 
             c.end(true, true)?;
             return Ok(p.with_frame(Frame::IDENTITY));
         }
-        let (w, given) = address_words(&mut c, *b"LPXYZABCUVW", SYNTAX, false, (true, true))?;
-        let [_, pw, x, y, z, a, b, cc, u, v, ww] = w;
-        if !given[1] {
+        let w = address_words(&mut c, *b"LPXYZABCUVW", SYNTAX, false, (true, true))?;
+        let [_, pw, x, y, z, a, b, cc, u, v, ww] = w.values;
+        if !w.given[1] {
             return Err(c.error(Error::MissingWord));
         }
+        // A bad P is reported at its value, not at the command.
+        let at = w.column(1);
         let pword =
-            PWord::decode(whole(pw, column)?).map_err(|error| LineError { error, column })?;
+            PWord::decode(whole(pw, at)?).map_err(|error| LineError { error, column: at })?;
         let f = frame(&p.frame, pword, [x, y, z], [a, b, cc], [u, v, ww])
             .map_err(|error| LineError { error, column })?;
         return Ok(p.with_frame(f));
@@ -170,10 +172,8 @@ pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> 
     if let Some(result) = super::fanuc::read_g68(p, &mut c) {
         return result;
     }
-    if c.at_end() || c.rest_is_comment(true, true) {
-        return Ok(*p);
-    }
-    Err(c.error(Error::UnknownWord))
+    // Only comments may remain; an unclosed `(` is malformed text.
+    c.end(true, true).map(|()| *p)
 }
 
 #[cfg(test)]

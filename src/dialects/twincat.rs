@@ -103,15 +103,15 @@ pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> 
     } else if c.keyword(b"ROTEXON") || c.keyword(b"ROTEXOFF") || c.at_end() {
         c.end(true, true)?;
         return Ok(*p);
-    } else if c.rest_is_comment(true, true) {
-        return Ok(*p);
     } else {
-        return Err(c.error(Error::UnknownWord));
+        // Only comments may remain; an unclosed `(` is malformed text.
+        return c.end(true, true).map(|()| *p);
     };
     // `=` before a value is allowed (`X=R1` is how NC I assigns a parameter).
-    let (xyz, given) = address_words(&mut c, *b"XYZ", SYNTAX, true, (true, true))?;
+    let w = address_words(&mut c, *b"XYZ", SYNTAX, true, (true, true))?;
+    let xyz = w.values;
     let angles = if additive {
-        if !given.contains(&true) {
+        if !w.given.contains(&true) {
             return Err(c.error(Error::MissingWord));
         }
         Rotation { angles: p.angles }.arot(xyz).angles

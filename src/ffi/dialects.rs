@@ -16,7 +16,9 @@ pub const CNCROT_FORM_PLANE_SPATIAL: i32 = 4;
 pub const CNCROT_FORM_PLANE_EULER: i32 = 5;
 /// Heidenhain `PLANE VECTOR`: selector 0; words `BX BY BZ NX NY NZ`.
 pub const CNCROT_FORM_PLANE_VECTOR: i32 = 6;
-/// Heidenhain `PLANE POINTS`: selector 0; words `P1X P1Y P1Z P2X P2Y P2Z P3X P3Y P3Z`.
+/// Heidenhain `PLANE POINTS`: selector 0; words `P1X P1Y P1Z P2X P2Y P2Z P3X P3Y P3Z`. The
+/// points give the plane's orientation only: the frame has no origin (the control does not
+/// move the datum to P1).
 pub const CNCROT_FORM_PLANE_POINTS: i32 = 7;
 /// Fanuc-style `G68.2`: selector 0; words `X Y Z I J K`.
 pub const CNCROT_FORM_G68_2: i32 = 8;
@@ -33,6 +35,12 @@ pub const CNCROT_FORM_G68_3: i32 = 12;
 pub const CNCROT_FORM_PLANE_PROJECTED: i32 = 13;
 /// The most words a form has (`count` is exactly the form's number of words).
 pub const CNCROT_FORM_MAX_WORDS: usize = 9;
+/// How far the frame of the words `cncrot_form_values` and `cncrot_program_write` give may
+/// be from the frame asked for: each rotation element, and each origin coordinate relative to
+/// the origin's largest (at least 1). Words that would not read back this close (near a
+/// projection's singularity) are refused with `CNCROT_STATUS_OUT_OF_RANGE`.
+pub const CNCROT_READ_BACK_TOLERANCE: f64 = 1e-12;
+const _: () = assert!(CNCROT_READ_BACK_TOLERANCE == form::READ_BACK_TOLERANCE);
 
 /// How many words a form has (the `count` that `cncrot_form_frame` and `cncrot_form_values`
 /// require), in `*count`. Returns 0, or `CNCROT_STATUS_BAD_ARGUMENT` for an unknown form
@@ -60,12 +68,14 @@ pub unsafe extern "C" fn cncrot_form_word_count(form: i32, count: *mut usize) ->
 /// its words (see the `CNCROT_FORM_*` constants for each form's selector and word order;
 /// omitted words are 0). `count` must be the form's number of words.
 ///
-/// Returns 0, or a negative status with `frame` untouched: `CNCROT_STATUS_BAD_ARGUMENT`
-/// (unknown form, wrong `count`, a selector the form does not have),
-/// `CNCROT_STATUS_BAD_SEQUENCE` (a bad order code in `_MODE`, `P` or `Q`),
-/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_DEGENERATE` (a zero `PLANE VECTOR` normal, or
-/// B along N), `CNCROT_STATUS_COINCIDENT` / `CNCROT_STATUS_COLLINEAR` (`PLANE POINTS`), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes,
-/// which need the machine's kinematics), `CNCROT_STATUS_OUT_OF_RANGE`.
+/// Returns 0, or a negative status with `frame` untouched: `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_BAD_ARGUMENT` (unknown form, wrong `count`, a selector the form does not
+/// have), `CNCROT_STATUS_BAD_SEQUENCE` (a bad order code in `_MODE`, `P` or `Q`: an axis
+/// repeated, or a `Q` that is not a permutation of 1, 2, 3), `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_DEGENERATE` (a zero `PLANE VECTOR` normal or B along N, a zero `G68.3`
+/// tool direction or `G158` mode-3 normal), `CNCROT_STATUS_COINCIDENT` /
+/// `CNCROT_STATUS_COLLINEAR` (`PLANE POINTS`), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes, which need the
+/// machine's kinematics), `CNCROT_STATUS_OUT_OF_RANGE` (an origin whose frame overflows).
 ///
 /// # Safety
 /// `words` points to `count` readable doubles, `frame` to 16 writable doubles (or NULL:
@@ -109,13 +119,19 @@ pub unsafe extern "C" fn cncrot_form_frame(
 /// dialect's canonical ranges; at the singular middle angle the free angle sits where that
 /// dialect's rule puts it and the status is `CNCROT_STATUS_SINGULAR`.
 ///
-/// Refused, with `words` untouched: `CNCROT_STATUS_BAD_ARGUMENT` for `ROTS` (not every
-/// plane is a projection), for a frame with an origin and a form without origin words
-/// (SINUMERIK `ROT`, `PLANE SPATIAL/EULER/VECTOR`, TwinCAT `ROT`: pass the rotation alone and
-/// the datum in the dialect's own command), for an incremental or mode-0 `G158` `P`;
+/// Refused, with `words` untouched: `CNCROT_STATUS_NULL_POINTER`;
+/// `CNCROT_STATUS_NOT_FINITE`; `CNCROT_STATUS_BAD_ARGUMENT` for an unknown form, a wrong
+/// `count`, `ROTS` (not every plane is a projection), a frame with an origin and a form
+/// without origin words (SINUMERIK `ROT`, `PLANE SPATIAL/EULER/VECTOR/POINTS/PROJECTED`,
+/// TwinCAT `ROT`: pass the rotation alone and the datum in the dialect's own command), an
+/// incremental or mode-0 `G158` `P`, a selector the form does not have;
+/// `CNCROT_STATUS_BAD_SEQUENCE` for a bad order code in `_MODE`, `P` or `Q`;
+/// `CNCROT_STATUS_INCOMPLETE_SEQUENCE` for an axis-by-axis `_MODE` or `G158` order of fewer
+/// than three rotations (`_MODE` 0..3: it cannot express every frame);
 /// `CNCROT_STATUS_NOT_AVAILABLE` for direct modes; `CNCROT_STATUS_OUT_OF_RANGE` for a frame
-/// a projection mode cannot express; `CNCROT_STATUS_NOT_A_ROTATION` for a frame that is not
-/// one.
+/// the form cannot express (a projection at or near its singularity: words that would not
+/// read back within `CNCROT_READ_BACK_TOLERANCE`) or whose words overflow;
+/// `CNCROT_STATUS_NOT_A_ROTATION` for a frame that is not one.
 ///
 /// # Safety
 /// `frame` points to 16 readable doubles, `words` to `count` writable doubles (or NULL:

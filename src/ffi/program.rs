@@ -4,7 +4,7 @@
 use super::frame::{read_frame, write_frame};
 use super::{cncrot_status, guard, non_null};
 use crate::dialects::program::{self, Dialect, Program};
-use crate::{Error, Frame};
+use crate::{crc32, Error, Frame};
 use core::ffi::c_char;
 
 /// Siemens SINUMERIK: `CYCLE800(…)`, `CYCLE600(…)`, `ROT`/`AROT`/`CROT`, `ROTS`/`AROTS`/`CROTS`,
@@ -21,8 +21,8 @@ pub const CNCROT_DIALECT_SYNTEC: i32 = 4;
 pub const CNCROT_DIALECT_TWINCAT: i32 = 5;
 /// Haas: `G268`, `G269`, `G253`; blocks of at most 256 bytes.
 pub const CNCROT_DIALECT_HAAS: i32 = 6;
-/// `cncrot_program.options`: SINUMERIK frame angles in Euler mode (machine data 10600 = 2)
-/// instead of RPY.
+/// An option of `cncrot_program_init`: SINUMERIK frame angles in Euler mode (machine data
+/// 10600 = 2) instead of RPY.
 pub const CNCROT_PROGRAM_SINUMERIK_EULER: u32 = 1;
 /// The longest line `cncrot_program_write` writes, without its NUL (SINUMERIK's block limit).
 pub const CNCROT_PROGRAM_LINE_MAX: usize = 512;
@@ -30,9 +30,17 @@ pub const CNCROT_PROGRAM_LINE_MAX: usize = 512;
 const FORM_MAX: usize = 64;
 
 /// The modal state of a part program, owned by the caller: the active frame and what the
-/// controller keeps between blocks. All zero bytes is a program with nothing active, ready
-/// for its first block (then `options` may be set). The fields are the library's to write:
-/// a state it did not write is refused with `CNCROT_STATUS_BAD_STATE`.
+/// controller keeps between blocks. Start from all zero bytes (nothing active, no options,
+/// ready for the first block) or from `cncrot_program_init` (to set `options`). Treat it as
+/// opaque: the library seals every state it writes (`reserved` holds a checksum of the
+/// bytes before it), and a state it did not write as it is — a field set or edited by
+/// hand, a bit flipped in storage, a state of another version — is refused with
+/// `CNCROT_STATUS_BAD_STATE`.
+///
+/// Layout (136 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
+/// `angles` 96, `active` 120, `dialect` 124, `options` 128, `reserved` 132. Accepted on
+/// entry: all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes
+/// 0..132 exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct cncrot_program {
@@ -46,18 +54,45 @@ pub struct cncrot_program {
     pub active: i32,
     /// The dialect of the blocks read so far (`CNCROT_DIALECT_*`), 0 before the first.
     pub dialect: i32,
-    /// `CNCROT_PROGRAM_*` settings of the machine, set by the caller.
+    /// `CNCROT_PROGRAM_*` settings of the machine, given to `cncrot_program_init`.
     pub options: u32,
-    /// Zero.
+    /// The seal: 0 in the all-zero initial state, else the checksum described above (the
+    /// field keeps the name it had when it was reserved, so that the layout is unchanged).
     pub reserved: u32,
 }
 
+/// Mixed into the seal of every `cncrot_program` this version writes: a state of a version
+/// with another meaning of the same bytes gets another constant, and is refused.
+pub const CNCROT_PROGRAM_FORMAT: u32 = 0x5052_4731;
+
+const PROGRAM_SIZE: usize = core::mem::size_of::<cncrot_program>();
+/// The bytes the seal covers: everything before it.
+const SEALED: usize = core::mem::offset_of!(cncrot_program, reserved);
+// No padding (every byte is a field's, so every byte is covered), and the documented layout.
+const _: () = assert!(SEALED == 132 && PROGRAM_SIZE == 136);
+
+fn program_bytes(c: &cncrot_program) -> &[u8; PROGRAM_SIZE] {
+    // SAFETY: a plain repr(C) struct of integers and doubles without padding (asserted
+    // above): all of its bytes are initialised, and u8 has no alignment requirement.
+    unsafe { &*(c as *const cncrot_program).cast::<[u8; PROGRAM_SIZE]>() }
+}
+
+fn seal_of(c: &cncrot_program) -> u32 {
+    crc32(program_bytes(c).get(..SEALED).unwrap_or(&[])) ^ CNCROT_PROGRAM_FORMAT
+}
+
 fn load(c: &cncrot_program) -> Result<Program, Error> {
+    let initial = program_bytes(c).iter().all(|&b| b == 0);
+    if !initial && c.reserved != seal_of(c) {
+        return Err(Error::BadState);
+    }
+    // A sealed state was written by this library; reading it strictly all the same refuses
+    // the one random state in 2^32 whose seal matches by chance.
     let dialect = match c.dialect {
         0 => None,
         d => Some(Dialect::from_code(d).map_err(|_| Error::BadState)?),
     };
-    if c.options & !CNCROT_PROGRAM_SINUMERIK_EULER != 0 || c.reserved != 0 {
+    if c.options & !CNCROT_PROGRAM_SINUMERIK_EULER != 0 {
         return Err(Error::BadState);
     }
     let frame = match c.active {
@@ -89,7 +124,7 @@ fn store(p: &Program, options: u32) -> cncrot_program {
     } else {
         ([0.0; 9], [0.0; 3])
     };
-    cncrot_program {
+    let mut c = cncrot_program {
         rotation,
         origin,
         angles: p.angles.map(|x| x + 0.0),
@@ -97,7 +132,36 @@ fn store(p: &Program, options: u32) -> cncrot_program {
         dialect: p.dialect.map_or(0, |d| d as i32),
         options,
         reserved: 0,
-    }
+    };
+    c.reserved = seal_of(&c);
+    c
+}
+
+/// Writes the initial state of a program read on a machine with `options`
+/// (`CNCROT_PROGRAM_*`, or 0: then it equals the all-zero state in meaning): nothing
+/// active, sealed.
+///
+/// Returns 0, or `CNCROT_STATUS_BAD_ARGUMENT` (an option bit this version does not know)
+/// with `*program` untouched.
+///
+/// # Safety
+/// `program` points to a writable `cncrot_program` (or NULL: error).
+///
+/// ```c
+/// cncrot_program p;
+/// cncrot_program_init(&p, CNCROT_PROGRAM_SINUMERIK_EULER);   // machine data 10600 = 2
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_program_init(program: *mut cncrot_program, options: u32) -> i32 {
+    guard(|| {
+        non_null(&[program.is_null()])?;
+        if options & !CNCROT_PROGRAM_SINUMERIK_EULER != 0 {
+            return Err(cncrot_status::BadArgument);
+        }
+        program.write_unaligned(store(&Program::default(), options));
+        Ok(cncrot_status::Ok)
+    })
 }
 
 /// Reads one block; on success the next state, else the error and its 1-based column.
@@ -357,15 +421,56 @@ mod tests {
         let mut bad = c;
         bad.origin[2] = f64::NAN;
         assert_eq!(load(&bad), Err(Error::BadState));
-        // A cancelled program is all zero again but for its dialect.
+        // A cancelled program is all zero again but for its dialect and seal.
         let off = p.line(Dialect::Twincat, b"ROT").unwrap();
         let c = store(&off, 0);
         assert_eq!(
             c,
             cncrot_program {
                 dialect: CNCROT_DIALECT_TWINCAT,
+                reserved: c.reserved,
                 ..Default::default()
             }
         );
+        // Options set by hand on the zero state: not a state the library wrote.
+        let hand = cncrot_program {
+            options: CNCROT_PROGRAM_SINUMERIK_EULER,
+            ..Default::default()
+        };
+        assert_eq!(load(&hand), Err(Error::BadState));
+    }
+
+    /// Every single-bit flip of the zero state and of states the library wrote is refused
+    /// (the issue's case: `origin[0]` of `G68.2 X10 I0 J30 K0` turned from 10 into 14).
+    #[test]
+    fn every_single_bit_flip_is_refused() {
+        let fanuc = Program::default()
+            .line(Dialect::Fanuc, b"G68.2 X10 I0 J30 K0")
+            .unwrap();
+        let twincat = Program::default()
+            .line(Dialect::Twincat, b"ROT X10 Y-20 Z30")
+            .unwrap();
+        let off = fanuc.line(Dialect::Fanuc, b"G69").unwrap();
+        let states = [
+            cncrot_program::default(),
+            store(&Program::default(), 0),
+            store(&Program::default(), CNCROT_PROGRAM_SINUMERIK_EULER),
+            store(&fanuc, 0),
+            store(&twincat, 0),
+            store(&off, 0),
+        ];
+        for c in states {
+            assert!(load(&c).is_ok());
+            for bit in 0..8 * PROGRAM_SIZE {
+                let mut bytes = *program_bytes(&c);
+                bytes[bit / 8] ^= 1 << (bit % 8);
+                // SAFETY: every bit pattern is a valid cncrot_program (integers, doubles).
+                let flipped: cncrot_program = unsafe { core::mem::transmute(bytes) };
+                assert_eq!(load(&flipped), Err(Error::BadState), "bit {bit} of {c:?}");
+            }
+        }
+        let mut edited = store(&fanuc, 0);
+        edited.origin[0] = 14.0;
+        assert_eq!(load(&edited), Err(Error::BadState));
     }
 }

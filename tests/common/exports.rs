@@ -674,6 +674,22 @@ pub fn table() -> Vec<Call> {
             t.status(cncrot_program_frame(null(), f.as_mut_ptr()));
             t.f64s(&f);
         }),
+        ("cncrot_program_init", |t| unsafe {
+            let mut p = cncrot_program::default();
+            for options in [0, CNCROT_PROGRAM_SINUMERIK_EULER, 2, u32::MAX] {
+                t.status(cncrot_program_init(&mut p, options));
+                t.bytes(&p);
+            }
+            let l = b"ROT X10 Y20";
+            t.status(cncrot_program_line(
+                &mut p,
+                CNCROT_DIALECT_SINUMERIK,
+                l.as_ptr().cast(),
+                l.len(),
+            ));
+            t.bytes(&p);
+            t.status(cncrot_program_init(null_mut(), 0));
+        }),
         ("cncrot_program_write", |t| unsafe {
             let mut f = [0.0; 16];
             let a = [5.0, -2.0, 1.0, 30.0, 90.0, 60.0];
