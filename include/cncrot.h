@@ -264,7 +264,7 @@ enum cncrot_status
    */
   CNCROT_STATUS_NOT_AVAILABLE = -9,
   /**
-   * The accessory name is not in the head table.
+   * The accessory name is not in the head table, or the data set not in the swivel data.
    */
   CNCROT_STATUS_UNKNOWN_HEAD = -10,
   /**
@@ -284,9 +284,9 @@ enum cncrot_status
    */
   CNCROT_STATUS_OUT_OF_RANGE = -14,
   /**
-   * A restored `cncrot_cycle600_gud` is not one this library wrote: its format field or
-   * checksum is wrong (storage corruption, an edited field, another version), or it is
-   * neither all zero bytes nor well-formed.
+   * A restored `cncrot_cycle600_gud` or `cncrot_program` is not one this library wrote:
+   * its format or checksum is wrong (storage corruption, an edited field, another
+   * version), or it is neither all zero bytes nor well-formed.
    */
   CNCROT_STATUS_BAD_STATE = -15,
   /**

@@ -4,8 +4,9 @@
 %   dialect is a code of cncrot_dialects; lines a char row (one block) or a cell array of
 %   them, applied in order. F is the 4-by-4 active frame after the last line
 %   (p_old = F * [p_new; 1]), state the program's modal state to pass to the next call
-%   (state.options = 1 reads SINUMERIK frame angles in Euler mode; start from [] or that
-%   struct), frames the frame after each line (4-by-4-by-N).
+%   (start from [], or from struct('options', 1) to read SINUMERIK frame angles in Euler
+%   mode), frames the frame after each line (4-by-4-by-N). The state carries a seal: a
+%   state whose fields were changed is refused (cncrot:badState).
 %   A line the controller could not execute raises the status's error (cncrot:unknownWord,
 %   cncrot:notANumber for a variable, cncrot:missingWord, cncrot:parse, cncrot:lineTooLong,
 %   or the error of the command's mathematics) whose message names the line and the column

@@ -41,7 +41,7 @@ mod panic;
 pub mod probe;
 
 pub use checksum::crc32;
-pub use error::Error;
+pub use error::{Error, STATUSES};
 pub use frame::Frame;
 pub use rotation::{
     add_rotation, angles_from_matrix, check_rotation, closest_angles, closest_of, convert,

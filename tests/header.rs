@@ -116,3 +116,57 @@ fn def_file_is_fresh() {
         "include/cncrot.def is stale: run `CNCROT_BLESS=1 cargo test --test header` and commit it"
     );
 }
+
+/// The one status table (`cncrot::STATUSES`) is the C enum: every `CNCROT_STATUS_*` value of
+/// the header is in it with the same name, and nothing else is; `cncrot_status_str` gives
+/// "NAME: text" for each; every Rust error's C status has its code and the same text.
+#[test]
+fn the_status_table_is_the_c_enum() {
+    let header = generated();
+    let mut in_header = std::collections::BTreeMap::new();
+    for line in header.lines() {
+        let l = line.trim().trim_end_matches(',');
+        if let Some((name, value)) = l.split_once(" = ") {
+            if name.starts_with("CNCROT_STATUS_") {
+                in_header.insert(value.trim().parse::<i32>().expect("status value"), name);
+            }
+        }
+    }
+    let table: std::collections::BTreeMap<i32, &str> =
+        cncrot::STATUSES.iter().map(|&(c, n, _)| (c, n)).collect();
+    assert_eq!(
+        table.len(),
+        cncrot::STATUSES.len(),
+        "a value twice in the table"
+    );
+    assert_eq!(in_header, table);
+    for &(code, name, text) in cncrot::STATUSES {
+        let s = unsafe { std::ffi::CStr::from_ptr(cncrot::ffi::cncrot_status_str(code)) };
+        assert_eq!(s.to_str().unwrap(), format!("{name}: {text}"));
+    }
+    for &e in cncrot::Error::ALL {
+        assert_eq!(
+            cncrot::ffi::cncrot_status::from(e) as i32,
+            e.code(),
+            "{e:?}"
+        );
+        assert_eq!(
+            table[&e.code()],
+            format!("CNCROT_STATUS_{}", screaming(&format!("{e:?}")))
+        );
+        assert!(cncrot::STATUSES.contains(&(e.code(), table[&e.code()], e.message())));
+    }
+    assert_eq!(cncrot::Error::ALL.len(), 24);
+}
+
+/// `NotARotation` → `NOT_A_ROTATION`.
+fn screaming(camel: &str) -> String {
+    let mut out = String::new();
+    for (k, c) in camel.chars().enumerate() {
+        if c.is_uppercase() && k > 0 {
+            out.push('_');
+        }
+        out.push(c.to_ascii_uppercase());
+    }
+    out
+}

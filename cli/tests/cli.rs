@@ -475,7 +475,7 @@ fn cycle600_refusals() {
         "",
     );
     assert!(
-        r.code == 1 && r.stderr.contains("not found in the head table"),
+        r.code == 1 && r.stderr.contains("accessory or data set not found"),
         "{}",
         r.stderr
     );

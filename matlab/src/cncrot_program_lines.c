@@ -1,7 +1,7 @@
 /* [F, state, frames] = cncrot_program_lines(dialect, lines, state): see cncrot_program_lines.m. */
 #include "gateway.h"
 
-static const char *FIELDS[] = {"rotation", "origin", "angles", "active", "dialect", "options"};
+static const char *FIELDS[] = {"rotation", "origin", "angles", "active", "dialect", "options", "seal"};
 
 /* A field of the state struct as n doubles (absent: zeros; wrong size: an error). */
 static void field(const mxArray *s, const char *name, double *out, size_t n) {
@@ -16,8 +16,14 @@ static void field(const mxArray *s, const char *name, double *out, size_t n) {
 
 static int32_t as_int(double v) { return v >= -2147483648.0 && v <= 2147483647.0 ? (int32_t)v : INT32_MIN; }
 
+/* A uint32 field given as a double (anything else: a value the library refuses). */
+static uint32_t as_u32(double v) {
+  return v >= 0 && v <= 4294967295.0 && v == (double)(uint32_t)v ? (uint32_t)v : 0xFFFFFFFFu;
+}
+
 /* The state struct as the library's; values the library did not write are refused by it
- * (cncrot:badState), after the call. */
+ * (cncrot:badState), after the call. A struct without a seal is a new program: only its
+ * options may be set (struct('options', 1)), and cncrot_program_init seals it. */
 static void from_struct(const mxArray *s, cncrot_program *p) {
   memset(p, 0, sizeof *p);
   if (mxIsEmpty(s) && !mxIsStruct(s)) return;
@@ -33,11 +39,21 @@ static void from_struct(const mxArray *s, cncrot_program *p) {
   field(s, "dialect", v, 1);
   p->dialect = as_int(v[0]);
   field(s, "options", v, 1);
-  p->options = v[0] >= 0 && v[0] <= 4294967295.0 && v[0] == (double)(uint32_t)v[0] ? (uint32_t)v[0] : 0xFFFFFFFFu;
+  p->options = as_u32(v[0]);
+  if (mxGetField(s, 0, "seal")) {
+    field(s, "seal", v, 1);
+    p->reserved = as_u32(v[0]);
+    return;
+  }
+  cncrot_program fresh;
+  memset(&fresh, 0, sizeof fresh);
+  fresh.options = p->options;
+  if (memcmp(&fresh, p, sizeof fresh) == 0 && cncrot_program_init(p, fresh.options) < 0)
+    mexErrMsgIdAndTxt("cncrot:badState", "state.options: %u is not a combination of cncrot program options", (unsigned)fresh.options);
 }
 
 static mxArray *to_struct(const cncrot_program *p) {
-  mxArray *s = mxCreateStructMatrix(1, 1, 6, FIELDS);
+  mxArray *s = mxCreateStructMatrix(1, 1, 7, FIELDS);
   mxArray *r = mxCreateDoubleMatrix(3, 3, mxREAL);
   to_col_major(p->rotation, mxGetDoubles(r));
   mxSetField(s, 0, "rotation", r);
@@ -49,6 +65,7 @@ static mxArray *to_struct(const cncrot_program *p) {
   mxSetField(s, 0, "active", mxCreateDoubleScalar(p->active));
   mxSetField(s, 0, "dialect", mxCreateDoubleScalar(p->dialect));
   mxSetField(s, 0, "options", mxCreateDoubleScalar(p->options));
+  mxSetField(s, 0, "seal", mxCreateDoubleScalar(p->reserved));
   return s;
 }
 

@@ -221,6 +221,14 @@ function test_cncrot(cases_file)
   expect_error('cncrot:notAvailable', @() cncrot_program_lines(d.FANUC, 'G68.3 R0'), 'G68.3');
   expect_error('cncrot:badArgument', @() cncrot_program_lines(9, 'G69'), 'bad dialect');
   expect_error('cncrot:badState', @() cncrot_program_lines(d.FANUC, 'G69', struct('active', 2)), 'bad state');
+  % The state is sealed: an edited field is refused; options start a new program.
+  [~, st] = cncrot_program_lines(d.FANUC, 'G68.2 X10 I0 J30 K0');
+  check(st.origin(1) == 10 && st.seal ~= 0, 'sealed state');
+  st.origin(1) = 14;
+  expect_error('cncrot:badState', @() cncrot_program_lines(d.FANUC, 'G69', st), 'edited state');
+  F = cncrot_program_lines(d.SINUMERIK, 'ROT Z30 X20', struct('options', 1));
+  check(max(max(abs(F(1:3, 1:3) - [cosd(30) -sind(30)*cosd(20) sind(30)*sind(20); sind(30) cosd(30)*cosd(20) -cosd(30)*sind(20); 0 sind(20) cosd(20)]))) < 1e-15, 'Euler mode from options');
+  expect_error('cncrot:badState', @() cncrot_program_lines(d.SINUMERIK, 'ROT Z30', struct('options', 2)), 'unknown option');
   expect_error('cncrot:badArgument', @() cncrot_program_write(d.FANUC, 'PLANE SPATIAL', eye(4)), 'form of another dialect');
   expect_error('cncrot:badClass', @() cncrot_program_lines(d.FANUC, 42), 'numeric line');
   check(isequal(size(cncrot_program_write(d.FANUC, 'G68.2', zeros(4, 4, 0))), [0 1]), 'no frames, no lines');

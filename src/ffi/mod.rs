@@ -69,7 +69,7 @@ pub enum cncrot_status {
     BadArgument = -8,
     /// Not available without a machine description (rotary-axis positions need one).
     NotAvailable = -9,
-    /// The accessory name is not in the head table.
+    /// The accessory name is not in the head table, or the data set not in the swivel data.
     UnknownHead = -10,
     /// A name is longer than its field.
     NameTooLong = -11,
@@ -79,9 +79,9 @@ pub enum cncrot_status {
     TableFull = -13,
     /// A result would overflow (finite inputs too large, e.g. translations near `DBL_MAX`).
     OutOfRange = -14,
-    /// A restored `cncrot_cycle600_gud` is not one this library wrote: its format field or
-    /// checksum is wrong (storage corruption, an edited field, another version), or it is
-    /// neither all zero bytes nor well-formed.
+    /// A restored `cncrot_cycle600_gud` or `cncrot_program` is not one this library wrote:
+    /// its format or checksum is wrong (storage corruption, an edited field, another
+    /// version), or it is neither all zero bytes nor well-formed.
     BadState = -15,
     /// Points that must differ coincide (probing, `PLANE POINTS`).
     Coincident = -16,
@@ -154,39 +154,9 @@ impl From<Error> for cncrot_status {
 #[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub extern "C" fn cncrot_status_str(status: i32) -> *const c_char {
-    let s: &'static core::ffi::CStr = match status {
-        0 => c"CNCROT_STATUS_OK: success",
-        1 => c"CNCROT_STATUS_SINGULAR: success; singular decomposition, only the sum or difference of the first and third angles is determined, the third was set to 0",
-        -1 => c"CNCROT_STATUS_NULL_POINTER: a pointer argument is NULL",
-        -2 => c"CNCROT_STATUS_NOT_FINITE: a number is NaN or infinite",
-        -3 => c"CNCROT_STATUS_BAD_FLAG: a flag is neither 0 nor 1",
-        -4 => c"CNCROT_STATUS_BAD_SEQUENCE: axis-sequence code outside 0..63 or with a repeated axis",
-        -5 => c"CNCROT_STATUS_INCOMPLETE_SEQUENCE: decomposition needs a sequence of three rotations",
-        -6 => c"CNCROT_STATUS_NOT_A_ROTATION: matrix is not a rotation (not orthonormal within 1e-3, a reflection, or a frame whose last row is not 0 0 0 1)",
-        -7 => c"CNCROT_STATUS_DEGENERATE: matrix is singular or nearest to a reflection",
-        -8 => c"CNCROT_STATUS_BAD_ARGUMENT: parameter outside its allowed values",
-        2 => c"CNCROT_STATUS_FREE_AXIS: success at a singular pose; a rotary axis is free and was kept at its current position",
-        3 => c"CNCROT_STATUS_SNAPPED: success; a Hirth axis was snapped to its grid, the residual is in the remaining frame",
-        -9 => c"CNCROT_STATUS_NOT_AVAILABLE: not available: needs a machine description (rotary axes)",
-        -10 => c"CNCROT_STATUS_UNKNOWN_HEAD: accessory name not found in the head table",
-        -11 => c"CNCROT_STATUS_NAME_TOO_LONG: name longer than its field",
-        -12 => c"CNCROT_STATUS_PARSE: text could not be read (a malformed number or line)",
-        -13 => c"CNCROT_STATUS_TABLE_FULL: head table is full",
-        -14 => c"CNCROT_STATUS_OUT_OF_RANGE: a result is too large to represent",
-        -16 => c"CNCROT_STATUS_COINCIDENT: points that must differ coincide",
-        -17 => c"CNCROT_STATUS_COLLINEAR: points or directions that must span a plane lie on one line",
-        -18 => c"CNCROT_STATUS_TOO_FEW: too few points (a plane needs three)",
-        -19 => c"CNCROT_STATUS_UNKNOWN_WORD: unknown, repeated or misplaced word in the line",
-        -20 => c"CNCROT_STATUS_NOT_A_NUMBER: a variable or expression where a number must stand",
-        -21 => c"CNCROT_STATUS_MISSING_WORD: a word the command requires is missing",
-        -22 => c"CNCROT_STATUS_LINE_TOO_LONG: line longer than the controller accepts",
-        -23 => c"CNCROT_STATUS_NO_ROOM: the text does not fit the buffer",
-        -24 => c"CNCROT_STATUS_UNREACHABLE: no rotary-axis positions of the machine give that orientation",
-        -25 => c"CNCROT_STATUS_OUT_OF_TRAVEL: the orientation is reachable only outside the travel limits",
-        -15 => c"CNCROT_STATUS_BAD_STATE: stored CYCLE600 state is corrupt, edited or from another version (format or checksum)",
-        -100 => c"CNCROT_STATUS_INTERNAL: internal failure (caught panic), please report",
-        _ => c"CNCROT_STATUS_UNKNOWN: not a cncrot status",
-    };
+    // The texts are the crate's one status table (`Error::message` says the same).
+    let s =
+        crate::error::status_text(status).unwrap_or(c"CNCROT_STATUS_UNKNOWN: not a cncrot status");
     s.as_ptr()
 }
 
