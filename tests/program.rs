@@ -313,6 +313,13 @@ fn fanuc_and_haas() {
     let f = rot(d, &["G68.4 I0 J15 K0", "G68.4 I0 J15 K0"]);
     assert!(dist(&f, &r(Axis::X, 30.0)) < 1e-15);
     assert_eq!(read(d, &["G68.2 J30", "G69"]).frame, Frame::IDENTITY);
+    // G53.1 and G53.6 turn the tool onto the plane: the frame stays; words after them are
+    // not theirs.
+    let tilted = read(d, &["G68.2 X5 J30"]);
+    assert_eq!(read(d, &["G68.2 X5 J30", "G53.6"]), tilted);
+    assert_eq!(read(d, &["G68.2 X5 J30", "N20 G53.1 (turn)"]), tilted);
+    let e = tilted.line(d, b"G53.6 X1").unwrap_err();
+    assert_eq!((e.error, e.column), (Error::UnknownWord, 7));
     let e = Program::default().line(d, b"G68.3 R0").unwrap_err();
     assert_eq!(e.error, Error::NotAvailable);
 
@@ -576,6 +583,31 @@ fn every_writer_reads_back() {
             assert!(frame_dist(&f, &g) < 1e-3, "{line}");
             assert!(dist(&f.rotation, &g.rotation) < 3e-6, "{line}");
         }
+    }
+}
+
+/// PLANE PROJECTED and CYCLE800's projection mode written from their own definition
+/// (`F = Ry(PROPR)·Rx(γ)·Rz(ROT)`, `tan γ = tan PROMIN · cos PROPR`): the words come back.
+#[test]
+fn projection_writers_give_their_words_back() {
+    for (propr, promin, rot_) in [(20.0, 30.0, 10.0), (-35.0, 12.5, -70.0), (0.0, 45.0, 0.0)] {
+        let (p, q) = (f64::to_radians(propr), f64::to_radians(promin));
+        let gamma = (q.tan() * p.cos()).atan().to_degrees();
+        let m = mul(
+            &mul(&r(Axis::Y, propr), &r(Axis::X, gamma)),
+            &r(Axis::Z, rot_),
+        );
+        let line = write(
+            Dialect::Heidenhain,
+            "PLANE PROJECTED",
+            &Frame::from_rotation(m),
+            6,
+        )
+        .unwrap();
+        let want = format!("PLANE PROJECTED PROPR{propr:+} PROMIN{promin:+} ROT{rot_:+} STAY");
+        assert_eq!(line, want);
+        let g = read(Dialect::Heidenhain, &[&line]).frame;
+        assert!(dist(&g.rotation, &m) < 1e-6, "{line}");
     }
 }
 

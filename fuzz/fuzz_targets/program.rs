@@ -85,7 +85,10 @@ fuzz_target!(|data: &[u8]| {
     let mut p = cncrot_program::default();
     if head >> 7 != 0 {
         // SAFETY: p is valid.
-        assert_eq!(unsafe { cncrot_program_init(&mut p, u32::from(head >> 7)) }, 0);
+        assert_eq!(
+            unsafe { cncrot_program_init(&mut p, u32::from(head >> 7)) },
+            0
+        );
     }
     if (1..=6).contains(&dialect) {
         near_singular(dialect, text);
@@ -143,7 +146,11 @@ fn flips_are_refused(p: &cncrot_program, salt: usize) {
         let mut f = [0.0; 16];
         // SAFETY: valid pointers.
         let s = unsafe { cncrot_program_frame(&q, f.as_mut_ptr()) };
-        assert_eq!(s, CNCROT_STATUS_BAD_STATE, "bit {bit} of an accepted state");
+        assert_eq!(
+            s,
+            cncrot_status::BadState as i32,
+            "bit {bit} of an accepted state"
+        );
     }
 }
 
@@ -154,13 +161,17 @@ fn near_singular(dialect: i32, data: &[u8]) {
     let (a, b) = (usize::from(input.u8() % 3), usize::from(input.u8() % 3));
     let eps = 10f64.powi(-i32::from(input.u8() % 17));
     let base = f64::from(input.u8() % 4) * 90.0;
-    let sign = if input.u8() % 2 == 0 { 1.0 } else { -1.0 };
+    let sign = if input.u8() & 1 == 0 { 1.0 } else { -1.0 };
     let (theta, phi) = (f64::from(input.u8() as i8), f64::from(input.u8() as i8));
     let r = mul(
         &mul(&about(b, theta), &about(a, base + sign * (90.0 - eps))),
         &about(b, phi),
     );
-    let t = [f64::from(input.u8() as i8), 0.0, f64::from(input.u8() as i8)];
+    let t = [
+        f64::from(input.u8() as i8),
+        0.0,
+        f64::from(input.u8() as i8),
+    ];
     let mut f = [0.0; 16];
     for i in 0..3 {
         f[4 * i..4 * i + 3].copy_from_slice(&r[3 * i..3 * i + 3]);
@@ -231,23 +242,25 @@ fn refused_as_documented(
     s: i32,
 ) {
     let origin = g[3] != 0.0 || g[7] != 0.0 || g[11] != 0.0;
-    if s == CNCROT_STATUS_BAD_ARGUMENT {
+    if s == cncrot_status::BadArgument as i32 {
         assert!(!has_origin && origin, "{form:?} refused a frame it writes");
         return;
     }
-    assert_eq!(s, CNCROT_STATUS_OUT_OF_RANGE, "{form:?}: {s}");
+    assert_eq!(s, cncrot_status::OutOfRange as i32, "{form:?}: {s}");
     let mut n = 0usize;
     // SAFETY: valid pointers.
     assert_eq!(unsafe { cncrot_form_word_count(code, &mut n) }, 0);
     let mut w = [0.0; 9];
     // SAFETY: valid pointers, w holds n doubles.
     let v = unsafe { cncrot_form_values(code, selector, g.as_ptr(), w.as_mut_ptr(), n) };
-    if v == CNCROT_STATUS_OUT_OF_RANGE {
+    if v == cncrot_status::OutOfRange as i32 {
         return; // the form cannot express this frame: the same answer either way
     }
     assert!(v >= 0, "{form:?}: form_values {v}");
     // Numbers that take many digits: beyond 1e15 or below 1e-15 (or beyond the writable
     // range): the line may outgrow the dialect's.
-    let long = w[..n].iter().any(|&x| x != 0.0 && !(1e-15..=1e15).contains(&x.abs()));
+    let long = w[..n]
+        .iter()
+        .any(|&x| x != 0.0 && !(1e-15..=1e15).contains(&x.abs()));
     assert!(long, "{form:?} refused ordinary words {:?}", &w[..n]);
 }

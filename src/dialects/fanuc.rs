@@ -240,6 +240,23 @@ mod tests {
         );
     }
 
+    /// The threshold itself: a tool at a sine of exactly `MIN_SINE` from the vertical is
+    /// along it (X' the machine's X), at twice that it is not (X' = P × Z' along +Y).
+    #[test]
+    fn g68_3_along_the_vertical_below_min_sine() {
+        let p = [0.0, 0.0, 1.0];
+        let at = g68_3([crate::MIN_SINE, 0.0, 1.0], p, 0.0).unwrap();
+        assert!(
+            (at[0][0] - 1.0).abs() < 1e-15 && at[1][0].abs() < 1e-15,
+            "{at:?}"
+        );
+        let off = g68_3([2.0 * crate::MIN_SINE, 0.0, 1.0], p, 0.0).unwrap();
+        assert!(
+            (off[1][0] - 1.0).abs() < 1e-15 && off[0][0].abs() < 1e-15,
+            "{off:?}"
+        );
+    }
+
     #[test]
     fn g68_4_is_incremental_and_g69_cancels() {
         let a = g68_2([0.0; 3], [0.0, 30.0, 0.0]);

@@ -193,14 +193,23 @@ unsafe fn read(
 /// block-number-only line changes nothing. A program speaks one dialect.
 ///
 /// Returns 0, or a negative status with `*program` byte-identical:
-/// `CNCROT_STATUS_UNKNOWN_WORD` (a word the dialect does not have there, or twice),
-/// `CNCROT_STATUS_NOT_A_NUMBER` (`R1`, `Q120`, `#100`, `30+5` where a number must stand),
-/// `CNCROT_STATUS_MISSING_WORD`, `CNCROT_STATUS_PARSE` (a malformed number),
+/// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_UNKNOWN_WORD` (a word the dialect does not
+/// have there, or twice), `CNCROT_STATUS_NOT_A_NUMBER` (`R1`, `Q120`, `#100`, `30+5` where a
+/// number must stand), `CNCROT_STATUS_MISSING_WORD`, `CNCROT_STATUS_PARSE` (a malformed
+/// number, an unclosed comment or string, text where a number must stand),
 /// `CNCROT_STATUS_LINE_TOO_LONG`, `CNCROT_STATUS_BAD_ARGUMENT` (unknown dialect, a dialect
-/// other than the program's, a value outside its set), `CNCROT_STATUS_BAD_STATE` (a state
-/// this library did not write), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes, `G68.3`,
-/// `PLANE AXIAL`: they need the machine's kinematics), and the statuses of the command's
-/// mathematics. `cncrot_program_column` names the column of the offending character.
+/// other than the program's, a value outside its set such as `_ST`, a `P` or `Q` that is no
+/// whole number, an invalid `_MIHEAD`), `CNCROT_STATUS_BAD_STATE` (a state this library did
+/// not write), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes, `G68.3`, `PLANE AXIAL`: they need
+/// the machine's kinematics), `CNCROT_STATUS_OUT_OF_RANGE` (a number of magnitude 1e100 or
+/// more, or non-zero below 1e-100; a frame that overflows), and the statuses of the
+/// command's mathematics: `CNCROT_STATUS_BAD_FLAG` (a CYCLE600 flag),
+/// `CNCROT_STATUS_BAD_SEQUENCE` (an axis order in `_MODE`, `_BIN_IN`/`_BIN_OUT`, `P`, `Q`),
+/// `CNCROT_STATUS_INCOMPLETE_SEQUENCE` (a CYCLE600 `_BIN_OUT` of fewer than three
+/// rotations), `CNCROT_STATUS_NAME_TOO_LONG` (`_MIHEAD`), `CNCROT_STATUS_DEGENERATE`
+/// (`PLANE VECTOR`, `G158` mode 3), `CNCROT_STATUS_COINCIDENT` and
+/// `CNCROT_STATUS_COLLINEAR` (`PLANE POINTS`). `cncrot_program_column` names the column of
+/// the offending character: the bad value itself where a value is refused.
 ///
 /// # Safety
 /// `program` points to a readable and writable `cncrot_program`, `line` to `len` readable
@@ -267,8 +276,8 @@ pub unsafe extern "C" fn cncrot_program_column(
 
 /// The active frame of a program (4x4, row-major; the identity when none is active).
 ///
-/// Returns 0, or `CNCROT_STATUS_BAD_STATE` for a state this library did not write, with
-/// `frame` untouched.
+/// Returns 0, or with `frame` untouched `CNCROT_STATUS_NULL_POINTER` or
+/// `CNCROT_STATUS_BAD_STATE` (a state this library did not write).
 ///
 /// # Safety
 /// `program` points to a readable `cncrot_program`, `frame` to 16 writable doubles (or NULL:
@@ -312,11 +321,18 @@ pub unsafe extern "C" fn cncrot_program_frame(
 /// (at most `CNCROT_PROGRAM_LINE_MAX` + 1 bytes).
 ///
 /// Returns 0 or `CNCROT_STATUS_SINGULAR`, or a negative status with `out` untouched:
-/// `CNCROT_STATUS_BAD_ARGUMENT` (unknown dialect or form, `decimals` > 17, a frame with an
-/// origin for a form without origin words), `CNCROT_STATUS_NOT_A_ROTATION`,
-/// `CNCROT_STATUS_NOT_AVAILABLE` (direct modes), `CNCROT_STATUS_OUT_OF_RANGE` (a frame the
-/// form cannot express, numbers of 1e100 or more, or a line longer than the dialect reads),
-/// `CNCROT_STATUS_NO_ROOM` (`cap` too small).
+/// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_BAD_ARGUMENT`
+/// (unknown dialect or form, a form name longer than 64 bytes, `decimals` > 17, a frame with
+/// an origin for a form without origin words — every `PLANE` form, `ROT` —, an incremental
+/// or mode-0 `G158 P`), `CNCROT_STATUS_BAD_SEQUENCE` (an axis order in `CYCLE800 <_MODE>`,
+/// `G158 P<p>`, `G268 Q<q>` that is none, `"G268 Q0"`), `CNCROT_STATUS_INCOMPLETE_SEQUENCE`
+/// (an axis-by-axis order of fewer than three rotations, `"CYCLE800 7"`: it cannot express
+/// every frame), `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_AVAILABLE` (direct
+/// modes), `CNCROT_STATUS_OUT_OF_RANGE` (a frame the form cannot express, such as a
+/// projection at or near its singularity whose words would not read back within
+/// `CNCROT_READ_BACK_TOLERANCE`; numbers of magnitude 1e100 or more, or non-zero below
+/// 1e-100 with `decimals` < 0; a line longer than the dialect reads, whatever `cap`),
+/// `CNCROT_STATUS_NO_ROOM` (`cap` too small for a line the dialect reads).
 ///
 /// # Safety
 /// `form` is a NUL-terminated string (at most 64 bytes are read: a longer name is refused), `frame` points to 16
