@@ -1197,7 +1197,7 @@ int32_t cncrot_probe_flange(const double *a1,
  * The least-squares plane through `n` points (`points` holds `3·n` doubles, x y z for each)
  * and its flatness: `frame` gets the plane (origin at the first point's foot on it, X'
  * along the first two points' direction, Z' on the side of `(P2 − P1) × (P3 − P1)`: three
- * points give `PLANE POINTS`'s frame), `residual[0]` the flatness (largest minus smallest
+ * points give `PLANE POINTS`'s rotation), `residual[0]` the flatness (largest minus smallest
  * distance from the plane), `residual[1]` the RMS distance, millimetres. The time is
  * linear in `n` (no iteration).
  *

@@ -2,7 +2,7 @@
 %   [F, flatness, rms] = cncrot_probe_plane(P)
 %   P: N-by-3 points (N >= 3), machine coordinates. F: 4-by-4 frame of the plane (origin at
 %   the first point's foot on it, X' along the first two points, Z' on the side of
-%   (P2-P1) x (P3-P1); three points give PLANE POINTS's frame). flatness: the largest minus
+%   (P2-P1) x (P3-P1); three points give PLANE POINTS's rotation). flatness: the largest minus
 %   the smallest distance from the plane; rms: the root mean square distance.
 %   Errors: cncrot:tooFew, cncrot:coincident, cncrot:collinear, cncrot:degenerate, ...
 %
