@@ -609,6 +609,10 @@ const char *cncrot_status_str(int32_t status);
  * then nothing is written, `statuses` included. Every row equals the single call's result
  * bit for bit. `n = 0` succeeds and writes nothing.
  *
+ * Statuses (of the call and of the rows): `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`, `CNCROT_STATUS_BAD_ARGUMENT`
+ * before any row; per row `CNCROT_STATUS_NOT_FINITE`.
+ *
  * # Safety
  * `angles_deg` points to `3n` readable and `matrices` to `9n` writable doubles, not
  * overlapping; `statuses` is NULL or points to `n` writable `int32_t`.
@@ -633,6 +637,12 @@ int32_t cncrot_matrices_from_angles(int32_t intrinsic,
  * gets `CNCROT_STATUS_NOT_A_ROTATION` and keeps its output row, a singular row
  * `CNCROT_STATUS_SINGULAR`.
  *
+ * Statuses (of the call and of the rows): `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`,
+ * `CNCROT_STATUS_INCOMPLETE_SEQUENCE`, `CNCROT_STATUS_BAD_ARGUMENT` before any row; per
+ * row `CNCROT_STATUS_SINGULAR`, `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_NOT_A_ROTATION`.
+ *
  * # Safety
  * `matrices` points to `9n` readable and `angles_deg` to `3n` writable doubles, not
  * overlapping; `statuses` is NULL or points to `n` writable `int32_t`.
@@ -653,6 +663,11 @@ int32_t cncrot_angles_from_matrices(int32_t intrinsic,
  * `cncrot_convert` for `n` rows of 3 angles, contiguous. Statuses, return value and
  * refusals as `cncrot_matrices_from_angles`. The output may be the input array itself
  * (each row is read whole before it is written), but must not overlap it otherwise.
+ *
+ * Statuses (of the call and of the rows): `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`,
+ * `CNCROT_STATUS_INCOMPLETE_SEQUENCE`, `CNCROT_STATUS_BAD_ARGUMENT` before any row; per
+ * row `CNCROT_STATUS_SINGULAR`, `CNCROT_STATUS_NOT_FINITE`.
  *
  * # Safety
  * `angles_in_deg` points to `3n` readable and `angles_out_deg` to `3n` writable doubles,
@@ -790,8 +805,8 @@ int32_t cncrot_cycle600_position(const struct cncrot_cycle600_gud *gud,
 
 /**
  * How many words a form has (the `count` that `cncrot_form_frame` and `cncrot_form_values`
- * require), in `*count`. Returns 0, or `CNCROT_STATUS_BAD_ARGUMENT` for an unknown form
- * (`*count` untouched).
+ * require), in `*count`. Returns 0, or with `*count` untouched `CNCROT_STATUS_NULL_POINTER`
+ * or `CNCROT_STATUS_BAD_ARGUMENT` (an unknown form).
  *
  * # Safety
  * `count` points to a writable `size_t` (or NULL: error).
@@ -873,6 +888,10 @@ int32_t cncrot_form_values(int32_t form,
  * `before + R·(after + q)`. Rotation as `cncrot_matrix_from_angles`; `frame` is the 4x4
  * homogeneous matrix, row-major.
  *
+ * Returns 0, or with `frame` untouched `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`, `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_OUT_OF_RANGE` (translations whose sum overflows).
+ *
  * # Safety
  * `angles_deg`, `before` and `after` point to 3 readable, `frame` to 16 writable doubles
  * (or NULL: error).
@@ -892,6 +911,10 @@ int32_t cncrot_frame_from_angles(int32_t intrinsic,
 /**
  * The frame of a rotation about the point `center` (paper eq. 35):
  * `Trans(center)·Rot·Trans(−center)`.
+ *
+ * Returns 0, or with `frame` untouched `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`, `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_OUT_OF_RANGE` (a center whose frame overflows).
  *
  * # Safety
  * `angles_deg` and `center` point to 3 readable, `frame` to 16 writable doubles (or NULL:
@@ -913,6 +936,11 @@ int32_t cncrot_frame_about_point(int32_t intrinsic,
  * The rotation part is brought back to orthonormal (to 2 ulp), so chains do not drift.
  * Both inputs must be frames: rotation part a rotation, last row exactly 0 0 0 1.
  *
+ * Returns 0, or with `out` untouched `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION` (a rotation part that is
+ * none, or a last row other than 0 0 0 1), `CNCROT_STATUS_OUT_OF_RANGE` (a translation
+ * that overflows).
+ *
  * # Safety
  * `a` and `b` point to 16 readable, `out` to 16 writable doubles (or NULL: error); `out`
  * may alias either input.
@@ -926,6 +954,10 @@ int32_t cncrot_frame_compose(const double *a, const double *b, double *out);
 /**
  * The inverse frame `[Rᵀ, −Rᵀ·t]`, `R` first brought to orthonormal (to 2 ulp); never -0.
  *
+ * Returns 0, or with `out` untouched `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`,
+ * `CNCROT_STATUS_OUT_OF_RANGE`.
+ *
  * # Safety
  * `frame` points to 16 readable, `out` to 16 writable doubles (or NULL: error); they may be
  * the same array.
@@ -938,6 +970,10 @@ int32_t cncrot_frame_inverse(const double *frame, double *out);
 
 /**
  * `R·p + t`: a point of the frame's system in the original one.
+ *
+ * Returns 0, or with `out` untouched `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`,
+ * `CNCROT_STATUS_OUT_OF_RANGE`.
  *
  * # Safety
  * `frame` points to 16 and `point` to 3 readable doubles, `out` to 3 writable doubles (or
@@ -1173,7 +1209,7 @@ int32_t cncrot_machine_follow(const struct cncrot_machine *machine,
  * translation: the tilt about the active datum, as CYCLE600 with `_POS = 0`).
  *
  * Returns 0 (or `CNCROT_STATUS_SINGULAR` for a vertical flange), or with nothing written:
- * `CNCROT_STATUS_COINCIDENT` (A1 = A2 or B1 = B2), `CNCROT_STATUS_COLLINEAR` (both
+ * `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_COINCIDENT` (A1 = A2 or B1 = B2), `CNCROT_STATUS_COLLINEAR` (both
  * directions parallel), `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`.
  *
  * # Safety
@@ -1201,7 +1237,8 @@ int32_t cncrot_probe_flange(const double *a1,
  * distance from the plane), `residual[1]` the RMS distance, millimetres. The time is
  * linear in `n` (no iteration).
  *
- * Returns 0, or with nothing written: `CNCROT_STATUS_TOO_FEW` (n < 3),
+ * Returns 0, or with nothing written: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_TOO_FEW`
+ * (n < 3),
  * `CNCROT_STATUS_COINCIDENT`, `CNCROT_STATUS_COLLINEAR`, `CNCROT_STATUS_DEGENERATE`
  * (points spread alike in every direction), `CNCROT_STATUS_NOT_FINITE`,
  * `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_BAD_ARGUMENT` (`points` not aligned for
@@ -1224,7 +1261,8 @@ int32_t cncrot_probe_plane(const double *points, size_t n, double *frame, double
  * edge, in `*angle_deg` (degrees), and the turned plane in `frame_out`
  * (`frame_in · Rz(angle)`, origin unchanged).
  *
- * Returns 0, or with nothing written: `CNCROT_STATUS_COINCIDENT` (E1 = E2),
+ * Returns 0, or with nothing written: `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_COINCIDENT` (E1 = E2),
  * `CNCROT_STATUS_COLLINEAR` (the edge along the plane's normal),
  * `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`.
  *
@@ -1247,8 +1285,8 @@ int32_t cncrot_probe_edge(const double *frame_in,
  * (`CNCROT_PROGRAM_*`, or 0: then it equals the all-zero state in meaning): nothing
  * active, sealed.
  *
- * Returns 0, or `CNCROT_STATUS_BAD_ARGUMENT` (an option bit this version does not know)
- * with `*program` untouched.
+ * Returns 0, or with `*program` untouched `CNCROT_STATUS_NULL_POINTER` or
+ * `CNCROT_STATUS_BAD_ARGUMENT` (an option bit this version does not know).
  *
  * # Safety
  * `program` points to a writable `cncrot_program` (or NULL: error).
@@ -1302,10 +1340,11 @@ int32_t cncrot_program_line(struct cncrot_program *program,
                             size_t len);
 
 /**
- * What `cncrot_program_line` would return for this block, without changing anything, and
- * in `*column` the 1-based byte column of the first offending character (one past the end
- * when a word is missing at the end; 0 on success and for errors that are not in the text:
- * a bad dialect or state).
+ * What `cncrot_program_line` would return for this block (the same statuses, listed there),
+ * without changing anything, and in `*column` the 1-based byte column of the first
+ * offending character (one past the end when a word is missing at the end; 0 on success and
+ * for errors that are not in the text: a bad dialect or state). `*column` is written for
+ * every status but `CNCROT_STATUS_NULL_POINTER`.
  *
  * # Safety
  * `program` points to a readable `cncrot_program`, `line` to `len` readable bytes,
@@ -1399,7 +1438,8 @@ int32_t cncrot_program_write(int32_t dialect,
  * `angles_deg`: θ1, θ2, θ3 in degrees, in rotation order. `matrix`: 9 doubles, row-major.
  * Multiples of 90° give exact 0 and ±1.
  *
- * Returns 0, or a negative status with `matrix` untouched.
+ * Returns 0, or with `matrix` untouched `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`, `CNCROT_STATUS_NOT_FINITE`.
  *
  * # Safety
  * `angles_deg` points to 3 readable, `matrix` to 9 writable doubles (or NULL: error).
@@ -1422,8 +1462,11 @@ int32_t cncrot_matrix_from_angles(int32_t intrinsic,
  *
  * Returns 0; `CNCROT_STATUS_SINGULAR` (1) when the middle angle is singular (θ2 = ±90
  * Tait-Bryan, 0/180 proper Euler), where θ3 = 0 and θ1 carries the whole free rotation;
- * or a negative status (`angles_deg` untouched), e.g. `CNCROT_STATUS_NOT_A_ROTATION` when
- * the matrix is not orthonormal within `CNCROT_ROTATION_TOLERANCE` or is a reflection.
+ * or a negative status with `angles_deg` untouched: `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`, `CNCROT_STATUS_INCOMPLETE_SEQUENCE`
+ * (a sequence of fewer than three rotations), `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_NOT_A_ROTATION` (not orthonormal within `CNCROT_ROTATION_TOLERANCE`, or a
+ * reflection).
  *
  * # Safety
  * `matrix` points to 9 readable, `angles_deg` to 3 writable doubles (or NULL: error).
@@ -1442,6 +1485,11 @@ int32_t cncrot_angles_from_matrix(int32_t intrinsic,
  * Converts angles from one convention to another: `sequence_in` may skip rotations (00
  * pairs), `sequence_out` must be one of the 12 three-rotation codes. Output as
  * `cncrot_angles_from_matrix`, including the singular status.
+ *
+ * Returns 0 or `CNCROT_STATUS_SINGULAR`, or with `angles_out_deg` untouched
+ * `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`,
+ * `CNCROT_STATUS_INCOMPLETE_SEQUENCE` (a `sequence_out` of fewer than three rotations),
+ * `CNCROT_STATUS_NOT_FINITE`.
  *
  * # Safety
  * `angles_in_deg` points to 3 readable, `angles_out_deg` to 3 writable doubles (or NULL:
@@ -1465,6 +1513,10 @@ int32_t cncrot_convert(int32_t intrinsic_in,
  * sequences, all three wrapped into (-180, 180]. The same for intrinsic and extrinsic.
  * Input angles of any size are reduced exactly first.
  *
+ * Returns 0, or with `angles_out_deg` untouched `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_BAD_SEQUENCE`, `CNCROT_STATUS_INCOMPLETE_SEQUENCE` (a sequence of fewer
+ * than three rotations), `CNCROT_STATUS_NOT_FINITE`.
+ *
  * # Safety
  * `angles_in_deg` points to 3 readable, `angles_out_deg` to 3 writable doubles (or NULL:
  * error); they may be the same array.
@@ -1486,6 +1538,11 @@ int32_t cncrot_second_solution(int32_t sequence,
  * 65536 degrees or more (a reference that far away: doubles there no longer denote the
  * rotation to 6e-14 rad).
  *
+ * Returns 0 or `CNCROT_STATUS_SINGULAR`, or with `angles_deg` untouched
+ * `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`,
+ * `CNCROT_STATUS_INCOMPLETE_SEQUENCE`, `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_OUT_OF_RANGE`.
+ *
  * # Safety
  * `matrix` points to 9 and `reference_deg` to 3 readable doubles, `angles_deg` to 3
  * writable doubles (or NULL: error).
@@ -1503,7 +1560,10 @@ int32_t cncrot_closest_angles(int32_t intrinsic,
 
 /**
  * Checks that a matrix is a rotation: finite, `max |MᵀM − I| <= CNCROT_ROTATION_TOLERANCE`
- * and determinant positive. Returns 0 or a negative status.
+ * and determinant positive.
+ *
+ * Returns 0, or `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_NOT_A_ROTATION`.
  *
  * # Safety
  * `matrix` points to 9 readable doubles (or NULL: error).
@@ -1516,8 +1576,9 @@ int32_t cncrot_check_rotation(const double *matrix);
 
 /**
  * The nearest rotation (Frobenius norm) to a nearly orthonormal matrix, such as one
- * assembled from probe measurements. `CNCROT_STATUS_DEGENERATE` for a singular matrix or
- * one nearest to a reflection.
+ * assembled from probe measurements. Returns 0, or with `matrix_out` untouched
+ * `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_DEGENERATE` (a
+ * singular matrix or one nearest to a reflection).
  *
  * # Safety
  * `matrix_in` points to 9 readable, `matrix_out` to 9 writable doubles (or NULL: error);
@@ -1538,6 +1599,10 @@ int32_t cncrot_nearest_rotation(const double *matrix_in, double *matrix_out);
  * result is brought back to orthonormal (to 2 ulp), so chains of any length in place do
  * not drift.
  *
+ * Returns 0, or with `matrix_out` untouched `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`, `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_NOT_A_ROTATION` (`matrix_in`).
+ *
  * # Safety
  * `angles_deg` points to 3 and `matrix_in` to 9 readable doubles, `matrix_out` to 9
  * writable doubles (or NULL: error); `matrix_in` and `matrix_out` may be the same array.
@@ -1557,6 +1622,9 @@ int32_t cncrot_add_rotation(int32_t intrinsic,
  * `R·v` (TwinCAT `CalcRot`): a vector given in the rotated system, in the original axes.
  * `matrix` must be a rotation.
  *
+ * Returns 0, or with `out` untouched `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`.
+ *
  * # Safety
  * `matrix` points to 9 and `vector` to 3 readable doubles, `out` to 3 writable doubles
  * (or NULL: error); `vector` and `out` may be the same array.
@@ -1571,6 +1639,9 @@ int32_t cncrot_rotate_vector(const double *matrix, const double *vector, double 
 /**
  * `Rᵀ·v`, the inverse rotation (TwinCAT `CalcInvRot`): after `ROT Z45`, (40, 10, 0)
  * gives (35.36, -21.21, 0). `matrix` must be a rotation.
+ *
+ * Returns 0, or with `out` untouched `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`.
  *
  * # Safety
  * As `cncrot_rotate_vector`.

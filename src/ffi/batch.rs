@@ -55,6 +55,10 @@ unsafe fn each_row(
 /// then nothing is written, `statuses` included. Every row equals the single call's result
 /// bit for bit. `n = 0` succeeds and writes nothing.
 ///
+/// Statuses (of the call and of the rows): `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`, `CNCROT_STATUS_BAD_ARGUMENT`
+/// before any row; per row `CNCROT_STATUS_NOT_FINITE`.
+///
 /// # Safety
 /// `angles_deg` points to `3n` readable and `matrices` to `9n` writable doubles, not
 /// overlapping; `statuses` is NULL or points to `n` writable `int32_t`.
@@ -96,6 +100,12 @@ pub unsafe extern "C" fn cncrot_matrices_from_angles(
 /// gets `CNCROT_STATUS_NOT_A_ROTATION` and keeps its output row, a singular row
 /// `CNCROT_STATUS_SINGULAR`.
 ///
+/// Statuses (of the call and of the rows): `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`,
+/// `CNCROT_STATUS_INCOMPLETE_SEQUENCE`, `CNCROT_STATUS_BAD_ARGUMENT` before any row; per
+/// row `CNCROT_STATUS_SINGULAR`, `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_NOT_A_ROTATION`.
+///
 /// # Safety
 /// `matrices` points to `9n` readable and `angles_deg` to `3n` writable doubles, not
 /// overlapping; `statuses` is NULL or points to `n` writable `int32_t`.
@@ -131,6 +141,11 @@ pub unsafe extern "C" fn cncrot_angles_from_matrices(
 /// `cncrot_convert` for `n` rows of 3 angles, contiguous. Statuses, return value and
 /// refusals as `cncrot_matrices_from_angles`. The output may be the input array itself
 /// (each row is read whole before it is written), but must not overlap it otherwise.
+///
+/// Statuses (of the call and of the rows): `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`,
+/// `CNCROT_STATUS_INCOMPLETE_SEQUENCE`, `CNCROT_STATUS_BAD_ARGUMENT` before any row; per
+/// row `CNCROT_STATUS_SINGULAR`, `CNCROT_STATUS_NOT_FINITE`.
 ///
 /// # Safety
 /// `angles_in_deg` points to `3n` readable and `angles_out_deg` to `3n` writable doubles,

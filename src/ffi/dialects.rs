@@ -43,8 +43,8 @@ pub const CNCROT_READ_BACK_TOLERANCE: f64 = 1e-12;
 const _: () = assert!(CNCROT_READ_BACK_TOLERANCE == form::READ_BACK_TOLERANCE);
 
 /// How many words a form has (the `count` that `cncrot_form_frame` and `cncrot_form_values`
-/// require), in `*count`. Returns 0, or `CNCROT_STATUS_BAD_ARGUMENT` for an unknown form
-/// (`*count` untouched).
+/// require), in `*count`. Returns 0, or with `*count` untouched `CNCROT_STATUS_NULL_POINTER`
+/// or `CNCROT_STATUS_BAD_ARGUMENT` (an unknown form).
 ///
 /// # Safety
 /// `count` points to a writable `size_t` (or NULL: error).

@@ -23,6 +23,10 @@ pub(super) unsafe fn write_frame(p: *mut f64, f: &Frame) -> Result<(), cncrot_st
 /// `before + R·(after + q)`. Rotation as `cncrot_matrix_from_angles`; `frame` is the 4x4
 /// homogeneous matrix, row-major.
 ///
+/// Returns 0, or with `frame` untouched `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`, `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_OUT_OF_RANGE` (translations whose sum overflows).
+///
 /// # Safety
 /// `angles_deg`, `before` and `after` point to 3 readable, `frame` to 16 writable doubles
 /// (or NULL: error).
@@ -62,6 +66,10 @@ pub unsafe extern "C" fn cncrot_frame_from_angles(
 /// The frame of a rotation about the point `center` (paper eq. 35):
 /// `Trans(center)·Rot·Trans(−center)`.
 ///
+/// Returns 0, or with `frame` untouched `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`, `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_OUT_OF_RANGE` (a center whose frame overflows).
+///
 /// # Safety
 /// `angles_deg` and `center` point to 3 readable, `frame` to 16 writable doubles (or NULL:
 /// error).
@@ -95,6 +103,11 @@ pub unsafe extern "C" fn cncrot_frame_about_point(
 /// The rotation part is brought back to orthonormal (to 2 ulp), so chains do not drift.
 /// Both inputs must be frames: rotation part a rotation, last row exactly 0 0 0 1.
 ///
+/// Returns 0, or with `out` untouched `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION` (a rotation part that is
+/// none, or a last row other than 0 0 0 1), `CNCROT_STATUS_OUT_OF_RANGE` (a translation
+/// that overflows).
+///
 /// # Safety
 /// `a` and `b` point to 16 readable, `out` to 16 writable doubles (or NULL: error); `out`
 /// may alias either input.
@@ -116,6 +129,10 @@ pub unsafe extern "C" fn cncrot_frame_compose(a: *const f64, b: *const f64, out:
 
 /// The inverse frame `[Rᵀ, −Rᵀ·t]`, `R` first brought to orthonormal (to 2 ulp); never -0.
 ///
+/// Returns 0, or with `out` untouched `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`,
+/// `CNCROT_STATUS_OUT_OF_RANGE`.
+///
 /// # Safety
 /// `frame` points to 16 readable, `out` to 16 writable doubles (or NULL: error); they may be
 /// the same array.
@@ -135,6 +152,10 @@ pub unsafe extern "C" fn cncrot_frame_inverse(frame: *const f64, out: *mut f64) 
 }
 
 /// `R·p + t`: a point of the frame's system in the original one.
+///
+/// Returns 0, or with `out` untouched `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`,
+/// `CNCROT_STATUS_OUT_OF_RANGE`.
 ///
 /// # Safety
 /// `frame` points to 16 and `point` to 3 readable doubles, `out` to 3 writable doubles (or

@@ -12,7 +12,7 @@ use crate::Vector;
 /// translation: the tilt about the active datum, as CYCLE600 with `_POS = 0`).
 ///
 /// Returns 0 (or `CNCROT_STATUS_SINGULAR` for a vertical flange), or with nothing written:
-/// `CNCROT_STATUS_COINCIDENT` (A1 = A2 or B1 = B2), `CNCROT_STATUS_COLLINEAR` (both
+/// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_COINCIDENT` (A1 = A2 or B1 = B2), `CNCROT_STATUS_COLLINEAR` (both
 /// directions parallel), `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`.
 ///
 /// # Safety
@@ -69,7 +69,8 @@ pub unsafe extern "C" fn cncrot_probe_flange(
 /// distance from the plane), `residual[1]` the RMS distance, millimetres. The time is
 /// linear in `n` (no iteration).
 ///
-/// Returns 0, or with nothing written: `CNCROT_STATUS_TOO_FEW` (n < 3),
+/// Returns 0, or with nothing written: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_TOO_FEW`
+/// (n < 3),
 /// `CNCROT_STATUS_COINCIDENT`, `CNCROT_STATUS_COLLINEAR`, `CNCROT_STATUS_DEGENERATE`
 /// (points spread alike in every direction), `CNCROT_STATUS_NOT_FINITE`,
 /// `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_BAD_ARGUMENT` (`points` not aligned for
@@ -127,7 +128,8 @@ pub unsafe extern "C" fn cncrot_probe_plane(
 /// edge, in `*angle_deg` (degrees), and the turned plane in `frame_out`
 /// (`frame_in · Rz(angle)`, origin unchanged).
 ///
-/// Returns 0, or with nothing written: `CNCROT_STATUS_COINCIDENT` (E1 = E2),
+/// Returns 0, or with nothing written: `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_COINCIDENT` (E1 = E2),
 /// `CNCROT_STATUS_COLLINEAR` (the edge along the plane's normal),
 /// `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`.
 ///

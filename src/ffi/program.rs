@@ -141,8 +141,8 @@ fn store(p: &Program, options: u32) -> cncrot_program {
 /// (`CNCROT_PROGRAM_*`, or 0: then it equals the all-zero state in meaning): nothing
 /// active, sealed.
 ///
-/// Returns 0, or `CNCROT_STATUS_BAD_ARGUMENT` (an option bit this version does not know)
-/// with `*program` untouched.
+/// Returns 0, or with `*program` untouched `CNCROT_STATUS_NULL_POINTER` or
+/// `CNCROT_STATUS_BAD_ARGUMENT` (an option bit this version does not know).
 ///
 /// # Safety
 /// `program` points to a writable `cncrot_program` (or NULL: error).
@@ -236,10 +236,11 @@ pub unsafe extern "C" fn cncrot_program_line(
     })
 }
 
-/// What `cncrot_program_line` would return for this block, without changing anything, and
-/// in `*column` the 1-based byte column of the first offending character (one past the end
-/// when a word is missing at the end; 0 on success and for errors that are not in the text:
-/// a bad dialect or state).
+/// What `cncrot_program_line` would return for this block (the same statuses, listed there),
+/// without changing anything, and in `*column` the 1-based byte column of the first
+/// offending character (one past the end when a word is missing at the end; 0 on success and
+/// for errors that are not in the text: a bad dialect or state). `*column` is written for
+/// every status but `CNCROT_STATUS_NULL_POINTER`.
 ///
 /// # Safety
 /// `program` points to a readable `cncrot_program`, `line` to `len` readable bytes,

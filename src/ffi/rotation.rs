@@ -14,7 +14,8 @@ use crate::{AxisCode, Convention, Kind, Sequence};
 /// `angles_deg`: θ1, θ2, θ3 in degrees, in rotation order. `matrix`: 9 doubles, row-major.
 /// Multiples of 90° give exact 0 and ±1.
 ///
-/// Returns 0, or a negative status with `matrix` untouched.
+/// Returns 0, or with `matrix` untouched `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`, `CNCROT_STATUS_NOT_FINITE`.
 ///
 /// # Safety
 /// `angles_deg` points to 3 readable, `matrix` to 9 writable doubles (or NULL: error).
@@ -63,8 +64,11 @@ pub(super) unsafe fn matrix_row(
 ///
 /// Returns 0; `CNCROT_STATUS_SINGULAR` (1) when the middle angle is singular (θ2 = ±90
 /// Tait-Bryan, 0/180 proper Euler), where θ3 = 0 and θ1 carries the whole free rotation;
-/// or a negative status (`angles_deg` untouched), e.g. `CNCROT_STATUS_NOT_A_ROTATION` when
-/// the matrix is not orthonormal within `CNCROT_ROTATION_TOLERANCE` or is a reflection.
+/// or a negative status with `angles_deg` untouched: `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`, `CNCROT_STATUS_INCOMPLETE_SEQUENCE`
+/// (a sequence of fewer than three rotations), `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_NOT_A_ROTATION` (not orthonormal within `CNCROT_ROTATION_TOLERANCE`, or a
+/// reflection).
 ///
 /// # Safety
 /// `matrix` points to 9 readable, `angles_deg` to 3 writable doubles (or NULL: error).
@@ -112,6 +116,11 @@ pub(super) unsafe fn angles_row(
 /// Converts angles from one convention to another: `sequence_in` may skip rotations (00
 /// pairs), `sequence_out` must be one of the 12 three-rotation codes. Output as
 /// `cncrot_angles_from_matrix`, including the singular status.
+///
+/// Returns 0 or `CNCROT_STATUS_SINGULAR`, or with `angles_out_deg` untouched
+/// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`,
+/// `CNCROT_STATUS_INCOMPLETE_SEQUENCE` (a `sequence_out` of fewer than three rotations),
+/// `CNCROT_STATUS_NOT_FINITE`.
 ///
 /// # Safety
 /// `angles_in_deg` points to 3 readable, `angles_out_deg` to 3 writable doubles (or NULL:
@@ -163,6 +172,10 @@ pub(super) unsafe fn convert_row(
 /// sequences, all three wrapped into (-180, 180]. The same for intrinsic and extrinsic.
 /// Input angles of any size are reduced exactly first.
 ///
+/// Returns 0, or with `angles_out_deg` untouched `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_BAD_SEQUENCE`, `CNCROT_STATUS_INCOMPLETE_SEQUENCE` (a sequence of fewer
+/// than three rotations), `CNCROT_STATUS_NOT_FINITE`.
+///
 /// # Safety
 /// `angles_in_deg` points to 3 readable, `angles_out_deg` to 3 writable doubles (or NULL:
 /// error); they may be the same array.
@@ -198,6 +211,11 @@ pub unsafe extern "C" fn cncrot_second_solution(
 /// 65536 degrees or more (a reference that far away: doubles there no longer denote the
 /// rotation to 6e-14 rad).
 ///
+/// Returns 0 or `CNCROT_STATUS_SINGULAR`, or with `angles_deg` untouched
+/// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`,
+/// `CNCROT_STATUS_INCOMPLETE_SEQUENCE`, `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_OUT_OF_RANGE`.
+///
 /// # Safety
 /// `matrix` points to 9 and `reference_deg` to 3 readable doubles, `angles_deg` to 3
 /// writable doubles (or NULL: error).
@@ -231,7 +249,10 @@ pub unsafe extern "C" fn cncrot_closest_angles(
 }
 
 /// Checks that a matrix is a rotation: finite, `max |MᵀM − I| <= CNCROT_ROTATION_TOLERANCE`
-/// and determinant positive. Returns 0 or a negative status.
+/// and determinant positive.
+///
+/// Returns 0, or `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_NOT_A_ROTATION`.
 ///
 /// # Safety
 /// `matrix` points to 9 readable doubles (or NULL: error).
@@ -251,8 +272,9 @@ pub unsafe extern "C" fn cncrot_check_rotation(matrix: *const f64) -> i32 {
 }
 
 /// The nearest rotation (Frobenius norm) to a nearly orthonormal matrix, such as one
-/// assembled from probe measurements. `CNCROT_STATUS_DEGENERATE` for a singular matrix or
-/// one nearest to a reflection.
+/// assembled from probe measurements. Returns 0, or with `matrix_out` untouched
+/// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_DEGENERATE` (a
+/// singular matrix or one nearest to a reflection).
 ///
 /// # Safety
 /// `matrix_in` points to 9 readable, `matrix_out` to 9 writable doubles (or NULL: error);
@@ -283,6 +305,10 @@ pub unsafe extern "C" fn cncrot_nearest_rotation(
 /// (TwinCAT/SINUMERIK `AROT`, CYCLE600 `_ROT_AD`). `matrix_in` must be a rotation. The
 /// result is brought back to orthonormal (to 2 ulp), so chains of any length in place do
 /// not drift.
+///
+/// Returns 0, or with `matrix_out` untouched `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_BAD_SEQUENCE`, `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_NOT_A_ROTATION` (`matrix_in`).
 ///
 /// # Safety
 /// `angles_deg` points to 3 and `matrix_in` to 9 readable doubles, `matrix_out` to 9
@@ -321,6 +347,9 @@ pub unsafe extern "C" fn cncrot_add_rotation(
 /// `R·v` (TwinCAT `CalcRot`): a vector given in the rotated system, in the original axes.
 /// `matrix` must be a rotation.
 ///
+/// Returns 0, or with `out` untouched `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`.
+///
 /// # Safety
 /// `matrix` points to 9 and `vector` to 3 readable doubles, `out` to 3 writable doubles
 /// (or NULL: error); `vector` and `out` may be the same array.
@@ -341,6 +370,9 @@ pub unsafe extern "C" fn cncrot_rotate_vector(
 
 /// `Rᵀ·v`, the inverse rotation (TwinCAT `CalcInvRot`): after `ROT Z45`, (40, 10, 0)
 /// gives (35.36, -21.21, 0). `matrix` must be a rotation.
+///
+/// Returns 0, or with `out` untouched `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`.
 ///
 /// # Safety
 /// As `cncrot_rotate_vector`.
