@@ -740,3 +740,28 @@ fn an_empty_swivel_data_index_is_refused_at_its_line() {
     let good = b"$TC_CARR7[1]=0 $TC_CARR8[1]=1 $TC_CARR9[1]=0\n$TC_CARR10[1]=0 $TC_CARR11[1]=0 $TC_CARR12[1]=1\n";
     assert_eq!(machine_from_carr(good, 1).unwrap().axes().len(), 2);
 }
+
+/// The length limits of names and numbers, at the limit and one past it: a CYCLE600
+/// `_MIHEAD` of 31 bytes is a name, of 32 too long; a swivel-data index of 9 digits is a
+/// number, of 10 not.
+#[test]
+fn names_and_indices_at_their_limits() {
+    let call = |name: &str| format!("CYCLE600(0,\"{name}\",1,57,0,0,0,30,45,60,0,0,0,1,39)");
+    let n31 = "A".repeat(31);
+    assert!(Program::default()
+        .line(Dialect::Sinumerik, call(&n31).as_bytes())
+        .is_ok());
+    let e = Program::default()
+        .line(Dialect::Sinumerik, call(&"A".repeat(32)).as_bytes())
+        .unwrap_err();
+    assert_eq!((e.error, e.column), (Error::NameTooLong, 12));
+    use cncrot::dialects::carr::machine_from_carr;
+    let axis = b"$TC_CARR7[1]=0 $TC_CARR8[1]=1 $TC_CARR9[1]=0\n";
+    let mut text = axis.to_vec();
+    text.extend_from_slice(b"$TC_CARR7[123456789]=1\n");
+    assert_eq!(machine_from_carr(&text, 1).unwrap().axes().len(), 1);
+    let mut text = axis.to_vec();
+    text.extend_from_slice(b"$TC_CARR7[1234567890]=1\n");
+    let e = machine_from_carr(&text, 1).unwrap_err();
+    assert_eq!((e.error, e.line), (Error::Parse, 2));
+}
