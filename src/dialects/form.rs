@@ -574,6 +574,33 @@ mod tests {
         );
     }
 
+    /// The read-back rule itself: rotation elements within 1e-12, origin coordinates within
+    /// 1e-12 of the origin's size (at least 1 mm).
+    #[test]
+    fn reads_back_is_the_documented_tolerance() {
+        let m = crate::elementary(crate::Axis::X, 30.0);
+        let f = Frame::with_translations([100.0, 0.0, 0.0], m, [0.0; 3]);
+        let moved = |dx: f64| Frame::with_translations([100.0 + dx, 0.0, 0.0], m, [0.0; 3]);
+        assert!(reads_back(&moved(5e-11), &f));
+        assert!(!reads_back(&moved(2e-10), &f));
+        assert!(!reads_back(&moved(0.5), &f));
+        let mut r = m;
+        r[0][1] += 2e-12;
+        assert!(!reads_back(
+            &Frame::with_translations([100.0, 0.0, 0.0], r, [0.0; 3]),
+            &f
+        ));
+        r[0][1] -= 1.5e-12;
+        assert!(reads_back(
+            &Frame::with_translations([100.0, 0.0, 0.0], r, [0.0; 3]),
+            &f
+        ));
+        let near = Frame::with_translations([0.0, 5e-13, 0.0], m, [0.0; 3]);
+        assert!(reads_back(&near, &Frame::from_rotation(m)));
+        let far = Frame::with_translations([0.0, 2e-12, 0.0], m, [0.0; 3]);
+        assert!(!reads_back(&far, &Frame::from_rotation(m)));
+    }
+
     /// The largest difference of two frames' elements (the tests' own measure, independent
     /// of `reads_back`).
     fn distance(a: &Frame, b: &Frame) -> f64 {

@@ -457,6 +457,22 @@ mod tests {
         assert_eq!(load(&hand), Err(Error::BadState));
     }
 
+    /// The seal is what the header documents: the CRC-32 of bytes 0..132 exclusive-or
+    /// `CNCROT_PROGRAM_FORMAT`; a state sealed without the format (another version's) is
+    /// refused.
+    #[test]
+    fn the_seal_is_the_documented_one() {
+        let p = Program::default()
+            .line(Dialect::Fanuc, b"G68.2 X10 I0 J30 K0")
+            .unwrap();
+        let c = store(&p, 0);
+        let bytes = program_bytes(&c);
+        assert_eq!(c.reserved, crc32(&bytes[..132]) ^ 0x5052_4731);
+        let mut other = c;
+        other.reserved = crc32(&bytes[..132]);
+        assert_eq!(load(&other), Err(Error::BadState));
+    }
+
     /// Every single-bit flip of the zero state and of states the library wrote is refused
     /// (the case: `origin[0]` of `G68.2 X10 I0 J30 K0` turned from 10 into 14).
     #[test]
