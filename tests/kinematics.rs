@@ -485,3 +485,162 @@ fn near_the_pole() {
         }
     }
 }
+
+/// Machines whose axis `k` (A, about X) travels within `[0, 30]`, with the other axes
+/// modulo: a head, a fork head C/A, a table A/C, a mixed machine, a table C with a head B/A.
+fn a_limited_machines() -> Vec<(Machine, usize)> {
+    let limited = |side, v: Vector, p: Vector| RotaryAxis {
+        limits: Some([0.0, 30.0]),
+        ..axis(side, v, p)
+    };
+    let (x, y) = ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+    vec![
+        (machine(&[limited(Side::Tool, x, [0.0, 0.0, 200.0])]), 0),
+        (
+            machine(&[
+                axis(Side::Tool, Z, [0.0; 3]),
+                limited(Side::Tool, x, [0.0, 0.0, 150.0]),
+            ]),
+            1,
+        ),
+        (
+            machine(&[
+                limited(Side::Work, x, [0.0, 0.0, -100.0]),
+                axis(Side::Work, Z, [20.0, 10.0, -100.0]),
+            ]),
+            0,
+        ),
+        (
+            machine(&[
+                limited(Side::Tool, x, [0.0, 0.0, 250.0]),
+                axis(Side::Work, Z, [300.0, 0.0, 0.0]),
+            ]),
+            0,
+        ),
+        (
+            machine(&[
+                axis(Side::Work, Z, [500.0, 300.0, 0.0]),
+                axis(Side::Tool, y, [0.0, 0.0, 540.0]),
+                limited(Side::Tool, x, [0.0, 0.0, 250.0]),
+            ]),
+            2,
+        ),
+    ]
+}
+
+/// Issue 20, class 3: a target built from positions exactly at an end of the travel, seen
+/// from those positions, is reached there — not refused, not reached by a turn elsewhere —
+/// and the position never lies outside the travel.
+#[test]
+fn a_target_at_a_travel_end_is_chosen_at_that_end() {
+    // One B about Y within 0..10: B = 10 is the travel's end (the inverse may compute it
+    // a few ulp beyond).
+    let b = RotaryAxis {
+        limits: Some([0.0, 10.0]),
+        ..axis(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3])
+    };
+    let m = machine(&[b]);
+    for end in [0.0, 10.0] {
+        for target in [
+            elementary(Axis::Y, end),
+            m.forward([end, 0.0, 0.0]).unwrap().rotation,
+        ] {
+            let c = m.choose(&target, [end, 0.0, 0.0], Rule::Closest);
+            let c = c.unwrap_or_else(|e| panic!("B = {end}: {e:?}"));
+            assert!((c.axes[0] - end).abs() <= 1e-9 && (0.0..=10.0).contains(&c.axes[0]));
+            assert_eq!(c.residual, [0.0; 3]);
+        }
+    }
+
+    // Every combination of A at an end of 0..30 and the other axes on a 7.5° grid, on five
+    // machines: chosen at that end, the other axes where they were.
+    let mut targets = 0;
+    for (m, k) in a_limited_machines() {
+        let n = m.axes().len();
+        let others: Vec<usize> = (0..n).filter(|&j| j != k).collect();
+        let grid: Vec<f64> = (0..48).map(|i| -180.0 + 7.5 * f64::from(i)).collect();
+        for end in [0.0, 30.0] {
+            for (i, &g1) in grid.iter().enumerate() {
+                // The third axis, if any, on a coarser grid of its own.
+                for &g2 in grid.iter().skip(i % 6).step_by(6) {
+                    let mut p = [0.0; 3];
+                    p[k] = end;
+                    if let Some(&j) = others.first() {
+                        p[j] = g1;
+                    }
+                    if let Some(&j) = others.get(1) {
+                        p[j] = g2;
+                    }
+                    let target = m.forward(p).unwrap().rotation;
+                    let c = m
+                        .choose(&target, p, Rule::Closest)
+                        .unwrap_or_else(|e| panic!("{e:?} at {p:?} on {:?}", m.axes()));
+                    assert!(
+                        (c.axes[k] - end).abs() <= 1e-9 && (0.0..=30.0).contains(&c.axes[k]),
+                        "{p:?} -> {:?}",
+                        c.axes
+                    );
+                    for &j in &others {
+                        assert!((c.axes[j] - p[j]).abs() <= 1e-9, "{p:?} -> {:?}", c.axes);
+                    }
+                    targets += 1;
+                    if others.len() < 2 {
+                        break;
+                    }
+                }
+                if others.is_empty() {
+                    break;
+                }
+            }
+        }
+    }
+    assert!(targets > 500, "{targets}");
+
+    // Near the pole of a fork head C/A, C's travel ending where the target has it: tilts
+    // of A from 0.1° down to 1e-11°; C is still computed to rounding and kept at its end.
+    for tilt in [1e-1, 1e-3, 1e-5, 1e-7, 1e-9, 1e-11] {
+        for k in 0..50 {
+            let end = 37.3 + 6.7 * f64::from(k);
+            let m = machine(&[
+                RotaryAxis {
+                    limits: Some([0.0, end]),
+                    ..axis(Side::Tool, Z, [0.0; 3])
+                },
+                axis(Side::Tool, [1.0, 0.0, 0.0], [0.0, 0.0, 150.0]),
+            ]);
+            let p = [end, tilt, 0.0];
+            let target = m.forward(p).unwrap().rotation;
+            let c = m.choose(&target, p, Rule::Closest).unwrap();
+            assert!(
+                c.axes[0] <= end && end - c.axes[0] <= 1e-9,
+                "{p:?} -> {c:?}"
+            );
+        }
+    }
+
+    // A table A (about X) carrying C (about Z), A within -120..30, standing at
+    // (30, -162.5): that orientation is where it stands, not (-30, -342.5) half a turn of C
+    // away.
+    let table = machine(&[
+        RotaryAxis {
+            limits: Some([-120.0, 30.0]),
+            ..axis(Side::Work, [1.0, 0.0, 0.0], [0.0; 3])
+        },
+        axis(Side::Work, Z, [0.0; 3]),
+    ]);
+    let here = [30.0, -162.5, 0.0];
+    let target = table.forward(here).unwrap().rotation;
+    let c = table.choose(&target, here, Rule::Closest).unwrap();
+    assert!(
+        c.axes[0] == 30.0 && (c.axes[1] + 162.5).abs() <= 1e-9,
+        "{:?}",
+        c.axes
+    );
+    // CYCLE600 positioning shares the choice.
+    let state = cncrot::dialects::cycle600::State {
+        frame: cncrot::Frame::from_rotation(target),
+        ..Default::default()
+    };
+    let c = cncrot::dialects::cycle600::position(&state, &table, here).unwrap();
+    assert!(c.axes[0] == 30.0 && (c.axes[1] + 162.5).abs() <= 1e-9);
+}

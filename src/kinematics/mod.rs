@@ -51,6 +51,12 @@ pub const PARALLEL_SINE: f64 = 1e-6;
 /// below any measurable angle (2e-8°), well above the rounding of a target computed in
 /// doubles (1e-15).
 pub const REACH_TOLERANCE: f64 = 1e-10;
+/// A computed position at most this far beyond an end of its axis' travel, degrees, is
+/// taken at that end (and the position moved to is exactly the end) \[choice\]. The
+/// inverse computes a position the target put exactly at an end a few ulp beyond it
+/// (1e-14° at 10°, 1.5e-11° at 65 536°); moving by this much turns the tool by 1.7e-11
+/// rad, within [`REACH_TOLERANCE`], so the end still reaches the target.
+pub const TRAVEL_TOLERANCE: f64 = 1e-9;
 
 /// Which part a rotary axis turns.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -87,7 +93,8 @@ pub struct RotaryAxis {
     pub point: Vector,
     /// The position the axis reads in the described initial state, degrees.
     pub offset: f64,
-    /// Travel limits `[min, max]`, degrees; `None`: a modulo axis without limits.
+    /// Travel limits `[min, max]`, degrees; `None`: a modulo axis without limits. A
+    /// position computed within [`TRAVEL_TOLERANCE`] beyond an end is taken at that end.
     pub limits: Option<[f64; 2]>,
     /// The Hirth grid, if the axis has one.
     pub hirth: Option<Hirth>,
