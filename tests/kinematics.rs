@@ -644,3 +644,178 @@ fn a_target_at_a_travel_end_is_chosen_at_that_end() {
     let c = cncrot::dialects::cycle600::position(&state, &table, here).unwrap();
     assert!(c.axes[0] == 30.0 && (c.axes[1] + 162.5).abs() <= 1e-9);
 }
+
+/// Issue 20, class 4: limits, offsets, Hirth offsets and pivots whose magnitude would make
+/// the degree (or length) arithmetic lose precision are refused, on both sides of each
+/// bound; a Hirth step below the smallest one is refused.
+#[test]
+fn axis_parameters_beyond_their_bounds_are_refused() {
+    let c = machine(&[axis(Side::Tool, Z, [0.0; 3])]);
+    let b = axis(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3]);
+    let hirth = |offset, step| Some(Hirth { offset, step });
+    let refused = [
+        // The issue's cases: travel around 1e15°, a Hirth grid offset by 1e17°, an axis
+        // offset of 1e12°, a pivot 1e12 mm away.
+        (
+            RotaryAxis {
+                limits: Some([1e15, 1e15 + 720.0]),
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (
+            RotaryAxis {
+                hirth: hirth(1e17, 1.0),
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (RotaryAxis { offset: 1e12, ..b }, Error::OutOfRange),
+        (
+            RotaryAxis {
+                point: [1e12, 0.0, 0.0],
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        // Right at the bounds: 65 536° and 1e6 mm (a hair beyond).
+        (
+            RotaryAxis {
+                limits: Some([-65_536.0, 0.0]),
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (
+            RotaryAxis {
+                limits: Some([0.0, 65_536.0]),
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (
+            RotaryAxis {
+                offset: -65_536.0,
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (
+            RotaryAxis {
+                offset: 65_536.0,
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (
+            RotaryAxis {
+                hirth: hirth(65_536.0, 1.0),
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (
+            RotaryAxis {
+                hirth: hirth(-65_536.0, 1.0),
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (
+            RotaryAxis {
+                point: [0.0, 0.0, -1.000_000_1e6],
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        // Hirth steps below 1e-6°, down to the subnormal ones.
+        (
+            RotaryAxis {
+                hirth: hirth(0.0, 0.999_999e-6),
+                ..b
+            },
+            Error::BadArgument,
+        ),
+        (
+            RotaryAxis {
+                hirth: hirth(0.0, 1e-300),
+                ..b
+            },
+            Error::BadArgument,
+        ),
+        (
+            RotaryAxis {
+                hirth: hirth(0.0, 5e-324),
+                ..b
+            },
+            Error::BadArgument,
+        ),
+    ];
+    for (a, e) in refused {
+        assert_eq!(c.with_axis(a), Err(e), "{a:?}");
+    }
+    let accepted = [
+        RotaryAxis {
+            limits: Some([-65_535.75, 65_535.75]),
+            ..b
+        },
+        RotaryAxis {
+            offset: 65_535.75,
+            ..b
+        },
+        RotaryAxis {
+            offset: -65_535.75,
+            ..b
+        },
+        RotaryAxis {
+            hirth: hirth(-65_535.75, 1e-6),
+            ..b
+        },
+        RotaryAxis {
+            point: [1e6, -1e6, 1e6],
+            ..b
+        },
+    ];
+    for a in accepted {
+        assert!(c.with_axis(a).is_ok(), "{a:?}");
+    }
+
+    // Within the bounds the arithmetic keeps its accuracy: a travel of 65 000..65 500 and
+    // an offset of 65 000 turn B by 30° at 65 030 (65 030 − 65 000 = 30, exact), and a
+    // target of Ry(30) seen from there is reached at 65 030 (≡ 30 + 180·360).
+    let far = machine(&[RotaryAxis {
+        limits: Some([65_000.0, 65_500.0]),
+        offset: 65_000.0,
+        ..b
+    }]);
+    let f = far.forward([65_030.0, 0.0, 0.0]).unwrap().rotation;
+    assert!(common::max_diff(&f, &elementary(Axis::Y, 30.0)) < 1e-15);
+    let ch = far
+        .choose(
+            &elementary(Axis::Y, 30.0),
+            [65_100.0, 0.0, 0.0],
+            Rule::Closest,
+        )
+        .unwrap();
+    assert!((ch.axes[0] - 65_030.0).abs() < 1e-9, "{ch:?}");
+    // Current positions obey the same bound, on both sides of it.
+    let free = machine(&[b]);
+    for current in [65_536.0, -65_536.0] {
+        assert_eq!(
+            free.choose(
+                &elementary(Axis::Y, 16.0),
+                [current, 0.0, 0.0],
+                Rule::Closest
+            ),
+            Err(Error::OutOfRange)
+        );
+    }
+    let ch = free
+        .choose(
+            &elementary(Axis::Y, 15.0),
+            [65_535.75, 0.0, 0.0],
+            Rule::Closest,
+        )
+        .unwrap();
+    assert!((ch.axes[0] - 65_535.0).abs() < 1e-9, "{ch:?}");
+}
