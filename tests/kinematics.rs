@@ -819,3 +819,113 @@ fn axis_parameters_beyond_their_bounds_are_refused() {
         .unwrap();
     assert!((ch.axes[0] - 65_535.0).abs() < 1e-9, "{ch:?}");
 }
+
+/// The whole-turn placement within the travel, both directions and over several turns
+/// (from `cargo mutants`: the upper wrap was never exercised).
+#[test]
+fn turns_are_placed_within_the_travel() {
+    let b = |lo: f64, hi: f64| {
+        machine(&[RotaryAxis {
+            limits: Some([lo, hi]),
+            ..axis(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3])
+        }])
+    };
+    let target = elementary(Axis::Y, -10.0);
+    // (travel, current, where −10° goes): the turn nearest the current position, else the
+    // one nearest it within the travel.
+    for (lo, hi, current, want) in [
+        (-360.0, 0.0, 350.0, -10.0),
+        (-720.0, -360.0, 0.0, -370.0),
+        (-1080.0, -720.0, 0.0, -730.0),
+        (360.0, 720.0, 0.0, 710.0),
+        (0.0, 360.0, -10.0, 350.0),
+        (-180.0, 180.0, 700.0, -10.0),
+        // Exactly a whole turn beyond an end (from a current position outside the travel):
+        // that end, not a second turn.
+        (-370.0, -10.0, 350.0, -10.0),
+        (-10.0, 350.0, -370.0, -10.0),
+    ] {
+        let c = b(lo, hi)
+            .choose(&target, [current, 0.0, 0.0], Rule::Closest)
+            .unwrap_or_else(|e| panic!("{lo}..{hi} from {current}: {e:?}"));
+        assert!(
+            (c.axes[0] - want).abs() < 1e-9,
+            "{lo}..{hi} from {current}: {c:?}"
+        );
+    }
+    assert_eq!(
+        b(0.0, 300.0).choose(&target, [0.0; 3], Rule::Closest),
+        Err(Error::OutOfTravel)
+    );
+}
+
+/// Hirth grids with a non-zero offset, stepping back inside the travel at either end
+/// (from `cargo mutants`: offsets were always 0, the step back never taken).
+#[test]
+fn hirth_grids_with_an_offset_step_back_into_the_travel() {
+    let b = |lo: f64, hi: f64| {
+        machine(&[RotaryAxis {
+            limits: Some([lo, hi]),
+            hirth: Some(Hirth {
+                offset: 1.0,
+                step: 5.0,
+            }),
+            ..axis(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3])
+        }])
+    };
+    // Teeth at 1 + 5k: …, −34, −29, …, 31, 36, …
+    for (lo, hi, angle, want) in [
+        // 34 rounds to the tooth 36, beyond 35: one tooth back.
+        (-100.0, 35.0, 34.0, 31.0),
+        // Without the limit, 36.
+        (-100.0, 100.0, 34.0, 36.0),
+        // −32 rounds to −34, below −33: one tooth on.
+        (-33.0, 100.0, -32.0, -29.0),
+        (-100.0, 100.0, -32.0, -34.0),
+        // 2.4 is nearest to the tooth 1 (the offset counts).
+        (-100.0, 100.0, 2.4, 1.0),
+    ] {
+        let c = b(lo, hi)
+            .choose(&elementary(Axis::Y, angle), [0.0; 3], Rule::Closest)
+            .unwrap();
+        assert!(
+            (c.axes[0] - want).abs() < 1e-9 && (c.residual[0] - (want - angle)).abs() < 1e-9,
+            "{lo}..{hi} {angle}: {c:?}"
+        );
+    }
+    // No tooth within 32..35.
+    assert_eq!(
+        b(32.0, 35.0).choose(&elementary(Axis::Y, 34.0), [0.0; 3], Rule::Closest),
+        Err(Error::OutOfTravel)
+    );
+}
+
+/// A machine without rotary axes reaches its tool direction and nothing else (from `cargo
+/// mutants`: the zero-axis branch of the inverse was never run).
+#[test]
+fn a_machine_without_axes_reaches_its_tool_direction_only() {
+    for (tool, about) in [(Z, Axis::Z), ([1.0, 0.0, 0.0], Axis::X)] {
+        let m = Machine::new(tool).unwrap();
+        // The base turn B, then any turn about the tool: the direction is the tool's.
+        let base = m.forward([0.0; 3]).unwrap().rotation;
+        let target = mul(&elementary(about, 30.0), &base);
+        let s = m.inverse(&target).unwrap();
+        assert!(s.count == 1 && s.angles[0] == [0.0; 3] && !s.free, "{s:?}");
+        let c = m.choose(&target, [0.0; 3], Rule::Closest).unwrap();
+        assert!(
+            c.axes == [0.0; 3]
+                && common::max_diff(&c.remaining, &elementary(Axis::Z, 30.0)) < 1e-15
+        );
+        // A tilt of 1e-9° (1.7e-11 rad) is within the reach tolerance (1e-10 rad), 1e-8°
+        // (1.7e-10 rad) is not.
+        let tilt = |deg: f64| {
+            mul(
+                &elementary(if about == Axis::Z { Axis::X } else { Axis::Y }, deg),
+                &base,
+            )
+        };
+        assert!(m.inverse(&tilt(1e-9)).is_ok());
+        assert_eq!(m.inverse(&tilt(1e-8)), Err(Error::Unreachable));
+        assert_eq!(m.inverse(&tilt(90.0)), Err(Error::Unreachable));
+    }
+}
