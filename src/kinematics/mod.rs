@@ -58,12 +58,12 @@ pub const REACH_TOLERANCE: f64 = 1e-10;
 /// rad, within [`REACH_TOLERANCE`], so the end still reaches the target.
 pub const TRAVEL_TOLERANCE: f64 = 1e-9;
 /// The largest magnitude of a coordinate of an axis' point, millimetres \[choice\]: a
-/// kilometre, ten times the largest machine tool. Translations `p − R·p` of such a point
+/// kilometre, far beyond any machine tool. Translations `p − R·p` of such a point
 /// are exact to 1e-9 mm; a point 1e12 mm away would leave 1e-4 mm of rounding.
 pub const LENGTH_MAX: f64 = 1e6;
 /// The finest Hirth grid, degrees \[choice\]: finer than any rotary axis resolves. The
 /// teeth `offset + k·step` of positions within the angle bound ([`crate::CLOSEST_MAX`])
-/// are computed to 3e-11°, a thirty-thousandth of this step; much finer steps would make
+/// are computed to 5e-11°, a twenty-thousandth of this step; much finer steps would make
 /// the grid rounding, and below 1e-303° `k` overflows.
 pub const HIRTH_STEP_MIN: f64 = 1e-6;
 
