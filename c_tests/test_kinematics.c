@@ -294,10 +294,141 @@ static void cycle600_and_refusals(void) {
   CHECK_STATUS(cncrot_machine_choose(&two, idf, cur, CNCROT_CHOOSE_CLOSEST, 0, out, res, rem), CNCROT_STATUS_NOT_A_ROTATION);
 }
 
+/* Issue 20, class 3: a target made with an axis exactly at an end of its travel, seen from
+ * those positions, is reached at that end (not refused, not half a turn of C away); the
+ * position never lies outside the travel. CYCLE600 positioning shares the choice. */
+static void travel_ends(void) {
+  double out[3], res[3], rem[16], f[16];
+  /* One B about Y within 0..10, target and current B = 10 (the inverse computes B a few
+   * ulp beyond 10): B = 10 exactly. Likewise B = 0. */
+  cncrot_machine b;
+  memset(&b, 0, sizeof b);
+  CHECK_STATUS(cncrot_machine_add_axis(&b, 0, Y, O, 0, 10), CNCROT_STATUS_OK);
+  for (double end = 0; end <= 10; end += 10) {
+    double at[3] = {end, 0, 0};
+    CHECK_STATUS(cncrot_machine_forward(&b, at, f), CNCROT_STATUS_OK);
+    CHECK_STATUS(cncrot_machine_choose(&b, f, at, CNCROT_CHOOSE_CLOSEST, 0, out, res, rem), CNCROT_STATUS_OK);
+    CHECK(out[0] == end, "B %.17g, want %g", out[0], end);
+  }
+
+  /* A fork head C/A and a table A/C, A within 0..30: A at either end, C every 2.5 degrees. */
+  cncrot_machine head, table;
+  memset(&head, 0, sizeof head);
+  memset(&table, 0, sizeof table);
+  double up[3] = {0, 0, 150}, down[3] = {0, 0, -100};
+  CHECK_STATUS(cncrot_machine_add_axis(&head, 0, Z, O, 0, 0), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_add_axis(&head, 0, X, up, 0, 30), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_add_axis(&table, 1, X, down, 0, 30), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_add_axis(&table, 1, Z, O, 0, 0), CNCROT_STATUS_OK);
+  int refused = 0, moved = 0, total = 0;
+  for (int which = 0; which < 2; which++) {
+    const cncrot_machine *m = which ? &table : &head;
+    int a = which ? 0 : 1, c = which ? 1 : 0;
+    for (double end = 0; end <= 30; end += 30)
+      for (double deg = -180; deg < 180; deg += 2.5) {
+        double at[3] = {0, 0, 0};
+        at[a] = end;
+        at[c] = deg;
+        if (cncrot_machine_forward(m, at, f) != CNCROT_STATUS_OK) continue;
+        int32_t st = cncrot_machine_choose(m, f, at, CNCROT_CHOOSE_CLOSEST, 0, out, res, rem);
+        total++;
+        if (st < 0)
+          refused++;
+        else if (fabs(out[a] - end) > 1e-9 || out[a] < 0 || out[a] > 30 || fabs(out[c] - deg) > 1e-9)
+          moved++;
+      }
+  }
+  CHECK(total == 576 && refused == 0 && moved == 0, "%d of %d refused, %d moved", refused, total, moved);
+
+  /* A table A (about X) carrying C (about Z), A within -120..30, standing at (30, -162.5)
+   * with that orientation as target: it stays, rather than (-30, -342.5). */
+  cncrot_machine ac;
+  memset(&ac, 0, sizeof ac);
+  CHECK_STATUS(cncrot_machine_add_axis(&ac, 1, X, O, -120, 30), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_add_axis(&ac, 1, Z, O, 0, 0), CNCROT_STATUS_OK);
+  double here[3] = {30, -162.5, 0};
+  CHECK_STATUS(cncrot_machine_forward(&ac, here, f), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_choose(&ac, f, here, CNCROT_CHOOSE_CLOSEST, 0, out, res, rem), CNCROT_STATUS_OK);
+  CHECK(out[0] == 30 && fabs(out[1] + 162.5) < 1e-9, "A %.17g C %.17g", out[0], out[1]);
+  /* The same through CYCLE600: the table's frame W^-1 = Rz(162.5)·Rx(-30), intrinsic Z, X'
+   * (code 7). */
+  cncrot_cycle600_gud gud;
+  memset(&gud, 0, sizeof gud);
+  CHECK_STATUS(cncrot_cycle600(&gud, NULL, 1, "", 0, 7, 0, 0, 0, 162.5, -30, 0, 0, 0, 0, 1, 39, 0, 0, 0),
+               CNCROT_STATUS_OK);
+  fill_sentinel(out, 3);
+  CHECK_STATUS(cncrot_cycle600_position(&gud, &ac, here, out, res, rem), CNCROT_STATUS_OK);
+  CHECK(out[0] == 30 && fabs(out[1] + 162.5) < 1e-9, "CYCLE600: A %.17g C %.17g", out[0], out[1]);
+}
+
+/* Issue 20, classes 1 and 4: a description filled by hand is checked; parameters whose
+ * magnitude loses the degree or the millimetre are refused with OUT_OF_RANGE, a Hirth step
+ * finer than any grid and garbage in an unused entry with BAD_ARGUMENT; nothing written. */
+static void hand_filled_descriptions(void) {
+  cncrot_machine m;
+  memset(&m, 0, sizeof m);
+  double up[3] = {0, 0, 150};
+  CHECK_STATUS(cncrot_machine_add_axis(&m, 0, Z, O, 0, 0), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_add_axis(&m, 0, Y, up, -100, 100), CNCROT_STATUS_OK);
+  double ax[3] = {10, 20, 0}, f[16], out[3], res[3], rem[16];
+  CHECK_STATUS(cncrot_machine_forward(&m, ax, f), CNCROT_STATUS_OK);
+  struct {
+    const char *what;
+    int axis;
+    int field; /* 0 min/max, 1 offset, 2 Hirth offset/step, 3 point x, 4 Hirth step, 5 unused entry */
+    double v1, v2;
+    int32_t want;
+  } cases[] = {
+      {"travel at 1e15", 1, 0, 1e15, 1e15 + 720, CNCROT_STATUS_OUT_OF_RANGE},
+      {"a limit at 65536", 1, 0, 0, 65536, CNCROT_STATUS_OUT_OF_RANGE},
+      {"offset 1e12", 0, 1, 1e12, 0, CNCROT_STATUS_OUT_OF_RANGE},
+      {"offset -65536", 0, 1, -65536, 0, CNCROT_STATUS_OUT_OF_RANGE},
+      {"Hirth offset 1e17", 1, 2, 1e17, 1, CNCROT_STATUS_OUT_OF_RANGE},
+      {"point 1e12", 1, 3, 1e12, 0, CNCROT_STATUS_OUT_OF_RANGE},
+      {"point beyond 1e6", 1, 3, 1.0000001e6, 0, CNCROT_STATUS_OUT_OF_RANGE},
+      {"Hirth step 1e-310", 1, 4, 1e-310, 0, CNCROT_STATUS_BAD_ARGUMENT},
+      {"Hirth step below 1e-6", 1, 4, 0.999e-6, 0, CNCROT_STATUS_BAD_ARGUMENT},
+      {"garbage in an unused entry", 2, 5, 1, 0, CNCROT_STATUS_BAD_ARGUMENT},
+      {"NaN in an unused entry", 2, 5, NAN, 0, CNCROT_STATUS_BAD_ARGUMENT},
+      {"limits within 65536", 1, 0, -65535.75, 65535.75, CNCROT_STATUS_OK},
+      {"point at 1e6", 1, 3, 1e6, 0, CNCROT_STATUS_OK},
+      {"the finest Hirth step", 1, 4, 1e-6, 0, CNCROT_STATUS_SNAPPED},
+  };
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    cncrot_machine e = m;
+    cncrot_machine_axis *a = &e.axes[cases[k].axis];
+    switch (cases[k].field) {
+      case 0: a->min_deg = cases[k].v1; a->max_deg = cases[k].v2; break;
+      case 1: a->offset_deg = cases[k].v1; break;
+      case 2: a->hirth_offset_deg = cases[k].v1; a->hirth_step_deg = cases[k].v2; break;
+      case 3: a->point[0] = cases[k].v1; break;
+      case 4: a->hirth_step_deg = cases[k].v1; break;
+      default: a->offset_deg = cases[k].v1; break;
+    }
+    int32_t want = cases[k].want, want_fwd = want == CNCROT_STATUS_SNAPPED ? CNCROT_STATUS_OK : want;
+    double g[16];
+    fill_sentinel(g, 16);
+    fill_sentinel(out, 3);
+    int32_t s = cncrot_machine_forward(&e, ax, g);
+    CHECK(s == want_fwd, "%s: forward %d, want %d", cases[k].what, s, want_fwd);
+    s = cncrot_machine_choose(&e, f, ax, CNCROT_CHOOSE_CLOSEST, 0, out, res, rem);
+    /* The finest grid snaps B = 20 by at most half a micro-degree (or not at all). */
+    int ok = s == want || (want == CNCROT_STATUS_SNAPPED && s == CNCROT_STATUS_OK);
+    CHECK(ok, "%s: choose %d (%s), want %d", cases[k].what, s, cncrot_status_str(s), want);
+    if (want < 0) CHECK(is_sentinel(g, 16) && is_sentinel(out, 3), "%s: untouched", cases[k].what);
+  }
+  /* Adding an axis with a travel beyond the bound. */
+  cncrot_machine keep = m;
+  CHECK_STATUS(cncrot_machine_add_axis(&m, 1, X, O, -1e15, 0), CNCROT_STATUS_OUT_OF_RANGE);
+  CHECK(memcmp(&keep, &m, sizeof m) == 0, "untouched");
+}
+
 int main(void) {
   fork_head();
   table_and_mixed();
   nutating_and_three_axes();
   cycle600_and_refusals();
+  travel_ends();
+  hand_filled_descriptions();
   return finish("test_kinematics");
 }

@@ -145,9 +145,39 @@
 #define CNCROT_CHOOSE_PLUS 2
 
 /**
- * `cncrot_machine_choose`: the other solution of the pair (CYCLE600 `_ROT_INV = 1`).
+ * `cncrot_machine_choose`: the other solution of the pair (CYCLE600 `_ROT_INV = 1`); the
+ * only one left when the other lies outside the travel or there is no other.
  */
 #define CNCROT_CHOOSE_INVERSE 3
+
+/**
+ * A computed position at most this far (degrees) beyond an end of its axis' travel is
+ * taken exactly at that end \[choice\]: the inverse computes a position at an end a few
+ * ulp off; moving by this much turns the tool by 1.7e-11 rad, within the 1e-10 rad to
+ * which a target counts as reached.
+ */
+#define CNCROT_MACHINE_TRAVEL_TOLERANCE_DEG 1e-9
+
+/**
+ * Angles of a machine — axis offsets, travel limits, Hirth offsets, and the current
+ * positions given to `cncrot_machine_choose` — must be below this in magnitude (degrees);
+ * otherwise `CNCROT_STATUS_OUT_OF_RANGE`. There doubles are 7.3e-12° apart at most; from
+ * it on a turn of the axis would be computed to 1.5e-11° or worse (at 1e15°, 0.125°).
+ */
+#define CNCROT_MACHINE_ANGLE_MAX_DEG 65536.0
+
+/**
+ * The coordinates of an axis' point must lie within ± this (millimetres; a kilometre)
+ * \[choice\]; otherwise `CNCROT_STATUS_OUT_OF_RANGE`. The translations made from such a
+ * point are exact to 1e-9 mm.
+ */
+#define CNCROT_MACHINE_LENGTH_MAX_MM 1e6
+
+/**
+ * The finest Hirth grid (degrees) \[choice\]: `hirth_step_deg` is 0 (no grid) or at least
+ * this; a step between is `CNCROT_STATUS_BAD_ARGUMENT`.
+ */
+#define CNCROT_MACHINE_HIRTH_STEP_MIN_DEG 1e-6
 
 /**
  * Siemens SINUMERIK: `CYCLE800(…)`, `CYCLE600(…)`, `ROT`/`AROT`/`CROT`, `ROTS`/`AROTS`/`CROTS`,
@@ -475,16 +505,17 @@ typedef struct cncrot_machine_axis {
    */
   double direction[3];
   /**
-   * A point on the axis, mm.
+   * A point on the axis, mm, each coordinate within ±`CNCROT_MACHINE_LENGTH_MAX_MM`.
    */
   double point[3];
   /**
    * The position the axis reads in the described initial state, degrees
-   * (`$TC_CARR24/25`).
+   * (`$TC_CARR24/25`), below `CNCROT_MACHINE_ANGLE_MAX_DEG` in magnitude.
    */
   double offset_deg;
   /**
-   * Travel limits, degrees; both 0: a modulo axis without limits.
+   * Travel limits, degrees, `min_deg <= max_deg`, below `CNCROT_MACHINE_ANGLE_MAX_DEG` in
+   * magnitude; both 0: a modulo axis without limits.
    */
   double min_deg;
   /**
@@ -492,11 +523,13 @@ typedef struct cncrot_machine_axis {
    */
   double max_deg;
   /**
-   * Hirth grid: a tooth position, degrees.
+   * Hirth grid: a tooth position, degrees, below `CNCROT_MACHINE_ANGLE_MAX_DEG` in
+   * magnitude (not used without a grid).
    */
   double hirth_offset_deg;
   /**
-   * Hirth grid: tooth spacing, degrees; 0: no grid.
+   * Hirth grid: tooth spacing, degrees, at least `CNCROT_MACHINE_HIRTH_STEP_MIN_DEG`; 0:
+   * no grid.
    */
   double hirth_step_deg;
 } cncrot_machine_axis;
@@ -504,8 +537,23 @@ typedef struct cncrot_machine_axis {
 /**
  * A machine: up to three rotary axes, outermost first (an axis added after another on the
  * same side is carried by it), the tool's base direction and a name. A caller-owned plain
- * struct; zeroed, it is a machine without rotary axes whose tool points along +Z. Every
- * call checks it; the fields may be written directly (offsets, Hirth grids, limits).
+ * struct; zeroed, it is a machine without rotary axes whose tool points along +Z.
+ *
+ * The caller may fill it by hand, wholly or in part (offsets, Hirth grids and limits after
+ * `cncrot_machine_add_axis`, say): every call that reads it checks all of it and refuses
+ * what is not a machine, with nothing written. `CNCROT_STATUS_BAD_ARGUMENT`: a pointer
+ * not aligned for the struct, `count` outside 0..3, a `reserved` field not 0, an unused
+ * entry of `axes` not all zero, a zero direction, `min_deg > max_deg`, a Hirth step
+ * between 0 and `CNCROT_MACHINE_HIRTH_STEP_MIN_DEG` or negative, two consecutive axes of
+ * the rotation chain parallel (within a sine of 1e-6), a name with bytes other than
+ * printable ASCII; `CNCROT_STATUS_BAD_FLAG`: `work_side` other than 0 or 1;
+ * `CNCROT_STATUS_NOT_FINITE`: a NaN or infinity in `tool_direction` or in any field of a
+ * used axis;
+ * `CNCROT_STATUS_OUT_OF_RANGE`: an angle (offset, limit, Hirth offset) of magnitude
+ * `CNCROT_MACHINE_ANGLE_MAX_DEG` or more, a point coordinate beyond
+ * ±`CNCROT_MACHINE_LENGTH_MAX_MM`; `CNCROT_STATUS_NAME_TOO_LONG`: no NUL in `name`.
+ * Directions need not be unit vectors (the library stores unit vectors); bytes after the
+ * name's NUL are not read.
  */
 typedef struct cncrot_machine {
   /**
@@ -525,7 +573,7 @@ typedef struct cncrot_machine {
    */
   struct cncrot_machine_axis axes[CNCROT_MACHINE_AXES];
   /**
-   * A name, NUL-terminated (`$TC_CARR34`).
+   * A name, NUL-terminated, printable ASCII (`$TC_CARR34`).
    */
   char name[CNCROT_NAME_SIZE];
 } cncrot_machine;
@@ -781,10 +829,21 @@ int32_t cncrot_cycle600(struct cncrot_cycle600_gud *gud,
  * `_SW_REC = 0`: the rotary-axis positions of `machine` for the frame the last
  * `cncrot_cycle600` call left in `gud`, seen from the current positions `current_deg`:
  * the solution closest to them, or with `_ROT_INV = 1` stored in `gud` the other one of
- * the pair. Outputs and statuses as `cncrot_machine_choose` with rule
- * `CNCROT_CHOOSE_CLOSEST` / `CNCROT_CHOOSE_INVERSE`; `CNCROT_STATUS_BAD_STATE` for a
- * `gud` this library did not write. `_RETR_Z` (in `gud`) is the calling cycle's: retract
- * before moving the axes.
+ * the pair — or, when the other lies outside the travel or there is none, the closest,
+ * with status 0 (compare `axes_deg` with `current_deg` to tell). Outputs as
+ * `cncrot_machine_choose` with rule `CNCROT_CHOOSE_CLOSEST` / `CNCROT_CHOOSE_INVERSE`,
+ * positions within `CNCROT_MACHINE_TRAVEL_TOLERANCE_DEG` beyond a travel end taken at
+ * that end. `_RETR_Z` (in `gud`) is the calling cycle's: retract before moving the axes.
+ *
+ * Returns 0, `CNCROT_STATUS_FREE_AXIS`, `CNCROT_STATUS_SNAPPED`, or with nothing written:
+ * `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a `gud` this library did not
+ * write), `CNCROT_STATUS_UNREACHABLE`, `CNCROT_STATUS_OUT_OF_TRAVEL`,
+ * `CNCROT_STATUS_BAD_ARGUMENT` (an unused current position not 0),
+ * `CNCROT_STATUS_OUT_OF_RANGE` (a current position of magnitude
+ * `CNCROT_MACHINE_ANGLE_MAX_DEG` or more), `CNCROT_STATUS_NOT_FINITE` (a current
+ * position), and for a description that is not a machine (see `cncrot_machine`)
+ * `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_NAME_TOO_LONG`.
  *
  * # Safety
  * `gud` points to a state, `machine` to a `cncrot_machine`, `current_deg`, `axes_deg`,
@@ -994,11 +1053,17 @@ int32_t cncrot_frame_transform_point(const double *frame, const double *point, d
  * offsets (24, 25), Hirth grids (26-29), limits (30-33), name (34), fine offsets (41-65,
  * added). Other data sets, other tool data, `CHANDATA(…)` and comments are skipped.
  *
- * Returns 0 with `machine` written, or with it untouched: `CNCROT_STATUS_PARSE`,
- * `CNCROT_STATUS_UNKNOWN_WORD` (a parameter that does not exist, anything that is not an
- * assignment), `CNCROT_STATUS_NAME_TOO_LONG`, `CNCROT_STATUS_UNKNOWN_HEAD` (no parameter
- * of that data set), `CNCROT_STATUS_BAD_ARGUMENT` (`data_set` < 1, a type other than
- * T/P/M, v2 without v1, parallel axes, negative Hirth increment). The line of an error:
+ * Returns 0 with `machine` written, or with it untouched: `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_PARSE` (a malformed line or number), `CNCROT_STATUS_UNKNOWN_WORD` (a
+ * parameter that does not exist, anything that is not an assignment),
+ * `CNCROT_STATUS_NOT_A_NUMBER` (a variable or expression where a number must stand:
+ * `R1`), `CNCROT_STATUS_MISSING_WORD` (no number after `=`),
+ * `CNCROT_STATUS_NAME_TOO_LONG`, `CNCROT_STATUS_UNKNOWN_HEAD` (no parameter of that data
+ * set), `CNCROT_STATUS_BAD_ARGUMENT` (`data_set` < 1, `len` beyond the largest object, a
+ * type other than T/P/M, v2 without v1, parallel axes, min > max, a Hirth increment
+ * negative or below `CNCROT_MACHINE_HIRTH_STEP_MIN_DEG`), `CNCROT_STATUS_OUT_OF_RANGE` (a
+ * nonzero number outside 1e-100..1e100 in magnitude; an offset, limit, Hirth offset or
+ * point beyond the bounds of `cncrot_machine`). The line of an error:
  * `cncrot_machine_carr_error_line`.
  *
  * # Safety
@@ -1021,6 +1086,14 @@ int32_t cncrot_machine_from_carr(struct cncrot_machine *machine,
  * 1-based line in `*line` (0 when the text was read, or for an error of the whole data
  * set such as `CNCROT_STATUS_UNKNOWN_HEAD`).
  *
+ * Returns the status `cncrot_machine_from_carr` returns for the text (with `*line`
+ * written): 0, `CNCROT_STATUS_PARSE`, `CNCROT_STATUS_UNKNOWN_WORD`,
+ * `CNCROT_STATUS_NOT_A_NUMBER`, `CNCROT_STATUS_MISSING_WORD`,
+ * `CNCROT_STATUS_NAME_TOO_LONG`, `CNCROT_STATUS_UNKNOWN_HEAD`,
+ * `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_OUT_OF_RANGE`; or, with nothing written,
+ * `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_ARGUMENT` (`len` beyond the largest
+ * object).
+ *
  * # Safety
  * `text` points to `len` readable bytes, `line` to a writable `int32_t`.
  *
@@ -1041,9 +1114,12 @@ int32_t cncrot_machine_carr_error_line(const char *text,
  * `p2 = (OFFS_L2_X, OFFS_L2_Y, DELTA_L2)`,
  * `p1 = p2 + (OFFS_L1_X, OFFS_L1_Y, DELTA_L1) + (OFFS_H1_X, DELTA_H1, OFFS_H1_Z)`.
  *
- * Returns 0 with `machine` written, or with it untouched: `CNCROT_STATUS_UNKNOWN_HEAD`,
- * `CNCROT_STATUS_NAME_TOO_LONG`, `CNCROT_STATUS_BAD_ARGUMENT` (a zero or parallel
- * direction, a corrupt table), `CNCROT_STATUS_NOT_FINITE`.
+ * Returns 0 with `machine` written, or with it untouched: `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_UNKNOWN_HEAD`, `CNCROT_STATUS_NAME_TOO_LONG` (no NUL within 32 bytes of
+ * `name`), `CNCROT_STATUS_BAD_ARGUMENT` (a zero or parallel direction, a corrupt or
+ * misaligned table, an entry's name not printable ASCII), `CNCROT_STATUS_NOT_FINITE` (a
+ * direction, the entry's lengths, or a pivot that overflows), `CNCROT_STATUS_OUT_OF_RANGE`
+ * (a pivot coordinate beyond ±`CNCROT_MACHINE_LENGTH_MAX_MM`).
  *
  * # Safety
  * `machine` points to a writable `cncrot_machine`, `heads` to a table (aligned as
@@ -1067,10 +1143,15 @@ int32_t cncrot_machine_from_head(struct cncrot_machine *machine,
  * `max_deg`: travel limits, both 0 for a modulo axis without limits. The direction is
  * stored as a unit vector; offset and Hirth grid may be set in the struct afterwards.
  *
- * Returns 0, or with `machine` untouched: `CNCROT_STATUS_TABLE_FULL` (three axes already),
- * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_BAD_ARGUMENT` (a
- * zero direction, `min > max`, an axis parallel to its neighbour in the chain, a corrupt
- * description).
+ * Returns 0, or with `machine` untouched: `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_TABLE_FULL` (three axes already), `CNCROT_STATUS_BAD_FLAG` (`work_side`),
+ * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_BAD_ARGUMENT` (a zero direction,
+ * `min > max`, an axis parallel to its neighbour in the chain), `CNCROT_STATUS_OUT_OF_RANGE`
+ * (a limit of magnitude `CNCROT_MACHINE_ANGLE_MAX_DEG` or more, a point coordinate beyond
+ * ±`CNCROT_MACHINE_LENGTH_MAX_MM`); and for a description already in `machine` that is not
+ * a machine, `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a
+ * machine: see `cncrot_machine`).
  *
  * # Safety
  * `machine` points to a writable `cncrot_machine`, `direction` and `point` to 3 doubles.
@@ -1095,9 +1176,11 @@ int32_t cncrot_machine_add_axis(struct cncrot_machine *machine,
  * added; unused ones 0): its third column is the tool direction in workpiece coordinates,
  * `F·(0, 0, −L, 1)` the tool tip of a tool of length L.
  *
- * Returns 0, or with `frame` untouched: `CNCROT_STATUS_NOT_FINITE`,
- * `CNCROT_STATUS_BAD_ARGUMENT` (an unused position not 0, a corrupt description),
- * `CNCROT_STATUS_OUT_OF_RANGE`.
+ * Returns 0, or with `frame` untouched: `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_NOT_FINITE` (a position), `CNCROT_STATUS_BAD_ARGUMENT` (an unused
+ * position not 0), `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a
+ * machine: see `cncrot_machine`).
  *
  * # Safety
  * `machine` points to a `cncrot_machine`, `axes_deg` to 3 and `frame` to 16 doubles.
@@ -1119,9 +1202,11 @@ int32_t cncrot_machine_forward(const struct cncrot_machine *machine,
  *
  * Returns 0; `CNCROT_STATUS_FREE_AXIS` at a singular pose (the target direction along an
  * axis, which is free: the family once, the free axis at 0); or with nothing written:
- * `CNCROT_STATUS_UNREACHABLE`, `CNCROT_STATUS_NO_ROOM` (`capacity` below the count; 2
- * always suffice), `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_FINITE`,
- * `CNCROT_STATUS_BAD_ARGUMENT`.
+ * `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_UNREACHABLE`, `CNCROT_STATUS_NO_ROOM`
+ * (`capacity` below the count; 2 always suffice), `CNCROT_STATUS_NOT_A_ROTATION`,
+ * `CNCROT_STATUS_NOT_FINITE` (the frame), `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a
+ * machine: see `cncrot_machine`).
  *
  * # Safety
  * `machine` points to a `cncrot_machine`, `frame` to 16 doubles, `solutions_deg` to
@@ -1142,22 +1227,32 @@ int32_t cncrot_machine_inverse(const struct cncrot_machine *machine,
  * The axis positions to move to for the orientation of `frame`, seen from the current
  * positions `current_deg`: every solution brought to the whole turn nearest to the
  * current position (computed 10°, current 750° → 730°), or within the travel limits, and
- * snapped to Hirth grids; solutions outside the travel are skipped. `rule`:
- * `CNCROT_CHOOSE_CLOSEST` (`reference_axis` 0), `CNCROT_CHOOSE_MINUS` / `_PLUS` (the
- * lower / higher position of axis `reference_axis`, 1-based: CYCLE800's direction
- * reference, Heidenhain `SEQ-` / `SEQ+` on the master axis), `CNCROT_CHOOSE_INVERSE`
- * (`reference_axis` 0; the other solution of the pair: CYCLE600 `_ROT_INV`). A free axis
- * (singular pose) stays at its current position.
+ * snapped to Hirth grids; solutions outside the travel are skipped. A position computed
+ * within `CNCROT_MACHINE_TRAVEL_TOLERANCE_DEG` beyond an end of the travel is taken exactly
+ * at that end (a target made at an end is reached there; `axes_deg` never lies outside
+ * the travel). `rule`: `CNCROT_CHOOSE_CLOSEST` (`reference_axis` 0), `CNCROT_CHOOSE_MINUS`
+ * / `_PLUS` (the lower / higher position of axis `reference_axis`, 1-based: CYCLE800's
+ * direction reference, Heidenhain `SEQ-` / `SEQ+` on the master axis; the other solution
+ * when one lies outside the travel), `CNCROT_CHOOSE_INVERSE` (`reference_axis` 0; the
+ * other solution of the pair: CYCLE600 `_ROT_INV`). `CNCROT_CHOOSE_INVERSE` returns the
+ * closest solution, with status 0, when the other one lies outside the travel or the
+ * orientation has only one (a free axis, the edge of a nutating head's cone): compare
+ * `axes_deg` with the current positions to tell. A free axis (singular pose) stays at its
+ * current position.
  *
  * Outputs: `axes_deg` (unused 0), `residual_deg` (Hirth: position minus exact value),
  * `remaining` (the rotation the axes leave to the frame, `Fᵀ·target`: about the tool axis
  * with fewer than three axes, plus the Hirth residual; no translation).
  *
  * Returns 0, `CNCROT_STATUS_FREE_AXIS`, `CNCROT_STATUS_SNAPPED` (a Hirth axis left a
- * residual), or with nothing written: `CNCROT_STATUS_UNREACHABLE`,
- * `CNCROT_STATUS_OUT_OF_TRAVEL`, `CNCROT_STATUS_BAD_ARGUMENT` (rule, reference axis, an
- * unused current position not 0), `CNCROT_STATUS_OUT_OF_RANGE` (a current position
- * beyond ±65536°), `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_FINITE`.
+ * residual), or with nothing written: `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_UNREACHABLE`, `CNCROT_STATUS_OUT_OF_TRAVEL`, `CNCROT_STATUS_BAD_ARGUMENT`
+ * (rule, reference axis, an unused current position not 0), `CNCROT_STATUS_OUT_OF_RANGE`
+ * (a current position of magnitude `CNCROT_MACHINE_ANGLE_MAX_DEG` or more),
+ * `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_FINITE` (the frame, a current
+ * position), `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a
+ * machine: see `cncrot_machine`).
  *
  * # Safety
  * `machine` points to a `cncrot_machine`, `frame` and `remaining` to 16 doubles,
@@ -1183,8 +1278,12 @@ int32_t cncrot_machine_choose(const struct cncrot_machine *machine,
  * `from_deg` to `to_deg`, the linear axes being at `linear_from` before (machine
  * coordinates of the tool adapter's reference point, the origin of the axis points).
  *
- * Returns 0, or with `linear_to` untouched: `CNCROT_STATUS_NOT_FINITE`,
- * `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_OUT_OF_RANGE`.
+ * Returns 0, or with `linear_to` untouched: `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_NOT_FINITE` (a position, `tool_length`), `CNCROT_STATUS_BAD_ARGUMENT` (an
+ * unused position not 0), `CNCROT_STATUS_OUT_OF_RANGE` (a result that overflows),
+ * `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a
+ * machine: see `cncrot_machine`).
  *
  * # Safety
  * `machine` points to a `cncrot_machine`, the arrays to 3 doubles each.

@@ -919,4 +919,24 @@ mod tests {
             "{accepted} {refused}"
         );
     }
+    /// The bound of [`closest_of`] right at 65 536°, on both sides of it and for both
+    /// signs: 16° + 182 turns is 65 536° exactly (refused), 16° − 2⁻³⁷ + 182 turns is the
+    /// largest double below it (returned as it is).
+    #[test]
+    fn closest_refuses_from_65536_degrees_on() {
+        const ULP: f64 = 1.0 / 137_438_953_472.0; // 2⁻³⁷, the spacing just below 2¹⁶
+        let d = |a: f64| Decomposition {
+            angles: [20.0, 30.0, a],
+            singular: false,
+        };
+        for sign in [1.0, -1.0] {
+            let reference = [20.0, 30.0, sign * CLOSEST_MAX];
+            assert_eq!(
+                closest_of(Sequence::ZXZ, d(sign * 16.0), reference),
+                Err(Error::OutOfRange)
+            );
+            let below = closest_of(Sequence::ZXZ, d(sign * (16.0 - ULP)), reference).unwrap();
+            assert_eq!(below.angles, [20.0, 30.0, sign * (CLOSEST_MAX - ULP)]);
+        }
+    }
 }

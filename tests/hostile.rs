@@ -741,3 +741,589 @@ fn names_must_be_printable_ascii_without_spaces() {
         assert_eq!(s, BAD_ARGUMENT, "{bad:?}");
     }
 }
+
+// ---- the machine description ------------------------------------------------------------
+
+use std::ffi::{c_char, CStr};
+
+const BAD_FLAG: i32 = cncrot_status::BadFlag as i32;
+const NAME_TOO_LONG: i32 = cncrot_status::NameTooLong as i32;
+
+/// A fork head C/B (B within ±100°, pivot 150 mm up) built through the C interface, named.
+fn c_machine() -> cncrot_machine {
+    let mut m: cncrot_machine = unsafe { std::mem::zeroed() };
+    let (z, y, o, p) = (
+        [0.0, 0.0, 1.0],
+        [0.0, 1.0, 0.0],
+        [0.0; 3],
+        [0.0, 0.0, 150.0],
+    );
+    unsafe {
+        assert_eq!(
+            cncrot_machine_add_axis(&mut m, 0, z.as_ptr(), o.as_ptr(), 0.0, 0.0),
+            0
+        );
+        assert_eq!(
+            cncrot_machine_add_axis(&mut m, 0, y.as_ptr(), p.as_ptr(), -100.0, 100.0),
+            0
+        );
+    }
+    m.name[0] = b'M' as c_char;
+    m
+}
+
+/// The statuses of every export that reads a description, on `m`: forward, inverse,
+/// choose, follow-up, adding an axis, CYCLE600 positioning. On a refusal each must leave
+/// its outputs (and the description) untouched.
+fn statuses_of(m: &cncrot_machine) -> [i32; 6] {
+    let id = [
+        1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
+    ];
+    let n = usize::try_from(m.count).unwrap_or(0).min(3);
+    let mut pos = [0.0; 3];
+    pos[..n].fill(10.0);
+    let x = [1.0, 0.0, 0.0];
+    let gud = valid_state();
+    let mut out = [[7.0f64; 16]; 6];
+    let mut count = 99usize;
+    let mut copy = *m;
+    let s = unsafe {
+        [
+            cncrot_machine_forward(m, pos.as_ptr(), out[0].as_mut_ptr()),
+            cncrot_machine_inverse(m, id.as_ptr(), out[1].as_mut_ptr(), 2, &mut count),
+            cncrot_machine_choose(
+                m,
+                id.as_ptr(),
+                pos.as_ptr(),
+                CNCROT_CHOOSE_CLOSEST,
+                0,
+                out[2].as_mut_ptr(),
+                out[3].as_mut_ptr(),
+                out[4].as_mut_ptr(),
+            ),
+            cncrot_machine_follow(
+                m,
+                pos.as_ptr(),
+                pos.as_ptr(),
+                x.as_ptr(),
+                100.0,
+                out[5].as_mut_ptr(),
+            ),
+            cncrot_machine_add_axis(&mut copy, 1, x.as_ptr(), x.as_ptr(), 0.0, 0.0),
+            cncrot_cycle600_position(
+                &gud,
+                m,
+                pos.as_ptr(),
+                out[2].as_mut_ptr(),
+                out[3].as_mut_ptr(),
+                out[4].as_mut_ptr(),
+            ),
+        ]
+    };
+    if s.iter().all(|&x| x < 0) {
+        assert!(out.iter().flatten().all(|&x| x == 7.0) && count == 99);
+        assert_eq!(bytes_of_machine(&copy), bytes_of_machine(m));
+    }
+    s
+}
+
+fn bytes_of_machine(m: &cncrot_machine) -> Vec<u8> {
+    let p = (m as *const cncrot_machine).cast::<u8>();
+    unsafe { std::slice::from_raw_parts(p, size_of::<cncrot_machine>()) }.to_vec()
+}
+
+/// Issue 20, classes 1 and 4: a `cncrot_machine` filled by hand is checked field by field;
+/// what is not a machine — garbage in an unused entry, parameters whose magnitude would
+/// lose the degree or the millimetre, a Hirth step no grid has — is refused by every export
+/// that reads it, with the same status, nothing written.
+#[test]
+fn a_hand_filled_machine_is_refused_unless_it_is_one() {
+    type Edit = fn(&mut cncrot_machine);
+    let refused: [(&str, Edit, i32); 27] = [
+        (
+            "garbage in an unused entry",
+            |m| m.axes[2].point[0] = 1.0,
+            BAD_ARGUMENT,
+        ),
+        (
+            "NaN in an unused entry",
+            |m| m.axes[2].direction[1] = f64::NAN,
+            BAD_ARGUMENT,
+        ),
+        (
+            "an unused entry's side",
+            |m| m.axes[2].work_side = 1,
+            BAD_ARGUMENT,
+        ),
+        ("a count over an empty entry", |m| m.count = 3, BAD_ARGUMENT),
+        ("count -1", |m| m.count = -1, BAD_ARGUMENT),
+        ("count 4", |m| m.count = 4, BAD_ARGUMENT),
+        ("reserved", |m| m.reserved = 1, BAD_ARGUMENT),
+        (
+            "an axis' reserved",
+            |m| m.axes[0].reserved = 1,
+            BAD_ARGUMENT,
+        ),
+        ("side 2", |m| m.axes[1].work_side = 2, BAD_FLAG),
+        ("side -1", |m| m.axes[1].work_side = -1, BAD_FLAG),
+        (
+            "zero direction",
+            |m| m.axes[1].direction = [0.0; 3],
+            BAD_ARGUMENT,
+        ),
+        (
+            "parallel axes",
+            |m| m.axes[1].direction = [0.0, 0.0, -3.0],
+            BAD_ARGUMENT,
+        ),
+        (
+            "infinite point",
+            |m| m.axes[1].point[2] = f64::INFINITY,
+            NOT_FINITE,
+        ),
+        ("NaN tool", |m| m.tool_direction[0] = f64::NAN, NOT_FINITE),
+        ("min > max", |m| m.axes[1].min_deg = 101.0, BAD_ARGUMENT),
+        ("NaN limit", |m| m.axes[1].max_deg = f64::NAN, NOT_FINITE),
+        (
+            "travel at 1e15",
+            |m| {
+                m.axes[1].min_deg = 1e15;
+                m.axes[1].max_deg = 1e15 + 720.0;
+            },
+            OUT_OF_RANGE,
+        ),
+        (
+            "a limit at -65 536",
+            |m| m.axes[1].min_deg = -65_536.0,
+            OUT_OF_RANGE,
+        ),
+        ("offset 1e12", |m| m.axes[0].offset_deg = 1e12, OUT_OF_RANGE),
+        (
+            "Hirth offset 1e17",
+            |m| {
+                m.axes[1].hirth_offset_deg = 1e17;
+                m.axes[1].hirth_step_deg = 1.0;
+            },
+            OUT_OF_RANGE,
+        ),
+        ("point 1e12", |m| m.axes[1].point[0] = 1e12, OUT_OF_RANGE),
+        (
+            "point just beyond 1e6",
+            |m| m.axes[0].point[1] = -1.000_000_1e6,
+            OUT_OF_RANGE,
+        ),
+        (
+            "Hirth step 1e-310",
+            |m| m.axes[1].hirth_step_deg = 1e-310,
+            BAD_ARGUMENT,
+        ),
+        (
+            "Hirth step below 1e-6",
+            |m| m.axes[1].hirth_step_deg = 0.999e-6,
+            BAD_ARGUMENT,
+        ),
+        (
+            "negative Hirth step",
+            |m| m.axes[1].hirth_step_deg = -1.0,
+            BAD_ARGUMENT,
+        ),
+        (
+            "name without NUL",
+            |m| m.name = [b'x' as c_char; 32],
+            NAME_TOO_LONG,
+        ),
+        ("name not printable", |m| m.name[1] = 1, BAD_ARGUMENT),
+    ];
+    let good = c_machine();
+    assert!(statuses_of(&good).iter().all(|&s| s >= 0));
+    for (what, edit, want) in refused {
+        let mut m = good;
+        edit(&mut m);
+        assert_eq!(statuses_of(&m), [want; 6], "{what}");
+    }
+    let accepted: [(&str, Edit); 7] = [
+        ("a direction of any length", |m| {
+            m.axes[1].direction = [0.0, 5.0, 0.0]
+        }),
+        ("-0 in an unused entry", |m| m.axes[2].offset_deg = -0.0),
+        ("a Hirth offset without a grid", |m| {
+            m.axes[1].hirth_offset_deg = 1e300
+        }),
+        ("bytes after the name's NUL", |m| m.name[20] = -1),
+        ("limits just within 65 536", |m| {
+            m.axes[0].min_deg = -65_535.75;
+            m.axes[0].max_deg = 65_535.75;
+        }),
+        ("points at 1e6", |m| m.axes[1].point = [1e6, -1e6, 1e6]),
+        ("the finest Hirth step", |m| {
+            m.axes[1].hirth_step_deg = 1e-6;
+            m.axes[1].hirth_offset_deg = -65_535.75;
+        }),
+    ];
+    for (what, edit) in accepted {
+        let mut m = good;
+        edit(&mut m);
+        let s = statuses_of(&m);
+        assert!(s.iter().all(|&s| s >= 0), "{what}: {s:?}");
+    }
+}
+
+/// The doc comment of a function in the committed header.
+fn header_doc(function: &str) -> String {
+    let header = include_str!("../include/cncrot.h");
+    let decl = header
+        .find(&format!("int32_t {function}("))
+        .unwrap_or_else(|| panic!("{function} not in the header"));
+    let start = header[..decl].rfind("/**").unwrap();
+    header[start..decl].to_string()
+}
+
+fn status_name(s: i32) -> String {
+    let text = unsafe { CStr::from_ptr(cncrot_status_str(s)) }
+        .to_str()
+        .unwrap();
+    text.split(':').next().unwrap().to_string()
+}
+
+/// Random hostile descriptions: a valid machine with up to three fields set to values
+/// that break it (NaN, ∞, huge, tiny, out-of-range integers, bytes of a name).
+fn hostile_machine(rng: &mut Rng) -> cncrot_machine {
+    let mut m = match rng.next() % 4 {
+        0 => unsafe { std::mem::zeroed() },
+        1 => c_machine(),
+        2 => {
+            let mut m = c_machine();
+            m.axes[1].hirth_step_deg = 2.5;
+            m.axes[1].hirth_offset_deg = 1.0;
+            m.axes[0].min_deg = -30.0;
+            m.axes[0].max_deg = 30.0;
+            m
+        }
+        _ => {
+            let mut m = c_machine();
+            let (x, o) = ([1.0, 0.0, 0.0], [0.0, 0.0, 50.0]);
+            unsafe { cncrot_machine_add_axis(&mut m, 1, x.as_ptr(), o.as_ptr(), -10.0, 10.0) };
+            m
+        }
+    };
+    let numbers = [
+        f64::NAN,
+        f64::INFINITY,
+        -f64::INFINITY,
+        0.0,
+        -0.0,
+        1e300,
+        -1e15,
+        65_536.0,
+        2e6,
+        1e-310,
+        -1.0,
+        0.5e-6,
+        rng.range(-400.0, 400.0),
+    ];
+    for _ in 0..rng.next() % 4 {
+        let v = numbers[(rng.next() % numbers.len() as u64) as usize];
+        let i = [-1, 0, 1, 2, 3, 4][(rng.next() % 6) as usize];
+        let a = (rng.next() % 3) as usize;
+        let k = (rng.next() % 3) as usize;
+        match rng.next() % 14 {
+            0 => m.count = i,
+            1 => m.reserved = i,
+            2 => m.tool_direction[k] = v,
+            3 => m.axes[a].work_side = i,
+            4 => m.axes[a].reserved = i,
+            5 => m.axes[a].direction[k] = v,
+            6 => m.axes[a].point[k] = v,
+            7 => m.axes[a].offset_deg = v,
+            8 => m.axes[a].min_deg = v,
+            9 => m.axes[a].max_deg = v,
+            10 => m.axes[a].hirth_offset_deg = v,
+            11 => m.axes[a].hirth_step_deg = v,
+            12 => m.name[(rng.next() % 32) as usize] = [0, 1, b'A' as c_char, -1][k],
+            _ => m.name = [b'x' as c_char; 32],
+        }
+    }
+    m
+}
+
+/// Issue 20, class 9: every status a kinematics export returns — driven with hostile
+/// descriptions, frames, positions, rules, texts and tables — is named in the export's
+/// doc comment in the header.
+#[test]
+fn every_status_of_a_kinematics_export_is_named_in_its_header_doc() {
+    use std::collections::{BTreeMap, BTreeSet};
+    let mut seen: BTreeMap<&str, BTreeSet<i32>> = BTreeMap::new();
+    let mut note = |f: &'static str, s: i32| {
+        seen.entry(f).or_default().insert(s);
+    };
+    let mut rng = Rng::new(2020);
+    let gud = valid_state();
+    let mut broken_gud = gud;
+    broken_gud.cyc600_2 += 1.0;
+    for round in 0..6000 {
+        let m = hostile_machine(&mut rng);
+        let n = usize::try_from(m.count).unwrap_or(0).min(3);
+        // A frame the machine reaches, a rotation it may not, or no rotation at all.
+        let mut pos = [0.0; 3];
+        for p in pos.iter_mut().take(n) {
+            *p = rng.range(-200.0, 200.0);
+        }
+        let mut frame = [0.0; 16];
+        if unsafe { cncrot_machine_forward(&m, pos.as_ptr(), frame.as_mut_ptr()) } < 0 {
+            let r = rng.rotation();
+            for i in 0..3 {
+                frame[4 * i..4 * i + 3].copy_from_slice(&r[i]);
+            }
+            frame[15] = 1.0;
+        }
+        match round % 7 {
+            0 => frame[0] = f64::NAN,
+            1 => frame[5] *= 1.1,
+            _ => {}
+        }
+        let mut current = pos;
+        match round % 5 {
+            0 => current[0] = 70_000.0,
+            1 => current[2] = 1.0,
+            2 => current[1] = f64::INFINITY,
+            3 => current[0] += 0.4,
+            _ => {}
+        }
+        let (rule, reference) = ((rng.next() % 5) as i32, (rng.next() % 4) as i32 - 1);
+        let (mut a, mut b, mut c, mut sol) = ([0.0; 3], [0.0; 3], [0.0; 16], [0.0; 6]);
+        let mut count = 0usize;
+        let lin = [rng.range(-1.0, 1.0) * [1.0, 1e308][round % 2], 0.0, 0.0];
+        let mut copy = m;
+        let dir = [[0.0, 1.0, 0.0], [0.0; 3], [1.0, 0.0, f64::NAN]][round % 3];
+        let (lo, hi) = [(0.0, 0.0), (-1e15, 0.0), (5.0, -5.0), (-90.0, 90.0)][round % 4];
+        unsafe {
+            note(
+                "cncrot_machine_forward",
+                cncrot_machine_forward(&m, current.as_ptr(), c.as_mut_ptr()),
+            );
+            note(
+                "cncrot_machine_inverse",
+                cncrot_machine_inverse(&m, frame.as_ptr(), sol.as_mut_ptr(), round % 3, &mut count),
+            );
+            note(
+                "cncrot_machine_choose",
+                cncrot_machine_choose(
+                    &m,
+                    frame.as_ptr(),
+                    current.as_ptr(),
+                    rule,
+                    reference,
+                    a.as_mut_ptr(),
+                    b.as_mut_ptr(),
+                    c.as_mut_ptr(),
+                ),
+            );
+            note(
+                "cncrot_machine_follow",
+                cncrot_machine_follow(
+                    &m,
+                    pos.as_ptr(),
+                    current.as_ptr(),
+                    lin.as_ptr(),
+                    100.0,
+                    a.as_mut_ptr(),
+                ),
+            );
+            note(
+                "cncrot_machine_add_axis",
+                cncrot_machine_add_axis(
+                    &mut copy,
+                    (round % 3) as i32,
+                    dir.as_ptr(),
+                    lin.as_ptr(),
+                    lo,
+                    hi,
+                ),
+            );
+            let g = if round % 11 == 0 { &broken_gud } else { &gud };
+            note(
+                "cncrot_cycle600_position",
+                cncrot_cycle600_position(
+                    g,
+                    &m,
+                    current.as_ptr(),
+                    a.as_mut_ptr(),
+                    b.as_mut_ptr(),
+                    c.as_mut_ptr(),
+                ),
+            );
+        }
+    }
+
+    // Swivel data: each way a text can be wrong, on its own.
+    let texts: [(&str, i32); 16] = [
+        (
+            "$TC_CARR7[1]=0 $TC_CARR9[1]=1 $TC_CARR11[1]=1 $TC_CARR32[1]=90 $TC_CARR34[1]=\"H\"",
+            1,
+        ),
+        ("$TC_CARR8[1]=R1", 1),
+        ("$TC_CARR8[1]=", 1),
+        ("$TC_CARR52[1]=0", 1),
+        ("$TC_CARR8[1]=1.2.3", 1),
+        ("$TC_CARR34[1]=\"ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789\"", 1),
+        ("$TC_CARR9[1]=1", 2),
+        ("$TC_CARR9[1]=1", 0),
+        ("$TC_CARR12[1]=1", 1),
+        ("$TC_CARR9[1]=1 $TC_CARR23[1]=\"X\"", 1),
+        ("$TC_CARR9[1]=1EX200", 1),
+        ("$TC_CARR9[1]=1 $TC_CARR30[1]=-1EX15", 1),
+        ("$TC_CARR9[1]=1 $TC_CARR24[1]=1EX12", 1),
+        ("$TC_CARR9[1]=1 $TC_CARR28[1]=1EX-7", 1),
+        ("$TC_CARR9[1]=1 $TC_CARR4[1]=1EX12", 1),
+        ("$TC_CARR9[1]=1 $TC_CARR30[1]=5 $TC_CARR32[1]=-5", 1),
+    ];
+    for (text, set) in texts {
+        let mut m: cncrot_machine = unsafe { std::mem::zeroed() };
+        let mut line = 0;
+        unsafe {
+            note(
+                "cncrot_machine_from_carr",
+                cncrot_machine_from_carr(&mut m, text.as_ptr().cast(), text.len(), set),
+            );
+            note(
+                "cncrot_machine_carr_error_line",
+                cncrot_machine_carr_error_line(text.as_ptr().cast(), text.len(), set, &mut line),
+            );
+            note(
+                "cncrot_machine_from_carr",
+                cncrot_machine_from_carr(&mut m, text.as_ptr().cast(), usize::MAX, set),
+            );
+        }
+    }
+
+    // HEAD_DEF accessories: the table, the name and the directions each wrong in turn.
+    let text = "_HEAD_NAME=\"H\" _DELTA_L1=540 _DELTA_L2=250 _DELTA_H1=200\n\
+                _HEAD_NAME=\"J\" _DELTA_L1=1E12\n";
+    let mut table: cncrot_head_table = unsafe { std::mem::zeroed() };
+    let s = unsafe {
+        cncrot_head_table_parse(&mut table, text.as_ptr().cast(), text.len(), null_mut())
+    };
+    assert_eq!(s, 0);
+    let mut corrupt = [table; 6];
+    corrupt[1].count = 17;
+    corrupt[2].heads[0].allowed = 2;
+    corrupt[3].heads[0].delta[0] = f64::NAN;
+    corrupt[4].heads[0].delta = [f64::MAX; 3];
+    corrupt[4].heads[0].offsets = [f64::MAX; 6];
+    corrupt[5].heads[0].name[0] = 1;
+    let (z, x, nan, zero) = ([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [f64::NAN; 3], [0.0; 3]);
+    let long = [b'N' as c_char; 40];
+    for t in &corrupt {
+        for name in [
+            c"H".as_ptr(),
+            c"J".as_ptr(),
+            c"K".as_ptr(),
+            c"\x01".as_ptr(),
+            long.as_ptr(),
+        ] {
+            for (v1, v2) in [(z, x), (z, z), (nan, x), (zero, x)] {
+                let mut m: cncrot_machine = unsafe { std::mem::zeroed() };
+                note("cncrot_machine_from_head", unsafe {
+                    cncrot_machine_from_head(&mut m, t, name, v1.as_ptr(), v2.as_ptr())
+                });
+            }
+        }
+    }
+
+    // A NULL pointer, once each.
+    let m = c_machine();
+    let d = [0.0f64; 16];
+    let mut o = [0.0f64; 16];
+    let mut k = 0usize;
+    let mut l = 0i32;
+    let mut w = m;
+    unsafe {
+        note(
+            "cncrot_machine_forward",
+            cncrot_machine_forward(null(), d.as_ptr(), o.as_mut_ptr()),
+        );
+        note(
+            "cncrot_machine_inverse",
+            cncrot_machine_inverse(&m, null(), o.as_mut_ptr(), 2, &mut k),
+        );
+        note(
+            "cncrot_machine_choose",
+            cncrot_machine_choose(
+                &m,
+                d.as_ptr(),
+                null(),
+                0,
+                0,
+                o.as_mut_ptr(),
+                o.as_mut_ptr(),
+                o.as_mut_ptr(),
+            ),
+        );
+        note(
+            "cncrot_machine_follow",
+            cncrot_machine_follow(&m, d.as_ptr(), d.as_ptr(), d.as_ptr(), 1.0, null_mut()),
+        );
+        note(
+            "cncrot_machine_add_axis",
+            cncrot_machine_add_axis(&mut w, 0, null(), d.as_ptr(), 0.0, 0.0),
+        );
+        note(
+            "cncrot_cycle600_position",
+            cncrot_cycle600_position(
+                null(),
+                &m,
+                d.as_ptr(),
+                o.as_mut_ptr(),
+                o.as_mut_ptr(),
+                o.as_mut_ptr(),
+            ),
+        );
+        note(
+            "cncrot_machine_from_carr",
+            cncrot_machine_from_carr(&mut w, null(), 0, 1),
+        );
+        note(
+            "cncrot_machine_carr_error_line",
+            cncrot_machine_carr_error_line(null(), 0, 1, &mut l),
+        );
+        note(
+            "cncrot_machine_from_head",
+            cncrot_machine_from_head(&mut w, null(), c"H".as_ptr(), d.as_ptr(), d.as_ptr()),
+        );
+    }
+
+    let mut missing = Vec::new();
+    for (function, statuses) in &seen {
+        let doc = header_doc(function);
+        for &s in statuses {
+            let name = status_name(s);
+            if s != 0 && !doc.contains(&format!("`{name}`")) {
+                missing.push(format!("{function} returns {name}"));
+            }
+        }
+    }
+    assert!(
+        missing.is_empty(),
+        "not in the header doc:\n{}",
+        missing.join("\n")
+    );
+    // The hostile inputs reached what they were made for.
+    let all: BTreeSet<i32> = seen.values().flatten().copied().collect();
+    for s in [
+        cncrot_status::BadFlag,
+        cncrot_status::NameTooLong,
+        cncrot_status::OutOfRange,
+        cncrot_status::OutOfTravel,
+        cncrot_status::Unreachable,
+        cncrot_status::Snapped,
+        cncrot_status::FreeAxis,
+        cncrot_status::NoRoom,
+        cncrot_status::TableFull,
+        cncrot_status::BadState,
+        cncrot_status::NotANumber,
+        cncrot_status::MissingWord,
+        cncrot_status::UnknownHead,
+    ] {
+        assert!(all.contains(&(s as i32)), "{s:?} never returned");
+    }
+}

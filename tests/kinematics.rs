@@ -485,3 +485,447 @@ fn near_the_pole() {
         }
     }
 }
+
+/// Machines whose axis `k` (A, about X) travels within `[0, 30]`, with the other axes
+/// modulo: a head, a fork head C/A, a table A/C, a mixed machine, a table C with a head B/A.
+fn a_limited_machines() -> Vec<(Machine, usize)> {
+    let limited = |side, v: Vector, p: Vector| RotaryAxis {
+        limits: Some([0.0, 30.0]),
+        ..axis(side, v, p)
+    };
+    let (x, y) = ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+    vec![
+        (machine(&[limited(Side::Tool, x, [0.0, 0.0, 200.0])]), 0),
+        (
+            machine(&[
+                axis(Side::Tool, Z, [0.0; 3]),
+                limited(Side::Tool, x, [0.0, 0.0, 150.0]),
+            ]),
+            1,
+        ),
+        (
+            machine(&[
+                limited(Side::Work, x, [0.0, 0.0, -100.0]),
+                axis(Side::Work, Z, [20.0, 10.0, -100.0]),
+            ]),
+            0,
+        ),
+        (
+            machine(&[
+                limited(Side::Tool, x, [0.0, 0.0, 250.0]),
+                axis(Side::Work, Z, [300.0, 0.0, 0.0]),
+            ]),
+            0,
+        ),
+        (
+            machine(&[
+                axis(Side::Work, Z, [500.0, 300.0, 0.0]),
+                axis(Side::Tool, y, [0.0, 0.0, 540.0]),
+                limited(Side::Tool, x, [0.0, 0.0, 250.0]),
+            ]),
+            2,
+        ),
+    ]
+}
+
+/// Issue 20, class 3: a target built from positions exactly at an end of the travel, seen
+/// from those positions, is reached there — not refused, not reached by a turn elsewhere —
+/// and the position never lies outside the travel.
+#[test]
+fn a_target_at_a_travel_end_is_chosen_at_that_end() {
+    // One B about Y within 0..10: B = 10 is the travel's end (the inverse may compute it
+    // a few ulp beyond).
+    let b = RotaryAxis {
+        limits: Some([0.0, 10.0]),
+        ..axis(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3])
+    };
+    let m = machine(&[b]);
+    for end in [0.0, 10.0] {
+        for target in [
+            elementary(Axis::Y, end),
+            m.forward([end, 0.0, 0.0]).unwrap().rotation,
+        ] {
+            let c = m.choose(&target, [end, 0.0, 0.0], Rule::Closest);
+            let c = c.unwrap_or_else(|e| panic!("B = {end}: {e:?}"));
+            assert!((c.axes[0] - end).abs() <= 1e-9 && (0.0..=10.0).contains(&c.axes[0]));
+            assert_eq!(c.residual, [0.0; 3]);
+        }
+    }
+
+    // Every combination of A at an end of 0..30 and the other axes on a 7.5° grid, on five
+    // machines: chosen at that end, the other axes where they were.
+    let mut targets = 0;
+    for (m, k) in a_limited_machines() {
+        let n = m.axes().len();
+        let others: Vec<usize> = (0..n).filter(|&j| j != k).collect();
+        let grid: Vec<f64> = (0..48).map(|i| -180.0 + 7.5 * f64::from(i)).collect();
+        for end in [0.0, 30.0] {
+            for (i, &g1) in grid.iter().enumerate() {
+                // The third axis, if any, on a coarser grid of its own.
+                for &g2 in grid.iter().skip(i % 6).step_by(6) {
+                    let mut p = [0.0; 3];
+                    p[k] = end;
+                    if let Some(&j) = others.first() {
+                        p[j] = g1;
+                    }
+                    if let Some(&j) = others.get(1) {
+                        p[j] = g2;
+                    }
+                    let target = m.forward(p).unwrap().rotation;
+                    let c = m
+                        .choose(&target, p, Rule::Closest)
+                        .unwrap_or_else(|e| panic!("{e:?} at {p:?} on {:?}", m.axes()));
+                    assert!(
+                        (c.axes[k] - end).abs() <= 1e-9 && (0.0..=30.0).contains(&c.axes[k]),
+                        "{p:?} -> {:?}",
+                        c.axes
+                    );
+                    for &j in &others {
+                        assert!((c.axes[j] - p[j]).abs() <= 1e-9, "{p:?} -> {:?}", c.axes);
+                    }
+                    targets += 1;
+                    if others.len() < 2 {
+                        break;
+                    }
+                }
+                if others.is_empty() {
+                    break;
+                }
+            }
+        }
+    }
+    assert!(targets > 500, "{targets}");
+
+    // Near the pole of a fork head C/A, C's travel ending where the target has it: tilts
+    // of A from 0.1° down to 1e-11°; C is still computed to rounding and kept at its end.
+    for tilt in [1e-1, 1e-3, 1e-5, 1e-7, 1e-9, 1e-11] {
+        for k in 0..50 {
+            let end = 37.3 + 6.7 * f64::from(k);
+            let m = machine(&[
+                RotaryAxis {
+                    limits: Some([0.0, end]),
+                    ..axis(Side::Tool, Z, [0.0; 3])
+                },
+                axis(Side::Tool, [1.0, 0.0, 0.0], [0.0, 0.0, 150.0]),
+            ]);
+            let p = [end, tilt, 0.0];
+            let target = m.forward(p).unwrap().rotation;
+            let c = m.choose(&target, p, Rule::Closest).unwrap();
+            assert!(
+                c.axes[0] <= end && end - c.axes[0] <= 1e-9,
+                "{p:?} -> {c:?}"
+            );
+        }
+    }
+
+    // A table A (about X) carrying C (about Z), A within -120..30, standing at
+    // (30, -162.5): that orientation is where it stands, not (-30, -342.5) half a turn of C
+    // away.
+    let table = machine(&[
+        RotaryAxis {
+            limits: Some([-120.0, 30.0]),
+            ..axis(Side::Work, [1.0, 0.0, 0.0], [0.0; 3])
+        },
+        axis(Side::Work, Z, [0.0; 3]),
+    ]);
+    let here = [30.0, -162.5, 0.0];
+    let target = table.forward(here).unwrap().rotation;
+    let c = table.choose(&target, here, Rule::Closest).unwrap();
+    assert!(
+        c.axes[0] == 30.0 && (c.axes[1] + 162.5).abs() <= 1e-9,
+        "{:?}",
+        c.axes
+    );
+    // CYCLE600 positioning shares the choice.
+    let state = cncrot::dialects::cycle600::State {
+        frame: cncrot::Frame::from_rotation(target),
+        ..Default::default()
+    };
+    let c = cncrot::dialects::cycle600::position(&state, &table, here).unwrap();
+    assert!(c.axes[0] == 30.0 && (c.axes[1] + 162.5).abs() <= 1e-9);
+}
+
+/// Issue 20, class 4: limits, offsets, Hirth offsets and pivots whose magnitude would make
+/// the degree (or length) arithmetic lose precision are refused, on both sides of each
+/// bound; a Hirth step below the smallest one is refused.
+#[test]
+fn axis_parameters_beyond_their_bounds_are_refused() {
+    let c = machine(&[axis(Side::Tool, Z, [0.0; 3])]);
+    let b = axis(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3]);
+    let hirth = |offset, step| Some(Hirth { offset, step });
+    let refused = [
+        // The issue's cases: travel around 1e15°, a Hirth grid offset by 1e17°, an axis
+        // offset of 1e12°, a pivot 1e12 mm away.
+        (
+            RotaryAxis {
+                limits: Some([1e15, 1e15 + 720.0]),
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (
+            RotaryAxis {
+                hirth: hirth(1e17, 1.0),
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (RotaryAxis { offset: 1e12, ..b }, Error::OutOfRange),
+        (
+            RotaryAxis {
+                point: [1e12, 0.0, 0.0],
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        // Right at the bounds: 65 536° and 1e6 mm (a hair beyond).
+        (
+            RotaryAxis {
+                limits: Some([-65_536.0, 0.0]),
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (
+            RotaryAxis {
+                limits: Some([0.0, 65_536.0]),
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (
+            RotaryAxis {
+                offset: -65_536.0,
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (
+            RotaryAxis {
+                offset: 65_536.0,
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (
+            RotaryAxis {
+                hirth: hirth(65_536.0, 1.0),
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (
+            RotaryAxis {
+                hirth: hirth(-65_536.0, 1.0),
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        (
+            RotaryAxis {
+                point: [0.0, 0.0, -1.000_000_1e6],
+                ..b
+            },
+            Error::OutOfRange,
+        ),
+        // Hirth steps below 1e-6°, down to the subnormal ones.
+        (
+            RotaryAxis {
+                hirth: hirth(0.0, 0.999_999e-6),
+                ..b
+            },
+            Error::BadArgument,
+        ),
+        (
+            RotaryAxis {
+                hirth: hirth(0.0, 1e-300),
+                ..b
+            },
+            Error::BadArgument,
+        ),
+        (
+            RotaryAxis {
+                hirth: hirth(0.0, 5e-324),
+                ..b
+            },
+            Error::BadArgument,
+        ),
+    ];
+    for (a, e) in refused {
+        assert_eq!(c.with_axis(a), Err(e), "{a:?}");
+    }
+    let accepted = [
+        RotaryAxis {
+            limits: Some([-65_535.75, 65_535.75]),
+            ..b
+        },
+        RotaryAxis {
+            offset: 65_535.75,
+            ..b
+        },
+        RotaryAxis {
+            offset: -65_535.75,
+            ..b
+        },
+        RotaryAxis {
+            hirth: hirth(-65_535.75, 1e-6),
+            ..b
+        },
+        RotaryAxis {
+            point: [1e6, -1e6, 1e6],
+            ..b
+        },
+    ];
+    for a in accepted {
+        assert!(c.with_axis(a).is_ok(), "{a:?}");
+    }
+
+    // Within the bounds the arithmetic keeps its accuracy: a travel of 65 000..65 500 and
+    // an offset of 65 000 turn B by 30° at 65 030 (65 030 − 65 000 = 30, exact), and a
+    // target of Ry(30) seen from there is reached at 65 030 (≡ 30 + 180·360).
+    let far = machine(&[RotaryAxis {
+        limits: Some([65_000.0, 65_500.0]),
+        offset: 65_000.0,
+        ..b
+    }]);
+    let f = far.forward([65_030.0, 0.0, 0.0]).unwrap().rotation;
+    assert!(common::max_diff(&f, &elementary(Axis::Y, 30.0)) < 1e-15);
+    let ch = far
+        .choose(
+            &elementary(Axis::Y, 30.0),
+            [65_100.0, 0.0, 0.0],
+            Rule::Closest,
+        )
+        .unwrap();
+    assert!((ch.axes[0] - 65_030.0).abs() < 1e-9, "{ch:?}");
+    // Current positions obey the same bound, on both sides of it.
+    let free = machine(&[b]);
+    for current in [65_536.0, -65_536.0] {
+        assert_eq!(
+            free.choose(
+                &elementary(Axis::Y, 16.0),
+                [current, 0.0, 0.0],
+                Rule::Closest
+            ),
+            Err(Error::OutOfRange)
+        );
+    }
+    let ch = free
+        .choose(
+            &elementary(Axis::Y, 15.0),
+            [65_535.75, 0.0, 0.0],
+            Rule::Closest,
+        )
+        .unwrap();
+    assert!((ch.axes[0] - 65_535.0).abs() < 1e-9, "{ch:?}");
+}
+
+/// The whole-turn placement within the travel, both directions and over several turns
+/// (from `cargo mutants`: the upper wrap was never exercised).
+#[test]
+fn turns_are_placed_within_the_travel() {
+    let b = |lo: f64, hi: f64| {
+        machine(&[RotaryAxis {
+            limits: Some([lo, hi]),
+            ..axis(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3])
+        }])
+    };
+    let target = elementary(Axis::Y, -10.0);
+    // (travel, current, where −10° goes): the turn nearest the current position, else the
+    // one nearest it within the travel.
+    for (lo, hi, current, want) in [
+        (-360.0, 0.0, 350.0, -10.0),
+        (-720.0, -360.0, 0.0, -370.0),
+        (-1080.0, -720.0, 0.0, -730.0),
+        (360.0, 720.0, 0.0, 710.0),
+        (0.0, 360.0, -10.0, 350.0),
+        (-180.0, 180.0, 700.0, -10.0),
+        // Exactly a whole turn beyond an end (from a current position outside the travel):
+        // that end, not a second turn.
+        (-370.0, -10.0, 350.0, -10.0),
+        (-10.0, 350.0, -370.0, -10.0),
+    ] {
+        let c = b(lo, hi)
+            .choose(&target, [current, 0.0, 0.0], Rule::Closest)
+            .unwrap_or_else(|e| panic!("{lo}..{hi} from {current}: {e:?}"));
+        assert!(
+            (c.axes[0] - want).abs() < 1e-9,
+            "{lo}..{hi} from {current}: {c:?}"
+        );
+    }
+    assert_eq!(
+        b(0.0, 300.0).choose(&target, [0.0; 3], Rule::Closest),
+        Err(Error::OutOfTravel)
+    );
+}
+
+/// Hirth grids with a non-zero offset, stepping back inside the travel at either end
+/// (from `cargo mutants`: offsets were always 0, the step back never taken).
+#[test]
+fn hirth_grids_with_an_offset_step_back_into_the_travel() {
+    let b = |lo: f64, hi: f64| {
+        machine(&[RotaryAxis {
+            limits: Some([lo, hi]),
+            hirth: Some(Hirth {
+                offset: 1.0,
+                step: 5.0,
+            }),
+            ..axis(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3])
+        }])
+    };
+    // Teeth at 1 + 5k: …, −34, −29, …, 31, 36, …
+    for (lo, hi, angle, want) in [
+        // 34 rounds to the tooth 36, beyond 35: one tooth back.
+        (-100.0, 35.0, 34.0, 31.0),
+        // Without the limit, 36.
+        (-100.0, 100.0, 34.0, 36.0),
+        // −32 rounds to −34, below −33: one tooth on.
+        (-33.0, 100.0, -32.0, -29.0),
+        (-100.0, 100.0, -32.0, -34.0),
+        // 2.4 is nearest to the tooth 1 (the offset counts).
+        (-100.0, 100.0, 2.4, 1.0),
+    ] {
+        let c = b(lo, hi)
+            .choose(&elementary(Axis::Y, angle), [0.0; 3], Rule::Closest)
+            .unwrap();
+        assert!(
+            (c.axes[0] - want).abs() < 1e-9 && (c.residual[0] - (want - angle)).abs() < 1e-9,
+            "{lo}..{hi} {angle}: {c:?}"
+        );
+    }
+    // No tooth within 32..35.
+    assert_eq!(
+        b(32.0, 35.0).choose(&elementary(Axis::Y, 34.0), [0.0; 3], Rule::Closest),
+        Err(Error::OutOfTravel)
+    );
+}
+
+/// A machine without rotary axes reaches its tool direction and nothing else (from `cargo
+/// mutants`: the zero-axis branch of the inverse was never run).
+#[test]
+fn a_machine_without_axes_reaches_its_tool_direction_only() {
+    for (tool, about) in [(Z, Axis::Z), ([1.0, 0.0, 0.0], Axis::X)] {
+        let m = Machine::new(tool).unwrap();
+        // The base turn B, then any turn about the tool: the direction is the tool's.
+        let base = m.forward([0.0; 3]).unwrap().rotation;
+        let target = mul(&elementary(about, 30.0), &base);
+        let s = m.inverse(&target).unwrap();
+        assert!(s.count == 1 && s.angles[0] == [0.0; 3] && !s.free, "{s:?}");
+        let c = m.choose(&target, [0.0; 3], Rule::Closest).unwrap();
+        assert!(
+            c.axes == [0.0; 3]
+                && common::max_diff(&c.remaining, &elementary(Axis::Z, 30.0)) < 1e-15
+        );
+        // A tilt of 1e-9° (1.7e-11 rad) is within the reach tolerance (1e-10 rad), 1e-8°
+        // (1.7e-10 rad) is not.
+        let tilt = |deg: f64| {
+            mul(
+                &elementary(if about == Axis::Z { Axis::X } else { Axis::Y }, deg),
+                &base,
+            )
+        };
+        assert!(m.inverse(&tilt(1e-9)).is_ok());
+        assert_eq!(m.inverse(&tilt(1e-8)), Err(Error::Unreachable));
+        assert_eq!(m.inverse(&tilt(90.0)), Err(Error::Unreachable));
+    }
+}

@@ -2,8 +2,9 @@
 //! added one by one with any numbers, and raw `cncrot_machine` bytes (any field, any
 //! count). No crash, no hang, no read past `len`; outputs untouched on every error; every
 //! solution the inverse returns reproduces the target to 1e-9 through the forward
-//! computation; a choice lies within the travel and on the Hirth grid; the follow-up keeps
-//! the tool tip where it was.
+//! computation; a choice lies within the travel and on the Hirth grid; a target made with
+//! an axis exactly at an end of its travel is chosen at that end; the follow-up keeps the
+//! tool tip where it was.
 #![no_main]
 
 #[path = "input.rs"]
@@ -50,6 +51,87 @@ fn miss(m: &cncrot_machine, ax: &[f64], target: &[f64; 16], whole: bool) -> f64 
         }
     }
     worst
+}
+
+/// Whether `a` and `b` are the same angle to within `tol`, whole turns apart.
+fn same_turn(a: f64, b: f64, tol: f64) -> bool {
+    let d = (a - b).rem_euclid(360.0);
+    d <= tol || 360.0 - d <= tol
+}
+
+/// A target made with a limited axis exactly at an end of its travel (the other limited
+/// axes within theirs), seen from those positions, is reached at that end, never refused.
+/// Checked whenever the inverse computes those positions to within the travel tolerance
+/// (the contract; near a pole an axis is ill-determined and computed farther off) and no
+/// axis has a Hirth grid (an end need not be a tooth).
+fn end_of_travel(m: &cncrot_machine, n: usize, t: &[u8]) {
+    let axes = &m.axes[..n];
+    let limited: Vec<usize> = (0..n)
+        .filter(|&j| axes[j].min_deg != 0.0 || axes[j].max_deg != 0.0)
+        .collect();
+    if limited.is_empty() || axes.iter().any(|a| a.hirth_step_deg != 0.0) {
+        return;
+    }
+    let byte = |i: usize| t.get(i).copied().unwrap_or(0);
+    let k = limited[usize::from(byte(0)) % limited.len()];
+    let mut pos = [0.0; 3];
+    for (j, p) in pos.iter_mut().enumerate().take(n) {
+        let a = &axes[j];
+        *p = if limited.contains(&j) {
+            a.min_deg + f64::from(byte(j + 1)) / 255.0 * (a.max_deg - a.min_deg)
+        } else {
+            let x = f64_at(t, j);
+            if x.is_finite() && x.abs() < 720.0 {
+                x
+            } else {
+                0.0
+            }
+        };
+    }
+    let end = if byte(4) & 1 == 0 {
+        axes[k].min_deg
+    } else {
+        axes[k].max_deg
+    };
+    pos[k] = end;
+    let mut f = [0.0; 16];
+    if unsafe { cncrot_machine_forward(m, pos.as_ptr(), f.as_mut_ptr()) } != 0 {
+        return;
+    }
+    let mut sol = [0.0; 6];
+    let mut count = 0usize;
+    let s = unsafe { cncrot_machine_inverse(m, f.as_ptr(), sol.as_mut_ptr(), 2, &mut count) };
+    let tolerance = 0.9 * CNCROT_MACHINE_TRAVEL_TOLERANCE_DEG;
+    let computed = s == 0
+        && sol
+            .chunks(3)
+            .take(count)
+            .any(|row| (0..n).all(|j| same_turn(row[j], pos[j], tolerance)));
+    if !computed {
+        return;
+    }
+    let (mut out, mut res, mut rem) = ([0.0; 3], [0.0; 3], [0.0; 16]);
+    let s = unsafe {
+        cncrot_machine_choose(
+            m,
+            f.as_ptr(),
+            pos.as_ptr(),
+            CNCROT_CHOOSE_CLOSEST,
+            0,
+            out.as_mut_ptr(),
+            res.as_mut_ptr(),
+            rem.as_mut_ptr(),
+        )
+    };
+    assert!(
+        s >= 0,
+        "status {s} at the end {end} of axis {k}: {pos:?} {m:?}"
+    );
+    let a = &axes[k];
+    assert!(
+        out[k] >= a.min_deg && out[k] <= a.max_deg && (out[k] - end).abs() <= 1e-8,
+        "{out:?} for {pos:?} (axis {k} at {end}) {m:?}"
+    );
 }
 
 fuzz_target!(|data: &[u8]| {
@@ -198,6 +280,7 @@ fuzz_target!(|data: &[u8]| {
     } else {
         assert!(out == [5.0; 3] && res == [5.0; 3] && rem == [5.0; 16]);
     }
+    end_of_travel(&m, n, t);
     let lin = [f64_at(t, 6), f64_at(t, 7), 0.0];
     let mut next = [3.0; 3];
     let s = unsafe {

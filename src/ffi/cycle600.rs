@@ -484,10 +484,21 @@ pub unsafe extern "C" fn cncrot_cycle600(
 /// `_SW_REC = 0`: the rotary-axis positions of `machine` for the frame the last
 /// `cncrot_cycle600` call left in `gud`, seen from the current positions `current_deg`:
 /// the solution closest to them, or with `_ROT_INV = 1` stored in `gud` the other one of
-/// the pair. Outputs and statuses as `cncrot_machine_choose` with rule
-/// `CNCROT_CHOOSE_CLOSEST` / `CNCROT_CHOOSE_INVERSE`; `CNCROT_STATUS_BAD_STATE` for a
-/// `gud` this library did not write. `_RETR_Z` (in `gud`) is the calling cycle's: retract
-/// before moving the axes.
+/// the pair — or, when the other lies outside the travel or there is none, the closest,
+/// with status 0 (compare `axes_deg` with `current_deg` to tell). Outputs as
+/// `cncrot_machine_choose` with rule `CNCROT_CHOOSE_CLOSEST` / `CNCROT_CHOOSE_INVERSE`,
+/// positions within `CNCROT_MACHINE_TRAVEL_TOLERANCE_DEG` beyond a travel end taken at
+/// that end. `_RETR_Z` (in `gud`) is the calling cycle's: retract before moving the axes.
+///
+/// Returns 0, `CNCROT_STATUS_FREE_AXIS`, `CNCROT_STATUS_SNAPPED`, or with nothing written:
+/// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a `gud` this library did not
+/// write), `CNCROT_STATUS_UNREACHABLE`, `CNCROT_STATUS_OUT_OF_TRAVEL`,
+/// `CNCROT_STATUS_BAD_ARGUMENT` (an unused current position not 0),
+/// `CNCROT_STATUS_OUT_OF_RANGE` (a current position of magnitude
+/// `CNCROT_MACHINE_ANGLE_MAX_DEG` or more), `CNCROT_STATUS_NOT_FINITE` (a current
+/// position), and for a description that is not a machine (see `cncrot_machine`)
+/// `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_NAME_TOO_LONG`.
 ///
 /// # Safety
 /// `gud` points to a state, `machine` to a `cncrot_machine`, `current_deg`, `axes_deg`,

@@ -22,8 +22,26 @@ pub const CNCROT_CHOOSE_MINUS: i32 = 1;
 /// `cncrot_machine_choose`: the higher position of the reference axis (CYCLE800 "plus",
 /// Heidenhain `SEQ+`).
 pub const CNCROT_CHOOSE_PLUS: i32 = 2;
-/// `cncrot_machine_choose`: the other solution of the pair (CYCLE600 `_ROT_INV = 1`).
+/// `cncrot_machine_choose`: the other solution of the pair (CYCLE600 `_ROT_INV = 1`); the
+/// only one left when the other lies outside the travel or there is no other.
 pub const CNCROT_CHOOSE_INVERSE: i32 = 3;
+/// A computed position at most this far (degrees) beyond an end of its axis' travel is
+/// taken exactly at that end \[choice\]: the inverse computes a position at an end a few
+/// ulp off; moving by this much turns the tool by 1.7e-11 rad, within the 1e-10 rad to
+/// which a target counts as reached.
+pub const CNCROT_MACHINE_TRAVEL_TOLERANCE_DEG: f64 = 1e-9;
+/// Angles of a machine — axis offsets, travel limits, Hirth offsets, and the current
+/// positions given to `cncrot_machine_choose` — must be below this in magnitude (degrees);
+/// otherwise `CNCROT_STATUS_OUT_OF_RANGE`. There doubles are 7.3e-12° apart at most; from
+/// it on a turn of the axis would be computed to 1.5e-11° or worse (at 1e15°, 0.125°).
+pub const CNCROT_MACHINE_ANGLE_MAX_DEG: f64 = 65536.0;
+/// The coordinates of an axis' point must lie within ± this (millimetres; a kilometre)
+/// \[choice\]; otherwise `CNCROT_STATUS_OUT_OF_RANGE`. The translations made from such a
+/// point are exact to 1e-9 mm.
+pub const CNCROT_MACHINE_LENGTH_MAX_MM: f64 = 1e6;
+/// The finest Hirth grid (degrees) \[choice\]: `hirth_step_deg` is 0 (no grid) or at least
+/// this; a step between is `CNCROT_STATUS_BAD_ARGUMENT`.
+pub const CNCROT_MACHINE_HIRTH_STEP_MIN_DEG: f64 = 1e-6;
 
 /// One rotary axis of a `cncrot_machine`: a direction and a point on it (machine
 /// coordinates, every axis at its initial position).
@@ -37,25 +55,43 @@ pub struct cncrot_machine_axis {
     pub reserved: i32,
     /// Direction; positive rotation is the right-hand turn about it (any length, not 0).
     pub direction: [f64; 3],
-    /// A point on the axis, mm.
+    /// A point on the axis, mm, each coordinate within ±`CNCROT_MACHINE_LENGTH_MAX_MM`.
     pub point: [f64; 3],
     /// The position the axis reads in the described initial state, degrees
-    /// (`$TC_CARR24/25`).
+    /// (`$TC_CARR24/25`), below `CNCROT_MACHINE_ANGLE_MAX_DEG` in magnitude.
     pub offset_deg: f64,
-    /// Travel limits, degrees; both 0: a modulo axis without limits.
+    /// Travel limits, degrees, `min_deg <= max_deg`, below `CNCROT_MACHINE_ANGLE_MAX_DEG` in
+    /// magnitude; both 0: a modulo axis without limits.
     pub min_deg: f64,
     /// See `min_deg`.
     pub max_deg: f64,
-    /// Hirth grid: a tooth position, degrees.
+    /// Hirth grid: a tooth position, degrees, below `CNCROT_MACHINE_ANGLE_MAX_DEG` in
+    /// magnitude (not used without a grid).
     pub hirth_offset_deg: f64,
-    /// Hirth grid: tooth spacing, degrees; 0: no grid.
+    /// Hirth grid: tooth spacing, degrees, at least `CNCROT_MACHINE_HIRTH_STEP_MIN_DEG`; 0:
+    /// no grid.
     pub hirth_step_deg: f64,
 }
 
 /// A machine: up to three rotary axes, outermost first (an axis added after another on the
 /// same side is carried by it), the tool's base direction and a name. A caller-owned plain
-/// struct; zeroed, it is a machine without rotary axes whose tool points along +Z. Every
-/// call checks it; the fields may be written directly (offsets, Hirth grids, limits).
+/// struct; zeroed, it is a machine without rotary axes whose tool points along +Z.
+///
+/// The caller may fill it by hand, wholly or in part (offsets, Hirth grids and limits after
+/// `cncrot_machine_add_axis`, say): every call that reads it checks all of it and refuses
+/// what is not a machine, with nothing written. `CNCROT_STATUS_BAD_ARGUMENT`: a pointer
+/// not aligned for the struct, `count` outside 0..3, a `reserved` field not 0, an unused
+/// entry of `axes` not all zero, a zero direction, `min_deg > max_deg`, a Hirth step
+/// between 0 and `CNCROT_MACHINE_HIRTH_STEP_MIN_DEG` or negative, two consecutive axes of
+/// the rotation chain parallel (within a sine of 1e-6), a name with bytes other than
+/// printable ASCII; `CNCROT_STATUS_BAD_FLAG`: `work_side` other than 0 or 1;
+/// `CNCROT_STATUS_NOT_FINITE`: a NaN or infinity in `tool_direction` or in any field of a
+/// used axis;
+/// `CNCROT_STATUS_OUT_OF_RANGE`: an angle (offset, limit, Hirth offset) of magnitude
+/// `CNCROT_MACHINE_ANGLE_MAX_DEG` or more, a point coordinate beyond
+/// ±`CNCROT_MACHINE_LENGTH_MAX_MM`; `CNCROT_STATUS_NAME_TOO_LONG`: no NUL in `name`.
+/// Directions need not be unit vectors (the library stores unit vectors); bytes after the
+/// name's NUL are not read.
 #[allow(non_camel_case_types)]
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -68,7 +104,7 @@ pub struct cncrot_machine {
     pub tool_direction: [f64; 3],
     /// The axes, outermost first.
     pub axes: [cncrot_machine_axis; CNCROT_MACHINE_AXES],
-    /// A name, NUL-terminated (`$TC_CARR34`).
+    /// A name, NUL-terminated, printable ASCII (`$TC_CARR34`).
     pub name: [c_char; CNCROT_NAME_SIZE],
 }
 
@@ -95,6 +131,11 @@ fn machine_of(m: &cncrot_machine) -> Result<Machine, cncrot_status> {
     if m.reserved != 0 {
         return Err(cncrot_status::BadArgument);
     }
+    // An unused entry that is not empty is a description the caller did not mean (a count
+    // lowered by hand, a struct never zeroed): refused rather than silently ignored.
+    if !unused_empty(m, count) {
+        return Err(cncrot_status::BadArgument);
+    }
     let b = if m.tool_direction == [0.0; 3] {
         [0.0, 0.0, 1.0]
     } else {
@@ -115,6 +156,23 @@ fn machine_of(m: &cncrot_machine) -> Result<Machine, cncrot_status> {
     }
     machine.set_name(name.get(..len).unwrap_or(&[]))?;
     Ok(machine)
+}
+
+/// Whether the entries of `axes` from `count` on have every field 0 (−0 included; NaN is
+/// not). Not inlined, and field by field rather than `== EMPTY_AXIS`: either kept a copy
+/// in the frame of `machine_of`, which lies under every axis it adds (stack bound).
+#[inline(never)]
+fn unused_empty(m: &cncrot_machine, count: usize) -> bool {
+    let zero = |v: &[f64; 3]| v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0;
+    m.axes.iter().skip(count).all(|a| {
+        a.work_side == 0
+            && a.reserved == 0
+            && zero(&a.direction)
+            && zero(&a.point)
+            && zero(&[a.offset_deg, a.min_deg, a.max_deg])
+            && a.hirth_offset_deg == 0.0
+            && a.hirth_step_deg == 0.0
+    })
 }
 
 fn axis_of(a: &cncrot_machine_axis) -> Result<RotaryAxis, cncrot_status> {
@@ -220,11 +278,17 @@ unsafe fn bytes<'a>(text: *const c_char, len: usize) -> Result<&'a [u8], cncrot_
 /// offsets (24, 25), Hirth grids (26-29), limits (30-33), name (34), fine offsets (41-65,
 /// added). Other data sets, other tool data, `CHANDATA(…)` and comments are skipped.
 ///
-/// Returns 0 with `machine` written, or with it untouched: `CNCROT_STATUS_PARSE`,
-/// `CNCROT_STATUS_UNKNOWN_WORD` (a parameter that does not exist, anything that is not an
-/// assignment), `CNCROT_STATUS_NAME_TOO_LONG`, `CNCROT_STATUS_UNKNOWN_HEAD` (no parameter
-/// of that data set), `CNCROT_STATUS_BAD_ARGUMENT` (`data_set` < 1, a type other than
-/// T/P/M, v2 without v1, parallel axes, negative Hirth increment). The line of an error:
+/// Returns 0 with `machine` written, or with it untouched: `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_PARSE` (a malformed line or number), `CNCROT_STATUS_UNKNOWN_WORD` (a
+/// parameter that does not exist, anything that is not an assignment),
+/// `CNCROT_STATUS_NOT_A_NUMBER` (a variable or expression where a number must stand:
+/// `R1`), `CNCROT_STATUS_MISSING_WORD` (no number after `=`),
+/// `CNCROT_STATUS_NAME_TOO_LONG`, `CNCROT_STATUS_UNKNOWN_HEAD` (no parameter of that data
+/// set), `CNCROT_STATUS_BAD_ARGUMENT` (`data_set` < 1, `len` beyond the largest object, a
+/// type other than T/P/M, v2 without v1, parallel axes, min > max, a Hirth increment
+/// negative or below `CNCROT_MACHINE_HIRTH_STEP_MIN_DEG`), `CNCROT_STATUS_OUT_OF_RANGE` (a
+/// nonzero number outside 1e-100..1e100 in magnitude; an offset, limit, Hirth offset or
+/// point beyond the bounds of `cncrot_machine`). The line of an error:
 /// `cncrot_machine_carr_error_line`.
 ///
 /// # Safety
@@ -255,6 +319,14 @@ pub unsafe extern "C" fn cncrot_machine_from_carr(
 /// The line at which `cncrot_machine_from_carr` refuses the same text: its status, and the
 /// 1-based line in `*line` (0 when the text was read, or for an error of the whole data
 /// set such as `CNCROT_STATUS_UNKNOWN_HEAD`).
+///
+/// Returns the status `cncrot_machine_from_carr` returns for the text (with `*line`
+/// written): 0, `CNCROT_STATUS_PARSE`, `CNCROT_STATUS_UNKNOWN_WORD`,
+/// `CNCROT_STATUS_NOT_A_NUMBER`, `CNCROT_STATUS_MISSING_WORD`,
+/// `CNCROT_STATUS_NAME_TOO_LONG`, `CNCROT_STATUS_UNKNOWN_HEAD`,
+/// `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_OUT_OF_RANGE`; or, with nothing written,
+/// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_ARGUMENT` (`len` beyond the largest
+/// object).
 ///
 /// # Safety
 /// `text` points to `len` readable bytes, `line` to a writable `int32_t`.
@@ -288,9 +360,12 @@ pub unsafe extern "C" fn cncrot_machine_carr_error_line(
 /// `p2 = (OFFS_L2_X, OFFS_L2_Y, DELTA_L2)`,
 /// `p1 = p2 + (OFFS_L1_X, OFFS_L1_Y, DELTA_L1) + (OFFS_H1_X, DELTA_H1, OFFS_H1_Z)`.
 ///
-/// Returns 0 with `machine` written, or with it untouched: `CNCROT_STATUS_UNKNOWN_HEAD`,
-/// `CNCROT_STATUS_NAME_TOO_LONG`, `CNCROT_STATUS_BAD_ARGUMENT` (a zero or parallel
-/// direction, a corrupt table), `CNCROT_STATUS_NOT_FINITE`.
+/// Returns 0 with `machine` written, or with it untouched: `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_UNKNOWN_HEAD`, `CNCROT_STATUS_NAME_TOO_LONG` (no NUL within 32 bytes of
+/// `name`), `CNCROT_STATUS_BAD_ARGUMENT` (a zero or parallel direction, a corrupt or
+/// misaligned table, an entry's name not printable ASCII), `CNCROT_STATUS_NOT_FINITE` (a
+/// direction, the entry's lengths, or a pivot that overflows), `CNCROT_STATUS_OUT_OF_RANGE`
+/// (a pivot coordinate beyond ±`CNCROT_MACHINE_LENGTH_MAX_MM`).
 ///
 /// # Safety
 /// `machine` points to a writable `cncrot_machine`, `heads` to a table (aligned as
@@ -360,10 +435,15 @@ pub unsafe extern "C" fn cncrot_machine_from_head(
 /// `max_deg`: travel limits, both 0 for a modulo axis without limits. The direction is
 /// stored as a unit vector; offset and Hirth grid may be set in the struct afterwards.
 ///
-/// Returns 0, or with `machine` untouched: `CNCROT_STATUS_TABLE_FULL` (three axes already),
-/// `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_BAD_ARGUMENT` (a
-/// zero direction, `min > max`, an axis parallel to its neighbour in the chain, a corrupt
-/// description).
+/// Returns 0, or with `machine` untouched: `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_TABLE_FULL` (three axes already), `CNCROT_STATUS_BAD_FLAG` (`work_side`),
+/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_BAD_ARGUMENT` (a zero direction,
+/// `min > max`, an axis parallel to its neighbour in the chain), `CNCROT_STATUS_OUT_OF_RANGE`
+/// (a limit of magnitude `CNCROT_MACHINE_ANGLE_MAX_DEG` or more, a point coordinate beyond
+/// ±`CNCROT_MACHINE_LENGTH_MAX_MM`); and for a description already in `machine` that is not
+/// a machine, `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a
+/// machine: see `cncrot_machine`).
 ///
 /// # Safety
 /// `machine` points to a writable `cncrot_machine`, `direction` and `point` to 3 doubles.
@@ -406,9 +486,11 @@ pub unsafe extern "C" fn cncrot_machine_add_axis(
 /// added; unused ones 0): its third column is the tool direction in workpiece coordinates,
 /// `F·(0, 0, −L, 1)` the tool tip of a tool of length L.
 ///
-/// Returns 0, or with `frame` untouched: `CNCROT_STATUS_NOT_FINITE`,
-/// `CNCROT_STATUS_BAD_ARGUMENT` (an unused position not 0, a corrupt description),
-/// `CNCROT_STATUS_OUT_OF_RANGE`.
+/// Returns 0, or with `frame` untouched: `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_NOT_FINITE` (a position), `CNCROT_STATUS_BAD_ARGUMENT` (an unused
+/// position not 0), `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a
+/// machine: see `cncrot_machine`).
 ///
 /// # Safety
 /// `machine` points to a `cncrot_machine`, `axes_deg` to 3 and `frame` to 16 doubles.
@@ -440,9 +522,11 @@ pub unsafe extern "C" fn cncrot_machine_forward(
 ///
 /// Returns 0; `CNCROT_STATUS_FREE_AXIS` at a singular pose (the target direction along an
 /// axis, which is free: the family once, the free axis at 0); or with nothing written:
-/// `CNCROT_STATUS_UNREACHABLE`, `CNCROT_STATUS_NO_ROOM` (`capacity` below the count; 2
-/// always suffice), `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_FINITE`,
-/// `CNCROT_STATUS_BAD_ARGUMENT`.
+/// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_UNREACHABLE`, `CNCROT_STATUS_NO_ROOM`
+/// (`capacity` below the count; 2 always suffice), `CNCROT_STATUS_NOT_A_ROTATION`,
+/// `CNCROT_STATUS_NOT_FINITE` (the frame), `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a
+/// machine: see `cncrot_machine`).
 ///
 /// # Safety
 /// `machine` points to a `cncrot_machine`, `frame` to 16 doubles, `solutions_deg` to
@@ -493,22 +577,32 @@ pub unsafe extern "C" fn cncrot_machine_inverse(
 /// The axis positions to move to for the orientation of `frame`, seen from the current
 /// positions `current_deg`: every solution brought to the whole turn nearest to the
 /// current position (computed 10°, current 750° → 730°), or within the travel limits, and
-/// snapped to Hirth grids; solutions outside the travel are skipped. `rule`:
-/// `CNCROT_CHOOSE_CLOSEST` (`reference_axis` 0), `CNCROT_CHOOSE_MINUS` / `_PLUS` (the
-/// lower / higher position of axis `reference_axis`, 1-based: CYCLE800's direction
-/// reference, Heidenhain `SEQ-` / `SEQ+` on the master axis), `CNCROT_CHOOSE_INVERSE`
-/// (`reference_axis` 0; the other solution of the pair: CYCLE600 `_ROT_INV`). A free axis
-/// (singular pose) stays at its current position.
+/// snapped to Hirth grids; solutions outside the travel are skipped. A position computed
+/// within `CNCROT_MACHINE_TRAVEL_TOLERANCE_DEG` beyond an end of the travel is taken exactly
+/// at that end (a target made at an end is reached there; `axes_deg` never lies outside
+/// the travel). `rule`: `CNCROT_CHOOSE_CLOSEST` (`reference_axis` 0), `CNCROT_CHOOSE_MINUS`
+/// / `_PLUS` (the lower / higher position of axis `reference_axis`, 1-based: CYCLE800's
+/// direction reference, Heidenhain `SEQ-` / `SEQ+` on the master axis; the other solution
+/// when one lies outside the travel), `CNCROT_CHOOSE_INVERSE` (`reference_axis` 0; the
+/// other solution of the pair: CYCLE600 `_ROT_INV`). `CNCROT_CHOOSE_INVERSE` returns the
+/// closest solution, with status 0, when the other one lies outside the travel or the
+/// orientation has only one (a free axis, the edge of a nutating head's cone): compare
+/// `axes_deg` with the current positions to tell. A free axis (singular pose) stays at its
+/// current position.
 ///
 /// Outputs: `axes_deg` (unused 0), `residual_deg` (Hirth: position minus exact value),
 /// `remaining` (the rotation the axes leave to the frame, `Fᵀ·target`: about the tool axis
 /// with fewer than three axes, plus the Hirth residual; no translation).
 ///
 /// Returns 0, `CNCROT_STATUS_FREE_AXIS`, `CNCROT_STATUS_SNAPPED` (a Hirth axis left a
-/// residual), or with nothing written: `CNCROT_STATUS_UNREACHABLE`,
-/// `CNCROT_STATUS_OUT_OF_TRAVEL`, `CNCROT_STATUS_BAD_ARGUMENT` (rule, reference axis, an
-/// unused current position not 0), `CNCROT_STATUS_OUT_OF_RANGE` (a current position
-/// beyond ±65536°), `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_FINITE`.
+/// residual), or with nothing written: `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_UNREACHABLE`, `CNCROT_STATUS_OUT_OF_TRAVEL`, `CNCROT_STATUS_BAD_ARGUMENT`
+/// (rule, reference axis, an unused current position not 0), `CNCROT_STATUS_OUT_OF_RANGE`
+/// (a current position of magnitude `CNCROT_MACHINE_ANGLE_MAX_DEG` or more),
+/// `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_FINITE` (the frame, a current
+/// position), `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a
+/// machine: see `cncrot_machine`).
 ///
 /// # Safety
 /// `machine` points to a `cncrot_machine`, `frame` and `remaining` to 16 doubles,
@@ -595,8 +689,12 @@ pub(super) unsafe fn write_choice(
 /// `from_deg` to `to_deg`, the linear axes being at `linear_from` before (machine
 /// coordinates of the tool adapter's reference point, the origin of the axis points).
 ///
-/// Returns 0, or with `linear_to` untouched: `CNCROT_STATUS_NOT_FINITE`,
-/// `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_OUT_OF_RANGE`.
+/// Returns 0, or with `linear_to` untouched: `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_NOT_FINITE` (a position, `tool_length`), `CNCROT_STATUS_BAD_ARGUMENT` (an
+/// unused position not 0), `CNCROT_STATUS_OUT_OF_RANGE` (a result that overflows),
+/// `CNCROT_STATUS_BAD_ARGUMENT`, `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a
+/// machine: see `cncrot_machine`).
 ///
 /// # Safety
 /// `machine` points to a `cncrot_machine`, the arrays to 3 doubles each.
@@ -634,4 +732,19 @@ pub unsafe extern "C" fn cncrot_machine_follow(
         write::<3>(linear_to, next)?;
         Ok(cncrot_status::Ok)
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The header's bounds are the ones the Rust API applies.
+    #[test]
+    fn the_c_constants_are_the_rust_bounds() {
+        use crate::kinematics::{HIRTH_STEP_MIN, LENGTH_MAX, TRAVEL_TOLERANCE};
+        assert_eq!(CNCROT_MACHINE_TRAVEL_TOLERANCE_DEG, TRAVEL_TOLERANCE);
+        assert_eq!(CNCROT_MACHINE_ANGLE_MAX_DEG, crate::CLOSEST_MAX);
+        assert_eq!(CNCROT_MACHINE_LENGTH_MAX_MM, LENGTH_MAX);
+        assert_eq!(CNCROT_MACHINE_HIRTH_STEP_MIN_DEG, HIRTH_STEP_MIN);
+    }
 }

@@ -1,7 +1,7 @@
 //! The choice among the solutions: travel limits, whole-turn unwinding, Hirth grids, and
 //! the controllers' rules (CYCLE800 minus/plus, Heidenhain `SEQ±`, CYCLE600 `_ROT_INV`).
 
-use super::{Machine, RotaryAxis, MAX_AXES, MAX_SOLUTIONS};
+use super::{Machine, RotaryAxis, MAX_AXES, MAX_SOLUTIONS, TRAVEL_TOLERANCE};
 use crate::math::{ceil, round, turns_toward};
 use crate::{check_rotation, mul, transpose, Error, Matrix, CLOSEST_MAX};
 
@@ -39,29 +39,48 @@ pub struct Choice {
 }
 
 /// Where an axis goes: the turn of `angle` nearest to `current` within the travel, snapped
-/// to the Hirth grid. `None` when no turn (or no tooth) lies within the travel.
+/// to the Hirth grid. `None` when no turn (or no tooth) lies within the travel. A position
+/// within [`TRAVEL_TOLERANCE`] beyond an end is that end: the inverse computes an end a few
+/// ulp off, and a turn elsewhere (or a refusal) for rounding would move the machine for
+/// nothing. Every comparison is written so that NaN refuses. Not inlined: its temporaries
+/// would otherwise stay in the frame of `choose` through the inverse (stack bound).
+#[inline(never)]
 fn place(axis: &RotaryAxis, angle: f64, current: f64) -> Option<(f64, f64)> {
     let mut x = angle + turns_toward(angle, current) + 0.0;
     if let Some([lo, hi]) = axis.limits {
-        if x > hi {
-            x -= 360.0 * ceil((x - hi) / 360.0);
-        } else if x < lo {
-            x += 360.0 * ceil((lo - x) / 360.0);
+        if x > hi + TRAVEL_TOLERANCE {
+            x -= 360.0 * ceil((x - hi - TRAVEL_TOLERANCE) / 360.0);
+        } else if x < lo - TRAVEL_TOLERANCE {
+            x += 360.0 * ceil((lo - TRAVEL_TOLERANCE - x) / 360.0);
         }
+        x = onto_travel(x, lo, hi);
     }
     let exact = x;
     if let Some(h) = axis.hirth {
         x = h.offset + round((x - h.offset) / h.step) * h.step + 0.0;
         if let Some([lo, hi]) = axis.limits {
-            if x > hi {
+            if x > hi + TRAVEL_TOLERANCE {
                 x -= h.step;
-            } else if x < lo {
+            } else if x < lo - TRAVEL_TOLERANCE {
                 x += h.step;
             }
+            x = onto_travel(x, lo, hi);
         }
     }
     let fits = axis.limits.map_or(true, |[lo, hi]| x >= lo && x <= hi);
     fits.then_some((x, x - exact + 0.0))
+}
+
+/// `x`, or the end of `[lo, hi]` it lies within [`TRAVEL_TOLERANCE`] beyond: so that the
+/// position moved to never lies outside the travel.
+fn onto_travel(x: f64, lo: f64, hi: f64) -> f64 {
+    if x > hi && x <= hi + TRAVEL_TOLERANCE {
+        hi
+    } else if x < lo && x >= lo - TRAVEL_TOLERANCE {
+        lo
+    } else {
+        x
+    }
 }
 
 impl Machine {
@@ -71,14 +90,18 @@ impl Machine {
     /// Every solution of [`Machine::inverse`] is brought to the whole turn nearest to the
     /// current position (computed 10°, current 750° → 730°), or, on an axis with travel
     /// limits, to the turn nearest to it within them, and snapped to the axis' Hirth grid;
-    /// a solution that does not fit the travel is skipped and the other taken. Of those
-    /// left, `rule` picks one. A free axis (singular pose) stays at its current position.
+    /// a solution that does not fit the travel is skipped and the other taken. A position
+    /// within [`super::TRAVEL_TOLERANCE`] beyond an end of the travel is taken exactly at
+    /// that end, so a target made at an end is reached there. Of those left, `rule` picks
+    /// one; [`Rule::Inverse`] takes the only one left when the other does not fit the
+    /// travel (or the orientation has one solution). A free axis (singular pose) stays at
+    /// its current position.
     ///
     /// Errors: [`Error::Unreachable`] (no positions give the orientation),
     /// [`Error::OutOfTravel`] (only outside the travel limits), [`Error::BadArgument`] (a
     /// rule's axis that the machine does not have, a nonzero unused position),
-    /// [`Error::OutOfRange`] (a current position beyond ±65 536°), [`Error::NotFinite`],
-    /// [`Error::NotARotation`].
+    /// [`Error::OutOfRange`] (a current position of magnitude [`CLOSEST_MAX`] = 65 536° or
+    /// more), [`Error::NotFinite`], [`Error::NotARotation`].
     ///
     /// ```
     /// use cncrot::kinematics::{Machine, RotaryAxis, Rule, Side};

@@ -33,9 +33,9 @@ mod solve;
 pub use choose::{Choice, Rule};
 pub use solve::{Solutions, POLE_SINE};
 
-use crate::math::sin_cos_deg;
+use crate::math::{abs, sin_cos_deg};
 use crate::vector::{cross, dot};
-use crate::{mul, unit_vector, Error, Frame, Matrix, Vector, IDENTITY};
+use crate::{mul, unit_vector, Error, Frame, Matrix, Vector, CLOSEST_MAX, IDENTITY};
 
 /// The most rotary axes a machine has here (a table with a two-axis head).
 pub const MAX_AXES: usize = 3;
@@ -51,6 +51,21 @@ pub const PARALLEL_SINE: f64 = 1e-6;
 /// below any measurable angle (2e-8°), well above the rounding of a target computed in
 /// doubles (1e-15).
 pub const REACH_TOLERANCE: f64 = 1e-10;
+/// A computed position at most this far beyond an end of its axis' travel, degrees, is
+/// taken at that end (and the position moved to is exactly the end) \[choice\]. The
+/// inverse computes a position the target put exactly at an end a few ulp beyond it
+/// (1e-14° at 10°, 1.5e-11° at 65 536°); moving by this much turns the tool by 1.7e-11
+/// rad, within [`REACH_TOLERANCE`], so the end still reaches the target.
+pub const TRAVEL_TOLERANCE: f64 = 1e-9;
+/// The largest magnitude of a coordinate of an axis' point, millimetres \[choice\]: a
+/// kilometre, far beyond any machine tool. Translations `p − R·p` of such a point
+/// are exact to 1e-9 mm; a point 1e12 mm away would leave 1e-4 mm of rounding.
+pub const LENGTH_MAX: f64 = 1e6;
+/// The finest Hirth grid, degrees \[choice\]: finer than any rotary axis resolves. The
+/// teeth `offset + k·step` of positions within the angle bound ([`crate::CLOSEST_MAX`])
+/// are computed to 5e-11°, a twenty-thousandth of this step; much finer steps would make
+/// the grid rounding, and below 1e-303° `k` overflows.
+pub const HIRTH_STEP_MIN: f64 = 1e-6;
 
 /// Which part a rotary axis turns.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -64,9 +79,10 @@ pub enum Side {
 /// A Hirth tooth system: the axis stops only at `offset + k·step` degrees.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hirth {
-    /// Position of one tooth, degrees (`$TC_CARR26/27`).
+    /// Position of one tooth, degrees (`$TC_CARR26/27`); below [`crate::CLOSEST_MAX`] in
+    /// magnitude.
     pub offset: f64,
-    /// Tooth spacing, degrees, positive (`$TC_CARR28/29`).
+    /// Tooth spacing, degrees, at least [`HIRTH_STEP_MIN`] (`$TC_CARR28/29`).
     pub step: f64,
 }
 
@@ -83,11 +99,14 @@ pub struct RotaryAxis {
     pub side: Side,
     /// Direction `v` (any length when given; the machine keeps it as a unit vector).
     pub direction: Vector,
-    /// A point `p` on the axis, millimetres.
+    /// A point `p` on the axis, millimetres; each coordinate within ±[`LENGTH_MAX`].
     pub point: Vector,
-    /// The position the axis reads in the described initial state, degrees.
+    /// The position the axis reads in the described initial state, degrees; below
+    /// [`crate::CLOSEST_MAX`] in magnitude.
     pub offset: f64,
-    /// Travel limits `[min, max]`, degrees; `None`: a modulo axis without limits.
+    /// Travel limits `[min, max]`, degrees, below [`crate::CLOSEST_MAX`] in magnitude;
+    /// `None`: a modulo axis without limits. A position computed within
+    /// [`TRAVEL_TOLERANCE`] beyond an end is taken at that end.
     pub limits: Option<[f64; 2]>,
     /// The Hirth grid, if the axis has one.
     pub hirth: Option<Hirth>,
@@ -106,23 +125,38 @@ impl RotaryAxis {
         }
     }
 
-    /// The axis made canonical (unit direction) and checked: finite numbers, a nonzero
-    /// direction, `min <= max`, a positive Hirth step.
+    /// The axis made canonical (unit direction) and checked: finite numbers
+    /// ([`Error::NotFinite`]); a nonzero direction, `min <= max`, a Hirth step of at least
+    /// [`HIRTH_STEP_MIN`] ([`Error::BadArgument`]); offset, limits and Hirth offset below
+    /// [`crate::CLOSEST_MAX`] in magnitude, point coordinates at most [`LENGTH_MAX`]
+    /// ([`Error::OutOfRange`]).
     fn checked(&self) -> Result<RotaryAxis, Error> {
-        let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
-        let limits = self.limits.unwrap_or([0.0; 2]);
-        let hirth = self.hirth.map_or([0.0, 1.0], |h| [h.offset, h.step]);
+        let [lo, hi] = self.limits.unwrap_or([0.0; 2]);
+        let (tooth, step) = self
+            .hirth
+            .map_or((0.0, HIRTH_STEP_MIN), |h| (h.offset, h.step));
+        // Scalar tests, no arrays of the values: this runs inside every export's frame.
+        let finite = |v: &Vector| v[0].is_finite() && v[1].is_finite() && v[2].is_finite();
         if !(finite(&self.direction)
             && finite(&self.point)
-            && finite(&[self.offset])
-            && finite(&limits)
-            && finite(&hirth))
+            && self.offset.is_finite()
+            && lo.is_finite()
+            && hi.is_finite()
+            && tooth.is_finite()
+            && step.is_finite())
         {
             return Err(Error::NotFinite);
         }
         // Written so that NaN would refuse.
-        if !(limits[0] <= limits[1] && hirth[1] > 0.0) {
+        if !(lo <= hi && step >= HIRTH_STEP_MIN) {
             return Err(Error::BadArgument);
+        }
+        // The bound of current positions: beyond it doubles are too coarse for a degree, and
+        // `θ − offset`, a limit or a tooth would be off by more than the tolerances.
+        let angle = |x: f64| abs(x) < CLOSEST_MAX;
+        let length = |v: &Vector| v.iter().all(|x| abs(*x) <= LENGTH_MAX);
+        if !(angle(self.offset) && angle(lo) && angle(hi) && angle(tooth) && length(&self.point)) {
+            return Err(Error::OutOfRange);
         }
         let direction = unit_vector(self.direction).map_err(|_| Error::BadArgument)?;
         Ok(RotaryAxis { direction, ..*self })
@@ -179,9 +213,11 @@ impl Machine {
 
     /// The machine with one more axis, carried by the axes already on its side.
     /// Refused: a fourth axis ([`Error::TableFull`]), a non-finite number
-    /// ([`Error::NotFinite`]), a zero direction, `min > max`, a Hirth step ≤ 0, or two
-    /// consecutive axes of the chain parallel within [`PARALLEL_SINE`]
-    /// ([`Error::BadArgument`]).
+    /// ([`Error::NotFinite`]), a zero direction, `min > max`, a Hirth step below
+    /// [`HIRTH_STEP_MIN`], or two consecutive axes of the chain parallel within
+    /// [`PARALLEL_SINE`] ([`Error::BadArgument`]), an offset, limit or Hirth offset of
+    /// magnitude [`crate::CLOSEST_MAX`] (65 536°) or more, or a point coordinate beyond
+    /// ±[`LENGTH_MAX`] ([`Error::OutOfRange`]).
     pub fn with_axis(&self, axis: RotaryAxis) -> Result<Machine, Error> {
         let mut next = *self;
         next.push_axis(axis)?;
