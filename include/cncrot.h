@@ -756,7 +756,8 @@ size_t cncrot_cycle600_gud_size(void);
  *
  * Returns 0 and writes the table, with `*error_line` = 0; or a negative status
  * (`CNCROT_STATUS_PARSE` for an unknown or malformed line, `CNCROT_STATUS_NAME_TOO_LONG`,
- * `CNCROT_STATUS_TABLE_FULL`) with the table untouched and the 1-based number of the
+ * `CNCROT_STATUS_TABLE_FULL`, `CNCROT_STATUS_NULL_POINTER` for `table` or `text`) with
+ * the table untouched and the 1-based number of the
  * offending line in `*error_line`. `error_line` may be NULL.
  *
  * # Safety
@@ -791,7 +792,15 @@ int32_t cncrot_head_table_parse(struct cncrot_head_table *table,
  * Returns 0 or `CNCROT_STATUS_SINGULAR` with `gud` updated (and sealed with its format and
  * checksum); a negative status leaves `gud` exactly as it was: `CNCROT_STATUS_BAD_STATE`
  * for a `gud` that is neither zeroed nor one this library wrote (see
- * `cncrot_cycle600_gud`), `CNCROT_STATUS_BAD_ARGUMENT` for a corrupt or misaligned table.
+ * `cncrot_cycle600_gud`), `CNCROT_STATUS_BAD_ARGUMENT` for a corrupt or misaligned table
+ * or a `_MIHEAD` that is no name (a space, a quote, a control character),
+ * `CNCROT_STATUS_NULL_POINTER` (`gud` or `mihead`), `CNCROT_STATUS_BAD_FLAG` (`_INEXIN`,
+ * `_SW_REC`, `_INEXOUT`, `_ROT_AD`, `_ROT_INV`, `_RETR_Z` other than 0 or 1),
+ * `CNCROT_STATUS_BAD_SEQUENCE` (`_BIN_IN`, `_BIN_OUT`), `CNCROT_STATUS_INCOMPLETE_SEQUENCE`
+ * (a `_BIN_OUT` of fewer than three rotations), `CNCROT_STATUS_NOT_FINITE`,
+ * `CNCROT_STATUS_NAME_TOO_LONG` (`_MIHEAD` of more than 31 bytes),
+ * `CNCROT_STATUS_UNKNOWN_HEAD` (with a table: `_MIHEAD` not in it),
+ * `CNCROT_STATUS_OUT_OF_RANGE` (positions whose frame overflows).
  *
  * # Safety
  * `gud` points to a writable state, `mihead` to a NUL-terminated string (at most 31 bytes

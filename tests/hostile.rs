@@ -744,7 +744,7 @@ fn names_must_be_printable_ascii_without_spaces() {
 
 // ---- the machine description ------------------------------------------------------------
 
-use std::ffi::{c_char, CStr};
+use std::ffi::c_char;
 
 const BAD_FLAG: i32 = cncrot_status::BadFlag as i32;
 const NAME_TOO_LONG: i32 = cncrot_status::NameTooLong as i32;
@@ -966,23 +966,6 @@ fn a_hand_filled_machine_is_refused_unless_it_is_one() {
         let s = statuses_of(&m);
         assert!(s.iter().all(|&s| s >= 0), "{what}: {s:?}");
     }
-}
-
-/// The doc comment of a function in the committed header.
-fn header_doc(function: &str) -> String {
-    let header = include_str!("../include/cncrot.h");
-    let decl = header
-        .find(&format!("int32_t {function}("))
-        .unwrap_or_else(|| panic!("{function} not in the header"));
-    let start = header[..decl].rfind("/**").unwrap();
-    header[start..decl].to_string()
-}
-
-fn status_name(s: i32) -> String {
-    let text = unsafe { CStr::from_ptr(cncrot_status_str(s)) }
-        .to_str()
-        .unwrap();
-    text.split(':').next().unwrap().to_string()
 }
 
 /// Random hostile descriptions: a valid machine with up to three fields set to values
@@ -1292,16 +1275,7 @@ fn every_status_of_a_kinematics_export_is_named_in_its_header_doc() {
         );
     }
 
-    let mut missing = Vec::new();
-    for (function, statuses) in &seen {
-        let doc = header_doc(function);
-        for &s in statuses {
-            let name = status_name(s);
-            if s != 0 && !doc.contains(&format!("`{name}`")) {
-                missing.push(format!("{function} returns {name}"));
-            }
-        }
-    }
+    let missing = common::undocumented(&seen);
     assert!(
         missing.is_empty(),
         "not in the header doc:\n{}",
