@@ -765,3 +765,24 @@ fn names_and_indices_at_their_limits() {
     let e = machine_from_carr(&text, 1).unwrap_err();
     assert_eq!((e.error, e.line), (Error::Parse, 2));
 }
+
+/// Swivel data's axis parameters reach the machine: offsets (24, 25), Hirth offsets and
+/// increments (26..29), travel minimum (30, 31) and maximum (32, 33), per axis as the
+/// parameter table of the function manual lists them.
+#[test]
+fn swivel_data_axis_parameters_reach_the_machine() {
+    use cncrot::dialects::carr::machine_from_carr;
+    let text = b"$TC_CARR7[1]=0 $TC_CARR8[1]=1 $TC_CARR9[1]=0 $TC_CARR10[1]=0 $TC_CARR11[1]=0
+$TC_CARR12[1]=1 $TC_CARR24[1]=1.5 $TC_CARR25[1]=-2 $TC_CARR26[1]=0.5 $TC_CARR28[1]=2.5
+$TC_CARR27[1]=0 $TC_CARR29[1]=0 $TC_CARR30[1]=-100 $TC_CARR31[1]=-360 $TC_CARR32[1]=30
+$TC_CARR33[1]=360
+";
+    let m = machine_from_carr(text, 1).unwrap();
+    let [a, c] = [m.axes()[0], m.axes()[1]];
+    assert_eq!((a.offset, c.offset), (1.5, -2.0));
+    assert_eq!(a.limits, Some([-100.0, 30.0]));
+    assert_eq!(c.limits, Some([-360.0, 360.0]));
+    let h = a.hirth.expect("a Hirth grid on axis 1");
+    assert_eq!((h.offset, h.step), (0.5, 2.5));
+    assert!(c.hirth.is_none());
+}
