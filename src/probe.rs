@@ -750,4 +750,178 @@ mod tests {
         assert_eq!(edge(&tilt, e1, e1), Err(Error::Coincident));
         assert_eq!(edge(&tilt, [0.0; 3], n), Err(Error::Collinear));
     }
+
+    // The thresholds, tested where they are: each refusal at the first value that must be
+    // refused and its acceptance one step beyond, so that a comparison turned the other way,
+    // made strict or dropped fails (cargo mutants found them tested only far away).
+    // sqrt(x·x) == x for doubles (no underflow), which makes the ties exact; each test
+    // checks its tie before relying on it.
+
+    /// The sine of flange's two directions is at most MIN_SINE: refused; the next double
+    /// above: a plane.
+    #[test]
+    fn flange_at_min_sine() {
+        let o = [0.0; 3];
+        let x = [1.0, 0.0, 0.0];
+        let at = [1.0, MIN_SINE, 0.0];
+        let above = [1.0, f64::from_bits(MIN_SINE.to_bits() + 1), 0.0];
+        assert_eq!(sine(x, at), Ok(MIN_SINE));
+        assert!(sine(x, above).unwrap() > MIN_SINE);
+        assert_eq!(flange(o, x, o, at), Err(Error::Collinear));
+        assert_eq!(flange(o, x, o, above).unwrap().rotation, crate::IDENTITY);
+    }
+
+    /// flange's two choices at their boundary: a vertical flange keeps the cross product's
+    /// side (n = X × Z = −Y, so the frame is Rx(90°), not Rx(−90°)), and A1 → A2 with no X
+    /// component is not turned (X' = +Y: Rz(90°), not Rz(−90°)).
+    #[test]
+    fn flange_sides_at_zero() {
+        let o = [0.0; 3];
+        let (x, y, z) = ([100.0, 0.0, 0.0], [0.0, 100.0, 0.0], [0.0, 0.0, 100.0]);
+        let vertical = flange(o, x, o, z).unwrap();
+        assert_eq!(
+            vertical.rotation,
+            [[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]]
+        );
+        assert!(
+            (vertical.angles[0] - 90.0).abs() < 1e-12,
+            "{:?}",
+            vertical.angles
+        );
+        let along_y = flange(o, y, o, x).unwrap();
+        assert_eq!(
+            along_y.rotation,
+            [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
+        );
+    }
+
+    /// An edge whose component in the plane is MIN_SINE of its length (along X' or along
+    /// Y'): refused; the next double above: a turn of 0° or 90°.
+    #[test]
+    fn edge_at_min_sine() {
+        let f = Frame::IDENTITY;
+        let above = f64::from_bits(MIN_SINE.to_bits() + 1);
+        let o = [0.0; 3];
+        assert_eq!(edge(&f, o, [MIN_SINE, 0.0, 1.0]), Err(Error::Collinear));
+        assert_eq!(edge(&f, o, [0.0, MIN_SINE, 1.0]), Err(Error::Collinear));
+        assert_eq!(edge(&f, o, [above, 0.0, 1.0]).unwrap().0, 0.0);
+        assert_eq!(edge(&f, o, [0.0, above, 1.0]).unwrap().0, 90.0);
+    }
+
+    /// The criteria on the extents, at their ties: a second extent MIN_SINE times the first
+    /// is collinear, the next double above is not; two smallest extents MIN_SINE times the
+    /// first apart are degenerate past three points, the next double further apart is not.
+    #[test]
+    fn extents_at_min_sine() {
+        let up = |x: f64| f64::from_bits(x.to_bits() + 1);
+        let down = |x: f64| f64::from_bits(x.to_bits() - 1);
+        let m = MIN_SINE;
+        for n in [3, 4] {
+            assert_eq!(determined([1.0, m, 0.0], n), Err(Error::Collinear));
+            assert_eq!(determined([2.0, 2.0 * m, 0.0], n), Err(Error::Collinear));
+            assert_eq!(determined([1.0, up(m), 0.0], n), Ok(()));
+        }
+        assert_eq!(determined([1.0, 2.0 * m, m], 4), Err(Error::Degenerate));
+        assert_eq!(determined([1.0, 2.0 * m, down(m)], 4), Ok(()));
+        assert_eq!(determined([1.0, 2.0 * m, m], 3), Ok(()));
+        assert_eq!(determined([1.0, 1.0, 1.0], 4), Err(Error::Degenerate));
+        assert_eq!(determined([1.0, 0.5, 0.5], 4), Err(Error::Degenerate));
+        assert_eq!(determined([1.0, 0.5, 0.25], 4), Ok(()));
+    }
+
+    /// The same through plane: (0, ±b, 0), (±1, 0, 0), whose extents are exactly √2 and
+    /// √2·b (the running mean of ±pairs in this order is exactly 0), at the tie b = MIN_SINE
+    /// and the next double above; and six points with extents √2·(1, 2e-12, c) on either
+    /// side of the degenerate threshold, c = 1e-12.
+    #[test]
+    fn plane_at_min_sine() {
+        let pairs = |b: f64| {
+            [
+                [0.0, b, 0.0],
+                [0.0, -b, 0.0],
+                [1.0, 0.0, 0.0],
+                [-1.0, 0.0, 0.0],
+            ]
+        };
+        let at = pairs(MIN_SINE);
+        let e = extents(&at).unwrap();
+        assert_eq!(e.centroid, [0.0; 3]);
+        assert_eq!(e.sigma[1], MIN_SINE * e.sigma[0]);
+        assert_eq!(plane(&at), Err(Error::Collinear));
+        let above = pairs(f64::from_bits(MIN_SINE.to_bits() + 1));
+        let e = extents(&above).unwrap();
+        assert!(e.sigma[1] > MIN_SINE * e.sigma[0]);
+        assert_eq!(
+            z_of(&plane(&above).unwrap().frame.rotation),
+            [0.0, 0.0, 1.0]
+        );
+        let six = |c: f64| {
+            [
+                [1.0, 0.0, 0.0],
+                [-1.0, 0.0, 0.0],
+                [0.0, 2.0 * MIN_SINE, 0.0],
+                [0.0, -2.0 * MIN_SINE, 0.0],
+                [0.0, 0.0, c],
+                [0.0, 0.0, -c],
+            ]
+        };
+        assert_eq!(plane(&six(1.5 * MIN_SINE)), Err(Error::Degenerate));
+        let p = plane(&six(0.5 * MIN_SINE)).unwrap();
+        assert_eq!(z_of(&p.frame.rotation).map(f64::abs), [0.0, 0.0, 1.0]);
+    }
+
+    /// The side of plane's normal: that of (P2 − P1) × (P3 − P1); where P1, P2, P3 are
+    /// collinear, +Z, then +Y, then +X. Each case gives another answer under the next rule.
+    #[test]
+    fn plane_side_rules() {
+        let r2 = 0.5f64.sqrt();
+        let normal = |pts: &[Vector]| z_of(&plane(pts).unwrap().frame.rotation);
+        let near = |a: Vector, b: Vector| a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-15);
+        // (P2 − P1) × (P3 − P1) along −Z: Z' = −Z although it has a Z component.
+        let down = [
+            [0.0, 0.0, 0.0],
+            [100.0, 0.0, 0.0],
+            [0.0, -50.0, 0.0],
+            [100.0, -50.0, 0.0],
+        ];
+        let p = plane(&down).unwrap();
+        assert!(
+            max_diff(
+                &p.frame.rotation,
+                &[[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]]
+            ) < 1e-15
+        );
+        // P1, P2, P3 on the X axis, the plane y = z: the +Z side, (0, −1, 1)/√2 (the +Y
+        // side would be the opposite).
+        let yz = [
+            [3.0, 0.0, 0.0],
+            [-3.0, 0.0, 0.0],
+            [0.0, 0.0, 0.0],
+            [0.0, 4.0, 4.0],
+            [0.0, -4.0, -4.0],
+        ];
+        assert!(near(normal(&yz), [0.0, -r2, r2]), "{:?}", normal(&yz));
+        // P1, P2, P3 on the line x = y, z = 0, the vertical plane x = y: the normal's Z
+        // component is exactly 0 (the Z coordinates are decoupled from X and Y), so the +Y
+        // side, (−1, 1, 0)/√2 (the +X side would be the opposite).
+        let xy = [
+            [3.0, 3.0, 0.0],
+            [-3.0, -3.0, 0.0],
+            [0.0, 0.0, 0.0],
+            [0.0, 0.0, 4.0],
+            [0.0, 0.0, -4.0],
+        ];
+        let n = normal(&xy);
+        assert_eq!(n[2], 0.0);
+        assert!(near(n, [-r2, r2, 0.0]), "{n:?}");
+        // The plane x = 0 through P1, P2, P3 on the Y axis: the +X side.
+        let x0 = [
+            [0.0, 3.0, 0.0],
+            [0.0, -3.0, 0.0],
+            [0.0, 0.0, 0.0],
+            [0.0, 0.0, 4.0],
+            [0.0, 0.0, -4.0],
+        ];
+        assert_eq!(normal(&x0), [1.0, 0.0, 0.0]);
+    }
 }
