@@ -272,6 +272,24 @@ static void probing(void) {
   rot_of(g, rg);
   rot_of(pp, rpp);
   CHECK_NEAR(rg, rpp, 9, 1e-12);
+  /* Thin sets once got a wrong plane with success (issue 20). Three points 1e-6 off a
+   * 100 mm line: PLANE POINTS's frame, Z' = +Z. Four coplanar points on a strip 101 mm by
+   * 9.6e-5 mm: O + a (3, -2, 0) + b (12, 18, -13) with small dyadic a, b are exact doubles
+   * on the plane of normal (2, 3, 6)/7; rounding points to doubles costs any fit up to
+   * eps * length / width = 2.3e-10 of tilt. */
+  double thin[9] = {0, 0, 0, 100, 0, 0, 50, 1e-6, 0}, plus_z[3] = {0, 0, 1};
+  CHECK_STATUS(cncrot_probe_plane(thin, 3, g, res), 0);
+  CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_POINTS, 0, thin, 9, pp), 0);
+  CHECK_NEAR(g, pp, 16, 1e-15);
+  double thin_z[3] = {g[2], g[6], g[10]};
+  CHECK_NEAR(thin_z, plus_z, 3, 1e-15);
+  double bw = ldexp(1, -18), ab[4][2] = {{-14, 0}, {14, 0}, {14, bw}, {-14, bw}};
+  double o7[3] = {5, -7, 120}, u7[3] = {3, -2, 0}, v7[3] = {12, 18, -13}, strip[12];
+  for (int k = 0; k < 4; k++)
+    for (int i = 0; i < 3; i++) strip[3 * k + i] = o7[i] + ab[k][0] * u7[i] + ab[k][1] * v7[i];
+  CHECK_STATUS(cncrot_probe_plane(strip, 4, g, res), 0);
+  double strip_z[3] = {g[2], g[6], g[10]}, n7[3] = {2.0 / 7, 3.0 / 7, 6.0 / 7};
+  CHECK_NEAR(strip_z, n7, 3, 2.3e-10);
   /* An edge at 20 degrees from X' in the tilted plane. */
   double c20 = cos(20 * PI / 180), s20 = sin(20 * PI / 180), e1[3], e2[3], angle, t[16];
   for (int i = 0; i < 3; i++) {

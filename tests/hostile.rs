@@ -1,7 +1,8 @@
 //! Regression tests for what a hostile caller found (each failed before its fix): validation
 //! that NaN slipped through, non-finite or corrupt CYCLE600 states accepted, additive chains
 //! drifting away from orthonormal, huge angles giving another rotation, -0 from
-//! `frame_inverse`, the head table read whole on every call.
+//! `frame_inverse`, the head table read whole on every call, thin point sets given a wrong
+//! plane by `cncrot_probe_plane`.
 //!
 //! Expected values come from an oracle independent of the library (double-double arithmetic
 //! for `MᵀM − I`, Rust's exact `%` for the reduction of angles) or from identities.
@@ -1300,4 +1301,57 @@ fn every_status_of_a_kinematics_export_is_named_in_its_header_doc() {
     ] {
         assert!(all.contains(&(s as i32)), "{s:?} never returned");
     }
+
+/// `cncrot_probe_plane` of `pts`: the status and the frame (4x4, row-major).
+fn probe_plane(pts: &[[f64; 3]]) -> (i32, [f64; 16]) {
+    let (mut f, mut res) = ([0.0; 16], [0.0; 2]);
+    let s = unsafe {
+        cncrot_probe_plane(
+            pts.as_ptr().cast(),
+            pts.len(),
+            f.as_mut_ptr(),
+            res.as_mut_ptr(),
+        )
+    };
+    (s, f)
+}
+
+/// Thin point sets got a wrong plane with success (the scatter matrix's closed-form
+/// eigenvalues lost the two small ones): three points 1e-6 mm off a 100 mm line gave the
+/// normal (0, 1, 0) while `PLANE POINTS` gives (0, 0, 1); four coplanar points on a strip
+/// 101 mm × 9.6e-5 mm a plane 31° off. Expected: `PLANE POINTS`, and the exact normal
+/// (2, 3, 6)/7 of points built from exact in-plane directions (3, −2, 0) and (12, 18, −13);
+/// the tolerance ε·length/width is what rounding the points to doubles costs any fit.
+#[test]
+fn thin_point_sets_get_their_own_plane() {
+    let three = [[0.0, 0.0, 0.0], [100.0, 0.0, 0.0], [50.0, 1e-6, 0.0]];
+    let (s, f) = probe_plane(&three);
+    assert_eq!(s, 0);
+    let mut pp = [0.0; 16];
+    let words: Vec<f64> = three.iter().flatten().copied().collect();
+    let form = unsafe {
+        cncrot_form_frame(
+            CNCROT_FORM_PLANE_POINTS,
+            0,
+            words.as_ptr(),
+            9,
+            pp.as_mut_ptr(),
+        )
+    };
+    assert_eq!(form, 0);
+    assert!(max_diff(&f, &pp) <= 1e-15, "{f:?}");
+    assert!(max_diff(&[f[2], f[6], f[10]], &[0.0, 0.0, 1.0]) <= 1e-15);
+
+    let at = |a: f64, b: f64| -> [f64; 3] {
+        std::array::from_fn(|k| {
+            [5.0, -7.0, 120.0][k] + a * [3.0, -2.0, 0.0][k] + b * [12.0, 18.0, -13.0][k]
+        })
+    };
+    let w = 2f64.powi(-18);
+    let strip = [at(-14.0, 0.0), at(14.0, 0.0), at(14.0, w), at(-14.0, w)];
+    let (s, f) = probe_plane(&strip);
+    assert_eq!(s, 0);
+    let tol = f64::EPSILON * 28.0 / (7.0 * w);
+    let normal = [2.0 / 7.0, 3.0 / 7.0, 6.0 / 7.0];
+    assert!(max_diff(&[f[2], f[6], f[10]], &normal) <= tol, "{f:?}");
 }

@@ -66,13 +66,17 @@ pub unsafe extern "C" fn cncrot_probe_flange(
 /// and its flatness: `frame` gets the plane (origin at the first point's foot on it, X'
 /// along the first two points' direction, Z' on the side of `(P2 − P1) × (P3 − P1)`: three
 /// points give `PLANE POINTS`'s rotation), `residual[0]` the flatness (largest minus smallest
-/// distance from the plane), `residual[1]` the RMS distance, millimetres. The time is
-/// linear in `n` (no iteration).
+/// distance from the plane), `residual[1]` the RMS distance, millimetres. The normal is the
+/// points' direction of least spread from their singular vectors, so a thin set (a strip,
+/// an apex just off a line) gets its own plane. The time is linear in `n`, plus at most 10
+/// sweeps of three Jacobi rotations (5 in practice).
 ///
 /// Returns 0, or with nothing written: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_TOO_FEW`
 /// (n < 3),
-/// `CNCROT_STATUS_COINCIDENT`, `CNCROT_STATUS_COLLINEAR`, `CNCROT_STATUS_DEGENERATE`
-/// (points spread alike in every direction), `CNCROT_STATUS_NOT_FINITE`,
+/// `CNCROT_STATUS_COINCIDENT`, `CNCROT_STATUS_COLLINEAR` (the second extent at most 1e-12
+/// of the first), `CNCROT_STATUS_DEGENERATE` (n > 3 and the two smallest extents differing
+/// by at most 1e-12 of the first, e.g. points spread alike in every direction: no plane is
+/// best), `CNCROT_STATUS_NOT_FINITE`,
 /// `CNCROT_STATUS_OUT_OF_RANGE`, `CNCROT_STATUS_BAD_ARGUMENT` (`points` not aligned for
 /// doubles, or `n` beyond any array).
 ///
