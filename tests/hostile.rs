@@ -1301,6 +1301,7 @@ fn every_status_of_a_kinematics_export_is_named_in_its_header_doc() {
     ] {
         assert!(all.contains(&(s as i32)), "{s:?} never returned");
     }
+}
 
 /// `cncrot_probe_plane` of `pts`: the status and the frame (4x4, row-major).
 fn probe_plane(pts: &[[f64; 3]]) -> (i32, [f64; 16]) {
