@@ -214,6 +214,17 @@ static void refusals(void) {
       {CNCROT_DIALECT_HAAS, "G268 X0 I0 J30 K0", CNCROT_STATUS_MISSING_WORD, 18},
       {CNCROT_DIALECT_TWINCAT, "ROT Z30 G1", CNCROT_STATUS_UNKNOWN_WORD, 9},
       {CNCROT_DIALECT_SYNTEC, "G158 P10957 A30", CNCROT_STATUS_BAD_ARGUMENT, 7},
+      /* A bad value at its own column, an unclosed comment as malformed text. */
+      {CNCROT_DIALECT_HAAS, "G268 Q123.5", CNCROT_STATUS_BAD_ARGUMENT, 7},
+      {CNCROT_DIALECT_HAAS, "G268 X1 Q0", CNCROT_STATUS_BAD_SEQUENCE, 10},
+      {CNCROT_DIALECT_SYNTEC, "G158 X0 P157", CNCROT_STATUS_BAD_ARGUMENT, 10},
+      {CNCROT_DIALECT_SYNTEC, "G158 P10122 X0", CNCROT_STATUS_BAD_SEQUENCE, 7},
+      {CNCROT_DIALECT_FANUC, "G68.2 X1 (comment", CNCROT_STATUS_PARSE, 10},
+      {CNCROT_DIALECT_FANUC, "N5 (no end", CNCROT_STATUS_PARSE, 4},
+      {CNCROT_DIALECT_SINUMERIK, "CYCLE600(2,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1,39)", CNCROT_STATUS_BAD_FLAG, 10},
+      {CNCROT_DIALECT_SINUMERIK, "CYCLE600(0,\"UFK600\",1,58,0,0,0,30,45,60,0,0,0,1,39)", CNCROT_STATUS_BAD_SEQUENCE, 23},
+      {CNCROT_DIALECT_SINUMERIK, "CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1, 7)", CNCROT_STATUS_INCOMPLETE_SEQUENCE, 50},
+      {CNCROT_DIALECT_SINUMERIK, "CYCLE600(0,\"U K\",1,57,0,0,0,30,45,60,0,0,0,1,39)", CNCROT_STATUS_BAD_ARGUMENT, 12},
   };
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     cncrot_program p, before;
@@ -306,34 +317,8 @@ static void sealed_states(void) {
   CHECK_NEAR(r, want, 9, 1e-15);
 }
 
-/* Refusals that name what was wrong: the value's column, not the command's; an unclosed comment
- * is malformed text; a line no buffer can hold is OUT_OF_RANGE, not NO_ROOM. */
-static void columns_and_reasons(void) {
-  cncrot_program p;
-  memset(&p, 0, sizeof p);
-  size_t col = 0;
-  struct {
-    int32_t dialect;
-    const char *line;
-    int32_t status;
-    size_t column;
-  } cases[] = {
-      {CNCROT_DIALECT_HAAS, "G268 Q123.5", CNCROT_STATUS_BAD_ARGUMENT, 7},
-      {CNCROT_DIALECT_HAAS, "G268 X1 Q0", CNCROT_STATUS_BAD_SEQUENCE, 10},
-      {CNCROT_DIALECT_SYNTEC, "G158 X0 P157", CNCROT_STATUS_BAD_ARGUMENT, 10},
-      {CNCROT_DIALECT_SYNTEC, "G158 P10122 X0", CNCROT_STATUS_BAD_SEQUENCE, 7},
-      {CNCROT_DIALECT_FANUC, "G68.2 X1 (comment", CNCROT_STATUS_PARSE, 10},
-      {CNCROT_DIALECT_FANUC, "N5 (no end", CNCROT_STATUS_PARSE, 4},
-      {CNCROT_DIALECT_SINUMERIK, "CYCLE600(2,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1,39)", CNCROT_STATUS_BAD_FLAG, 10},
-      {CNCROT_DIALECT_SINUMERIK, "CYCLE600(0,\"UFK600\",1,58,0,0,0,30,45,60,0,0,0,1,39)", CNCROT_STATUS_BAD_SEQUENCE, 23},
-      {CNCROT_DIALECT_SINUMERIK, "CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1, 7)", CNCROT_STATUS_INCOMPLETE_SEQUENCE, 50},
-      {CNCROT_DIALECT_SINUMERIK, "CYCLE600(0,\"U K\",1,57,0,0,0,30,45,60,0,0,0,1,39)", CNCROT_STATUS_BAD_ARGUMENT, 12},
-  };
-  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
-    const char *l = cases[k].line;
-    CHECK_STATUS(cncrot_program_column(&p, cases[k].dialect, l, strlen(l), &col), cases[k].status);
-    CHECK(col == cases[k].column, "%s: column %zu, expected %zu", l, col, cases[k].column);
-  }
+/* A line no buffer can hold is OUT_OF_RANGE, not NO_ROOM; PLANE POINTS needs no origin. */
+static void long_lines_and_points(void) {
   /* Nine numbers of about 100 digits: longer than any dialect's line, whatever the buffer. */
   double a = 1e-97, f[16], r[9], x[9], y[9], z[9], xy[9];
   elem(1, a, x);
@@ -437,7 +422,7 @@ int main(void) {
   refusals();
   writer_buffers();
   sealed_states();
-  columns_and_reasons();
+  long_lines_and_points();
   near_singularities();
   return finish("test_program");
 }

@@ -411,27 +411,30 @@ fn put(out: &mut [f64; MAX_VALUES], at: usize, v: [f64; 3]) {
 mod tests {
     use super::*;
 
+    /// Every writable form, with the selectors that can express any frame.
+    const WRITABLE: [(Form, &[i32]); 12] = [
+        (
+            Form::Cycle800,
+            &[57, 27, 39, 55, 64, 128 + 57, 128 + 30, 128 + 39],
+        ),
+        (Form::SinumerikRot, &[0, 1]),
+        (Form::PlaneSpatial, &[0]),
+        (Form::PlaneEuler, &[0]),
+        (Form::PlaneVector, &[0]),
+        (Form::PlanePoints, &[0]),
+        (Form::G68_2, &[0]),
+        (Form::G158, &[10157, 10159, 10139]),
+        (Form::TwincatRot, &[0]),
+        (Form::G268, &[123, 321, 213]),
+        (Form::G68_3, &[0]),
+        (Form::PlaneProjected, &[0]),
+    ];
+
     /// Every writable form, with the selectors that can express any frame, writes words
     /// that read back to the same frame.
     #[test]
     fn every_form_round_trips() {
-        let cases: [(Form, &[i32]); 12] = [
-            (
-                Form::Cycle800,
-                &[57, 27, 39, 55, 64, 128 + 57, 128 + 30, 128 + 39],
-            ),
-            (Form::SinumerikRot, &[0, 1]),
-            (Form::PlaneSpatial, &[0]),
-            (Form::PlaneEuler, &[0]),
-            (Form::PlaneVector, &[0]),
-            (Form::PlanePoints, &[0]),
-            (Form::G68_2, &[0]),
-            (Form::G158, &[10157, 10159, 10139]),
-            (Form::TwincatRot, &[0]),
-            (Form::G268, &[123, 321, 213]),
-            (Form::G68_3, &[0]),
-            (Form::PlaneProjected, &[0]),
-        ];
+        let cases = WRITABLE;
         let frames = [
             Frame::with_translations(
                 [10.0, -5.0, 2.0],
@@ -503,23 +506,7 @@ mod tests {
     #[test]
     fn writers_near_singularities_read_back_or_refuse() {
         use crate::{elementary, mul, Axis};
-        let cases: [(Form, &[i32]); 12] = [
-            (
-                Form::Cycle800,
-                &[57, 27, 39, 55, 64, 128 + 57, 128 + 30, 128 + 39],
-            ),
-            (Form::SinumerikRot, &[0, 1]),
-            (Form::PlaneSpatial, &[0]),
-            (Form::PlaneEuler, &[0]),
-            (Form::PlaneVector, &[0]),
-            (Form::PlanePoints, &[0]),
-            (Form::G68_2, &[0]),
-            (Form::G158, &[10157, 10159, 10139]),
-            (Form::TwincatRot, &[0]),
-            (Form::G268, &[123, 321, 213]),
-            (Form::G68_3, &[0]),
-            (Form::PlaneProjected, &[0]),
-        ];
+        let cases = WRITABLE;
         let mut refused = 0;
         let mut written = 0;
         for e in 3..=16 {
