@@ -153,8 +153,15 @@ pub fn plane(points: &[Vector]) -> Result<Plane, Error> {
     } else {
         let mut n = e.normal;
         // The side of (P2 − P1) × (P3 − P1), as PLANE POINTS; where those three are
-        // collinear, the +Z side, then +Y, then +X [choice].
-        let side = cross(diff(p1, points[1])?, diff(p1, points[2])?);
+        // collinear, the +Z side, then +Y, then +X [choice]. Of the unit vectors: the
+        // product of differences beyond 1e154 overflows, and ∞ − ∞ would leave no side.
+        let a = crate::unit_vector(diff(p1, points[1])?);
+        let b = crate::unit_vector(diff(p1, points[2])?);
+        let side = match (a, b) {
+            (Ok(a), Ok(b)) => cross(a, b),
+            // P2 or P3 is P1.
+            _ => [0.0; 3],
+        };
         let s = dot(n, side);
         let s = if s != 0.0 {
             s
@@ -868,6 +875,66 @@ mod tests {
         assert_eq!(plane(&six(1.5 * MIN_SINE)), Err(Error::Degenerate));
         let p = plane(&six(0.5 * MIN_SINE)).unwrap();
         assert_eq!(z_of(&p.frame.rotation).map(f64::abs), [0.0, 0.0, 1.0]);
+    }
+
+    /// What cargo mutants found untested in plane besides its thresholds: the origin is the
+    /// first point's foot on the plane (not the point, nor its mirror image), never −0, and
+    /// a flatness beyond the largest double is refused, not returned; and the side of
+    /// points so far apart that the cross product of their differences overflows.
+    #[test]
+    fn plane_origin_and_overflow() {
+        // The doc example: the plane z = 5, P1 0.01 above it.
+        let p = plane(&[
+            [0.0, 0.0, 5.01],
+            [100.0, 100.0, 5.01],
+            [0.0, 100.0, 4.99],
+            [100.0, 0.0, 4.99],
+        ])
+        .unwrap();
+        let t = p.frame.translation;
+        assert!(
+            t.iter()
+                .zip(&[0.0, 0.0, 5.0])
+                .all(|(a, b)| (a - b).abs() < 1e-12),
+            "{t:?}"
+        );
+        // P1 = (−0, 0, 0) on the plane z = 0: its foot is itself, written +0.
+        let p = plane(&[
+            [-0.0, 0.0, 0.0],
+            [100.0, 0.0, 0.0],
+            [0.0, 100.0, 0.0],
+            [100.0, 100.0, 0.0],
+        ])
+        .unwrap();
+        assert_eq!(p.frame.translation.map(f64::to_bits), [0; 3]);
+        // ±(a, a, a) at ±√3·a = ±1.3e308 from the plane x + y + z = 0, along which twice six
+        // points spread more: the flatness 2.6e308 overflows.
+        let a = 0.75e308;
+        let mut pts = vec![[a, a, a], [-a, -a, -a]];
+        for _ in 0..2 {
+            for u in [[a, -a, 0.0], [a, 0.0, -a], [0.0, a, -a]] {
+                pts.push(u);
+                pts.push(u.map(|x| -x));
+            }
+        }
+        assert_eq!(plane(&pts), Err(Error::OutOfRange));
+        // The same set scaled by 2⁻⁹⁰⁰: a plane, normal (1, 1, 1)/√3.
+        let small: Vec<Vector> = pts.iter().map(|p| p.map(|x| x * 2f64.powi(-900))).collect();
+        let z = z_of(&plane(&small).unwrap().frame.rotation).map(f64::abs);
+        let third = (1.0f64 / 3.0).sqrt();
+        assert!(z.iter().all(|x| (x - third).abs() < 1e-15), "{z:?}");
+        // (P2 − P1) × (P3 − P1) = (0, 0, −1e600): from the differences themselves, 1e600 −
+        // 1e600 would be ∞ − ∞ and no side; it is −Z.
+        let huge = [
+            [0.0, 0.0, 0.0],
+            [1e300, 1e300, 0.0],
+            [2e300, 1e300, 0.0],
+            [0.0, 1e300, 0.0],
+        ];
+        assert_eq!(
+            z_of(&plane(&huge).unwrap().frame.rotation),
+            [0.0, 0.0, -1.0]
+        );
     }
 
     /// The side of plane's normal: that of (P2 − P1) × (P3 − P1); where P1, P2, P3 are
