@@ -346,7 +346,7 @@ fn fanuc_and_haas() {
 #[test]
 fn refusals_name_their_column() {
     let active = read(Dialect::Sinumerik, &["ROT Z30"]);
-    let cases: [(Dialect, &str, Error, &str); 29] = [
+    let cases: [(Dialect, &str, Error, &str); 30] = [
         (Dialect::Sinumerik, "ROT X=R1", Error::NotANumber, "R1"),
         (Dialect::Sinumerik, "ROT X10 A5", Error::UnknownWord, "A5"),
         (Dialect::Sinumerik, "ROT X10 X20", Error::UnknownWord, "X20"),
@@ -448,6 +448,13 @@ fn refusals_name_their_column() {
         ),
         (Dialect::Haas, "G269 (comment", Error::Parse, "(comment"),
         (Dialect::Twincat, "(comment", Error::Parse, "(comment"),
+        // A closed comment with words after it: the words are not the comment's.
+        (
+            Dialect::Fanuc,
+            "G68.2 X1 (c) Y2",
+            Error::UnknownWord,
+            "(c) Y2",
+        ),
     ];
     for (d, line, error, at) in cases {
         let p = Program {

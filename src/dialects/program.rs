@@ -692,9 +692,9 @@ pub(crate) fn address_words<const N: usize>(
     loop {
         c.spaces();
         // An unclosed `(` comment is malformed text, not an unknown word.
-        if comments.1 && c.peek() == Some(b'(') {
-            c.end(comments.0, comments.1)?;
-            return Ok(w);
+        let unclosed = c.text.get(c.pos..).is_some_and(|t| !t.contains(&b')'));
+        if comments.1 && c.peek() == Some(b'(') && unclosed {
+            return Err(c.error(Error::Parse));
         }
         if c.rest_is_comment(comments.0, comments.1) {
             c.end(comments.0, comments.1)?;
