@@ -25,7 +25,6 @@
 #![deny(missing_docs)]
 
 mod checksum;
-mod decimal;
 pub mod dialects;
 mod error;
 mod frame;
@@ -33,6 +32,7 @@ pub mod kinematics;
 mod math;
 mod rotation;
 mod sequence;
+mod text;
 mod vector;
 
 pub mod ffi;

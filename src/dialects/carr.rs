@@ -30,12 +30,12 @@
 //! entered as `0, 0, −1`).
 
 use super::head_def::ParseError;
-use super::program::{Cursor, Syntax};
 use crate::kinematics::{Hirth, Machine, RotaryAxis, Side, MACHINE_NAME_MAX};
+use crate::text::scan::{Cursor, Exponent, Syntax};
 use crate::{Error, Vector};
 
 const NUMBER: Syntax = Syntax {
-    ex: true,
+    exponent: Exponent::Ex,
     ends: b";",
 };
 

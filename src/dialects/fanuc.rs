@@ -87,10 +87,11 @@ pub const G69: Frame = Frame::IDENTITY;
 
 // Program lines.
 
-use super::program::{address_words, Cursor, FormSpec, LineError, Program, Syntax};
-use crate::decimal::{Out, Style};
+use super::program::{FormSpec, Program};
+use crate::text::number::{Out, Style};
+use crate::text::scan::{address_words, Cursor, LineError, Syntax};
 
-const SYNTAX: Syntax = super::program::G_WORDS;
+const SYNTAX: Syntax = crate::text::scan::G_WORDS;
 
 /// `G68.2`, `G68.4`, `G69`, `G53.1`/`G53.6` at the cursor (also Syntec's `G68.2` mode):
 /// `None` when none of them stands there.
@@ -155,7 +156,7 @@ pub(crate) fn write_line(
     out: &mut Out,
 ) -> Result<(), Error> {
     use super::form::Form;
-    use super::program::{write_integer, write_word};
+    use crate::text::number::{write_integer, write_word};
     let style = Style {
         plus: false,
         point: true,

@@ -66,9 +66,10 @@ pub const G269: Frame = Frame::IDENTITY;
 
 // Program lines.
 
-use super::program::{address_words, whole, Cursor, LineError, Program, Syntax};
+use super::program::Program;
+use crate::text::scan::{address_words, whole, Cursor, LineError, Syntax};
 
-const SYNTAX: Syntax = super::program::G_WORDS;
+const SYNTAX: Syntax = crate::text::scan::G_WORDS;
 
 /// One block of a Haas program: `G268 X Y Z I J K Q` (omitted `X … K` are 0; `Q` is
 /// required [choice: Haas's default is not public]), `G269` (cancel), `G253` (orients the

@@ -136,11 +136,12 @@ pub const RESET: Frame = Frame::IDENTITY;
 // Program lines.
 
 use super::form::Form;
-use super::program::{frame_at, Cursor, FormSpec, LineError, Program, Syntax};
-use crate::decimal::{Out, Style};
+use super::program::{frame_at, FormSpec, Program};
+use crate::text::number::{Out, Style};
+use crate::text::scan::{Cursor, Exponent, LineError, Syntax};
 
 const SYNTAX: Syntax = Syntax {
-    ex: false,
+    exponent: Exponent::None,
     ends: b";",
 };
 
@@ -321,7 +322,7 @@ pub(crate) fn write_line(
     };
     out.text(head);
     for (name, &v) in names.iter().zip(words) {
-        super::program::write_word(out, name, v, decimals, style)?;
+        crate::text::number::write_word(out, name, v, decimals, style)?;
     }
     out.text(b" STAY");
     Ok(())

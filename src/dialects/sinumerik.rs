@@ -365,17 +365,16 @@ pub fn orirpy_angles(v: Vector) -> Result<([f64; 3], bool), Error> {
 // Program lines.
 
 use super::form::Form;
-use super::program::{
-    address_words, frame_at, whole, Cursor, FormSpec, LineError, Program, Syntax,
-};
-use crate::decimal::{Out, Style};
+use super::program::{frame_at, FormSpec, Program};
+use crate::text::number::{Out, Style};
+use crate::text::scan::{address_words, whole, Cursor, Exponent, LineError, Syntax};
 
 const WORDS: Syntax = Syntax {
-    ex: true,
+    exponent: Exponent::Ex,
     ends: b";",
 };
 const ARGS: Syntax = Syntax {
-    ex: true,
+    exponent: Exponent::Ex,
     ends: b",);",
 };
 
@@ -667,17 +666,17 @@ pub(crate) fn write_line(
     match spec.form {
         Form::Cycle800 => {
             out.text(b"CYCLE800(0,\"\",0,");
-            super::program::write_integer(out, spec.selector);
+            crate::text::number::write_integer(out, spec.selector);
             for &v in words {
                 out.byte(b',');
-                crate::decimal::write(out, v, decimals, style)?;
+                crate::text::number::write(out, v, decimals, style)?;
             }
             out.text(b",-1,0,0)");
         }
         Form::SinumerikRot => {
             out.text(b"ROT");
             for (name, &v) in [&b" X="[..], b" Y=", b" Z="].iter().zip(words) {
-                super::program::write_word(out, name, v, decimals, style)?;
+                crate::text::number::write_word(out, name, v, decimals, style)?;
             }
         }
         _ => return Err(Error::BadArgument),

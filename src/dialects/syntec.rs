@@ -138,9 +138,10 @@ fn normal(n: Vector) -> Result<Matrix, Error> {
 
 // Program lines.
 
-use super::program::{address_words, whole, Cursor, LineError, Program, Syntax};
+use super::program::Program;
+use crate::text::scan::{address_words, whole, Cursor, LineError, Syntax};
 
-const SYNTAX: Syntax = super::program::G_WORDS;
+const SYNTAX: Syntax = crate::text::scan::G_WORDS;
 
 /// One block of a Syntec program: `G158 L P X Y Z A B C U V W` (omitted words are 0, `L`
 /// accepted and ignored [choice: not documented]; `G158` without words cancels \[choice\]),

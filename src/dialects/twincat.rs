@@ -82,10 +82,11 @@ pub fn rot_angles(m: &Matrix) -> Result<([f64; 3], bool), Error> {
 
 // Program lines.
 
-use super::program::{address_words, Cursor, LineError, Program, Syntax};
-use crate::decimal::{Out, Style};
+use super::program::Program;
+use crate::text::number::{Out, Style};
+use crate::text::scan::{address_words, Cursor, LineError, Syntax};
 
-const SYNTAX: Syntax = super::program::G_WORDS;
+const SYNTAX: Syntax = crate::text::scan::G_WORDS;
 
 /// One block of a TwinCAT NC I program: `ROT X Y Z` (no words: cancel), `AROT X Y Z`, and
 /// `RotExOn`/`RotExOff` (no frame change), with a block number and `( … )` or `;`
@@ -140,7 +141,7 @@ pub(crate) fn write_line(words: &[f64], decimals: i32, out: &mut Out) -> Result<
     };
     out.text(b"ROT");
     for (name, &v) in [&b" X"[..], b" Y", b" Z"].iter().zip(words) {
-        super::program::write_word(out, name, v, decimals, style)?;
+        crate::text::number::write_word(out, name, v, decimals, style)?;
     }
     Ok(())
 }

@@ -1,0 +1,451 @@
+//! Scanning a line of program text: the cursor every reader walks with (program lines,
+//! `$TC_CARR` assignments, `HEAD_DEF` tokens), what a number looks like in each dialect
+//! ([`Syntax`]), address words, and errors with their column.
+
+use super::number;
+use crate::Error;
+
+/// A refused line: why, and the 1-based column (byte) of the first offending character
+/// (one past the end when something is missing at the end).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LineError {
+    /// Why the line was refused.
+    pub error: Error,
+    /// 1-based byte column.
+    pub column: usize,
+}
+
+/// How an exponent is written in a dialect's numbers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Exponent {
+    /// None (the address-word dialects: `E` is a word of its own there).
+    None,
+    /// SINUMERIK's `EX`: `1.5EX3`.
+    Ex,
+    /// C's `e`/`E`: `1.5e3` (tool and head tables written by programs).
+    E,
+}
+
+/// What a number is in one dialect: the one rule its reader hands to [`Cursor::number`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Syntax {
+    /// How the exponent is written, if at all.
+    pub exponent: Exponent,
+    /// Characters that end a number besides spaces and the end (`,` `)` in calls, `;` `(`).
+    pub ends: &'static [u8],
+}
+
+/// Numbers of the address-word dialects (Fanuc, Syntec, Haas, TwinCAT): no exponent, ended
+/// by a comment.
+pub const G_WORDS: Syntax = Syntax {
+    exponent: Exponent::None,
+    ends: b"(;",
+};
+
+/// A position in a line, with the scanning the dialects share. Columns are 1-based bytes.
+pub struct Cursor<'a> {
+    text: &'a [u8],
+    pos: usize,
+}
+
+/// Characters of a name (address letters and keywords).
+fn is_name(b: u8) -> bool {
+    b.is_ascii_alphanumeric() || b == b'_'
+}
+
+impl<'a> Cursor<'a> {
+    pub fn new(text: &'a [u8]) -> Cursor<'a> {
+        Cursor { text, pos: 0 }
+    }
+
+    /// The 1-based column of the current position.
+    pub fn column(&self) -> usize {
+        self.pos + 1
+    }
+
+    /// An error at the current position.
+    pub fn error(&self, error: Error) -> LineError {
+        LineError {
+            error,
+            column: self.column(),
+        }
+    }
+
+    pub fn peek(&self) -> Option<u8> {
+        self.text.get(self.pos).map(u8::to_ascii_uppercase)
+    }
+
+    pub fn peek_at(&self, k: usize) -> Option<u8> {
+        self.text.get(self.pos + k).map(u8::to_ascii_uppercase)
+    }
+
+    pub fn bump(&mut self) {
+        self.pos = (self.pos + 1).min(self.text.len());
+    }
+
+    pub fn at_end(&self) -> bool {
+        self.pos >= self.text.len()
+    }
+
+    pub fn spaces(&mut self) {
+        while matches!(self.peek(), Some(b' ' | b'\t')) {
+            self.bump();
+        }
+    }
+
+    /// Consumes `kw` (case-insensitive) when it stands here as a whole name.
+    pub fn keyword(&mut self, kw: &[u8]) -> bool {
+        let n = kw.len();
+        let here = self.text.get(self.pos..self.pos + n);
+        let matches = here.is_some_and(|h| h.eq_ignore_ascii_case(kw));
+        // "ROT" must not match "ROTS"; "G68.2" must not match "G68.25".
+        let whole = !self
+            .text
+            .get(self.pos + n)
+            .is_some_and(|&b| is_name(b) || b == b'.');
+        if matches && whole {
+            self.pos += n;
+        }
+        matches && whole
+    }
+
+    /// Consumes the address letter `l` (case-insensitive) when the next character is not a
+    /// letter (so `X` in `X30` and `X=30`, not in `XA`).
+    pub fn letter(&mut self, l: u8) -> bool {
+        let next_is_letter = self
+            .text
+            .get(self.pos + 1)
+            .is_some_and(|b| b.is_ascii_alphabetic() || *b == b'_');
+        if self.peek() == Some(l) && !next_is_letter {
+            self.bump();
+            true
+        } else {
+            false
+        }
+    }
+
+    /// Consumes the word name `w` (case-insensitive) when no letter follows it (`SPA` in
+    /// `SPA+27` and `SPA27`, not in `SPAN`).
+    pub fn word(&mut self, w: &[u8]) -> bool {
+        let n = w.len();
+        let matches = self
+            .text
+            .get(self.pos..self.pos + n)
+            .is_some_and(|h| h.eq_ignore_ascii_case(w));
+        let letter = self
+            .text
+            .get(self.pos + n)
+            .is_some_and(|b| b.is_ascii_alphabetic() || *b == b'_');
+        if matches && !letter {
+            self.pos += n;
+        }
+        matches && !letter
+    }
+
+    /// The text up to the next `close` (consumed), or `None` when there is none.
+    pub fn until(&mut self, close: u8) -> Option<&'a [u8]> {
+        let rest = self.text.get(self.pos..)?;
+        let k = rest.iter().position(|&b| b == close)?;
+        self.pos += k + 1;
+        rest.get(..k)
+    }
+
+    /// A label (`NAME:`) here: consumed with the spaces after it.
+    pub fn label(&mut self) {
+        let start = self.pos;
+        let name = self.name();
+        if !name.is_empty() && self.peek() == Some(b':') {
+            self.bump();
+            self.spaces();
+        } else {
+            self.pos = start;
+        }
+    }
+
+    /// A name (letters, digits, `_`) starting here.
+    pub fn name(&mut self) -> &'a [u8] {
+        let start = self.pos;
+        while self.peek().is_some_and(is_name) {
+            self.bump();
+        }
+        self.text.get(start..self.pos).unwrap_or(&[])
+    }
+
+    /// An unsigned integer (selectors in form names); -1 if none.
+    pub fn integer(&mut self) -> i32 {
+        let mut v: i32 = -1;
+        while let Some(d @ b'0'..=b'9') = self.peek() {
+            v = v
+                .max(0)
+                .saturating_mul(10)
+                .saturating_add(i32::from(d - b'0'));
+            self.bump();
+        }
+        v
+    }
+
+    /// A block number (`N10`, `n10`) or a skip mark (`/`) at the start: consumed.
+    pub fn block_number(&mut self, letter: u8) {
+        self.spaces();
+        if self.peek() == Some(b'/') {
+            self.bump();
+            while self.peek().is_some_and(|b| b.is_ascii_digit()) {
+                self.bump();
+            }
+            self.spaces();
+        }
+        if self.peek() == Some(letter) && self.peek_at(1).is_some_and(|b| b.is_ascii_digit()) {
+            self.bump();
+            while self.peek().is_some_and(|b| b.is_ascii_digit()) {
+                self.bump();
+            }
+        }
+        self.spaces();
+    }
+
+    /// A number in `syntax` starting here (`30`, `-20.5`, `+27`, `30.`, `.5`, SINUMERIK's
+    /// `1.5EX3`, C's `1.5e3`). A variable or expression here is [`Error::NotANumber`] at its column, a
+    /// malformed number [`Error::Parse`].
+    pub fn number(&mut self, syntax: Syntax) -> Result<f64, LineError> {
+        let start = self.pos;
+        let negative = match self.peek() {
+            Some(b'-') => {
+                self.bump();
+                true
+            }
+            Some(b'+') => {
+                self.bump();
+                false
+            }
+            _ => false,
+        };
+        let digits_start = self.pos;
+        let mut point = false;
+        // A second point ends the digits, so that it is reported where it stands.
+        while let Some(b @ (b'0'..=b'9' | b'.')) = self.peek() {
+            if b == b'.' && core::mem::replace(&mut point, true) {
+                break;
+            }
+            self.bump();
+        }
+        let digits = self.text.get(digits_start..self.pos).unwrap_or(&[]);
+        if digits.is_empty() {
+            // `R1`, `Q120`, `#100`, `$P_…`, `_name`, `(`, `[`: not a number the block can
+            // be executed with here.
+            return Err(match self.peek() {
+                Some(b) if b.is_ascii_alphabetic() || b"#$_[(".contains(&b) => {
+                    self.error(Error::NotANumber)
+                }
+                _ => self.error(Error::MissingWord),
+            });
+        }
+        let mut exp = 0i32;
+        let marker = match syntax.exponent {
+            Exponent::Ex if self.peek() == Some(b'E') && self.peek_at(1) == Some(b'X') => 2,
+            Exponent::E if self.peek() == Some(b'E') => 1,
+            _ => 0,
+        };
+        if marker > 0 {
+            for _ in 0..marker {
+                self.bump();
+            }
+            let exp_start = self.pos;
+            let sign = match self.peek() {
+                Some(b'-') => {
+                    self.bump();
+                    -1
+                }
+                Some(b'+') => {
+                    self.bump();
+                    1
+                }
+                _ => 1,
+            };
+            let mut any = false;
+            while let Some(d @ b'0'..=b'9') = self.peek() {
+                exp = exp.saturating_mul(10).saturating_add(i32::from(d - b'0'));
+                any = true;
+                self.bump();
+            }
+            if !any {
+                return Err(LineError {
+                    error: Error::Parse,
+                    column: exp_start + 1,
+                });
+            }
+            exp = exp.saturating_mul(sign);
+        }
+        // What follows must end the number: an operator or a letter makes an expression.
+        match self.peek() {
+            None | Some(b' ' | b'\t') => {}
+            Some(b) if syntax.ends.contains(&b) => {}
+            Some(b'+' | b'-' | b'*' | b'/' | b'^' | b'[' | b'(' | b'#' | b'$') => {
+                return Err(self.error(Error::NotANumber))
+            }
+            Some(_) => return Err(self.error(Error::Parse)),
+        }
+        number::parse(negative, digits, exp).map_err(|error| LineError {
+            error,
+            column: start + 1,
+        })
+    }
+
+    /// The rest of the line is a comment starting with one of `marks` (`;`, or `(` to the
+    /// matching `)` followed by only spaces and more comments), or nothing.
+    pub fn end(&mut self, semicolon: bool, parens: bool) -> Result<(), LineError> {
+        loop {
+            self.spaces();
+            match self.peek() {
+                None => return Ok(()),
+                Some(b';') if semicolon => return Ok(()),
+                Some(b'(') if parens => {
+                    let close = self
+                        .text
+                        .get(self.pos..)
+                        .and_then(|t| t.iter().position(|&b| b == b')'));
+                    match close {
+                        Some(k) => self.pos += k + 1,
+                        None => return Err(self.error(Error::Parse)),
+                    }
+                }
+                Some(_) => return Err(self.error(Error::UnknownWord)),
+            }
+        }
+    }
+
+    /// Whether only spaces and comments remain.
+    pub fn rest_is_comment(&self, semicolon: bool, parens: bool) -> bool {
+        let mut c = Cursor {
+            text: self.text,
+            pos: self.pos,
+        };
+        c.end(semicolon, parens).is_ok()
+    }
+}
+
+/// What [`address_words`] read: the values in the order of the letters (0 for omitted
+/// ones), which were given, and the 1-based column of each value (0 for omitted ones), so
+/// that a value refused later is reported where it stands.
+pub struct Words<const N: usize> {
+    pub values: [f64; N],
+    pub given: [bool; N],
+    pub columns: [usize; N],
+}
+
+impl<const N: usize> Words<N> {
+    /// The column of word `k`'s value.
+    pub fn column(&self, k: usize) -> usize {
+        self.columns.get(k).copied().unwrap_or(0)
+    }
+}
+
+/// Address words such as `X30 I-20.5 K0.`: each letter of `letters` at most once, in any
+/// order, until the end of the line or a comment.
+pub fn address_words<const N: usize>(
+    c: &mut Cursor,
+    letters: [u8; N],
+    syntax: Syntax,
+    equals: bool,
+    comments: (bool, bool),
+) -> Result<Words<N>, LineError> {
+    let mut w = Words {
+        values: [0.0; N],
+        given: [false; N],
+        columns: [0; N],
+    };
+    loop {
+        c.spaces();
+        // An unclosed `(` comment is malformed text, not an unknown word.
+        let unclosed = c.text.get(c.pos..).is_some_and(|t| !t.contains(&b')'));
+        if comments.1 && c.peek() == Some(b'(') && unclosed {
+            return Err(c.error(Error::Parse));
+        }
+        if c.rest_is_comment(comments.0, comments.1) {
+            c.end(comments.0, comments.1)?;
+            return Ok(w);
+        }
+        let column = c.column();
+        let hit = letters.iter().position(|&l| c.letter(l));
+        let Some(k) = hit else {
+            return Err(c.error(Error::UnknownWord));
+        };
+        if w.given.get(k).copied().unwrap_or(true) {
+            return Err(LineError {
+                error: Error::UnknownWord,
+                column,
+            });
+        }
+        if equals && c.peek() == Some(b'=') {
+            c.bump();
+        }
+        let at = c.column();
+        let v = c.number(syntax)?;
+        if let (Some(slot), Some(g), Some(col)) = (
+            w.values.get_mut(k),
+            w.given.get_mut(k),
+            w.columns.get_mut(k),
+        ) {
+            *slot = v;
+            *g = true;
+            *col = at;
+        }
+    }
+}
+
+/// An integer-valued word (`_MODE`, `P`, `Q`, `_ST`): the value must be a whole number of at
+/// most nine digits, else [`Error::BadArgument`] at `column`.
+pub fn whole(v: f64, column: usize) -> Result<i32, LineError> {
+    if crate::math::abs(v) < 1e9 && f64::from(v as i32) == v {
+        Ok(v as i32)
+    } else {
+        Err(LineError {
+            error: Error::BadArgument,
+            column,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_in_lines() {
+        let s = Syntax {
+            exponent: Exponent::Ex,
+            ends: b",);",
+        };
+        let read = |t: &[u8]| Cursor::new(t).number(s);
+        assert_eq!(read(b"30"), Ok(30.0));
+        assert_eq!(read(b"30.").unwrap(), 30.0);
+        assert_eq!(read(b"-20.5,"), Ok(-20.5));
+        assert_eq!(read(b"+27 "), Ok(27.0));
+        assert_eq!(read(b"1.5EX3"), Ok(1500.0));
+        assert_eq!(read(b"1.5ex-1"), Ok(0.15));
+        assert_eq!(read(b"R1").unwrap_err().error, Error::NotANumber);
+        assert_eq!(read(b"#100").unwrap_err().error, Error::NotANumber);
+        assert_eq!(
+            read(b"30+5").unwrap_err(),
+            LineError {
+                error: Error::NotANumber,
+                column: 3
+            }
+        );
+        assert_eq!(read(b"3.0.1").unwrap_err().error, Error::Parse);
+        assert_eq!(read(b"30x").unwrap_err().error, Error::Parse);
+        assert_eq!(read(b"").unwrap_err().error, Error::MissingWord);
+        // `E` alone is SINUMERIK's end of a number, not an exponent; C's rule reads it.
+        assert_eq!(read(b"1.5E3").unwrap_err().error, Error::Parse);
+        let c = Syntax {
+            exponent: Exponent::E,
+            ends: b"",
+        };
+        let read_c = |t: &[u8]| Cursor::new(t).number(c);
+        assert_eq!(read_c(b"1.5e3"), Ok(1500.0));
+        assert_eq!(read_c(b"1.5E-3"), Ok(0.0015));
+        assert_eq!(read_c(b"1e").unwrap_err().error, Error::Parse);
+        let none = |t: &[u8]| Cursor::new(t).number(G_WORDS);
+        assert_eq!(none(b"1.5E3").unwrap_err().error, Error::Parse);
+        assert_eq!(none(b"1.5(c)"), Ok(1.5));
+    }
+}
