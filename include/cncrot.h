@@ -628,8 +628,6 @@ typedef struct cncrot_program {
 
 
 
-
-
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus

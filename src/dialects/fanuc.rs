@@ -87,25 +87,38 @@ pub const G69: Frame = Frame::IDENTITY;
 
 // Program lines.
 
-use super::program::{FormSpec, Program};
-use crate::text::number::{Out, Style};
+use super::family::{no_selector, put, v3, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use crate::text::number::{write_word, Out, Style};
 use crate::text::scan::{address_words, Cursor, LineError, Syntax};
 
 const SYNTAX: Syntax = crate::text::scan::G_WORDS;
 
+/// The vertical axis of the `G68.3` form.
+const VERTICAL: Vector = [0.0, 0.0, 1.0];
+
+/// How Fanuc-style controls spell numbers: always with a point (`30.`: without one they read
+/// the least input increment unless a parameter says otherwise).
+pub(crate) const STYLE: Style = Style {
+    plus: false,
+    point: true,
+};
+
+/// The Fanuc family: `G68.2`, `G68.3`, `G68.4`, `G69`.
+pub(crate) struct Fanuc;
+
 /// `G68.2`, `G68.4`, `G69`, `G53.1`/`G53.6` at the cursor (also Syntec's `G68.2` mode):
 /// `None` when none of them stands there.
-pub(crate) fn read_g68(p: &Program, c: &mut Cursor) -> Option<Result<Program, LineError>> {
+pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Modal, LineError>> {
     let column = c.column();
     let incremental = if c.keyword(b"G68.2") {
         false
     } else if c.keyword(b"G68.4") {
         true
     } else if c.keyword(b"G69") {
-        return Some(c.end(true, true).map(|()| p.with_frame(G69)));
+        return Some(c.end(true, true).map(|()| m.with_frame(G69)));
     } else if c.keyword(b"G53.1") || c.keyword(b"G53.6") {
         // Turns the tool to the plane: no frame change.
-        return Some(c.end(true, true).map(|()| *p));
+        return Some(c.end(true, true).map(|()| *m));
     } else if c.keyword(b"G68.3") {
         // The tool direction comes from the machine's position: needs the kinematics.
         return Some(Err(LineError {
@@ -116,77 +129,134 @@ pub(crate) fn read_g68(p: &Program, c: &mut Cursor) -> Option<Result<Program, Li
         return None;
     };
     let words = address_words(c, *b"XYZIJK", SYNTAX, false, (true, true));
-    Some(words.and_then(|w| {
-        let call = super::program::frame_at(column, super::form::Form::G68_2, 0, &w.values)?;
-        Ok(p.with_frame(if incremental {
-            g68_4(&p.frame, &call)
+    Some(words.map(|w| {
+        let call = g68_2(v3(&w.values, 0), v3(&w.values, 3));
+        m.with_frame(if incremental {
+            g68_4(&m.frame, &call)
         } else {
             call
-        }))
+        })
     }))
 }
 
-/// One block of a Fanuc-style program: `G68.2 X Y Z I J K` (omitted words are 0; a new
-/// `G68.2` replaces the active plane \[choice\]), `G68.4` (the same, on the active plane),
-/// `G69` (cancel), `G53.1`/`G53.6` (no frame change), `G68.3` (needs the tool direction from
-/// the machine: [`Error::NotAvailable`]), with a block number, `/`, `( … )` and `;`.
-/// Numbers without a point are whole units (calculator-type input [choice: a parameter of
-/// the control; write the point to be safe]).
-#[inline(never)]
-pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
-    let mut c = Cursor::new(text);
-    if c.peek() == Some(b'%') {
-        c.bump();
-    }
-    c.block_number(b'N');
-    if let Some(result) = read_g68(p, &mut c) {
-        return result;
-    }
-    // Only comments may remain; an unclosed `(` is malformed text.
-    c.end(true, true).map(|()| *p)
-}
-
-/// The Fanuc-style lines: `G68.2 X Y Z I J K`, Syntec's `G158 P X Y Z A B C U V W` and
-/// Haas's `G268 X Y Z I J K Q`, numbers always with a point.
-#[inline(never)]
-pub(crate) fn write_line(
-    spec: &FormSpec,
-    words: &[f64],
-    decimals: i32,
-    out: &mut Out,
-) -> Result<(), Error> {
-    use super::form::Form;
-    use crate::text::number::{write_integer, write_word};
-    let style = Style {
-        plus: false,
-        point: true,
-    };
-    let names: &[&[u8]] = match spec.form {
-        Form::G68_2 => {
-            out.text(b"G68.2");
-            &[b" X", b" Y", b" Z", b" I", b" J", b" K"]
-        }
-        Form::G158 => {
-            out.text(b"G158 P");
-            write_integer(out, spec.selector);
-            &[
-                b" X", b" Y", b" Z", b" A", b" B", b" C", b" U", b" V", b" W",
-            ]
-        }
-        Form::G268 => {
-            out.text(b"G268");
-            &[b" X", b" Y", b" Z", b" I", b" J", b" K"]
-        }
-        _ => return Err(Error::BadArgument),
-    };
-    for (name, &v) in names.iter().zip(words) {
-        write_word(out, name, v, decimals, style)?;
-    }
-    if spec.form == Form::G268 {
-        out.text(b" Q");
-        write_integer(out, spec.selector);
+/// Writes `G68.2 X Y Z I J K` (Syntec's `G68.2` mode too).
+pub(crate) fn write_g68_2(words: &[f64], decimals: i32, out: &mut Out) -> Result<(), Error> {
+    out.text(b"G68.2");
+    for (name, &v) in [b" X", b" Y", b" Z", b" I", b" J", b" K"].iter().zip(words) {
+        write_word(out, *name, v, decimals, STYLE)?;
     }
     Ok(())
+}
+
+impl Family for Fanuc {
+    const MAX_LINE: usize = 256;
+    const FORMS: &'static [FormInfo] = &[
+        FormInfo {
+            form: Form::G68_2,
+            words: 6,
+            origin: true,
+            writable: true,
+        },
+        FormInfo {
+            form: Form::G68_3,
+            words: 7,
+            origin: true,
+            writable: true,
+        },
+    ];
+
+    /// One block of a Fanuc-style program: `G68.2 X Y Z I J K` (omitted words are 0; a new
+    /// `G68.2` replaces the active plane \[choice\]), `G68.4` (the same, on the active
+    /// plane), `G69` (cancel), `G53.1`/`G53.6` (no frame change), `G68.3` (needs the tool
+    /// direction from the machine: [`Error::NotAvailable`]), with a block number, `/`,
+    /// `( … )` and `;`. Numbers without a point are whole units (calculator-type input
+    /// \[choice: a parameter of the control; write the point to be safe\]).
+    #[inline(never)]
+    fn read_line(m: &Modal, text: &[u8]) -> Result<Modal, LineError> {
+        let mut c = Cursor::new(text);
+        if c.peek() == Some(b'%') {
+            c.bump();
+        }
+        c.block_number(b'N');
+        if let Some(result) = read_g68(m, &mut c) {
+            return result;
+        }
+        // Only comments may remain; an unclosed `(` is malformed text.
+        c.end(true, true).map(|()| *m)
+    }
+
+    fn parse_form(text: &[u8]) -> Result<FormSpec, Error> {
+        let mut c = Cursor::new(text);
+        c.spaces();
+        if !c.keyword(b"G68.2") {
+            return Err(Error::BadArgument);
+        }
+        c.spaces();
+        if !c.at_end() {
+            return Err(Error::BadArgument);
+        }
+        Ok(FormSpec {
+            form: Form::G68_2,
+            selector: 0,
+        })
+    }
+
+    /// `G68.2 X Y Z I J K`, numbers always with a point.
+    #[inline(never)]
+    fn write_line(
+        spec: &FormSpec,
+        words: &[f64],
+        decimals: i32,
+        out: &mut Out,
+    ) -> Result<(), Error> {
+        match spec.form {
+            Form::G68_2 => write_g68_2(words, decimals, out),
+            _ => Err(Error::BadArgument),
+        }
+    }
+
+    fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error> {
+        no_selector(selector)?;
+        match form {
+            Form::G68_2 => Ok(g68_2(v3(words, 0), v3(words, 3))),
+            Form::G68_3 => {
+                // `get`, not indexing: the length is checked by the caller, but the no-panic
+                // proof (c_tests/no_panic.sh) must see that no path can panic.
+                let angle = words.get(3).copied().ok_or(Error::BadArgument)?;
+                let r = g68_3(v3(words, 4), VERTICAL, angle)?;
+                Ok(Frame::with_translations(v3(words, 0), r, [0.0; 3]))
+            }
+            _ => Err(Error::BadArgument),
+        }
+    }
+
+    fn form_values(
+        form: Form,
+        selector: i32,
+        frame: &Frame,
+        out: &mut [f64; MAX_VALUES],
+    ) -> Result<bool, Error> {
+        no_selector(selector)?;
+        let (m, t) = (&frame.rotation, frame.translation);
+        match form {
+            Form::G68_2 => {
+                let d = g68_2_angles(m)?;
+                put(out, 0, t);
+                put(out, 3, d.angles);
+                Ok(d.singular)
+            }
+            Form::G68_3 => {
+                let r = g68_3_r(m, VERTICAL)?;
+                put(out, 0, t);
+                put(out, 4, [m[0][2], m[1][2], m[2][2]]);
+                if let Some(slot) = out.get_mut(3) {
+                    *slot = r;
+                }
+                Ok(false)
+            }
+            _ => Err(Error::BadArgument),
+        }
+    }
 }
 
 #[cfg(test)]

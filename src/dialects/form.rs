@@ -5,229 +5,20 @@
 //! This is what the C boundary exports (`cncrot_form_frame`, `cncrot_form_values`) and what
 //! a program-line reader or writer of any dialect turns its words into.
 
-use super::{fanuc, haas, heidenhain, sinumerik, syntec, twincat};
-use crate::{Error, Frame, Matrix, Vector};
-
-/// The most words a form has.
-pub const MAX_VALUES: usize = 9;
-
-/// A tilted-plane command as written, with the order of its words.
-///
-/// | form | selector | words, in this order |
-/// |---|---|---|
-/// | [`Form::Cycle800`] | `_MODE` | `_X0 _Y0 _Z0 _A _B _C _X1 _Y1 _Z1` |
-/// | [`Form::SinumerikRot`] | 0 RPY, 1 Euler | `X Y Z` |
-/// | [`Form::SinumerikRots`] | 0 `X Y`, 1 `Y Z`, 2 `Z X` | the two angles in that order |
-/// | [`Form::PlaneSpatial`] | 0 | `SPA SPB SPC` |
-/// | [`Form::PlaneEuler`] | 0 | `EULPR EULNU EULROT` |
-/// | [`Form::PlaneVector`] | 0 | `BX BY BZ NX NY NZ` |
-/// | [`Form::PlanePoints`] | 0 | `P1X P1Y P1Z P2X P2Y P2Z P3X P3Y P3Z` |
-/// | [`Form::G68_2`] | 0 | `X Y Z I J K` |
-/// | [`Form::G158`] | `P` | `X Y Z A B C U V W` |
-/// | [`Form::TwincatRot`] | 0 | `X Y Z` |
-/// | [`Form::G268`] | `Q` | `X Y Z I J K` |
-/// | [`Form::G68_3`] | 0 | `X Y Z R TX TY TZ` (the tool direction T; vertical axis +Z) |
-/// | [`Form::PlaneProjected`] | 0 | `PROPR PROMIN ROT` |
-///
-/// ```
-/// use cncrot::dialects::form::{form_frame, Form};
-/// // G68.2 X10 I0 J30 K0: origin (10, 0, 0), tilted about X by 30°.
-/// let f = form_frame(Form::G68_2, 0, &[10.0, 0.0, 0.0, 0.0, 30.0, 0.0]).unwrap();
-/// assert_eq!(f.translation, [10.0, 0.0, 0.0]);
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Form {
-    /// SINUMERIK `CYCLE800` (swivel modes of [`sinumerik::SwivelMode`]).
-    Cycle800 = 1,
-    /// SINUMERIK `ROT`/`CROT` (and each step of `AROT`).
-    SinumerikRot = 2,
-    /// SINUMERIK `ROTS` (projection angles).
-    SinumerikRots = 3,
-    /// Heidenhain `PLANE SPATIAL`.
-    PlaneSpatial = 4,
-    /// Heidenhain `PLANE EULER`.
-    PlaneEuler = 5,
-    /// Heidenhain `PLANE VECTOR`.
-    PlaneVector = 6,
-    /// Heidenhain `PLANE POINTS`.
-    PlanePoints = 7,
-    /// Fanuc-style `G68.2`.
-    G68_2 = 8,
-    /// Syntec `G158`.
-    G158 = 9,
-    /// Beckhoff TwinCAT NC I `ROT`.
-    TwincatRot = 10,
-    /// Haas `G268`.
-    G268 = 11,
-    /// Fanuc-style `G68.3` (the plane from the tool direction, on a machine whose vertical
-    /// axis is +Z [choice: a parameter of the control; `fanuc::g68_3` takes any]).
-    G68_3 = 12,
-    /// Heidenhain `PLANE PROJECTED`.
-    PlaneProjected = 13,
-}
-
-impl Form {
-    /// Every form, in code order.
-    pub const ALL: [Form; 13] = [
-        Form::Cycle800,
-        Form::SinumerikRot,
-        Form::SinumerikRots,
-        Form::PlaneSpatial,
-        Form::PlaneEuler,
-        Form::PlaneVector,
-        Form::PlanePoints,
-        Form::G68_2,
-        Form::G158,
-        Form::TwincatRot,
-        Form::G268,
-        Form::G68_3,
-        Form::PlaneProjected,
-    ];
-
-    /// The form of a code (1..=13), else [`Error::BadArgument`].
-    pub fn from_code(code: i32) -> Result<Form, Error> {
-        usize::try_from(code)
-            .ok()
-            .and_then(|c| c.checked_sub(1))
-            .and_then(|i| Form::ALL.get(i).copied())
-            .ok_or(Error::BadArgument)
-    }
-
-    /// How many words the form has.
-    pub fn count(self) -> usize {
-        match self {
-            Form::SinumerikRots => 2,
-            Form::SinumerikRot
-            | Form::PlaneSpatial
-            | Form::PlaneEuler
-            | Form::TwincatRot
-            | Form::PlaneProjected => 3,
-            Form::PlaneVector | Form::G68_2 | Form::G268 => 6,
-            Form::G68_3 => 7,
-            Form::Cycle800 | Form::PlanePoints | Form::G158 => 9,
-        }
-    }
-
-    /// Whether [`form_values`] can express every frame in this form (`ROTS` cannot: its
-    /// projection fixes the new X in a plane).
-    pub fn writable(self) -> bool {
-        !matches!(self, Form::SinumerikRots)
-    }
-
-    /// Whether the form's words carry an origin (the others describe a rotation about the
-    /// active datum).
-    pub fn has_origin(self) -> bool {
-        matches!(
-            self,
-            Form::Cycle800 | Form::G68_2 | Form::G68_3 | Form::G158 | Form::G268
-        )
-    }
-}
-
-/// The vertical axis of the `G68.3` form.
-const VERTICAL: Vector = [0.0, 0.0, 1.0];
-
-fn angle_mode(selector: i32) -> Result<sinumerik::AngleMode, Error> {
-    match selector {
-        0 => Ok(sinumerik::AngleMode::Rpy),
-        1 => Ok(sinumerik::AngleMode::Euler),
-        _ => Err(Error::BadArgument),
-    }
-}
-
-fn no_selector(selector: i32) -> Result<(), Error> {
-    if selector == 0 {
-        Ok(())
-    } else {
-        Err(Error::BadArgument)
-    }
-}
-
-fn v3(w: &[f64], at: usize) -> Vector {
-    core::array::from_fn(|k| w.get(at + k).copied().unwrap_or(0.0))
-}
+pub use super::family::{Form, MAX_VALUES};
+use crate::{Error, Frame};
 
 /// The frame of a form's words. `words` must hold exactly [`Form::count`] finite numbers
 /// ([`Error::BadArgument`], [`Error::NotFinite`]); the selector is checked per form.
 pub fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error> {
-    if words.len() != form.count() {
+    let (owner, info) = form.owner().ok_or(Error::BadArgument)?;
+    if words.len() != info.words {
         return Err(Error::BadArgument);
     }
     if !words.iter().all(|x| x.is_finite()) {
         return Err(Error::NotFinite);
     }
-    let rot = |m: Matrix| Frame::from_rotation(m);
-    let frame = match form {
-        Form::Cycle800 => {
-            let mode = sinumerik::SwivelMode::from_mode(selector)?;
-            sinumerik::cycle800_frame(mode, v3(words, 3), v3(words, 0), v3(words, 6))?
-        }
-        Form::SinumerikRot => rot(sinumerik::rot(angle_mode(selector)?, v3(words, 0))),
-        Form::SinumerikRots => {
-            let plane = match selector {
-                0 => sinumerik::RotsPlane::XY,
-                1 => sinumerik::RotsPlane::YZ,
-                2 => sinumerik::RotsPlane::ZX,
-                _ => return Err(Error::BadArgument),
-            };
-            let [a, b] = [0, 1].map(|k| words.get(k).copied().unwrap_or(0.0));
-            rot(sinumerik::rots(plane, a, b))
-        }
-        Form::PlaneSpatial => {
-            no_selector(selector)?;
-            rot(heidenhain::spatial(v3(words, 0)))
-        }
-        Form::PlaneEuler => {
-            no_selector(selector)?;
-            rot(heidenhain::euler(v3(words, 0)))
-        }
-        Form::PlaneVector => {
-            no_selector(selector)?;
-            rot(heidenhain::vector(v3(words, 0), v3(words, 3))?)
-        }
-        Form::PlanePoints => {
-            no_selector(selector)?;
-            // The points give the plane's orientation only: the control tilts about the
-            // active datum and does not move it to P1 [doc].
-            rot(heidenhain::points(
-                v3(words, 0),
-                v3(words, 3),
-                v3(words, 6),
-            )?)
-        }
-        Form::G68_2 => {
-            no_selector(selector)?;
-            fanuc::g68_2(v3(words, 0), v3(words, 3))
-        }
-        Form::G158 => {
-            let p = syntec::PWord::decode(selector)?;
-            // Incremental P words apply on an active plane: as a lone block, on none.
-            syntec::frame(
-                &Frame::IDENTITY,
-                p,
-                v3(words, 0),
-                v3(words, 3),
-                v3(words, 6),
-            )?
-        }
-        Form::TwincatRot => {
-            no_selector(selector)?;
-            rot(twincat::matrix(v3(words, 0)))
-        }
-        Form::G268 => haas::g268(v3(words, 0), v3(words, 3), selector)?,
-        Form::PlaneProjected => {
-            no_selector(selector)?;
-            rot(heidenhain::projected(v3(words, 0)))
-        }
-        Form::G68_3 => {
-            no_selector(selector)?;
-            // `get`, not indexing: the length is checked above, but the no-panic proof
-            // (c_tests/no_panic.sh) must see that no path can panic.
-            let angle = words.get(3).copied().ok_or(Error::BadArgument)?;
-            let r = fanuc::g68_3(v3(words, 4), VERTICAL, angle)?;
-            Frame::with_translations(v3(words, 0), r, [0.0; 3])
-        }
-    };
+    let frame = owner.form_frame(form, selector, words)?;
     // Finite words can still overflow (origins near f64::MAX).
     let h = frame.to_homogeneous();
     if !h.iter().flatten().all(|x| x.is_finite()) {
@@ -250,113 +41,16 @@ pub fn form_values(
     frame: &Frame,
     words: &mut [f64],
 ) -> Result<bool, Error> {
-    if words.len() != form.count() || !form.writable() {
+    let (owner, info) = form.owner().ok_or(Error::BadArgument)?;
+    if words.len() != info.words || !info.writable {
         return Err(Error::BadArgument);
     }
     crate::check_rotation(&frame.rotation)?;
-    if !form.has_origin() && frame.translation != [0.0; 3] {
+    if !info.origin && frame.translation != [0.0; 3] {
         return Err(Error::BadArgument);
     }
-    let m = &frame.rotation;
-    let t = frame.translation;
     let mut out = [0.0; MAX_VALUES];
-    let singular = match form {
-        Form::Cycle800 => {
-            let mode = sinumerik::SwivelMode::from_mode(selector)?;
-            let d = sinumerik::cycle800_angles(mode, m)?;
-            put(&mut out, 0, t);
-            put(&mut out, 3, d.angles);
-            d.singular
-        }
-        Form::SinumerikRot => {
-            let (xyz, singular) = sinumerik::readback(angle_mode(selector)?, m)?;
-            put(&mut out, 0, xyz);
-            singular
-        }
-        Form::PlaneSpatial => {
-            no_selector(selector)?;
-            let d = heidenhain::spatial_angles(m)?;
-            put(&mut out, 0, d.angles);
-            d.singular
-        }
-        Form::PlaneEuler => {
-            no_selector(selector)?;
-            let d = heidenhain::euler_angles(m)?;
-            put(&mut out, 0, d.angles);
-            d.singular
-        }
-        Form::PlaneVector => {
-            no_selector(selector)?;
-            let (b, n) = heidenhain::vector_of(m);
-            put(&mut out, 0, b);
-            put(&mut out, 3, n);
-            false
-        }
-        Form::PlanePoints => {
-            no_selector(selector)?;
-            // P1 at the datum, P2 on the new X axis and P3 on the new Y axis, 1 mm from it:
-            // the plane needs no origin, and unit vectors read back to 1 ulp.
-            put(&mut out, 3, [m[0][0], m[1][0], m[2][0]]);
-            put(&mut out, 6, [m[0][1], m[1][1], m[2][1]]);
-            false
-        }
-        Form::G68_2 => {
-            no_selector(selector)?;
-            let d = fanuc::g68_2_angles(m)?;
-            put(&mut out, 0, t);
-            put(&mut out, 3, d.angles);
-            d.singular
-        }
-        Form::G158 => {
-            let p = syntec::PWord::decode(selector)?;
-            if p.incremental {
-                return Err(Error::BadArgument);
-            }
-            let d = match p.mode {
-                syntec::Mode::Order(code) => {
-                    let seq = crate::Sequence::from_axis_code(code)?;
-                    crate::angles_from_matrix(
-                        crate::Convention::new(crate::Kind::Intrinsic, seq),
-                        m,
-                    )?
-                }
-                syntec::Mode::Direct => return Err(Error::NotAvailable),
-                _ => return Err(Error::BadArgument),
-            };
-            put(&mut out, 0, t);
-            put(&mut out, 3, d.angles);
-            d.singular
-        }
-        Form::TwincatRot => {
-            no_selector(selector)?;
-            let (xyz, singular) = twincat::rot_angles(m)?;
-            put(&mut out, 0, xyz);
-            singular
-        }
-        Form::G268 => {
-            let (ijk, singular) = haas::g268_angles(m, selector)?;
-            put(&mut out, 0, t);
-            put(&mut out, 3, ijk);
-            singular
-        }
-        Form::G68_3 => {
-            no_selector(selector)?;
-            let r = fanuc::g68_3_r(m, VERTICAL)?;
-            put(&mut out, 0, t);
-            put(&mut out, 4, [m[0][2], m[1][2], m[2][2]]);
-            if let Some(slot) = out.get_mut(3) {
-                *slot = r;
-            }
-            false
-        }
-        Form::PlaneProjected => {
-            no_selector(selector)?;
-            let d = heidenhain::projected_angles(m)?;
-            put(&mut out, 0, d.angles);
-            d.singular
-        }
-        Form::SinumerikRots => return Err(Error::BadArgument),
-    };
+    let singular = owner.form_values(form, selector, frame, &mut out)?;
     if !out.iter().all(|x| x.is_finite()) {
         return Err(Error::OutOfRange);
     }
@@ -397,14 +91,6 @@ fn reads_back(back: &Frame, frame: &Frame) -> bool {
         .zip(&frame.translation)
         .all(|(a, b)| crate::math::abs(a - b) <= READ_BACK_TOLERANCE * scale);
     rotation && origin
-}
-
-fn put(out: &mut [f64; MAX_VALUES], at: usize, v: [f64; 3]) {
-    for (k, x) in v.into_iter().enumerate() {
-        if let Some(slot) = out.get_mut(at + k) {
-            *slot = x;
-        }
-    }
 }
 
 #[cfg(test)]

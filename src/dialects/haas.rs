@@ -66,43 +66,124 @@ pub const G269: Frame = Frame::IDENTITY;
 
 // Program lines.
 
-use super::program::Program;
+use super::family::{put, v3, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use crate::text::number::{write_integer, write_word, Out, Style};
 use crate::text::scan::{address_words, whole, Cursor, LineError, Syntax};
 
 const SYNTAX: Syntax = crate::text::scan::G_WORDS;
 
-/// One block of a Haas program: `G268 X Y Z I J K Q` (omitted `X … K` are 0; `Q` is
-/// required [choice: Haas's default is not public]), `G269` (cancel), `G253` (orients the
-/// spindle: no frame change), with a block number and `( … )` comments. A `G268` while one
-/// is active replaces it \[choice\].
-#[inline(never)]
-pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
-    let mut c = Cursor::new(text);
-    c.block_number(b'N');
-    let column = c.column();
-    if c.keyword(b"G268") {
-        let w = address_words(&mut c, *b"XYZIJKQ", SYNTAX, false, (true, true))?;
-        let [x, y, z, i, j, k, q] = w.values;
-        if !w.given[6] {
-            return Err(c.error(Error::MissingWord));
+/// The Haas family: `G268`, `G269`.
+pub(crate) struct Haas;
+
+impl Family for Haas {
+    const MAX_LINE: usize = 256;
+    const FORMS: &'static [FormInfo] = &[FormInfo {
+        form: Form::G268,
+        words: 6,
+        origin: true,
+        writable: true,
+    }];
+
+    /// One block of a Haas program: `G268 X Y Z I J K Q` (omitted `X … K` are 0; `Q` is
+    /// required [choice: Haas's default is not public]), `G269` (cancel), `G253` (orients
+    /// the spindle: no frame change), with a block number and `( … )` comments. A `G268`
+    /// while one is active replaces it \[choice\].
+    #[inline(never)]
+    fn read_line(m: &Modal, text: &[u8]) -> Result<Modal, LineError> {
+        let mut c = Cursor::new(text);
+        c.block_number(b'N');
+        let column = c.column();
+        if c.keyword(b"G268") {
+            let w = address_words(&mut c, *b"XYZIJKQ", SYNTAX, false, (true, true))?;
+            let [x, y, z, i, j, k, q] = w.values;
+            if !w.given[6] {
+                return Err(c.error(Error::MissingWord));
+            }
+            // A bad Q is reported at its value, not at the command.
+            let q = whole(q, w.column(6))?;
+            LineError::at(w.column(6), q_order(q))?;
+            let frame = LineError::at(column, g268([x, y, z], [i, j, k], q))?;
+            return Ok(m.with_frame(frame));
         }
-        // A bad Q is reported at its value, not at the command.
-        let q = whole(q, w.column(6))?;
-        q_order(q).map_err(|error| LineError {
-            error,
-            column: w.column(6),
-        })?;
-        let frame =
-            super::program::frame_at(column, super::form::Form::G268, q, &[x, y, z, i, j, k])?;
-        return Ok(p.with_frame(frame));
+        if c.keyword(b"G269") {
+            c.end(true, true)?;
+            return Ok(m.with_frame(Frame::IDENTITY));
+        }
+        c.keyword(b"G253");
+        // Only comments may remain; an unclosed `(` is malformed text.
+        c.end(true, true).map(|()| *m)
     }
-    if c.keyword(b"G269") {
-        c.end(true, true)?;
-        return Ok(p.with_frame(Frame::IDENTITY));
+
+    /// `G268` (`Q123`), `G268 Q<q>`.
+    fn parse_form(text: &[u8]) -> Result<FormSpec, Error> {
+        let mut c = Cursor::new(text);
+        c.spaces();
+        if !c.keyword(b"G268") {
+            return Err(Error::BadArgument);
+        }
+        c.spaces();
+        let selector = if c.at_end() {
+            123
+        } else if c.letter(b'Q') {
+            c.integer()
+        } else {
+            -1
+        };
+        c.spaces();
+        if !c.at_end() || selector < 0 {
+            return Err(Error::BadArgument);
+        }
+        Ok(FormSpec {
+            form: Form::G268,
+            selector,
+        })
     }
-    c.keyword(b"G253");
-    // Only comments may remain; an unclosed `(` is malformed text.
-    c.end(true, true).map(|()| *p)
+
+    /// `G268 X Y Z I J K Q`, numbers always with a point.
+    #[inline(never)]
+    fn write_line(
+        spec: &FormSpec,
+        words: &[f64],
+        decimals: i32,
+        out: &mut Out,
+    ) -> Result<(), Error> {
+        if spec.form != Form::G268 {
+            return Err(Error::BadArgument);
+        }
+        let style = Style {
+            plus: false,
+            point: true,
+        };
+        out.text(b"G268");
+        for (name, &v) in [b" X", b" Y", b" Z", b" I", b" J", b" K"].iter().zip(words) {
+            write_word(out, *name, v, decimals, style)?;
+        }
+        out.text(b" Q");
+        write_integer(out, spec.selector);
+        Ok(())
+    }
+
+    fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error> {
+        if form != Form::G268 {
+            return Err(Error::BadArgument);
+        }
+        g268(v3(words, 0), v3(words, 3), selector)
+    }
+
+    fn form_values(
+        form: Form,
+        selector: i32,
+        frame: &Frame,
+        out: &mut [f64; MAX_VALUES],
+    ) -> Result<bool, Error> {
+        if form != Form::G268 {
+            return Err(Error::BadArgument);
+        }
+        let (ijk, singular) = g268_angles(&frame.rotation, selector)?;
+        put(out, 0, frame.translation);
+        put(out, 3, ijk);
+        Ok(singular)
+    }
 }
 
 #[cfg(test)]

@@ -135,9 +135,8 @@ pub const RESET: Frame = Frame::IDENTITY;
 
 // Program lines.
 
-use super::form::Form;
-use super::program::{frame_at, FormSpec, Program};
-use crate::text::number::{Out, Style};
+use super::family::{no_selector, put, v3, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use crate::text::number::{write_word, Out, Style};
 use crate::text::scan::{Cursor, Exponent, LineError, Syntax};
 
 const SYNTAX: Syntax = Syntax {
@@ -213,119 +212,235 @@ fn options(c: &mut Cursor) -> Result<(), LineError> {
     }
 }
 
-/// One block of a Heidenhain plain-language program: `PLANE SPATIAL SPA SPB SPC`,
-/// `PLANE PROJECTED PROPR PROMIN ROT`, `PLANE EULER EULPR EULNU EULROT`,
-/// `PLANE VECTOR BX BY BZ NX NY NZ`, `PLANE POINTS P1X … P3Z` (every word required, in any
-/// order), `PLANE RELATIV SPA|SPB|SPC` (on the active plane), `PLANE RESET`, each with the
-/// positioning and solution options, after a line number, with `;` comments; `BEGIN PGM`
-/// and `END PGM` lines change nothing; `PLANE AXIAL` needs the kinematics
-/// ([`Error::NotAvailable`]). A `PLANE` replaces the active one; the datum is not part of
-/// the plane (`POINTS` too: P1 is a point of the plane, the datum stays) \[doc\].
-#[inline(never)]
-pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
-    let mut c = Cursor::new(text);
-    c.spaces();
-    while c.peek().is_some_and(|b| b.is_ascii_digit()) {
-        c.bump();
-    }
-    c.spaces();
-    if c.at_end() || c.peek() == Some(b'*') || c.rest_is_comment(true, false) {
-        return Ok(*p);
-    }
-    if c.keyword(b"BEGIN") || c.keyword(b"END") {
-        c.spaces();
-        if c.keyword(b"PGM") {
-            return Ok(*p);
-        }
-        return Err(c.error(Error::UnknownWord));
-    }
-    let column = c.column();
-    if !c.keyword(b"PLANE") {
-        return Err(c.error(Error::UnknownWord));
-    }
-    c.spaces();
-    let at = c.column();
-    let frame = if c.keyword(b"SPATIAL") {
-        let w = plane_words(&mut c, [b"SPA", b"SPB", b"SPC"])?;
-        frame_at(at, Form::PlaneSpatial, 0, &w)?
-    } else if c.keyword(b"PROJECTED") {
-        let w = plane_words(&mut c, [b"PROPR", b"PROMIN", b"ROT"])?;
-        frame_at(at, Form::PlaneProjected, 0, &w)?
-    } else if c.keyword(b"EULER") {
-        let w = plane_words(&mut c, [b"EULPR", b"EULNU", b"EULROT"])?;
-        frame_at(at, Form::PlaneEuler, 0, &w)?
-    } else if c.keyword(b"VECTOR") {
-        let w = plane_words(&mut c, [b"BX", b"BY", b"BZ", b"NX", b"NY", b"NZ"])?;
-        frame_at(at, Form::PlaneVector, 0, &w)?
-    } else if c.keyword(b"POINTS") {
-        let names: [&[u8]; 9] = [
-            b"P1X", b"P1Y", b"P1Z", b"P2X", b"P2Y", b"P2Z", b"P3X", b"P3Y", b"P3Z",
-        ];
-        let w = plane_words(&mut c, names)?;
-        frame_at(at, Form::PlanePoints, 0, &w)?
-    } else if c.keyword(b"RELATIV") {
-        c.spaces();
-        let axis = if c.word(b"SPA") {
-            Axis::X
-        } else if c.word(b"SPB") {
-            Axis::Y
-        } else if c.word(b"SPC") {
-            Axis::Z
-        } else {
-            return Err(c.error(Error::MissingWord));
-        };
-        c.spaces();
-        let angle = c.number(SYNTAX)?;
-        relativ(&p.frame, axis, angle)
-    } else if c.keyword(b"RESET") {
-        RESET
-    } else if c.keyword(b"AXIAL") {
-        return Err(LineError {
-            error: Error::NotAvailable,
-            column,
-        });
-    } else {
-        return Err(c.error(Error::UnknownWord));
-    };
-    options(&mut c)?;
-    Ok(p.with_frame(frame))
+/// The frame of a `PLANE` form's words (the forms' own functions, as `form_frame` and the
+/// reader compute it).
+fn plane_frame(form: Form, w: &[f64]) -> Result<Frame, Error> {
+    let rot = Frame::from_rotation;
+    Ok(match form {
+        Form::PlaneSpatial => rot(spatial(v3(w, 0))),
+        Form::PlaneEuler => rot(euler(v3(w, 0))),
+        Form::PlaneVector => rot(vector(v3(w, 0), v3(w, 3))?),
+        // The points give the plane's orientation only: the control tilts about the active
+        // datum and does not move it to P1 [doc].
+        Form::PlanePoints => rot(points(v3(w, 0), v3(w, 3), v3(w, 6))?),
+        Form::PlaneProjected => rot(projected(v3(w, 0))),
+        _ => return Err(Error::BadArgument),
+    })
 }
 
-/// `PLANE <form> <words> STAY`: the words with their signs (`SPA+30`), then `STAY`
-/// (the control asks for a positioning choice; `STAY` tilts the plane without moving).
-#[inline(never)]
-pub(crate) fn write_line(
-    spec: &FormSpec,
-    words: &[f64],
-    decimals: i32,
-    out: &mut Out,
-) -> Result<(), Error> {
-    let (head, names): (&[u8], &[&[u8]]) = match spec.form {
-        Form::PlaneSpatial => (b"PLANE SPATIAL", &[b" SPA", b" SPB", b" SPC"]),
-        Form::PlaneProjected => (b"PLANE PROJECTED", &[b" PROPR", b" PROMIN", b" ROT"]),
-        Form::PlaneEuler => (b"PLANE EULER", &[b" EULPR", b" EULNU", b" EULROT"]),
-        Form::PlaneVector => (
-            b"PLANE VECTOR",
-            &[b" BX", b" BY", b" BZ", b" NX", b" NY", b" NZ"],
-        ),
-        Form::PlanePoints => (
-            b"PLANE POINTS",
-            &[
-                b" P1X", b" P1Y", b" P1Z", b" P2X", b" P2Y", b" P2Z", b" P3X", b" P3Y", b" P3Z",
-            ],
-        ),
-        _ => return Err(Error::BadArgument),
-    };
-    let style = Style {
-        plus: true,
-        point: false,
-    };
-    out.text(head);
-    for (name, &v) in names.iter().zip(words) {
-        crate::text::number::write_word(out, name, v, decimals, style)?;
+/// The Heidenhain family: `PLANE`.
+pub(crate) struct Heidenhain;
+
+impl Family for Heidenhain {
+    const MAX_LINE: usize = 254;
+    const FORMS: &'static [FormInfo] = &[
+        FormInfo {
+            form: Form::PlaneSpatial,
+            words: 3,
+            origin: false,
+            writable: true,
+        },
+        FormInfo {
+            form: Form::PlaneEuler,
+            words: 3,
+            origin: false,
+            writable: true,
+        },
+        FormInfo {
+            form: Form::PlaneVector,
+            words: 6,
+            origin: false,
+            writable: true,
+        },
+        FormInfo {
+            form: Form::PlanePoints,
+            words: 9,
+            origin: false,
+            writable: true,
+        },
+        FormInfo {
+            form: Form::PlaneProjected,
+            words: 3,
+            origin: false,
+            writable: true,
+        },
+    ];
+
+    /// One block of a Heidenhain plain-language program: `PLANE SPATIAL SPA SPB SPC`,
+    /// `PLANE PROJECTED PROPR PROMIN ROT`, `PLANE EULER EULPR EULNU EULROT`,
+    /// `PLANE VECTOR BX BY BZ NX NY NZ`, `PLANE POINTS P1X … P3Z` (every word required, in any
+    /// order), `PLANE RELATIV SPA|SPB|SPC` (on the active plane), `PLANE RESET`, each with the
+    /// positioning and solution options, after a line number, with `;` comments; `BEGIN PGM`
+    /// and `END PGM` lines change nothing; `PLANE AXIAL` needs the kinematics
+    /// ([`Error::NotAvailable`]). A `PLANE` replaces the active one; the datum is not part of
+    /// the plane (`POINTS` too: P1 is a point of the plane, the datum stays) \[doc\].
+    #[inline(never)]
+    fn read_line(m: &Modal, text: &[u8]) -> Result<Modal, LineError> {
+        let mut c = Cursor::new(text);
+        c.spaces();
+        while c.peek().is_some_and(|b| b.is_ascii_digit()) {
+            c.bump();
+        }
+        c.spaces();
+        if c.at_end() || c.peek() == Some(b'*') || c.rest_is_comment(true, false) {
+            return Ok(*m);
+        }
+        if c.keyword(b"BEGIN") || c.keyword(b"END") {
+            c.spaces();
+            if c.keyword(b"PGM") {
+                return Ok(*m);
+            }
+            return Err(c.error(Error::UnknownWord));
+        }
+        let column = c.column();
+        if !c.keyword(b"PLANE") {
+            return Err(c.error(Error::UnknownWord));
+        }
+        c.spaces();
+        let at = c.column();
+        let frame = if c.keyword(b"SPATIAL") {
+            let w = plane_words(&mut c, [b"SPA", b"SPB", b"SPC"])?;
+            LineError::at(at, plane_frame(Form::PlaneSpatial, &w))?
+        } else if c.keyword(b"PROJECTED") {
+            let w = plane_words(&mut c, [b"PROPR", b"PROMIN", b"ROT"])?;
+            LineError::at(at, plane_frame(Form::PlaneProjected, &w))?
+        } else if c.keyword(b"EULER") {
+            let w = plane_words(&mut c, [b"EULPR", b"EULNU", b"EULROT"])?;
+            LineError::at(at, plane_frame(Form::PlaneEuler, &w))?
+        } else if c.keyword(b"VECTOR") {
+            let w = plane_words(&mut c, [b"BX", b"BY", b"BZ", b"NX", b"NY", b"NZ"])?;
+            LineError::at(at, plane_frame(Form::PlaneVector, &w))?
+        } else if c.keyword(b"POINTS") {
+            let names: [&[u8]; 9] = [
+                b"P1X", b"P1Y", b"P1Z", b"P2X", b"P2Y", b"P2Z", b"P3X", b"P3Y", b"P3Z",
+            ];
+            let w = plane_words(&mut c, names)?;
+            LineError::at(at, plane_frame(Form::PlanePoints, &w))?
+        } else if c.keyword(b"RELATIV") {
+            c.spaces();
+            let axis = if c.word(b"SPA") {
+                Axis::X
+            } else if c.word(b"SPB") {
+                Axis::Y
+            } else if c.word(b"SPC") {
+                Axis::Z
+            } else {
+                return Err(c.error(Error::MissingWord));
+            };
+            c.spaces();
+            let angle = c.number(SYNTAX)?;
+            relativ(&m.frame, axis, angle)
+        } else if c.keyword(b"RESET") {
+            RESET
+        } else if c.keyword(b"AXIAL") {
+            return Err(LineError {
+                error: Error::NotAvailable,
+                column,
+            });
+        } else {
+            return Err(c.error(Error::UnknownWord));
+        };
+        options(&mut c)?;
+        Ok(m.with_frame(frame))
     }
-    out.text(b" STAY");
-    Ok(())
+
+    /// `PLANE SPATIAL`, `PLANE EULER`, `PLANE VECTOR`, `PLANE POINTS`, `PLANE PROJECTED`.
+    fn parse_form(text: &[u8]) -> Result<FormSpec, Error> {
+        let mut c = Cursor::new(text);
+        c.spaces();
+        if !c.keyword(b"PLANE") {
+            return Err(Error::BadArgument);
+        }
+        c.spaces();
+        let forms = [
+            (&b"SPATIAL"[..], Form::PlaneSpatial),
+            (b"EULER", Form::PlaneEuler),
+            (b"VECTOR", Form::PlaneVector),
+            (b"POINTS", Form::PlanePoints),
+            (b"PROJECTED", Form::PlaneProjected),
+        ];
+        let Some(&(_, form)) = forms.iter().find(|(name, _)| c.keyword(name)) else {
+            return Err(Error::BadArgument);
+        };
+        c.spaces();
+        if !c.at_end() {
+            return Err(Error::BadArgument);
+        }
+        Ok(FormSpec { form, selector: 0 })
+    }
+
+    /// `PLANE <form> <words> STAY`: the words with their signs (`SPA+30`), then `STAY`
+    /// (the control asks for a positioning choice; `STAY` tilts the plane without moving).
+    #[inline(never)]
+    fn write_line(
+        spec: &FormSpec,
+        words: &[f64],
+        decimals: i32,
+        out: &mut Out,
+    ) -> Result<(), Error> {
+        let (head, names): (&[u8], &[&[u8]]) = match spec.form {
+            Form::PlaneSpatial => (b"PLANE SPATIAL", &[b" SPA", b" SPB", b" SPC"]),
+            Form::PlaneProjected => (b"PLANE PROJECTED", &[b" PROPR", b" PROMIN", b" ROT"]),
+            Form::PlaneEuler => (b"PLANE EULER", &[b" EULPR", b" EULNU", b" EULROT"]),
+            Form::PlaneVector => (
+                b"PLANE VECTOR",
+                &[b" BX", b" BY", b" BZ", b" NX", b" NY", b" NZ"],
+            ),
+            Form::PlanePoints => (
+                b"PLANE POINTS",
+                &[
+                    b" P1X", b" P1Y", b" P1Z", b" P2X", b" P2Y", b" P2Z", b" P3X", b" P3Y", b" P3Z",
+                ],
+            ),
+            _ => return Err(Error::BadArgument),
+        };
+        let style = Style {
+            plus: true,
+            point: false,
+        };
+        out.text(head);
+        for (name, &v) in names.iter().zip(words) {
+            write_word(out, name, v, decimals, style)?;
+        }
+        out.text(b" STAY");
+        Ok(())
+    }
+
+    fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error> {
+        no_selector(selector)?;
+        plane_frame(form, words)
+    }
+
+    fn form_values(
+        form: Form,
+        selector: i32,
+        frame: &Frame,
+        out: &mut [f64; MAX_VALUES],
+    ) -> Result<bool, Error> {
+        no_selector(selector)?;
+        let m = &frame.rotation;
+        let d = match form {
+            Form::PlaneSpatial => spatial_angles(m)?,
+            Form::PlaneEuler => euler_angles(m)?,
+            Form::PlaneProjected => projected_angles(m)?,
+            Form::PlaneVector => {
+                let (b, n) = vector_of(m);
+                put(out, 0, b);
+                put(out, 3, n);
+                return Ok(false);
+            }
+            Form::PlanePoints => {
+                // P1 at the datum, P2 on the new X axis and P3 on the new Y axis, 1 mm from
+                // it: the plane needs no origin, and unit vectors read back to 1 ulp.
+                put(out, 3, [m[0][0], m[1][0], m[2][0]]);
+                put(out, 6, [m[0][1], m[1][1], m[2][1]]);
+                return Ok(false);
+            }
+            _ => return Err(Error::BadArgument),
+        };
+        put(out, 0, d.angles);
+        Ok(d.singular)
+    }
 }
 
 #[cfg(test)]

@@ -5,70 +5,16 @@
 //! TwinCAT's programmed angles, SINUMERIK's angle mode); [`Program::line`] applies one block
 //! and returns the next state, so a refused block leaves the caller's state as it was.
 //! [`write_line`] is the inverse: the block that the same dialect's reader turns into a frame.
-//! The syntax each dialect accepts is in that dialect's module (`read_line`, `write_line`);
-//! this module holds what they share: the state, the scanner and the errors with columns.
+//! The syntax each dialect accepts is in that dialect's file (its `Family` implementation);
+//! this module holds what is the same for all: the state, line ends and lengths, the checks
+//! of a restored state and of a written line.
 
-use super::form::{self, Form, MAX_VALUES};
-use super::{fanuc, haas, heidenhain, sinumerik, syntec, twincat};
+use super::family::{Modal, MAX_VALUES};
+use super::form;
+pub use super::registry::Dialect;
 use crate::text::number::Out;
-use crate::text::scan::Cursor;
 pub use crate::text::scan::LineError;
 use crate::{Error, Frame};
-
-/// A controller family whose program lines the library reads and writes.
-///
-/// ```
-/// use cncrot::dialects::program::Dialect;
-/// assert_eq!(Dialect::from_code(2), Ok(Dialect::Heidenhain));
-/// assert_eq!(Dialect::Heidenhain.max_line(), 254);
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Dialect {
-    /// Siemens SINUMERIK (`CYCLE800`, `CYCLE600`, `ROT`/`AROT`/`CROT`, `ROTS`, `TRANS`).
-    Sinumerik = 1,
-    /// Heidenhain TNC plain language (`PLANE …`).
-    Heidenhain = 2,
-    /// Fanuc and the controls that read its `G68.2`/`G68.4`/`G69`.
-    Fanuc = 3,
-    /// Syntec (`G158`, and its Fanuc-style `G68.2` mode).
-    Syntec = 4,
-    /// Beckhoff TwinCAT NC I (`ROT`, `AROT`).
-    Twincat = 5,
-    /// Haas (`G268`, `G269`).
-    Haas = 6,
-}
-
-impl Dialect {
-    /// Every dialect, in code order.
-    pub const ALL: [Dialect; 6] = [
-        Dialect::Sinumerik,
-        Dialect::Heidenhain,
-        Dialect::Fanuc,
-        Dialect::Syntec,
-        Dialect::Twincat,
-        Dialect::Haas,
-    ];
-
-    /// The dialect of a code (1..=6), else [`Error::BadArgument`].
-    pub fn from_code(code: i32) -> Result<Dialect, Error> {
-        usize::try_from(code)
-            .ok()
-            .and_then(|c| c.checked_sub(1))
-            .and_then(|i| Dialect::ALL.get(i).copied())
-            .ok_or(Error::BadArgument)
-    }
-
-    /// The longest block the dialect's reader accepts, in bytes without the line end:
-    /// SINUMERIK 512 (its manual's limit for a block), Heidenhain 254 \[choice\], the others
-    /// 256 \[choice\].
-    pub fn max_line(self) -> usize {
-        match self {
-            Dialect::Sinumerik => 512,
-            Dialect::Heidenhain => 254,
-            _ => 256,
-        }
-    }
-}
 
 /// The modal state of a program: what the blocks read so far have left active. The
 /// default is nothing active.
@@ -122,14 +68,7 @@ impl Program {
                 column: dialect.max_line() + 1,
             });
         }
-        let mut next = match dialect {
-            Dialect::Sinumerik => sinumerik::read_line(self, text)?,
-            Dialect::Heidenhain => heidenhain::read_line(self, text)?,
-            Dialect::Fanuc => fanuc::read_line(self, text)?,
-            Dialect::Syntec => syntec::read_line(self, text)?,
-            Dialect::Twincat => twincat::read_line(self, text)?,
-            Dialect::Haas => haas::read_line(self, text)?,
-        };
+        let next = dialect.read_line(&self.modal(), text)?;
         let h = next.frame.to_homogeneous();
         if !h.iter().flatten().all(|x| x.is_finite()) {
             return Err(LineError {
@@ -137,8 +76,21 @@ impl Program {
                 column: 1,
             });
         }
-        next.dialect = Some(dialect);
-        Ok(next)
+        Ok(Program {
+            frame: next.frame,
+            angles: next.angles,
+            dialect: Some(dialect),
+            euler: next.euler,
+        })
+    }
+
+    /// What the families read and write.
+    fn modal(&self) -> Modal {
+        Modal {
+            frame: self.frame,
+            angles: self.angles,
+            euler: self.euler,
+        }
     }
 
     /// Whether this state is one that reading lines can leave: finite, its frame a rotation,
@@ -157,24 +109,14 @@ impl Program {
             return Err(Error::NotFinite);
         }
         crate::check_rotation(&self.frame.rotation)?;
-        let consistent = if self.dialect == Some(Dialect::Twincat) {
-            twincat::matrix(self.angles) == self.frame.rotation
-        } else {
-            self.angles == [0.0; 3]
+        let consistent = match self.dialect {
+            Some(d) => d.consistent(&self.modal()),
+            None => self.angles == [0.0; 3],
         };
         if consistent {
             Ok(())
         } else {
             Err(Error::BadArgument)
-        }
-    }
-
-    /// This state with `frame` active (TwinCAT's angles cleared: they belong to `ROT`).
-    pub(crate) fn with_frame(&self, frame: Frame) -> Program {
-        Program {
-            frame,
-            angles: [0.0; 3],
-            ..*self
         }
     }
 }
@@ -220,7 +162,7 @@ pub fn write_line(
     decimals: i32,
     buf: &mut [u8],
 ) -> Result<(usize, bool), Error> {
-    let spec = parse_form(dialect, form_text)?;
+    let spec = dialect.parse_form(form_text)?;
     let n = spec.form.count();
     let mut words = [0.0; MAX_VALUES];
     let singular = form::form_values(
@@ -233,14 +175,7 @@ pub fn write_line(
     // dialect cannot read: no buffer would help.
     let room = buf.len();
     let mut out = Out::new(buf);
-    match dialect {
-        Dialect::Sinumerik => sinumerik::write_line(&spec, &words, decimals, &mut out)?,
-        Dialect::Heidenhain => heidenhain::write_line(&spec, &words, decimals, &mut out)?,
-        Dialect::Fanuc | Dialect::Syntec | Dialect::Haas => {
-            fanuc::write_line(&spec, &words, decimals, &mut out)?
-        }
-        Dialect::Twincat => twincat::write_line(&words, decimals, &mut out)?,
-    }
+    dialect.write_line(&spec, words.get(..n).unwrap_or(&[]), decimals, &mut out)?;
     let len = match out.finish() {
         Some(len) => len,
         None if room >= dialect.max_line() => return Err(Error::OutOfRange),
@@ -250,89 +185,6 @@ pub fn write_line(
         return Err(Error::OutOfRange);
     }
     Ok((len, singular))
-}
-
-/// A form as named for [`write_line`].
-pub(crate) struct FormSpec {
-    pub form: Form,
-    pub selector: i32,
-}
-
-fn parse_form(dialect: Dialect, text: &[u8]) -> Result<FormSpec, Error> {
-    let mut c = Cursor::new(text);
-    c.spaces();
-    let spec = |form, selector| FormSpec { form, selector };
-    let found = match dialect {
-        Dialect::Sinumerik => {
-            if c.keyword(b"CYCLE800") {
-                c.spaces();
-                let mode = if c.at_end() { 57 } else { c.integer() };
-                spec(Form::Cycle800, mode)
-            } else if c.keyword(b"ROT") {
-                c.spaces();
-                spec(Form::SinumerikRot, i32::from(c.keyword(b"EULER")))
-            } else {
-                return Err(Error::BadArgument);
-            }
-        }
-        Dialect::Heidenhain => {
-            if !c.keyword(b"PLANE") {
-                return Err(Error::BadArgument);
-            }
-            c.spaces();
-            let forms = [
-                (&b"SPATIAL"[..], Form::PlaneSpatial),
-                (b"EULER", Form::PlaneEuler),
-                (b"VECTOR", Form::PlaneVector),
-                (b"POINTS", Form::PlanePoints),
-                (b"PROJECTED", Form::PlaneProjected),
-            ];
-            match forms.iter().find(|(name, _)| c.keyword(name)) {
-                Some(&(_, form)) => spec(form, 0),
-                None => return Err(Error::BadArgument),
-            }
-        }
-        _ if c.keyword(b"G68.2") && dialect != Dialect::Haas => spec(Form::G68_2, 0),
-        Dialect::Syntec if c.keyword(b"G158") => {
-            c.spaces();
-            let p = if c.at_end() {
-                10157
-            } else if c.letter(b'P') {
-                c.integer()
-            } else {
-                -1
-            };
-            spec(Form::G158, p)
-        }
-        Dialect::Twincat if c.keyword(b"ROT") => spec(Form::TwincatRot, 0),
-        Dialect::Haas if c.keyword(b"G268") => {
-            c.spaces();
-            let q = if c.at_end() {
-                123
-            } else if c.letter(b'Q') {
-                c.integer()
-            } else {
-                -1
-            };
-            spec(Form::G268, q)
-        }
-        _ => return Err(Error::BadArgument),
-    };
-    c.spaces();
-    if !c.at_end() || found.selector < 0 {
-        return Err(Error::BadArgument);
-    }
-    Ok(found)
-}
-
-/// The form's frame for a line, refusal mapped to the command's column.
-pub(crate) fn frame_at(
-    column: usize,
-    form: Form,
-    selector: i32,
-    words: &[f64],
-) -> Result<Frame, LineError> {
-    form::form_frame(form, selector, words).map_err(|error| LineError { error, column })
 }
 
 #[cfg(test)]

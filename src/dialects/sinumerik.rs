@@ -364,9 +364,8 @@ pub fn orirpy_angles(v: Vector) -> Result<([f64; 3], bool), Error> {
 
 // Program lines.
 
-use super::form::Form;
-use super::program::{frame_at, FormSpec, Program};
-use crate::text::number::{Out, Style};
+use super::family::{put, v3, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use crate::text::number::{write, write_integer, write_word, Out, Style};
 use crate::text::scan::{address_words, whole, Cursor, Exponent, LineError, Syntax};
 
 const WORDS: Syntax = Syntax {
@@ -487,11 +486,11 @@ fn at(column: usize) -> impl Fn(Error) -> LineError {
 /// `CYCLE800()` and `_TC = "0"` deselect the swivel \[doc\]; `_ST` units digit 0 new plane,
 /// 1 additive \[choice\], the higher digits (tool alignment, …) do not change the plane;
 /// `_DIR`, `_FR`, `_FR_I`, `_DMODE` choose motion and solution, not the plane.
-fn cycle800_line(p: &Program, c: &mut Cursor) -> Result<Program, LineError> {
+fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
     let args = Args::<16>::read(c, 1)?;
     c.end(true, false)?;
     if args.n == 0 {
-        return Ok(p.with_frame(Frame::IDENTITY));
+        return Ok(m.with_frame(Frame::IDENTITY));
     }
     if args.n < 4 {
         return Err(c.error(Error::MissingWord));
@@ -508,20 +507,20 @@ fn cycle800_line(p: &Program, c: &mut Cursor) -> Result<Program, LineError> {
         *slot = args.real(4 + k)?;
     }
     if tc == b"0" {
-        return Ok(p.with_frame(Frame::IDENTITY));
+        return Ok(m.with_frame(Frame::IDENTITY));
     }
     if st < 0 || st % 10 > 1 {
         return Err(at(args.column(2))(Error::BadArgument));
     }
-    let call = frame_at(args.column(3), Form::Cycle800, mode, &w)?;
-    Ok(p.with_frame(cycle800_apply(&p.frame, st % 10 == 1, &call)))
+    let call = LineError::at(args.column(3), cycle800_words(mode, &w))?;
+    Ok(m.with_frame(cycle800_apply(&m.frame, st % 10 == 1, &call)))
 }
 
 /// `CYCLE600(_INEXIN, _MIHEAD, _SW_REC, _BIN_IN, _POS_X, _POS_Y, _POS_Z, _ANG_1, _ANG_2,
 /// _ANG_3, _POS_X_R, _POS_Y_R, _POS_Z_R, _INEXOUT, _BIN_OUT, _ROT_AD, _ROT_INV, _RETR_Z)`:
 /// at least up to `_BIN_OUT`. The frame the cycle computes becomes the active one, as when
 /// its results are passed on to CYCLE800 \[choice\]; `_ROT_AD = 1` adds to the active frame.
-fn cycle600_line(p: &Program, c: &mut Cursor, column: usize) -> Result<Program, LineError> {
+fn cycle600_line(m: &Modal, c: &mut Cursor, column: usize) -> Result<Modal, LineError> {
     let args = Args::<18>::read(c, 1)?;
     c.end(true, false)?;
     if args.n < 15 {
@@ -564,124 +563,242 @@ fn cycle600_line(p: &Program, c: &mut Cursor, column: usize) -> Result<Program, 
         check.map_err(at(args.column(k).max(column)))?;
     }
     let state = super::cycle600::State {
-        frame: p.frame,
+        frame: m.frame,
         ..Default::default()
     };
     let next = super::cycle600::cycle600_in(&state, None, &call).map_err(at(column))?;
-    Ok(p.with_frame(next.frame))
+    Ok(m.with_frame(next.frame))
 }
 
-/// One block of a SINUMERIK program: `ROT`, `AROT`, `CROT` (`X Y Z`, with or without `=`,
-/// in the program's angle mode; `ROT`/`CROT` without words cancel, and replace the whole
-/// programmable frame as the control's substituting commands do \[doc\]; `CROT` reads like
-/// `ROT` \[choice\]), `ROTS`/`AROTS`/`CROTS` (two of `X Y Z`), `TRANS`/`ATRANS`, `CYCLE800(…)`
-/// and `CYCLE600(…)`, after a block number (`N10`, `:10`), a skip mark or a label, with `;`
-/// comments. "Frame instructions are programmed in their own block" \[doc\]: nothing else may
-/// stand on the line.
-#[inline(never)]
-pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
-    let mut c = Cursor::new(text);
-    c.block_number(b'N');
-    if c.peek() == Some(b':') {
-        c.bump();
-        while c.peek().is_some_and(|b| b.is_ascii_digit()) {
-            c.bump();
-        }
-        c.spaces();
+/// The frame of `CYCLE800`'s words `_X0 _Y0 _Z0 _A _B _C _X1 _Y1 _Z1` in `_MODE`.
+fn cycle800_words(mode: i32, w: &[f64]) -> Result<Frame, Error> {
+    cycle800_frame(SwivelMode::from_mode(mode)?, v3(w, 3), v3(w, 0), v3(w, 6))
+}
+
+/// The angle mode of a form's selector: 0 RPY, 1 Euler.
+fn angle_mode(selector: i32) -> Result<AngleMode, Error> {
+    match selector {
+        0 => Ok(AngleMode::Rpy),
+        1 => Ok(AngleMode::Euler),
+        _ => Err(Error::BadArgument),
     }
-    c.label();
-    if c.at_end() || c.rest_is_comment(true, false) {
-        return Ok(*p);
-    }
-    let column = c.column();
-    if c.keyword(b"CYCLE800") {
-        return cycle800_line(p, &mut c);
-    }
-    if c.keyword(b"CYCLE600") {
-        return cycle600_line(p, &mut c, column);
-    }
-    // Frame commands: (substituting, additive) × (rotation, projection, translation).
-    let commands: [(&[u8], bool, u8); 8] = [
-        (b"ROT", false, b'R'),
-        (b"CROT", false, b'R'),
-        (b"AROT", true, b'R'),
-        (b"ROTS", false, b'S'),
-        (b"CROTS", false, b'S'),
-        (b"AROTS", true, b'S'),
-        (b"TRANS", false, b'T'),
-        (b"ATRANS", true, b'T'),
+}
+
+/// The SINUMERIK family: `CYCLE800`, `CYCLE600`, the frame commands.
+pub(crate) struct Sinumerik;
+
+impl Family for Sinumerik {
+    /// Its manual's limit for a block.
+    const MAX_LINE: usize = 512;
+    const FORMS: &'static [FormInfo] = &[
+        FormInfo {
+            form: Form::Cycle800,
+            words: 9,
+            origin: true,
+            writable: true,
+        },
+        FormInfo {
+            form: Form::SinumerikRot,
+            words: 3,
+            origin: false,
+            writable: true,
+        },
+        FormInfo {
+            form: Form::SinumerikRots,
+            words: 2,
+            origin: false,
+            writable: false,
+        },
     ];
-    let Some(&(_, additive, kind)) = commands.iter().find(|(name, _, _)| c.keyword(name)) else {
-        return Err(c.error(Error::UnknownWord));
-    };
-    let words = address_words(&mut c, *b"XYZ", WORDS, true, (true, false))?;
-    let (xyz, given) = (words.values, words.given);
-    let count = given.iter().filter(|&&g| g).count();
-    if count == 0 {
-        return if additive {
-            Err(c.error(Error::MissingWord))
-        } else {
-            Ok(p.with_frame(Frame::IDENTITY))
-        };
-    }
-    let step = match kind {
-        b'R' => frame_at(column, Form::SinumerikRot, i32::from(p.euler), &xyz)?,
-        b'S' => {
-            let [x, y, z] = xyz;
-            let (plane, a, b) = match given {
-                [true, true, true] => return Err(at(column)(Error::UnknownWord)),
-                [_, true, true] => (RotsPlane::YZ, y, z),
-                [true, false, true] => (RotsPlane::ZX, z, x),
-                _ => (RotsPlane::XY, x, y),
-            };
-            let selector = match plane {
-                RotsPlane::XY => 0,
-                RotsPlane::YZ => 1,
-                RotsPlane::ZX => 2,
-            };
-            frame_at(column, Form::SinumerikRots, selector, &[a, b])?
-        }
-        _ => Frame::with_translations(xyz, crate::IDENTITY, [0.0; 3]),
-    };
-    Ok(p.with_frame(if additive {
-        p.frame.compose(&step)
-    } else {
-        step
-    }))
-}
 
-/// `CYCLE800(0,"",0,_MODE,_X0,_Y0,_Z0,_A,_B,_C,_X1,_Y1,_Z1,-1,0,0)` (`_DIR` −1, "minus"
-/// \[choice\]) or `ROT X=… Y=… Z=…`.
-#[inline(never)]
-pub(crate) fn write_line(
-    spec: &FormSpec,
-    words: &[f64],
-    decimals: i32,
-    out: &mut Out,
-) -> Result<(), Error> {
-    let style = Style {
-        plus: false,
-        point: false,
-    };
-    match spec.form {
-        Form::Cycle800 => {
-            out.text(b"CYCLE800(0,\"\",0,");
-            crate::text::number::write_integer(out, spec.selector);
-            for &v in words {
-                out.byte(b',');
-                crate::text::number::write(out, v, decimals, style)?;
+    /// One block of a SINUMERIK program: `ROT`, `AROT`, `CROT` (`X Y Z`, with or without `=`,
+    /// in the program's angle mode; `ROT`/`CROT` without words cancel, and replace the whole
+    /// programmable frame as the control's substituting commands do \[doc\]; `CROT` reads like
+    /// `ROT` \[choice\]), `ROTS`/`AROTS`/`CROTS` (two of `X Y Z`), `TRANS`/`ATRANS`, `CYCLE800(…)`
+    /// and `CYCLE600(…)`, after a block number (`N10`, `:10`), a skip mark or a label, with `;`
+    /// comments. "Frame instructions are programmed in their own block" \[doc\]: nothing else may
+    /// stand on the line.
+    #[inline(never)]
+    fn read_line(m: &Modal, text: &[u8]) -> Result<Modal, LineError> {
+        let mut c = Cursor::new(text);
+        c.block_number(b'N');
+        if c.peek() == Some(b':') {
+            c.bump();
+            while c.peek().is_some_and(|b| b.is_ascii_digit()) {
+                c.bump();
             }
-            out.text(b",-1,0,0)");
+            c.spaces();
         }
-        Form::SinumerikRot => {
-            out.text(b"ROT");
-            for (name, &v) in [&b" X="[..], b" Y=", b" Z="].iter().zip(words) {
-                crate::text::number::write_word(out, name, v, decimals, style)?;
+        c.label();
+        if c.at_end() || c.rest_is_comment(true, false) {
+            return Ok(*m);
+        }
+        let column = c.column();
+        if c.keyword(b"CYCLE800") {
+            return cycle800_line(m, &mut c);
+        }
+        if c.keyword(b"CYCLE600") {
+            return cycle600_line(m, &mut c, column);
+        }
+        // Frame commands: (substituting, additive) × (rotation, projection, translation).
+        let commands: [(&[u8], bool, u8); 8] = [
+            (b"ROT", false, b'R'),
+            (b"CROT", false, b'R'),
+            (b"AROT", true, b'R'),
+            (b"ROTS", false, b'S'),
+            (b"CROTS", false, b'S'),
+            (b"AROTS", true, b'S'),
+            (b"TRANS", false, b'T'),
+            (b"ATRANS", true, b'T'),
+        ];
+        let Some(&(_, additive, kind)) = commands.iter().find(|(name, _, _)| c.keyword(name))
+        else {
+            return Err(c.error(Error::UnknownWord));
+        };
+        let words = address_words(&mut c, *b"XYZ", WORDS, true, (true, false))?;
+        let (xyz, given) = (words.values, words.given);
+        let count = given.iter().filter(|&&g| g).count();
+        if count == 0 {
+            return if additive {
+                Err(c.error(Error::MissingWord))
+            } else {
+                Ok(m.with_frame(Frame::IDENTITY))
+            };
+        }
+        let step = match kind {
+            b'R' => {
+                let mode = if m.euler {
+                    AngleMode::Euler
+                } else {
+                    AngleMode::Rpy
+                };
+                Frame::from_rotation(rot(mode, xyz))
             }
-        }
-        _ => return Err(Error::BadArgument),
+            b'S' => {
+                let [x, y, z] = xyz;
+                let (plane, a, b) = match given {
+                    [true, true, true] => return Err(at(column)(Error::UnknownWord)),
+                    [_, true, true] => (RotsPlane::YZ, y, z),
+                    [true, false, true] => (RotsPlane::ZX, z, x),
+                    _ => (RotsPlane::XY, x, y),
+                };
+                Frame::from_rotation(rots(plane, a, b))
+            }
+            _ => Frame::with_translations(xyz, crate::IDENTITY, [0.0; 3]),
+        };
+        Ok(m.with_frame(if additive {
+            m.frame.compose(&step)
+        } else {
+            step
+        }))
     }
-    Ok(())
+
+    /// `CYCLE800` (`_MODE` 57), `CYCLE800 <_MODE>`, `ROT` (RPY), `ROT EULER`.
+    fn parse_form(text: &[u8]) -> Result<FormSpec, Error> {
+        let mut c = Cursor::new(text);
+        c.spaces();
+        let spec = if c.keyword(b"CYCLE800") {
+            c.spaces();
+            let mode = if c.at_end() { 57 } else { c.integer() };
+            FormSpec {
+                form: Form::Cycle800,
+                selector: mode,
+            }
+        } else if c.keyword(b"ROT") {
+            c.spaces();
+            FormSpec {
+                form: Form::SinumerikRot,
+                selector: i32::from(c.keyword(b"EULER")),
+            }
+        } else {
+            return Err(Error::BadArgument);
+        };
+        c.spaces();
+        if !c.at_end() || spec.selector < 0 {
+            return Err(Error::BadArgument);
+        }
+        Ok(spec)
+    }
+
+    /// `CYCLE800(0,"",0,_MODE,_X0,_Y0,_Z0,_A,_B,_C,_X1,_Y1,_Z1,-1,0,0)` (`_DIR` −1, "minus"
+    /// \[choice\]) or `ROT X=… Y=… Z=…`.
+    #[inline(never)]
+    fn write_line(
+        spec: &FormSpec,
+        words: &[f64],
+        decimals: i32,
+        out: &mut Out,
+    ) -> Result<(), Error> {
+        let style = Style {
+            plus: false,
+            point: false,
+        };
+        match spec.form {
+            Form::Cycle800 => {
+                out.text(b"CYCLE800(0,\"\",0,");
+                write_integer(out, spec.selector);
+                for &v in words {
+                    out.byte(b',');
+                    write(out, v, decimals, style)?;
+                }
+                out.text(b",-1,0,0)");
+            }
+            Form::SinumerikRot => {
+                out.text(b"ROT");
+                for (name, &v) in [&b" X="[..], b" Y=", b" Z="].iter().zip(words) {
+                    write_word(out, name, v, decimals, style)?;
+                }
+            }
+            _ => return Err(Error::BadArgument),
+        }
+        Ok(())
+    }
+
+    fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error> {
+        match form {
+            Form::Cycle800 => cycle800_words(selector, words),
+            Form::SinumerikRot => Ok(Frame::from_rotation(rot(
+                angle_mode(selector)?,
+                v3(words, 0),
+            ))),
+            Form::SinumerikRots => {
+                let plane = match selector {
+                    0 => RotsPlane::XY,
+                    1 => RotsPlane::YZ,
+                    2 => RotsPlane::ZX,
+                    _ => return Err(Error::BadArgument),
+                };
+                let [a, b] = [0, 1].map(|k| words.get(k).copied().unwrap_or(0.0));
+                Ok(Frame::from_rotation(rots(plane, a, b)))
+            }
+            _ => Err(Error::BadArgument),
+        }
+    }
+
+    fn form_values(
+        form: Form,
+        selector: i32,
+        frame: &Frame,
+        out: &mut [f64; MAX_VALUES],
+    ) -> Result<bool, Error> {
+        let m = &frame.rotation;
+        match form {
+            Form::Cycle800 => {
+                let mode = SwivelMode::from_mode(selector)?;
+                let d = cycle800_angles(mode, m)?;
+                put(out, 0, frame.translation);
+                put(out, 3, d.angles);
+                Ok(d.singular)
+            }
+            Form::SinumerikRot => {
+                let (xyz, singular) = readback(angle_mode(selector)?, m)?;
+                put(out, 0, xyz);
+                Ok(singular)
+            }
+            // Not every frame is a projection.
+            _ => Err(Error::BadArgument),
+        }
+    }
 }
 
 #[cfg(test)]

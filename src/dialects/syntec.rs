@@ -138,43 +138,156 @@ fn normal(n: Vector) -> Result<Matrix, Error> {
 
 // Program lines.
 
-use super::program::Program;
+use super::family::{put, v3, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use crate::text::number::{write_integer, write_word, Out};
 use crate::text::scan::{address_words, whole, Cursor, LineError, Syntax};
 
 const SYNTAX: Syntax = crate::text::scan::G_WORDS;
 
-/// One block of a Syntec program: `G158 L P X Y Z A B C U V W` (omitted words are 0, `L`
-/// accepted and ignored [choice: not documented]; `G158` without words cancels \[choice\]),
-/// and the Fanuc-style `G68.2`, `G68.4`, `G69`, `G53.1` of its G68.2 mode, with a block
-/// number, `( … )` and `;` comments.
-#[inline(never)]
-pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
-    let mut c = Cursor::new(text);
-    c.block_number(b'N');
-    let column = c.column();
-    if c.keyword(b"G158") {
-        if c.rest_is_comment(true, true) {
-            c.end(true, true)?;
-            return Ok(p.with_frame(Frame::IDENTITY));
+/// The Syntec family: `G158`, and the Fanuc-style `G68.2` of its G68.2 mode.
+pub(crate) struct Syntec;
+
+impl Family for Syntec {
+    const MAX_LINE: usize = 256;
+    const FORMS: &'static [FormInfo] = &[FormInfo {
+        form: Form::G158,
+        words: 9,
+        origin: true,
+        writable: true,
+    }];
+
+    /// One block of a Syntec program: `G158 L P X Y Z A B C U V W` (omitted words are 0,
+    /// `L` accepted and ignored [choice: not documented]; `G158` without words cancels
+    /// \[choice\]), and the Fanuc-style `G68.2`, `G68.4`, `G69`, `G53.1` of its G68.2 mode,
+    /// with a block number, `( … )` and `;` comments.
+    #[inline(never)]
+    fn read_line(m: &Modal, text: &[u8]) -> Result<Modal, LineError> {
+        let mut c = Cursor::new(text);
+        c.block_number(b'N');
+        let column = c.column();
+        if c.keyword(b"G158") {
+            if c.rest_is_comment(true, true) {
+                c.end(true, true)?;
+                return Ok(m.with_frame(Frame::IDENTITY));
+            }
+            let w = address_words(&mut c, *b"LPXYZABCUVW", SYNTAX, false, (true, true))?;
+            let [_, pw, x, y, z, a, b, cc, u, v, ww] = w.values;
+            if !w.given[1] {
+                return Err(c.error(Error::MissingWord));
+            }
+            // A bad P is reported at its value, not at the command.
+            let at = w.column(1);
+            let pword = LineError::at(at, PWord::decode(whole(pw, at)?))?;
+            let f = frame(&m.frame, pword, [x, y, z], [a, b, cc], [u, v, ww]);
+            return Ok(m.with_frame(LineError::at(column, f)?));
         }
-        let w = address_words(&mut c, *b"LPXYZABCUVW", SYNTAX, false, (true, true))?;
-        let [_, pw, x, y, z, a, b, cc, u, v, ww] = w.values;
-        if !w.given[1] {
-            return Err(c.error(Error::MissingWord));
+        if let Some(result) = super::fanuc::read_g68(m, &mut c) {
+            return result;
         }
-        // A bad P is reported at its value, not at the command.
-        let at = w.column(1);
-        let pword =
-            PWord::decode(whole(pw, at)?).map_err(|error| LineError { error, column: at })?;
-        let f = frame(&p.frame, pword, [x, y, z], [a, b, cc], [u, v, ww])
-            .map_err(|error| LineError { error, column })?;
-        return Ok(p.with_frame(f));
+        // Only comments may remain; an unclosed `(` is malformed text.
+        c.end(true, true).map(|()| *m)
     }
-    if let Some(result) = super::fanuc::read_g68(p, &mut c) {
-        return result;
+
+    /// `G158` (`P10157`), `G158 P<p>`, `G68.2`.
+    fn parse_form(text: &[u8]) -> Result<FormSpec, Error> {
+        let mut c = Cursor::new(text);
+        c.spaces();
+        let spec = if c.keyword(b"G68.2") {
+            FormSpec {
+                form: Form::G68_2,
+                selector: 0,
+            }
+        } else if c.keyword(b"G158") {
+            c.spaces();
+            let selector = if c.at_end() {
+                10157
+            } else if c.letter(b'P') {
+                c.integer()
+            } else {
+                -1
+            };
+            FormSpec {
+                form: Form::G158,
+                selector,
+            }
+        } else {
+            return Err(Error::BadArgument);
+        };
+        c.spaces();
+        if !c.at_end() || spec.selector < 0 {
+            return Err(Error::BadArgument);
+        }
+        Ok(spec)
     }
-    // Only comments may remain; an unclosed `(` is malformed text.
-    c.end(true, true).map(|()| *p)
+
+    /// `G158 P X Y Z A B C U V W` or `G68.2 X Y Z I J K`, numbers always with a point.
+    #[inline(never)]
+    fn write_line(
+        spec: &FormSpec,
+        words: &[f64],
+        decimals: i32,
+        out: &mut Out,
+    ) -> Result<(), Error> {
+        match spec.form {
+            Form::G68_2 => super::fanuc::write_g68_2(words, decimals, out),
+            Form::G158 => {
+                out.text(b"G158 P");
+                write_integer(out, spec.selector);
+                let names: [&[u8]; 9] = [
+                    b" X", b" Y", b" Z", b" A", b" B", b" C", b" U", b" V", b" W",
+                ];
+                for (name, &v) in names.iter().zip(words) {
+                    write_word(out, name, v, decimals, super::fanuc::STYLE)?;
+                }
+                Ok(())
+            }
+            _ => Err(Error::BadArgument),
+        }
+    }
+
+    fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error> {
+        if form != Form::G158 {
+            return Err(Error::BadArgument);
+        }
+        let p = PWord::decode(selector)?;
+        // Incremental P words apply on an active plane: as a lone block, on none.
+        frame(
+            &Frame::IDENTITY,
+            p,
+            v3(words, 0),
+            v3(words, 3),
+            v3(words, 6),
+        )
+    }
+
+    fn form_values(
+        form: Form,
+        selector: i32,
+        frame: &Frame,
+        out: &mut [f64; MAX_VALUES],
+    ) -> Result<bool, Error> {
+        if form != Form::G158 {
+            return Err(Error::BadArgument);
+        }
+        let p = PWord::decode(selector)?;
+        if p.incremental {
+            return Err(Error::BadArgument);
+        }
+        let d = match p.mode {
+            Mode::Order(code) => {
+                let seq = Sequence::from_axis_code(code)?;
+                crate::angles_from_matrix(
+                    crate::Convention::new(Kind::Intrinsic, seq),
+                    &frame.rotation,
+                )?
+            }
+            Mode::Direct => return Err(Error::NotAvailable),
+            _ => return Err(Error::BadArgument),
+        };
+        put(out, 0, frame.translation);
+        put(out, 3, d.angles);
+        Ok(d.singular)
+    }
 }
 
 #[cfg(test)]

@@ -82,68 +82,135 @@ pub fn rot_angles(m: &Matrix) -> Result<([f64; 3], bool), Error> {
 
 // Program lines.
 
-use super::program::Program;
-use crate::text::number::{Out, Style};
+use super::family::{no_selector, put, v3, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use crate::text::number::{write_word, Out, Style};
 use crate::text::scan::{address_words, Cursor, LineError, Syntax};
+use crate::Frame;
 
 const SYNTAX: Syntax = crate::text::scan::G_WORDS;
 
-/// One block of a TwinCAT NC I program: `ROT X Y Z` (no words: cancel), `AROT X Y Z`, and
-/// `RotExOn`/`RotExOff` (no frame change), with a block number and `( … )` or `;`
-/// comments. "The rotation instructions must be programmed in their own block" \[doc\]:
-/// nothing else may stand on the line.
-#[inline(never)]
-pub(crate) fn read_line(p: &Program, text: &[u8]) -> Result<Program, LineError> {
-    let mut c = Cursor::new(text);
-    c.block_number(b'N');
-    let column = c.column();
-    let additive = if c.keyword(b"ROT") {
-        false
-    } else if c.keyword(b"AROT") {
-        true
-    } else if c.keyword(b"ROTEXON") || c.keyword(b"ROTEXOFF") || c.at_end() {
-        c.end(true, true)?;
-        return Ok(*p);
-    } else {
-        // Only comments may remain; an unclosed `(` is malformed text.
-        return c.end(true, true).map(|()| *p);
-    };
-    // `=` before a value is allowed (`X=R1` is how NC I assigns a parameter).
-    let w = address_words(&mut c, *b"XYZ", SYNTAX, true, (true, true))?;
-    let xyz = w.values;
-    let angles = if additive {
-        if !w.given.contains(&true) {
-            return Err(c.error(Error::MissingWord));
-        }
-        Rotation { angles: p.angles }.arot(xyz).angles
-    } else {
-        xyz
-    };
-    if !angles.iter().all(|a| a.is_finite()) {
-        return Err(LineError {
-            error: Error::OutOfRange,
-            column,
-        });
-    }
-    Ok(Program {
-        frame: crate::Frame::from_rotation(matrix(angles)),
-        angles: angles.map(|a| a + 0.0),
-        ..*p
-    })
-}
+/// The TwinCAT NC I family: `ROT`, `AROT`.
+pub(crate) struct Twincat;
 
-/// `ROT X… Y… Z…` for the words of [`crate::dialects::form::Form::TwincatRot`].
-#[inline(never)]
-pub(crate) fn write_line(words: &[f64], decimals: i32, out: &mut Out) -> Result<(), Error> {
-    let style = Style {
-        plus: false,
-        point: false,
-    };
-    out.text(b"ROT");
-    for (name, &v) in [&b" X"[..], b" Y", b" Z"].iter().zip(words) {
-        crate::text::number::write_word(out, name, v, decimals, style)?;
+impl Family for Twincat {
+    const MAX_LINE: usize = 256;
+    const FORMS: &'static [FormInfo] = &[FormInfo {
+        form: Form::TwincatRot,
+        words: 3,
+        origin: false,
+        writable: true,
+    }];
+
+    /// One block of a TwinCAT NC I program: `ROT X Y Z` (no words: cancel), `AROT X Y Z`,
+    /// and `RotExOn`/`RotExOff` (no frame change), with a block number and `( … )` or `;`
+    /// comments. "The rotation instructions must be programmed in their own block"
+    /// \[doc\]: nothing else may stand on the line.
+    #[inline(never)]
+    fn read_line(m: &Modal, text: &[u8]) -> Result<Modal, LineError> {
+        let mut c = Cursor::new(text);
+        c.block_number(b'N');
+        let column = c.column();
+        let additive = if c.keyword(b"ROT") {
+            false
+        } else if c.keyword(b"AROT") {
+            true
+        } else if c.keyword(b"ROTEXON") || c.keyword(b"ROTEXOFF") || c.at_end() {
+            c.end(true, true)?;
+            return Ok(*m);
+        } else {
+            // Only comments may remain; an unclosed `(` is malformed text.
+            return c.end(true, true).map(|()| *m);
+        };
+        // `=` before a value is allowed (`X=R1` is how NC I assigns a parameter).
+        let w = address_words(&mut c, *b"XYZ", SYNTAX, true, (true, true))?;
+        let xyz = w.values;
+        let angles = if additive {
+            if !w.given.contains(&true) {
+                return Err(c.error(Error::MissingWord));
+            }
+            Rotation { angles: m.angles }.arot(xyz).angles
+        } else {
+            xyz
+        };
+        if !angles.iter().all(|a| a.is_finite()) {
+            return Err(LineError {
+                error: Error::OutOfRange,
+                column,
+            });
+        }
+        Ok(Modal {
+            frame: Frame::from_rotation(matrix(angles)),
+            angles: angles.map(|a| a + 0.0),
+            ..*m
+        })
     }
-    Ok(())
+
+    /// TwinCAT keeps its programmed angles: the rotation must be theirs.
+    fn consistent(m: &Modal) -> bool {
+        matrix(m.angles) == m.frame.rotation
+    }
+
+    /// `ROT`.
+    fn parse_form(text: &[u8]) -> Result<FormSpec, Error> {
+        let mut c = Cursor::new(text);
+        c.spaces();
+        if !c.keyword(b"ROT") {
+            return Err(Error::BadArgument);
+        }
+        c.spaces();
+        if !c.at_end() {
+            return Err(Error::BadArgument);
+        }
+        Ok(FormSpec {
+            form: Form::TwincatRot,
+            selector: 0,
+        })
+    }
+
+    /// `ROT X… Y… Z…`.
+    #[inline(never)]
+    fn write_line(
+        spec: &FormSpec,
+        words: &[f64],
+        decimals: i32,
+        out: &mut Out,
+    ) -> Result<(), Error> {
+        if spec.form != Form::TwincatRot {
+            return Err(Error::BadArgument);
+        }
+        let style = Style {
+            plus: false,
+            point: false,
+        };
+        out.text(b"ROT");
+        for (name, &v) in [&b" X"[..], b" Y", b" Z"].iter().zip(words) {
+            write_word(out, name, v, decimals, style)?;
+        }
+        Ok(())
+    }
+
+    fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error> {
+        no_selector(selector)?;
+        if form != Form::TwincatRot {
+            return Err(Error::BadArgument);
+        }
+        Ok(Frame::from_rotation(matrix(v3(words, 0))))
+    }
+
+    fn form_values(
+        form: Form,
+        selector: i32,
+        frame: &Frame,
+        out: &mut [f64; MAX_VALUES],
+    ) -> Result<bool, Error> {
+        no_selector(selector)?;
+        if form != Form::TwincatRot {
+            return Err(Error::BadArgument);
+        }
+        let (xyz, singular) = rot_angles(&frame.rotation)?;
+        put(out, 0, xyz);
+        Ok(singular)
+    }
 }
 
 #[cfg(test)]

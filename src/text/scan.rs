@@ -15,6 +15,13 @@ pub struct LineError {
     pub column: usize,
 }
 
+impl LineError {
+    /// `result`, its error reported at `column`.
+    pub fn at<T>(column: usize, result: Result<T, Error>) -> Result<T, LineError> {
+        result.map_err(|error| LineError { error, column })
+    }
+}
+
 /// How an exponent is written in a dialect's numbers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Exponent {

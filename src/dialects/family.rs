@@ -1,0 +1,227 @@
+//! The contract a controller family fulfils: what its file provides, and nothing it may
+//! reach for beyond the text room and the mathematics.
+//!
+//! A family (SINUMERIK, Heidenhain, Fanuc, …) is one file or folder under `src/dialects/`
+//! with a unit struct that implements [`Family`]: the longest block it reads, the commands
+//! whose frames it computes ([`FormInfo`]), its block reader, the names of the forms its
+//! writer takes and its writer, and the frame ↔ words functions of its forms. The one list
+//! of families is the `families!` invocation in `registry.rs`: a new controller is its own
+//! file plus one line there. Families import this module, `crate::text` and the
+//! mathematics, and other families' public commands where a controller reads another's
+//! (Syntec reads Fanuc's `G68.2`) — never the registry, `program.rs` or `form.rs`, which
+//! dispatch to them.
+
+use crate::text::number::Out;
+use crate::text::scan::LineError;
+use crate::{Error, Frame, Vector};
+
+/// The most words a form has.
+pub const MAX_VALUES: usize = 9;
+
+/// What the blocks read so far leave active, in the terms every family shares: the frame,
+/// TwinCAT's programmed angles (its `AROT` adds angles, not matrices) and SINUMERIK's angle
+/// mode (machine data, not a block).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Modal {
+    /// The active frame (identity: nothing active).
+    pub frame: Frame,
+    /// TwinCAT's programmed angles `X Y Z`.
+    pub angles: [f64; 3],
+    /// SINUMERIK's frame angles in Euler mode (machine data 10600 = 2) instead of RPY.
+    pub euler: bool,
+}
+
+impl Modal {
+    /// This state with `frame` active (TwinCAT's angles cleared: they belong to `ROT`).
+    pub fn with_frame(&self, frame: Frame) -> Modal {
+        Modal {
+            frame,
+            angles: [0.0; 3],
+            ..*self
+        }
+    }
+}
+
+/// A tilted-plane command as written, with the order of its words. The codes are the C
+/// boundary's `CNCROT_FORM_*` (an ABI list: a family that brings a new command adds its
+/// code here, numbered by hand).
+///
+/// | form | selector | words, in this order |
+/// |---|---|---|
+/// | [`Form::Cycle800`] | `_MODE` | `_X0 _Y0 _Z0 _A _B _C _X1 _Y1 _Z1` |
+/// | [`Form::SinumerikRot`] | 0 RPY, 1 Euler | `X Y Z` |
+/// | [`Form::SinumerikRots`] | 0 `X Y`, 1 `Y Z`, 2 `Z X` | the two angles in that order |
+/// | [`Form::PlaneSpatial`] | 0 | `SPA SPB SPC` |
+/// | [`Form::PlaneEuler`] | 0 | `EULPR EULNU EULROT` |
+/// | [`Form::PlaneVector`] | 0 | `BX BY BZ NX NY NZ` |
+/// | [`Form::PlanePoints`] | 0 | `P1X P1Y P1Z P2X P2Y P2Z P3X P3Y P3Z` |
+/// | [`Form::G68_2`] | 0 | `X Y Z I J K` |
+/// | [`Form::G158`] | `P` | `X Y Z A B C U V W` |
+/// | [`Form::TwincatRot`] | 0 | `X Y Z` |
+/// | [`Form::G268`] | `Q` | `X Y Z I J K` |
+/// | [`Form::G68_3`] | 0 | `X Y Z R TX TY TZ` (the tool direction T; vertical axis +Z) |
+/// | [`Form::PlaneProjected`] | 0 | `PROPR PROMIN ROT` |
+///
+/// ```
+/// use cncrot::dialects::form::{form_frame, Form};
+/// // G68.2 X10 I0 J30 K0: origin (10, 0, 0), tilted about X by 30°.
+/// let f = form_frame(Form::G68_2, 0, &[10.0, 0.0, 0.0, 0.0, 30.0, 0.0]).unwrap();
+/// assert_eq!(f.translation, [10.0, 0.0, 0.0]);
+/// assert_eq!((Form::G68_2.count(), Form::G68_2.has_origin()), (6, true));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Form {
+    /// SINUMERIK `CYCLE800`.
+    Cycle800 = 1,
+    /// SINUMERIK `ROT`/`CROT` (and each step of `AROT`).
+    SinumerikRot = 2,
+    /// SINUMERIK `ROTS` (projection angles).
+    SinumerikRots = 3,
+    /// Heidenhain `PLANE SPATIAL`.
+    PlaneSpatial = 4,
+    /// Heidenhain `PLANE EULER`.
+    PlaneEuler = 5,
+    /// Heidenhain `PLANE VECTOR`.
+    PlaneVector = 6,
+    /// Heidenhain `PLANE POINTS`.
+    PlanePoints = 7,
+    /// Fanuc-style `G68.2`.
+    G68_2 = 8,
+    /// Syntec `G158`.
+    G158 = 9,
+    /// Beckhoff TwinCAT NC I `ROT`.
+    TwincatRot = 10,
+    /// Haas `G268`.
+    G268 = 11,
+    /// Fanuc-style `G68.3` (the plane from the tool direction, on a machine whose vertical
+    /// axis is +Z [choice: a parameter of the control; `fanuc::g68_3` takes any]).
+    G68_3 = 12,
+    /// Heidenhain `PLANE PROJECTED`.
+    PlaneProjected = 13,
+}
+
+impl Form {
+    /// Every form, in code order.
+    pub const ALL: [Form; 13] = [
+        Form::Cycle800,
+        Form::SinumerikRot,
+        Form::SinumerikRots,
+        Form::PlaneSpatial,
+        Form::PlaneEuler,
+        Form::PlaneVector,
+        Form::PlanePoints,
+        Form::G68_2,
+        Form::G158,
+        Form::TwincatRot,
+        Form::G268,
+        Form::G68_3,
+        Form::PlaneProjected,
+    ];
+
+    /// The form of a code (1..=13), else [`Error::BadArgument`].
+    ///
+    /// ```
+    /// use cncrot::dialects::form::Form;
+    /// assert_eq!(Form::from_code(8), Ok(Form::G68_2));
+    /// assert!(Form::from_code(0).is_err());
+    /// ```
+    pub fn from_code(code: i32) -> Result<Form, Error> {
+        usize::try_from(code)
+            .ok()
+            .and_then(|c| c.checked_sub(1))
+            .and_then(|i| Form::ALL.get(i).copied())
+            .ok_or(Error::BadArgument)
+    }
+}
+
+/// What a family declares about a form whose frame it computes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FormInfo {
+    /// The form.
+    pub form: Form,
+    /// How many words it has.
+    pub words: usize,
+    /// Whether its words carry an origin (the others rotate about the active datum).
+    pub origin: bool,
+    /// Whether every frame can be written in it (`ROTS` cannot: its projection fixes the
+    /// new X in a plane).
+    pub writable: bool,
+}
+
+/// A form as named to the writer (`"PLANE SPATIAL"`, `"G158 P10157"`): the form and its
+/// selector.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FormSpec {
+    /// The form.
+    pub form: Form,
+    /// Its selector (`_MODE`, `P`, `Q`, the angle mode; 0 where the form has none).
+    pub selector: i32,
+}
+
+/// What a controller family provides. Every function is called through the registry's
+/// `match` (static dispatch: the no-panic proof sees through it), with the generic checks
+/// already done: the line without its end and within `MAX_LINE`, a form's words counted and
+/// finite, a frame's rotation valid.
+pub(crate) trait Family {
+    /// The longest block the reader accepts, in bytes without the line end.
+    const MAX_LINE: usize;
+    /// The forms whose frames this family computes (each form has exactly one owner).
+    const FORMS: &'static [FormInfo];
+
+    /// Applies one block to `m` and returns the next state; a refused block names its
+    /// column.
+    fn read_line(m: &Modal, text: &[u8]) -> Result<Modal, LineError>;
+
+    /// Whether `m`, restored from elsewhere, is a state this family's reader can leave
+    /// (the rotation itself is checked by the caller). Most families keep no angles.
+    fn consistent(m: &Modal) -> bool {
+        m.angles == [0.0; 3]
+    }
+
+    /// The form the writer is asked for by name (`text` trimmed of nothing: spaces around
+    /// are the family's to skip), or [`Error::BadArgument`].
+    fn parse_form(text: &[u8]) -> Result<FormSpec, Error>;
+
+    /// Writes the block of `spec` with its words (`words.len()` is the form's count).
+    fn write_line(
+        spec: &FormSpec,
+        words: &[f64],
+        decimals: i32,
+        out: &mut Out,
+    ) -> Result<(), Error>;
+
+    /// The frame of an owned form's words.
+    fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error>;
+
+    /// The words of an owned form that give `frame`, into `out[..count]`; whether the
+    /// decomposition was singular.
+    fn form_values(
+        form: Form,
+        selector: i32,
+        frame: &Frame,
+        out: &mut [f64; MAX_VALUES],
+    ) -> Result<bool, Error>;
+}
+
+/// A form without a selector: anything but 0 is [`Error::BadArgument`].
+pub(crate) fn no_selector(selector: i32) -> Result<(), Error> {
+    if selector == 0 {
+        Ok(())
+    } else {
+        Err(Error::BadArgument)
+    }
+}
+
+/// Three words from `at` (0 beyond the end).
+pub(crate) fn v3(w: &[f64], at: usize) -> Vector {
+    core::array::from_fn(|k| w.get(at + k).copied().unwrap_or(0.0))
+}
+
+/// Puts three words at `at`.
+pub(crate) fn put(out: &mut [f64; MAX_VALUES], at: usize, v: [f64; 3]) {
+    for (k, x) in v.into_iter().enumerate() {
+        if let Some(slot) = out.get_mut(at + k) {
+            *slot = x;
+        }
+    }
+}
