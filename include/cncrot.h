@@ -22,16 +22,6 @@
 #define CNCROT_ROTATION_TOLERANCE 1e-3
 
 /**
- * Size of a name field, including its terminating NUL: names have at most 31 bytes.
- */
-#define CNCROT_NAME_SIZE 32
-
-/**
- * How many accessories a `cncrot_head_table` holds.
- */
-#define CNCROT_HEAD_TABLE_CAPACITY 16
-
-/**
  * The value of `cncrot_cycle600_gud::format` in every state this version writes.
  */
 #define CNCROT_CYCLE600_GUD_FORMAT 1127624753
@@ -116,6 +106,16 @@
  * projection's singularity) are refused with `CNCROT_STATUS_OUT_OF_RANGE`.
  */
 #define CNCROT_READ_BACK_TOLERANCE 1e-12
+
+/**
+ * Size of a name field, including its terminating NUL: names have at most 31 bytes.
+ */
+#define CNCROT_NAME_SIZE 32
+
+/**
+ * How many accessories a `cncrot_head_table` holds.
+ */
+#define CNCROT_HEAD_TABLE_CAPACITY 16
 
 /**
  * Capacity of `cncrot_machine.axes`.
@@ -374,51 +374,6 @@ typedef int32_t cncrot_status;
 #endif // __cplusplus
 
 /**
- * One technological accessory of the HEAD_DEF cycle.
- */
-typedef struct cncrot_head {
-  /**
-   * `_HEAD_NAME`, NUL-terminated.
-   */
-  char name[CNCROT_NAME_SIZE];
-  /**
-   * `_HEAD_ALLOWED` (0 or 1).
-   */
-  int32_t allowed;
-  /**
-   * Zero.
-   */
-  int32_t reserved;
-  /**
-   * `_DELTA_L1`, `_DELTA_L2`, `_DELTA_H1`.
-   */
-  double delta[3];
-  /**
-   * `_OFFS_L1_X`, `_OFFS_L1_Y`, `_OFFS_L2_X`, `_OFFS_L2_Y`, `_OFFS_H1_X`, `_OFFS_H1_Z`.
-   */
-  double offsets[6];
-} cncrot_head;
-
-/**
- * A caller-owned, fixed-capacity table of accessories, filled by
- * `cncrot_head_table_parse`. A zeroed table is empty.
- */
-typedef struct cncrot_head_table {
-  /**
-   * How many entries of `heads` are used (0..16).
-   */
-  int32_t count;
-  /**
-   * Zero.
-   */
-  int32_t reserved;
-  /**
-   * The accessories.
-   */
-  struct cncrot_head heads[CNCROT_HEAD_TABLE_CAPACITY];
-} cncrot_head_table;
-
-/**
  * CYCLE600's state, the controller's GUD block `MGUD_CYC600`: plain data, owned by the
  * caller, that can be stored as bytes and restored after a restart. A zeroed struct is the
  * valid initial state (no rotation yet). Its first six fields are the paper's results.
@@ -486,6 +441,51 @@ typedef struct cncrot_cycle600_gud {
    */
   uint32_t checksum;
 } cncrot_cycle600_gud;
+
+/**
+ * One technological accessory of the HEAD_DEF cycle.
+ */
+typedef struct cncrot_head {
+  /**
+   * `_HEAD_NAME`, NUL-terminated.
+   */
+  char name[CNCROT_NAME_SIZE];
+  /**
+   * `_HEAD_ALLOWED` (0 or 1).
+   */
+  int32_t allowed;
+  /**
+   * Zero.
+   */
+  int32_t reserved;
+  /**
+   * `_DELTA_L1`, `_DELTA_L2`, `_DELTA_H1`.
+   */
+  double delta[3];
+  /**
+   * `_OFFS_L1_X`, `_OFFS_L1_Y`, `_OFFS_L2_X`, `_OFFS_L2_Y`, `_OFFS_H1_X`, `_OFFS_H1_Z`.
+   */
+  double offsets[6];
+} cncrot_head;
+
+/**
+ * A caller-owned, fixed-capacity table of accessories, filled by
+ * `cncrot_head_table_parse`. A zeroed table is empty.
+ */
+typedef struct cncrot_head_table {
+  /**
+   * How many entries of `heads` are used (0..16).
+   */
+  int32_t count;
+  /**
+   * Zero.
+   */
+  int32_t reserved;
+  /**
+   * The accessories.
+   */
+  struct cncrot_head heads[CNCROT_HEAD_TABLE_CAPACITY];
+} cncrot_head_table;
 
 /**
  * One rotary axis of a `cncrot_machine`: a direction and a point on it (machine
@@ -739,37 +739,6 @@ int32_t cncrot_convert_many(int32_t intrinsic_in,
  * `sizeof` to detect a header/library mismatch before storing states.
  */
 size_t cncrot_cycle600_gud_size(void);
-
-/**
- * Reads the text of a HEAD_DEF cycle into `table`: per line an optional block number
- * `N…`, then labels (`TZ7:`), `_HEAD_NAME="…"` (starts an accessory), `_HEAD_ALLOWED`,
- * `_DELTA_L1/_L2/_H1`, `_OFFS_L1_X/_L1_Y/_L2_X/_L2_Y/_H1_X/_H1_Z` assignments,
- * `GOTOF/GOTOB/GOTO …`, comments after `;`, read as a SINUMERIK control reads them:
- * keywords in any case, a UTF-8 byte-order mark skipped, block-skip marks (`/`, `/0`..`/9`)
- * read as executed, reading ended by the block with `M30`, `M17`, `M2`, `M02` or `RET`.
- * Names are 1 to 31 printable ASCII characters without spaces or quotes. `text` holds
- * `len` bytes (no terminating NUL needed). Numbers are read exactly as `strtod` would, within up to 15
- * significant digits (precisely: digits forming an integer up to 2^53, times 10^-22..10^22);
- * others are refused with `CNCROT_STATUS_PARSE` rather than rounded twice.
- *
- * Returns 0 and writes the table, with `*error_line` = 0; or a negative status
- * (`CNCROT_STATUS_PARSE` for an unknown or malformed line, `CNCROT_STATUS_NAME_TOO_LONG`,
- * `CNCROT_STATUS_TABLE_FULL`, `CNCROT_STATUS_NULL_POINTER` for `table` or `text`) with
- * the table untouched and the 1-based number of the
- * offending line in `*error_line`. `error_line` may be NULL.
- *
- * # Safety
- * `table` points to a writable `cncrot_head_table`, `text` to `len` readable bytes.
- *
- * ```c
- * cncrot_head_table heads; int32_t line;
- * if (cncrot_head_table_parse(&heads, text, strlen(text), &line) < 0) printf("line %d\n", line);
- * ```
- */
-int32_t cncrot_head_table_parse(struct cncrot_head_table *table,
-                                const char *text,
-                                size_t len,
-                                int32_t *error_line);
 
 /**
  * CYCLE600 with the paper's 18 parameters in its order, after the caller's state `gud` and
@@ -1051,6 +1020,37 @@ int32_t cncrot_frame_inverse(const double *frame, double *out);
  * ```
  */
 int32_t cncrot_frame_transform_point(const double *frame, const double *point, double *out);
+
+/**
+ * Reads the text of a HEAD_DEF cycle into `table`: per line an optional block number
+ * `N…`, then labels (`TZ7:`), `_HEAD_NAME="…"` (starts an accessory), `_HEAD_ALLOWED`,
+ * `_DELTA_L1/_L2/_H1`, `_OFFS_L1_X/_L1_Y/_L2_X/_L2_Y/_H1_X/_H1_Z` assignments,
+ * `GOTOF/GOTOB/GOTO …`, comments after `;`, read as a SINUMERIK control reads them:
+ * keywords in any case, a UTF-8 byte-order mark skipped, block-skip marks (`/`, `/0`..`/9`)
+ * read as executed, reading ended by the block with `M30`, `M17`, `M2`, `M02` or `RET`.
+ * Names are 1 to 31 printable ASCII characters without spaces or quotes. `text` holds
+ * `len` bytes (no terminating NUL needed). Numbers (`[+-]digits[.digits][(e|E)[+-]digits]`)
+ * are correctly rounded, as `strtod` reads them, by the reader of every program line;
+ * magnitudes beyond 10^±100 are `CNCROT_STATUS_PARSE`.
+ *
+ * Returns 0 and writes the table, with `*error_line` = 0; or a negative status
+ * (`CNCROT_STATUS_PARSE` for an unknown or malformed line, `CNCROT_STATUS_NAME_TOO_LONG`,
+ * `CNCROT_STATUS_TABLE_FULL`, `CNCROT_STATUS_NULL_POINTER` for `table` or `text`) with
+ * the table untouched and the 1-based number of the
+ * offending line in `*error_line`. `error_line` may be NULL.
+ *
+ * # Safety
+ * `table` points to a writable `cncrot_head_table`, `text` to `len` readable bytes.
+ *
+ * ```c
+ * cncrot_head_table heads; int32_t line;
+ * if (cncrot_head_table_parse(&heads, text, strlen(text), &line) < 0) printf("line %d\n", line);
+ * ```
+ */
+int32_t cncrot_head_table_parse(struct cncrot_head_table *table,
+                                const char *text,
+                                size_t len,
+                                int32_t *error_line);
 
 /**
  * Reads SINUMERIK swivel data set `data_set` (1-based) from `$TC_CARR…` assignments

@@ -36,7 +36,7 @@ macro_rules! families {
             /// The longest block the dialect's reader accepts, in bytes without the line
             /// end: SINUMERIK 512 (its manual's limit for a block), Heidenhain 254
             /// \[choice\], the others 256 \[choice\].
-            pub fn max_line(self) -> usize {
+            pub const fn max_line(self) -> usize {
                 match self {
                     $(Dialect::$name => <$family>::MAX_LINE,)*
                 }

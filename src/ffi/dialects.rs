@@ -40,6 +40,25 @@ pub const CNCROT_FORM_MAX_WORDS: usize = 9;
 /// the origin's largest (at least 1). Words that would not read back this close (near a
 /// projection's singularity) are refused with `CNCROT_STATUS_OUT_OF_RANGE`.
 pub const CNCROT_READ_BACK_TOLERANCE: f64 = 1e-12;
+// Each C code is the Rust form's discriminant, and the word capacity the Rust one: a change
+// on one side fails to compile (the list of forms itself is checked in the tests below).
+const _: () = {
+    assert!(CNCROT_FORM_MAX_WORDS == MAX_VALUES);
+    assert!(CNCROT_FORM_CYCLE800 == Form::Cycle800 as i32);
+    assert!(CNCROT_FORM_SINUMERIK_ROT == Form::SinumerikRot as i32);
+    assert!(CNCROT_FORM_SINUMERIK_ROTS == Form::SinumerikRots as i32);
+    assert!(CNCROT_FORM_PLANE_SPATIAL == Form::PlaneSpatial as i32);
+    assert!(CNCROT_FORM_PLANE_EULER == Form::PlaneEuler as i32);
+    assert!(CNCROT_FORM_PLANE_VECTOR == Form::PlaneVector as i32);
+    assert!(CNCROT_FORM_PLANE_POINTS == Form::PlanePoints as i32);
+    assert!(CNCROT_FORM_G68_2 == Form::G68_2 as i32);
+    assert!(CNCROT_FORM_G158 == Form::G158 as i32);
+    assert!(CNCROT_FORM_TWINCAT_ROT == Form::TwincatRot as i32);
+    assert!(CNCROT_FORM_G268 == Form::G268 as i32);
+    assert!(CNCROT_FORM_G68_3 == Form::G68_3 as i32);
+    assert!(CNCROT_FORM_PLANE_PROJECTED == Form::PlaneProjected as i32);
+    assert!(Form::ALL.len() == 13);
+};
 const _: () = assert!(CNCROT_READ_BACK_TOLERANCE == form::READ_BACK_TOLERANCE);
 
 /// How many words a form has (the `count` that `cncrot_form_frame` and `cncrot_form_values`

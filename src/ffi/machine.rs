@@ -1,8 +1,8 @@
 //! Exports of the swivel kinematics: a caller-owned machine description, its forward and
 //! inverse computation, the choice of positions and the tool-tip follow-up.
 
-use super::cycle600::{cncrot_head_table, CHeads, CNCROT_NAME_SIZE};
 use super::frame::{read_frame, write_frame};
+use super::heads::{cncrot_head_table, CHeads, CNCROT_NAME_SIZE};
 use super::{byte, cncrot_status, guard, non_null, read_finite, write};
 use crate::dialects::carr::machine_from_carr;
 use crate::dialects::head_def::{Head, NAME_MAX};
@@ -42,6 +42,13 @@ pub const CNCROT_MACHINE_LENGTH_MAX_MM: f64 = 1e6;
 /// The finest Hirth grid (degrees) \[choice\]: `hirth_step_deg` is 0 (no grid) or at least
 /// this; a step between is `CNCROT_STATUS_BAD_ARGUMENT`.
 pub const CNCROT_MACHINE_HIRTH_STEP_MIN_DEG: f64 = 1e-6;
+
+// The C capacities and limits are the Rust ones: a change on one side fails to compile.
+const _: () = assert!(CNCROT_MACHINE_AXES == MAX_AXES);
+const _: () = assert!(CNCROT_MACHINE_SOLUTIONS_MAX == crate::kinematics::MAX_SOLUTIONS);
+const _: () = assert!(CNCROT_MACHINE_TRAVEL_TOLERANCE_DEG == crate::kinematics::TRAVEL_TOLERANCE);
+const _: () = assert!(CNCROT_MACHINE_LENGTH_MAX_MM == crate::kinematics::LENGTH_MAX);
+const _: () = assert!(CNCROT_MACHINE_HIRTH_STEP_MIN_DEG == crate::kinematics::HIRTH_STEP_MIN);
 
 /// One rotary axis of a `cncrot_machine`: a direction and a point on it (machine
 /// coordinates, every axis at its initial position).

@@ -21,6 +21,26 @@ pub const CNCROT_DIALECT_SYNTEC: i32 = 4;
 pub const CNCROT_DIALECT_TWINCAT: i32 = 5;
 /// Haas: `G268`, `G269`, `G253`; blocks of at most 256 bytes.
 pub const CNCROT_DIALECT_HAAS: i32 = 6;
+// Each C code is the Rust dialect's, and every dialect has one: a family registered
+// without its C code fails to compile here.
+const _: () = {
+    assert!(CNCROT_DIALECT_SINUMERIK == Dialect::Sinumerik as i32);
+    assert!(CNCROT_DIALECT_HEIDENHAIN == Dialect::Heidenhain as i32);
+    assert!(CNCROT_DIALECT_FANUC == Dialect::Fanuc as i32);
+    assert!(CNCROT_DIALECT_SYNTEC == Dialect::Syntec as i32);
+    assert!(CNCROT_DIALECT_TWINCAT == Dialect::Twincat as i32);
+    assert!(CNCROT_DIALECT_HAAS == Dialect::Haas as i32);
+    assert!(Dialect::ALL.len() == 6);
+};
+// The longest line written is the longest any dialect reads.
+const _: () = {
+    let mut k = 0;
+    while k < Dialect::ALL.len() {
+        assert!(Dialect::ALL[k].max_line() <= CNCROT_PROGRAM_LINE_MAX);
+        k += 1;
+    }
+};
+
 /// An option of `cncrot_program_init`: SINUMERIK frame angles in Euler mode (machine data
 /// 10600 = 2) instead of RPY.
 pub const CNCROT_PROGRAM_SINUMERIK_EULER: u32 = 1;
