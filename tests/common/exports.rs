@@ -85,6 +85,22 @@ fn head() -> cncrot_machine {
 /// Each entry calls its function on a success path, a singular or remark path where there
 /// is one, and error paths (NULL, NaN, bad codes, non-rotation).
 pub fn table() -> Vec<Call> {
+    [
+        rotations(),
+        batches(),
+        rotation_tools(),
+        frames(),
+        forms(),
+        probing(),
+        programs(),
+        machines(),
+        cycle600(),
+    ]
+    .concat()
+}
+
+/// Composition, decomposition and conversion, one call at a time.
+fn rotations() -> Vec<Call> {
     vec![
         ("cncrot_status_str", |t| {
             for s in [-100, -13, -1, 0, 1, 7] {
@@ -133,6 +149,12 @@ pub fn table() -> Vec<Call> {
             t.status(cncrot_convert(0, 57, A.as_ptr(), 1, 64, a.as_mut_ptr()));
             t.f64s(&a);
         }),
+    ]
+}
+
+/// The batch functions: rows of angles, matrices, conversions.
+fn batches() -> Vec<Call> {
+    vec![
         ("cncrot_matrices_from_angles", |t| unsafe {
             // Rows: good, NaN (fails, its matrix untouched), good; then a bad code.
             let a = [30.0, 45.0, 60.0, f64::NAN, 0.0, 0.0, 0.0, 90.0, 0.0];
@@ -217,6 +239,12 @@ pub fn table() -> Vec<Call> {
             t.f64s(&a);
             st.iter().for_each(|&s| t.status(s));
         }),
+    ]
+}
+
+/// Second solutions, closest angles, checks, nearest and additive rotations, vectors.
+fn rotation_tools() -> Vec<Call> {
+    vec![
         ("cncrot_second_solution", |t| unsafe {
             let mut a = [0.0; 3];
             t.status(cncrot_second_solution(57, A.as_ptr(), a.as_mut_ptr()));
@@ -299,6 +327,12 @@ pub fn table() -> Vec<Call> {
             ));
             t.f64s(&v);
         }),
+    ]
+}
+
+/// Frames: from angles, about a point, composed, inverted, applied.
+fn frames() -> Vec<Call> {
+    vec![
         ("cncrot_frame_from_angles", |t| unsafe {
             let mut f = [0.0; 16];
             t.status(cncrot_frame_from_angles(
@@ -371,6 +405,12 @@ pub fn table() -> Vec<Call> {
             ));
             t.f64s(&p);
         }),
+    ]
+}
+
+/// Forms: every controller command as numbers.
+fn forms() -> Vec<Call> {
+    vec![
         ("cncrot_form_word_count", |t| unsafe {
             let mut n = 0usize;
             for form in [0, 1, 3, 8, 11, 12, -1] {
@@ -435,6 +475,12 @@ pub fn table() -> Vec<Call> {
             t.status(cncrot_form_values(8, 0, IDF.as_ptr(), null_mut(), 6));
             t.f64s(&w);
         }),
+    ]
+}
+
+/// Probing: flange, plane, edge.
+fn probing() -> Vec<Call> {
+    vec![
         ("cncrot_probe_flange", |t| unsafe {
             let (mut a, mut f) = ([0.0; 3], [0.0; 16]);
             let o = [0.0; 3];
@@ -564,6 +610,12 @@ pub fn table() -> Vec<Call> {
             ));
             t.f64s(&[a]);
         }),
+    ]
+}
+
+/// Program lines: read, column, frame, init, write.
+fn programs() -> Vec<Call> {
+    vec![
         ("cncrot_program_line", |t| unsafe {
             let mut p = cncrot_program::default();
             let lines: [(i32, &[u8]); 8] = [
@@ -767,6 +819,12 @@ pub fn table() -> Vec<Call> {
             ));
             t.bytes(&out);
         }),
+    ]
+}
+
+/// Machines: from swivel data and heads, axes added, forward, inverse, choice, following.
+fn machines() -> Vec<Call> {
+    vec![
         ("cncrot_machine_from_carr", |t| unsafe {
             let mut m: cncrot_machine = std::mem::zeroed();
             t.status(cncrot_machine_from_carr(
@@ -1111,6 +1169,12 @@ pub fn table() -> Vec<Call> {
             ));
             t.f64s(&next);
         }),
+    ]
+}
+
+/// CYCLE600, its state and the HEAD_DEF table.
+fn cycle600() -> Vec<Call> {
+    vec![
         ("cncrot_cycle600_position", |t| unsafe {
             let m = head();
             let mut gud: cncrot_cycle600_gud = std::mem::zeroed();
