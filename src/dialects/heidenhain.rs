@@ -212,8 +212,7 @@ fn options(c: &mut Cursor) -> Result<(), LineError> {
     }
 }
 
-/// The frame of a `PLANE` form's words (the forms' own functions, as `form_frame` and the
-/// reader compute it).
+/// The frame of a `PLANE` form's words: what the reader and `form_frame` both compute.
 fn plane_frame(form: Form, w: &[f64]) -> Result<Frame, Error> {
     let rot = Frame::from_rotation;
     Ok(match form {

@@ -1,11 +1,17 @@
 //! SINUMERIK (Siemens): the swivel cycle CYCLE800 in its modes, the frame commands
 //! `ROT`/`AROT`/`CROT` in RPY and Euler mode with the control's read-back, `ROTS`
-//! (projection angles), and the tool orientation of `ORIRPY`/`ORIEULER`/`A3 B3 C3`.
+//! (projection angles), and the tool orientation of `ORIRPY`/`ORIEULER`/`A3 B3 C3`; beside
+//! it the paper's cycle CYCLE600 ([`cycle600`]), the `HEAD_DEF` table of accessories
+//! ([`head_def`]) and the swivel data `$TC_CARR` ([`carr`]).
 //!
 //! Confidence of each behaviour, as the project's documentation lists it: **\[doc\]** stated by
 //! the vendor's manual, **\[3rd\]** how widely used post-processors treat it, **\[derived\]**
 //! follows from the manual's wording by geometry, **\[choice\]** ours where nothing public
 //! decides. A frame's rotation `F` has the new axes as its columns (`p_old = t + F·p_new`).
+
+pub mod carr;
+pub mod cycle600;
+pub mod head_def;
 
 use crate::math::{atan2_deg, sin_cos_deg, sqrt};
 use crate::{
@@ -529,7 +535,7 @@ fn cycle600_line(m: &Modal, c: &mut Cursor, column: usize) -> Result<Modal, Line
     let v3 = |k: usize| -> Result<[f64; 3], LineError> {
         Ok([args.real(k)?, args.real(k + 1)?, args.real(k + 2)?])
     };
-    let call = super::cycle600::Call {
+    let call = cycle600::Call {
         inexin: args.int(0)?,
         mihead: args.name(1)?,
         sw_rec: args.int(2)?,
@@ -547,7 +553,7 @@ fn cycle600_line(m: &Modal, c: &mut Cursor, column: usize) -> Result<Modal, Line
     // stands, so that a bad one is reported at its own column.
     let checks: [(usize, Result<(), Error>); 9] = [
         (0, crate::Kind::from_flag(call.inexin).map(drop)),
-        (1, super::cycle600::check_name(call.mihead)),
+        (1, cycle600::check_name(call.mihead)),
         (2, crate::Kind::from_flag(call.sw_rec).map(drop)),
         (3, crate::AxisCode::new(call.bin_in).map(drop)),
         (13, crate::Kind::from_flag(call.inexout).map(drop)),
@@ -562,11 +568,11 @@ fn cycle600_line(m: &Modal, c: &mut Cursor, column: usize) -> Result<Modal, Line
     for (k, check) in checks {
         check.map_err(at(args.column(k).max(column)))?;
     }
-    let state = super::cycle600::State {
+    let state = cycle600::State {
         frame: m.frame,
         ..Default::default()
     };
-    let next = super::cycle600::cycle600_in(&state, None, &call).map_err(at(column))?;
+    let next = cycle600::cycle600_in(&state, None, &call).map_err(at(column))?;
     Ok(m.with_frame(next.frame))
 }
 
