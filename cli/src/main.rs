@@ -105,7 +105,7 @@ enum Command {
     },
     /// Probed points to the least-squares plane, its flatness, and the controllers' lines.
     #[command(
-        after_help = "Points: 'X,Y,Z' arguments, or --points FILE with one point per \
+        after_help = "Points: 'X,Y,Z' arguments, or --points-file FILE with one point per \
                             line (numbers separated by commas, semicolons or spaces; lines \
                             starting with # and a first line that is not numbers are skipped).\n\n\
                             Example (four corners of a plane tilted 5.71 degrees about Y):\n  \
@@ -114,8 +114,8 @@ enum Command {
     Probe {
         /// The points, each as X,Y,Z.
         points: Vec<String>,
-        /// Read the points from FILE ('-': standard input).
-        #[arg(long, value_name = "FILE")]
+        /// Read the points from FILE ('-': standard input); `--points FILE` is the same.
+        #[arg(long, visible_alias = "points", value_name = "FILE")]
         points_file: Option<String>,
         /// What to write (repeatable): DIALECT or DIALECT:FORM; default every dialect.
         #[arg(long, value_name = "DIALECT[:FORM]")]

@@ -422,6 +422,15 @@ fn probe_plane_flatness_and_lines() {
         "-1 -1 0\n1 -1 0\n1 1 0\n",
     );
     assert_eq!(r.code, 0, "{}", r.stderr);
+    // The help names the option as it is spelt; `--points FILE`, which it once showed, works.
+    let help = ok(&["help", "probe"]);
+    assert!(help.contains("--points-file FILE"), "{help}");
+    assert!(!help.contains("or --points FILE"), "{help}");
+    let r = cncrot(
+        &["probe", "--points", "-", "--to", "fanuc"],
+        "0 0 0\n1 0 0\n0 1 0\n",
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
 }
 
 #[test]
