@@ -55,6 +55,8 @@ bash c_tests/windows.sh smoke
 echo "== no system calls on the hot path"
 bash benches/syscalls.sh
 bash benches/syscalls.sh pure-rust-math
+echo "== text benchmark against glibc (figures to read, not a check; docs/measurements.md#text)"
+bash benches/text.sh
 echo "== fuzzing (20 s per target)"
 bash fuzz/run.sh 20
 if [ -f matlab/run_tests.sh ]; then

@@ -36,13 +36,15 @@ fn split(v: f64) -> (u64, i32) {
     ((bits & ((1 << 52) - 1)) | (1 << 52), field - 1075)
 }
 
+/// The powers of ten that are exact doubles.
+const POWERS: [f64; 23] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+    1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+];
+
 /// 10^e as a double for |e| ≤ 200 (exact for 0 ≤ e ≤ 22, else a few ulps off: only a
 /// starting point).
 fn pow10_approx(e: i32) -> f64 {
-    const POWERS: [f64; 23] = [
-        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
-        1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
-    ];
     let mut n = e.unsigned_abs().min(300);
     let mut p = 1.0;
     while n > 22 {
@@ -75,6 +77,45 @@ fn cmp_exact(n: &Big<READ>, e: i32, m: u64, k: i32) -> Result<Ordering, Error> {
     Ok(l.cmp(&r))
 }
 
+/// 10^0 … 10^19: every power of ten below 2^64.
+const POW10: [u64; 20] = {
+    let mut t = [1u64; 20];
+    let mut i = 1;
+    while i < 20 {
+        t[i] = t[i - 1] * 10;
+        i += 1;
+    }
+    t
+};
+
+/// 10^n for n ≤ 19 (`None` beyond).
+fn pow10(n: u32) -> Option<u64> {
+    POW10.get(n as usize).copied()
+}
+
+/// `w · 10^e` correctly rounded, when `w` has at most 19 digits and `-19 ≤ e ≤ 19`, with
+/// nothing but exact 128-bit integer arithmetic and one correctly rounded conversion:
+/// for `e ≥ 0` the product is exact in 128 bits; for `e < 0` the quotient of `w` shifted to
+/// the top of 128 bits by `10^-e` has at least 64 bits, so its remainder folded into the
+/// last bit (a sticky bit, far below the rounding position) makes the conversion round as
+/// the exact quotient would, and the scaling back by a power of two is exact.
+fn parse_fast(w: u64, e: i32) -> Option<f64> {
+    if w == 0 {
+        return Some(0.0);
+    }
+    let p = u128::from(pow10(e.unsigned_abs())?);
+    if e >= 0 {
+        return Some((u128::from(w) * p) as f64);
+    }
+    let lz = w.leading_zeros();
+    let top = u128::from(w) << (64 + lz);
+    let q = top.checked_div(p)?;
+    let sticky = u128::from(top.checked_rem(p)? != 0);
+    // 2^-(64 + lz), a normal double (64 + lz ≤ 127).
+    let scale = f64::from_bits(u64::from(1023 - 64 - lz) << 52);
+    Some((q | sticky) as f64 * scale)
+}
+
 /// The value of `digits` (ASCII digits with at most one `.`, at least one digit) times
 /// `10^exp10`, correctly rounded; `negative` gives the sign (never -0).
 ///
@@ -82,9 +123,13 @@ fn cmp_exact(n: &Big<READ>, e: i32, m: u64, k: i32) -> Result<Ordering, Error> {
 /// digits ([`Error::Parse`]), a non-zero magnitude outside `10^±MAX_EXP10`
 /// ([`Error::OutOfRange`]).
 pub fn parse(negative: bool, digits: &[u8], exp10: i32) -> Result<f64, Error> {
-    let mut n = Big::<READ>::from_u64(0);
-    let (mut sig, mut zeros, mut frac, mut point, mut any) = (0usize, 0u32, 0i32, false, false);
-    // The first 19 significant digits, for the starting approximation.
+    // Never -0: a zero is a zero whatever its sign.
+    let sign = |v: f64| if negative && v != 0.0 { -v } else { v };
+    if let Some(v) = parse_short(digits, exp10) {
+        return Ok(sign(v));
+    }
+    let (mut sig, mut zeros, mut frac, mut point, mut any) = (0usize, 0usize, 0i32, false, false);
+    // The first 19 significant digits: all of them in nearly every program.
     let (mut w, mut used) = (0u64, 0usize);
     for &b in digits {
         match b {
@@ -92,26 +137,23 @@ pub fn parse(negative: bool, digits: &[u8], exp10: i32) -> Result<f64, Error> {
             b'0'..=b'9' => {
                 any = true;
                 frac = frac.saturating_add(i32::from(point));
-                let digit = u32::from(b - b'0');
-                if digit == 0 {
+                if b == b'0' {
                     // Held back: trailing zeros only scale the value.
                     if sig > 0 {
                         zeros = zeros.saturating_add(1);
                     }
                     continue;
                 }
-                for _ in 0..=zeros {
-                    sig += 1;
-                    if sig > MAX_DIGITS {
-                        return Err(Error::Parse);
-                    }
-                    n.mul_small(10)?;
-                }
-                n.add_small(digit)?;
-                let pending = zeros as usize + 1;
-                if used == sig - pending && used + pending <= 19 {
-                    w = w * 10u64.pow(pending as u32 - 1) * 10 + u64::from(digit);
+                let pending = zeros.saturating_add(1);
+                if used == sig && sig + pending <= 19 {
+                    // w < 10^sig, so w · 10^pending < 10^19 < 2^64.
+                    let scale = POW10.get(pending).copied().unwrap_or(0);
+                    w = w.wrapping_mul(scale).wrapping_add(u64::from(b - b'0'));
                     used += pending;
+                }
+                sig = sig.saturating_add(pending);
+                if sig > MAX_DIGITS {
+                    return Err(Error::Parse);
                 }
                 zeros = 0;
             }
@@ -124,19 +166,92 @@ pub fn parse(negative: bool, digits: &[u8], exp10: i32) -> Result<f64, Error> {
     if sig == 0 {
         return Ok(0.0);
     }
-    // value = n · 10^e; its decimal magnitude is sig + e.
-    let e = i64::from(exp10) - i64::from(frac) + i64::from(zeros);
+    // value = (all significant digits) · 10^e; its decimal magnitude is sig + e.
+    let e = i64::from(exp10) - i64::from(frac) + zeros as i64;
     let magnitude = e + sig as i64;
     if magnitude > i64::from(MAX_EXP10) || magnitude <= -i64::from(MAX_EXP10) {
         return Err(Error::OutOfRange);
     }
     let e = e as i32;
-    // Clinger's fast path: every digit in w ≤ 2^53 and 10^|e| exact, so one correctly
-    // rounded operation is the answer (most numbers in programs: "30.5", "-20.125").
-    if used == sig && w <= 1 << 53 && (-22..=22).contains(&e) {
-        let p = pow10_approx(e.abs());
-        let v = if e >= 0 { w as f64 * p } else { w as f64 / p };
-        return Ok(if negative { -v } else { v });
+    if used == sig {
+        if let Some(v) = parse_small(w, e) {
+            return Ok(sign(v));
+        }
+    }
+    parse_exact(digits, sig, e, w, used).map(sign)
+}
+
+/// [`parse`] of at most 19 digits scaled by at most 10^±80 (every number of a program in
+/// practice): the digits as one 64-bit integer, read in one pass, no range to check.
+#[inline(always)]
+fn parse_short(digits: &[u8], exp10: i32) -> Option<f64> {
+    if digits.len() > 20 {
+        return None;
+    }
+    let (mut w, mut n, mut frac, mut point) = (0u64, 0u32, 0i32, false);
+    for &b in digits {
+        let d = b.wrapping_sub(b'0');
+        if d < 10 {
+            w = w.wrapping_mul(10).wrapping_add(u64::from(d));
+            n += 1;
+            frac += i32::from(point);
+        } else if b == b'.' && !point {
+            point = true;
+        } else {
+            return None;
+        }
+    }
+    let e = exp10.checked_sub(frac)?;
+    // 1 to 19 digits: the magnitude stays within 10^±100.
+    if n == 0 || n > 19 || !(-80..=80).contains(&e) {
+        return None;
+    }
+    if w == 0 {
+        return Some(0.0);
+    }
+    parse_small(w, e)
+}
+
+/// `w · 10^e` for `w < 10^19`: Clinger's case first (`w` and `10^|e|` exact doubles, one
+/// correctly rounded operation: "30.5", "-20.125", most numbers people type), then the
+/// 128-bit one.
+#[inline(always)]
+fn parse_small(w: u64, e: i32) -> Option<f64> {
+    if w <= 1 << 53 {
+        if let Some(&p) = POWERS.get(e.unsigned_abs() as usize) {
+            return Some(if e >= 0 { w as f64 * p } else { w as f64 / p });
+        }
+    }
+    parse_fast(w, e)
+}
+
+/// The general case of [`parse`] (more than 19 digits, or a scale beyond 10^±19): a
+/// starting approximation moved one ulp at a time by exact comparisons with the
+/// midpoints to its neighbours.
+#[inline(never)]
+fn parse_exact(digits: &[u8], sig: usize, e: i32, w: u64, used: usize) -> Result<f64, Error> {
+    // The significant digits as one integer, nine at a time.
+    let mut n = Big::<READ>::from_u64(0);
+    let (mut taken, mut chunk, mut len) = (0usize, 0u32, 0usize);
+    for &b in digits {
+        if taken == sig {
+            break;
+        }
+        if !b.is_ascii_digit() || (taken == 0 && b == b'0') {
+            continue;
+        }
+        chunk = chunk.wrapping_mul(10).wrapping_add(u32::from(b - b'0'));
+        taken += 1;
+        len += 1;
+        if len == 9 {
+            n.mul_small(1_000_000_000)?;
+            n.add_small(chunk)?;
+            (chunk, len) = (0, 0);
+        }
+    }
+    if len > 0 {
+        n.mul_small(POW10.get(len).copied().unwrap_or(1) as u32)?;
+        n.add_small(chunk)?;
     }
     let approx = w as f64 * pow10_approx(e + (sig - used) as i32);
     let mut c = approx;
@@ -156,11 +271,11 @@ pub fn parse(negative: bool, digits: &[u8], exp10: i32) -> Result<f64, Error> {
             (Ordering::Equal, _) if odd => f64::from_bits(c.to_bits() + 1),
             (_, Ordering::Less) => f64::from_bits(c.to_bits() - 1),
             (_, Ordering::Equal) if odd => f64::from_bits(c.to_bits() - 1),
-            _ => return Ok(if negative { -c } else { c }),
+            _ => return Ok(c),
         };
         // A tie moved to the even neighbour is final.
         if up == Ordering::Equal || down == Ordering::Equal {
-            return Ok(if negative { -next } else { next });
+            return Ok(next);
         }
         c = next;
     }
@@ -375,6 +490,142 @@ fn carry(x: &mut Digits) {
     }
 }
 
+/// The digits of `q` (trailing zeros dropped), the point after the last of them.
+fn digits_of(q: u128) -> Digits {
+    let mut out = Digits {
+        d: [0; 128],
+        n: 0,
+        point: 0,
+    };
+    // Above 2^64: the last 19 digits apart, so that every division is a 64-bit one.
+    const E19: u128 = 10_000_000_000_000_000_000;
+    let (mut high, low, low_digits) = if q >> 64 == 0 {
+        (q as u64, 0u64, 0u32)
+    } else {
+        ((q / E19) as u64, (q % E19) as u64, 19)
+    };
+    let mut rev = [0u8; 20];
+    let mut n = 0;
+    while high > 0 {
+        if let Some(slot) = rev.get_mut(n) {
+            *slot = (high % 10) as u8;
+        }
+        n += 1;
+        high /= 10;
+    }
+    for i in (0..n).rev() {
+        out.push(rev.get(i).copied().unwrap_or(0));
+    }
+    let (mut low, mut tail) = (low, [0u8; 19]);
+    for i in (0..low_digits as usize).rev() {
+        if let Some(slot) = tail.get_mut(i) {
+            *slot = (low % 10) as u8;
+        }
+        low /= 10;
+    }
+    for &digit in tail.iter().take(low_digits as usize) {
+        out.push(digit);
+    }
+    out.point = out.n as i32;
+    while out.n > 0 && out.get(out.n - 1) == 0 {
+        out.n -= 1;
+    }
+    out
+}
+
+/// `mant · 2^exp · 10^decimals` rounded to an integer, ties to even, when it fits the
+/// exact 128-bit arithmetic (`None` otherwise).
+fn fixed_fast(mant: u64, exp: i32, decimals: u32) -> Option<Digits> {
+    // mant · 10^17 < 2^110.
+    let n = u128::from(mant) * u128::from(pow10(decimals)?);
+    let q = if exp >= 0 {
+        if exp > 17 {
+            return None;
+        }
+        n << exp
+    } else {
+        let s = exp.unsigned_abs();
+        if s > 110 {
+            // Below 2^110 / 2^111: less than a half, rounds to zero.
+            0
+        } else {
+            let (quo, rem, half) = (n >> s, n & ((1u128 << s) - 1), 1u128 << (s - 1));
+            quo + u128::from(rem > half || (rem == half && quo & 1 == 1))
+        }
+    };
+    let mut out = digits_of(q);
+    out.point -= decimals as i32;
+    Some(out)
+}
+
+/// The shortest digits that read back as `v` (positive, normal), when `v · 10^k` fits the
+/// exact 128-bit arithmetic for the scales it needs (about 1e-5 ≤ v < 2^53; `None`
+/// otherwise), the same digits as [`shortest`] gives.
+///
+/// Every decimal of at most 15 significant digits lies more than an ulp from the next (for
+/// `10^E ≤ v < 10^(E+1)` their spacing 10^(E-14) exceeds 2^-52 · 10^(E+1)), so at most one
+/// of them reads back as `v`, and if one does it is `v` rounded to 15 digits (then shorter
+/// once its trailing zeros go). Otherwise the answer has 16 or 17 digits and is the closest
+/// such decimal that reads back: `v` rounded to that many digits, or, at the bottom of a
+/// binade where the interval that reads back is narrower below `v`, the decimal one unit
+/// above. Seventeen digits always read back.
+fn shortest_fast(v: f64) -> Option<Digits> {
+    let (mant, exp) = split(v);
+    if !(-120..0).contains(&exp) {
+        return None;
+    }
+    let s = exp.unsigned_abs();
+    let even = mant & 1 == 0;
+    let bottom = mant == 1 << 52;
+    // ⌊log10 v⌋ is ⌊e2 · log10 2⌋ or one more (e2 = ⌊log2 v⌋); 78913 / 2^18 is log10 2 to
+    // within what these exponents need.
+    let e2 = exp + 52;
+    let mut e10 = (e2 * 78913) >> 18;
+    // v · 10^k exactly as n / 2^s, for 0 ≤ k ≤ 21 (n < 2^53 · 10^21 < 2^123).
+    let scaled = |k: i32| -> Option<(u128, u128)> {
+        if !(0..=21).contains(&k) {
+            return None;
+        }
+        let k = k.unsigned_abs();
+        let p = if k > 19 {
+            u128::from(pow10(k - 19)?) * u128::from(pow10(19)?)
+        } else {
+            u128::from(pow10(k)?)
+        };
+        Some((u128::from(mant) * p, p))
+    };
+    if scaled(16 - e10)?.0 >> s >= u128::from(pow10(17)?) {
+        e10 += 1;
+    }
+    let half_ulp_ok = |twice: u128, ulp: u128| twice < ulp || (twice == ulp && even);
+    for digits in 15..=17 {
+        let k = digits - 1 - e10;
+        // The ulp of v is 10^k in units of 2^-s.
+        let (n, ulp) = scaled(k)?;
+        let (quo, rem, one) = (n >> s, n & ((1u128 << s) - 1), 1u128 << s);
+        let half = one >> 1;
+        let up = rem > half || (rem == half && quo & 1 == 1);
+        let found = if up {
+            half_ulp_ok(2 * (one - rem), ulp).then_some(quo + 1)
+        } else if bottom {
+            // Below v the interval is half as wide; one unit up may be inside instead.
+            if half_ulp_ok(4 * rem, ulp) {
+                Some(quo)
+            } else {
+                half_ulp_ok(2 * (one - rem), ulp).then_some(quo + 1)
+            }
+        } else {
+            half_ulp_ok(2 * rem, ulp).then_some(quo)
+        };
+        if let Some(r) = found {
+            let mut out = digits_of(r);
+            out.point -= k;
+            return Some(out);
+        }
+    }
+    None
+}
+
 /// `v` (positive, normal) rounded to `decimals` decimals, ties to even.
 #[inline(never)]
 fn fixed(v: f64, decimals: u32) -> Result<Digits, Error> {
@@ -462,9 +713,17 @@ pub fn write(out: &mut Out, v: f64, decimals: i32, style: Style) -> Result<(), E
     let digits = if a == 0.0 || (decimals >= 0 && a < 1e-100) {
         None
     } else if decimals < 0 {
-        Some(shortest(a)?)
+        Some(match shortest_fast(a) {
+            Some(digits) => digits,
+            None => shortest(a)?,
+        })
     } else {
-        Some(fixed(a, decimals.unsigned_abs())?).filter(|d| d.n > 0)
+        let (mant, exp) = split(a);
+        let digits = match fixed_fast(mant, exp, decimals.unsigned_abs()) {
+            Some(digits) => digits,
+            None => fixed(a, decimals.unsigned_abs())?,
+        };
+        Some(digits).filter(|d| d.n > 0)
     };
     let Some(x) = digits else {
         if style.plus {
@@ -636,6 +895,108 @@ mod tests {
             String::from_utf8(int.to_vec()).unwrap(),
             String::from_utf8(frac.to_vec()).unwrap()
         )
+    }
+
+    fn same(a: &Digits, b: &Digits) -> bool {
+        a.n == b.n && a.point == b.point && a.d[..a.n] == b.d[..b.n]
+    }
+
+    /// Doubles that stress the fast writers: random bits in and around their range, short
+    /// decimals, the bottoms of binades (where the interval that reads back is lopsided),
+    /// the neighbours of powers of ten, and decimals halfway between 15-, 16- and
+    /// 17-digit neighbours.
+    fn hard_doubles(rng: &mut Rng) -> Vec<f64> {
+        let mut v = Vec::new();
+        for _ in 0..200_000 {
+            let e = (rng.next() % 80) as i64 - 60;
+            let bits = (((1023 + e) as u64) << 52) | (rng.next() >> 12);
+            v.push(f64::from_bits(bits));
+            v.push((rng.next() % 100_000_000) as f64 / 10_000.0);
+            v.push((rng.next() % 10_000_000_000_000_000) as f64 / 1e12);
+            // Integers and quarters of 16 and 17 digits: exact ties between 16- and
+            // 17-digit decimals (…649.25 lies halfway between …649.2 and …649.3).
+            v.push((rng.next() >> 11) as f64 / f64::from(1 << (rng.next() % 4)));
+        }
+        for e in -80..60 {
+            let p = 2f64.powi(e);
+            v.extend([
+                p,
+                f64::from_bits(p.to_bits() + 1),
+                f64::from_bits(p.to_bits() - 1),
+            ]);
+        }
+        for e in -20..=22 {
+            let p: f64 = format!("1e{e}").parse().unwrap();
+            for d in -3i64..=3 {
+                v.push(f64::from_bits((p.to_bits() as i64 + d) as u64));
+            }
+        }
+        for _ in 0..100_000 {
+            // n + 1/2 units in the 16th or 17th digit: exact ties where n · 2 + 1 fits.
+            let digits = 15 + (rng.next() % 3) as i32;
+            let n = 10u64.pow(digits as u32 - 1) + rng.next() % (9 * 10u64.pow(digits as u32 - 1));
+            let scale = (rng.next() % 20) as i32;
+            v.push((2 * n + 1) as f64 / 2f64.powi(1) / 10f64.powi(scale));
+        }
+        v
+    }
+
+    /// The fast writers give exactly the digits of the exact ones wherever they answer,
+    /// and answer for nearly every angle and coordinate.
+    #[test]
+    fn fast_writers_are_the_exact_ones() {
+        let mut rng = Rng(0xD1B5_4A32_D192_ED03);
+        let (mut fast, mut all) = (0usize, 0usize);
+        for v in hard_doubles(&mut rng) {
+            if !(1e-99..1e99).contains(&v) {
+                continue;
+            }
+            all += 1;
+            let exact = shortest(v).unwrap();
+            if let Some(quick) = shortest_fast(v) {
+                fast += 1;
+                assert!(same(&quick, &exact), "shortest {v:e}");
+            }
+            let d = (rng.next() % 18) as u32;
+            let (mant, exp) = split(v);
+            if let Some(quick) = fixed_fast(mant, exp, d) {
+                assert!(same(&quick, &fixed(v, d).unwrap()), "fixed {v:e} {d}");
+            }
+        }
+        assert!(fast * 10 > all * 7, "fast path answered {fast} of {all}");
+        // Angles and millimetres: always the fast path.
+        for i in 0..100_000 {
+            let v = (rng.next() % 720_000_000) as f64 / 1e6 + f64::from(i % 7) * 1e-9 + 1e-4;
+            assert!(shortest_fast(v).is_some(), "{v}");
+        }
+    }
+
+    /// The 128-bit reader gives the exact reader's bits for every number it answers.
+    #[test]
+    fn fast_reader_is_the_exact_one() {
+        let mut rng = Rng(0x6A09_E667_F3BC_C909);
+        for _ in 0..300_000 {
+            let digits = 1 + (rng.next() % 19) as u32;
+            let w = rng.next() % 10u64.pow(digits) + 1;
+            let e = (rng.next() % 45) as i32 - 25;
+            let text = w.to_string();
+            let exact = parse_exact(text.as_bytes(), text.len(), e, w, text.len());
+            if let Some(quick) = parse_fast(w, e) {
+                assert_eq!(Ok(quick.to_bits()), exact.map(f64::to_bits), "{w}e{e}");
+            }
+            let theirs: f64 = format!("{w}e{e}").parse().unwrap();
+            assert_eq!(exact.map(f64::to_bits), Ok(theirs.to_bits()), "{w}e{e}");
+        }
+        // Ties: midpoints between neighbouring doubles with at most 19 digits.
+        for v in [1.0f64, 1.5, 1e10, 123.25, 2f64.powi(60)] {
+            let mid = exact_midpoint(v);
+            let digits: String = mid.chars().filter(char::is_ascii_digit).collect();
+            let digits = digits.trim_start_matches('0').trim_end_matches('0');
+            if digits.len() <= 19 {
+                let theirs: f64 = mid.parse().unwrap();
+                assert_eq!(read(&mid).unwrap().to_bits(), theirs.to_bits(), "{mid}");
+            }
+        }
     }
 
     #[test]

@@ -95,9 +95,16 @@ impl<'a> Cursor<'a> {
     }
 
     pub fn spaces(&mut self) {
-        while matches!(self.peek(), Some(b' ' | b'\t')) {
-            self.bump();
-        }
+        self.pos += self
+            .rest()
+            .iter()
+            .take_while(|&&b| b == b' ' || b == b'\t')
+            .count();
+    }
+
+    /// The text from here on.
+    fn rest(&self) -> &'a [u8] {
+        self.text.get(self.pos..).unwrap_or(&[])
     }
 
     /// Consumes `kw` (case-insensitive) when it stands here as a whole name.
@@ -226,16 +233,17 @@ impl<'a> Cursor<'a> {
             }
             _ => false,
         };
-        let digits_start = self.pos;
         let mut point = false;
         // A second point ends the digits, so that it is reported where it stands.
-        while let Some(b @ (b'0'..=b'9' | b'.')) = self.peek() {
-            if b == b'.' && core::mem::replace(&mut point, true) {
-                break;
-            }
-            self.bump();
-        }
-        let digits = self.text.get(digits_start..self.pos).unwrap_or(&[]);
+        let rest = self.rest();
+        let len = rest
+            .iter()
+            .take_while(|&&b| {
+                b.is_ascii_digit() || (b == b'.' && !core::mem::replace(&mut point, true))
+            })
+            .count();
+        let digits = rest.get(..len).unwrap_or(&[]);
+        self.pos += len;
         if digits.is_empty() {
             // `R1`, `Q120`, `#100`, `$P_…`, `_name`, `(`, `[`: not a number the block can
             // be executed with here.
@@ -363,8 +371,10 @@ pub fn address_words<const N: usize>(
     loop {
         c.spaces();
         // An unclosed `(` comment is malformed text, not an unknown word.
-        let unclosed = c.text.get(c.pos..).is_some_and(|t| !t.contains(&b')'));
-        if comments.1 && c.peek() == Some(b'(') && unclosed {
+        if comments.1
+            && c.peek() == Some(b'(')
+            && c.text.get(c.pos..).is_some_and(|t| !t.contains(&b')'))
+        {
             return Err(c.error(Error::Parse));
         }
         if c.rest_is_comment(comments.0, comments.1) {
