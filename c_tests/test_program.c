@@ -193,6 +193,54 @@ static void every_pair_converts(void) {
   CHECK(pairs == 40 * NFORMS * NFORMS, "%d pairs", pairs);
 }
 
+/* Every block of a program: blocks that do not concern the frame are passed over, blocks
+ * that change it in ways the library does not follow say so; both leave the state
+ * byte-identical and are successes. */
+static void whole_programs(void) {
+  static const struct {
+    int32_t dialect;
+    const char *line;
+    int32_t status;
+  } cases[] = {
+      {CNCROT_DIALECT_HEIDENHAIN, "1 TOOL CALL 5 Z S8000", CNCROT_STATUS_PASSED},
+      {CNCROT_DIALECT_HEIDENHAIN, "2 L X+10 Y+0 FMAX M3", CNCROT_STATUS_PASSED},
+      {CNCROT_DIALECT_HEIDENHAIN, "3 CYCL DEF 7.0 DATUM SHIFT", CNCROT_STATUS_NOT_FOLLOWED},
+      {CNCROT_DIALECT_HEIDENHAIN, "", CNCROT_STATUS_PASSED},
+      {CNCROT_DIALECT_FANUC, "N10 G0 G90 X0 Y0 M3 S5000", CNCROT_STATUS_PASSED},
+      {CNCROT_DIALECT_FANUC, "N20 G54.1 P2", CNCROT_STATUS_NOT_FOLLOWED},
+      {CNCROT_DIALECT_FANUC, "#5221=10.", CNCROT_STATUS_NOT_FOLLOWED},
+      {CNCROT_DIALECT_SINUMERIK, "N10 T=\"MILL\" D1 M6", CNCROT_STATUS_PASSED},
+      {CNCROT_DIALECT_SINUMERIK, "N20 G55", CNCROT_STATUS_NOT_FOLLOWED},
+      {CNCROT_DIALECT_SINUMERIK, "; comment", CNCROT_STATUS_PASSED},
+      {CNCROT_DIALECT_TWINCAT, "N10 G01 X10 F100", CNCROT_STATUS_PASSED},
+      {CNCROT_DIALECT_HAAS, "G154 P3", CNCROT_STATUS_NOT_FOLLOWED},
+      {CNCROT_DIALECT_SYNTEC, "G51.1 X0", CNCROT_STATUS_NOT_FOLLOWED},
+  };
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    cncrot_program p, before;
+    memset(&p, 0, sizeof p);
+    const char *start = cases[k].dialect == CNCROT_DIALECT_HEIDENHAIN ? "PLANE SPATIAL SPA+0 SPB+30 SPC+0"
+                        : cases[k].dialect == CNCROT_DIALECT_SINUMERIK ? "ROT Z30"
+                        : cases[k].dialect == CNCROT_DIALECT_TWINCAT   ? "ROT Z30"
+                        : cases[k].dialect == CNCROT_DIALECT_HAAS      ? "G268 K30 Q123"
+                                                                       : "G68.2 K30";
+    CHECK_STATUS(cncrot_program_line(&p, cases[k].dialect, start, strlen(start)), CNCROT_STATUS_OK);
+    before = p;
+    size_t column = 999;
+    CHECK_STATUS(cncrot_program_line(&p, cases[k].dialect, cases[k].line, strlen(cases[k].line)), cases[k].status);
+    CHECK(memcmp(&p, &before, sizeof p) == 0, "%s changed the state", cases[k].line);
+    CHECK_STATUS(cncrot_program_column(&p, cases[k].dialect, cases[k].line, strlen(cases[k].line), &column),
+                 cases[k].status);
+    CHECK(column == 0, "%s: column %zu", cases[k].line, column);
+  }
+  /* A passed block on a fresh state leaves it all zero: not even the dialect is recorded. */
+  cncrot_program fresh, zero;
+  memset(&fresh, 0, sizeof fresh);
+  memset(&zero, 0, sizeof zero);
+  CHECK_STATUS(cncrot_program_line(&fresh, CNCROT_DIALECT_FANUC, "G1 X10", 6), CNCROT_STATUS_PASSED);
+  CHECK(memcmp(&fresh, &zero, sizeof fresh) == 0, "a passed block wrote the state");
+}
+
 /* Refused lines: the status, the column of the first bad character, the state untouched. */
 static void refusals(void) {
   static const struct {
@@ -220,7 +268,7 @@ static void refusals(void) {
       {CNCROT_DIALECT_SYNTEC, "G158 X0 P157", CNCROT_STATUS_BAD_ARGUMENT, 10},
       {CNCROT_DIALECT_SYNTEC, "G158 P10122 X0", CNCROT_STATUS_BAD_SEQUENCE, 7},
       {CNCROT_DIALECT_FANUC, "G68.2 X1 (comment", CNCROT_STATUS_PARSE, 10},
-      {CNCROT_DIALECT_FANUC, "N5 (no end", CNCROT_STATUS_PARSE, 4},
+      {CNCROT_DIALECT_FANUC, "N5 G69 (no end", CNCROT_STATUS_PARSE, 8},
       {CNCROT_DIALECT_SINUMERIK, "CYCLE600(2,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1,39)", CNCROT_STATUS_BAD_FLAG, 10},
       {CNCROT_DIALECT_SINUMERIK, "CYCLE600(0,\"UFK600\",1,58,0,0,0,30,45,60,0,0,0,1,39)", CNCROT_STATUS_BAD_SEQUENCE, 23},
       {CNCROT_DIALECT_SINUMERIK, "CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1, 7)", CNCROT_STATUS_INCOMPLETE_SEQUENCE, 50},
@@ -419,6 +467,7 @@ int main(void) {
   vendors();
   readback_and_rules();
   every_pair_converts();
+  whole_programs();
   refusals();
   writer_buffers();
   sealed_states();

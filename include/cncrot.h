@@ -257,6 +257,18 @@ enum cncrot_status
    */
   CNCROT_STATUS_SNAPPED = 3,
   /**
+   * Success; the program block does not concern the frame (motion, tool, M and S words,
+   * program structure, a comment, a blank line): the state is unchanged.
+   */
+  CNCROT_STATUS_PASSED = 4,
+  /**
+   * Success; the program block changes the frame in a way the library does not follow
+   * (a work-offset or preset selection, a table or system-variable write, mirroring,
+   * scaling, a tilt that needs the machine): the state is unchanged and may differ from
+   * the control's.
+   */
+  CNCROT_STATUS_NOT_FOLLOWED = 5,
+  /**
    * A pointer argument is NULL.
    */
   CNCROT_STATUS_NULL_POINTER = -1,
@@ -1412,10 +1424,20 @@ int32_t cncrot_program_init(struct cncrot_program *program, uint32_t options);
  * Applies one block of a part program (`len` bytes, no NUL needed; a trailing line end is
  * ignored) in `dialect` (`CNCROT_DIALECT_*`) to `*program`, as that controller does: a tilt
  * replaces or adds to the active frame, a cancel (`ROT`, `CROT`, `CYCLE800()`,
- * `PLANE RESET`, `G69`, `G269`, `G158`) restores none, a blank, comment-only or
- * block-number-only line changes nothing. A program speaks one dialect.
+ * `PLANE RESET`, `G69`, `G269`, `G158`) restores none. Any other block of a program in
+ * that dialect is success with a remark and `*program` byte-identical:
+ * `CNCROT_STATUS_PASSED` when it does not concern the frame (motion, tool call, M and S
+ * words, program begin and end, labels and calls, parameter assignments, comments, blank
+ * and block-number-only lines), `CNCROT_STATUS_NOT_FOLLOWED` when it changes the frame in
+ * a way the library does not follow (work-offset or preset selections such as `G54`,
+ * `G54.1 P`, `G154 P`, `G505`, `CYCL DEF 247`, `PRESET SELECT`; `G92`; writes to offset
+ * tables and frame variables such as `G10 L2`, `#5221=`, `$P_UIFR[1]=`, `FN 17`; datum
+ * shifts not yet followed such as `G52`, `CYCL DEF 7`, `TRANS DATUM`; mirroring, scaling
+ * and plane rotations such as `MIRROR`, `G51.1`, `CYCL DEF 10`, `G68`; a tilt through the
+ * machine's axes such as `CYCL DEF 19`, `TOROT`). A program speaks one dialect.
  *
- * Returns 0, or a negative status with `*program` byte-identical:
+ * Returns 0, `CNCROT_STATUS_PASSED`, `CNCROT_STATUS_NOT_FOLLOWED`, or a negative status
+ * with `*program` byte-identical:
  * `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_UNKNOWN_WORD` (a word the dialect does not
  * have there, or twice), `CNCROT_STATUS_NOT_A_NUMBER` (`R1`, `Q120`, `#100`, `30+5` where a
  * number must stand), `CNCROT_STATUS_MISSING_WORD`, `CNCROT_STATUS_PARSE` (a malformed

@@ -189,6 +189,10 @@ statuses! {
             "success at a singular pose; a rotary axis is free and was kept at its current position";
         3, "CNCROT_STATUS_SNAPPED",
             "success; a Hirth axis was snapped to its grid, the residual is in the remaining frame";
+        4, "CNCROT_STATUS_PASSED",
+            "success; the block does not concern the frame (motion, tool, M/S words, program structure, comment, blank): the state is unchanged";
+        5, "CNCROT_STATUS_NOT_FOLLOWED",
+            "success; the block changes the frame in a way the library does not follow (a work-offset or preset selection, a table or system-variable write, mirroring, scaling, a tilt that needs the machine): the state is unchanged and may differ from the control's";
         -1, "CNCROT_STATUS_NULL_POINTER", "a pointer argument is NULL";
         -100, "CNCROT_STATUS_INTERNAL", "internal failure (caught panic), please report";
     }

@@ -5,7 +5,7 @@
 
 mod common;
 
-use cncrot::dialects::program::{write_line, Dialect, LineError, Program};
+use cncrot::dialects::program::{write_line, Dialect, LineError, Program, Remark};
 use cncrot::{elementary, mul, Axis, Error, Frame, Matrix};
 use common::Rng;
 
@@ -14,7 +14,8 @@ fn read(d: Dialect, lines: &[&str]) -> Program {
     for l in lines {
         p = p
             .line(d, l.as_bytes())
-            .unwrap_or_else(|e| panic!("{d:?} {l:?}: {e:?}"));
+            .unwrap_or_else(|e| panic!("{d:?} {l:?}: {e:?}"))
+            .0;
     }
     p
 }
@@ -352,7 +353,13 @@ fn refusals_name_their_column() {
         (Dialect::Sinumerik, "ROT X10 X20", Error::UnknownWord, "X20"),
         (Dialect::Sinumerik, "ROT X=10+5", Error::NotANumber, "+5"),
         (Dialect::Sinumerik, "ROT X1.2.3", Error::Parse, ".3"),
-        (Dialect::Sinumerik, "G1 X10", Error::UnknownWord, "G1"),
+        // A frame command stands at the start of its block.
+        (
+            Dialect::Sinumerik,
+            "G1 X10 ROT Z30",
+            Error::UnknownWord,
+            "ROT",
+        ),
         (Dialect::Sinumerik, "AROT", Error::MissingWord, ""),
         (
             Dialect::Sinumerik,
@@ -404,9 +411,9 @@ fn refusals_name_their_column() {
         ),
         (
             Dialect::Heidenhain,
-            "L X+10 FMAX",
+            "PLANE WARPED SPA+0",
             Error::UnknownWord,
-            "L X",
+            "WARPED",
         ),
         (
             Dialect::Heidenhain,
@@ -447,7 +454,12 @@ fn refusals_name_their_column() {
             "(comment",
         ),
         (Dialect::Haas, "G269 (comment", Error::Parse, "(comment"),
-        (Dialect::Twincat, "(comment", Error::Parse, "(comment"),
+        (
+            Dialect::Twincat,
+            "ROT Z30 (comment",
+            Error::Parse,
+            "(comment",
+        ),
         // A closed comment with words after it: the words are not the comment's.
         (
             Dialect::Fanuc,
@@ -792,4 +804,179 @@ $TC_CARR33[1]=360
     let h = a.hirth.expect("a Hirth grid on axis 1");
     assert_eq!((h.offset, h.step), (0.5, 2.5));
     assert!(c.hirth.is_none());
+}
+
+/// Each line of `program` with the remark it must give; the state after a passed or
+/// unfollowed block is the state before it, to the bit.
+fn remarks(d: Dialect, program: &[(&str, Remark)]) -> Program {
+    let mut p = Program::default();
+    for &(line, want) in program {
+        let (next, remark) = p
+            .line(d, line.as_bytes())
+            .unwrap_or_else(|e| panic!("{d:?} {line:?}: {e:?}"));
+        assert_eq!(remark, want, "{d:?} {line:?}");
+        if remark != Remark::Applied {
+            assert_eq!(format!("{next:?}"), format!("{p:?}"), "{line:?}");
+        }
+        p = next;
+    }
+    p
+}
+
+/// Every block of a program, as CAM systems and people write them: a block the library
+/// reads is applied, a block that does not concern the frame passed over, a block that
+/// changes the frame in a way the library does not follow (work offsets, presets, datum
+/// shifts and tables, variable writes, mirroring, scaling, tilts through the machine) says
+/// so; none is refused.
+#[test]
+fn every_block_of_a_program() {
+    use Remark::{Applied as A, NotFollowed as N, Passed as P};
+    let p = remarks(
+        Dialect::Heidenhain,
+        &[
+            ("0 BEGIN PGM 1234 MM", P),
+            ("1 BLK FORM 0.1 Z X-50 Y-50 Z-40", P),
+            ("2 BLK FORM 0.2 X+50 Y+50 Z+0", P),
+            ("3 TOOL CALL 5 Z S8000 F2000", P),
+            ("4 CYCL DEF 7.0 DATUM SHIFT", N),
+            ("5 CYCL DEF 7.1 X+10", N),
+            ("6 CYCL DEF 7.2 Y+20", N),
+            ("7 CYCL DEF 7.3 Z+0", N),
+            (
+                "8 PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN MB MAX FMAX SEQ-",
+                A,
+            ),
+            ("9 L X+0 Y+0 R0 FMAX M3", P),
+            ("10 CYCL DEF 200 DRILLING ~", P),
+            ("   Q200=+2 ;SET-UP CLEARANCE ~", P),
+            ("   Q201=-20 ;DEPTH", P),
+            ("11 CYCL CALL", P),
+            ("12 L Z+100 R0 FMAX", P),
+            ("13 TRANS DATUM AXIS X+5 Y+0 Z+0", N),
+            ("14 TRANS DATUM RESET", N),
+            ("15 CYCL DEF 19.0 WORKING PLANE", N),
+            ("16 CYCL DEF 19.1 A+0 B+30 C+0", N),
+            ("17 CYCL DEF 10.0 ROTATION", N),
+            ("18 CYCL DEF 247 DATUM SETTING ~", N),
+            ("19 PRESET SELECT #2", N),
+            ("20 FN 17: SYSWRITE ID 990 NR4 IDX0 =1", N),
+            ("21 FN 0: Q1 = +5", P),
+            ("22 * - roughing", P),
+            ("23 ; a comment", P),
+            ("24 LBL 1", P),
+            ("25 CALL LBL 1", P),
+            ("26 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS", P),
+            ("27 M30", P),
+            ("28 END PGM 1234 MM", P),
+        ],
+    );
+    let want = mul(&r(Axis::X, 0.0), &r(Axis::Y, 45.0));
+    assert!(dist(&p.frame.rotation, &want) < 1e-15);
+
+    let p = remarks(
+        Dialect::Fanuc,
+        &[
+            ("%", P),
+            ("O1000 (TILT TEST)", P),
+            ("N10 G90 G17 G40 G49 G80", P),
+            ("N20 G54", N),
+            ("N30 T1 M6", P),
+            ("N40 G0 G90 X0 Y0 S5000 M3", P),
+            ("N50 G68.2 X10. Y20. Z0. I0. J45. K0.", A),
+            ("N60 G53.1", A),
+            ("N70 G43.4 H1 Z50.", P),
+            ("N80 G1 X10. F500", P),
+            ("N90 G52 X10. Y5.", N),
+            ("N100 G54.1 P3", N),
+            ("N110 G10 L2 P1 X0 Y0", N),
+            ("N120 #5221=100.", N),
+            ("N130 #100=5.", P),
+            ("N140 G92 X0 Y0", N),
+            ("N150 G51.1 X0", N),
+            ("N160 G68 X0 Y0 R30.", N),
+            ("N170 G0G90G55X0Y0", N),
+            ("N180 G90 G68.2 X0 Y0 Z0 I0 J30 K0", A),
+            ("N190 M30", P),
+        ],
+    );
+    assert_eq!(p.frame.translation, [0.0; 3]);
+    let (off, remark) = p.line(Dialect::Fanuc, b"N200 G49 G69").unwrap();
+    assert_eq!((off.frame, remark), (Frame::IDENTITY, A));
+    // A cancel on a block that also changes the work offset: not followed, state kept.
+    assert_eq!(p.line(Dialect::Fanuc, b"G69 G54").unwrap(), (p, N));
+    // A tilt the library reads, written where it does not read it, is never passed over.
+    for line in [
+        "G0 G68.2 X0 I0 J30 K0",
+        "G68.2X0.I0.J30.K0.",
+        "M3 G68.4 J10",
+    ] {
+        let e = p.line(Dialect::Fanuc, line.as_bytes()).unwrap_err();
+        assert_eq!(e.error, Error::UnknownWord, "{line}");
+    }
+
+    let p = remarks(
+        Dialect::Sinumerik,
+        &[
+            ("; program header", P),
+            ("N10 G17 G90 G54", N),
+            ("N20 T=\"MILL10\" D1 M6", P),
+            (
+                "N30 CYCLE800(1,\"TC1\",0,57,0,0,0,0,45,0,0,0,0,-1,100,1)",
+                A,
+            ),
+            ("N40 TRAORI", P),
+            ("N50 G1 X10 Y10 F1000", P),
+            ("N60 MIRROR X0", N),
+            ("N70 $P_UIFR[1]=CTRANS(X,10)", N),
+            ("N80 R1=5 ; ROT in a comment", P),
+            ("N90 MSG(\"TRANS and ROT in a string\")", P),
+            ("N100 TOROT", N),
+            ("N110 G505", N),
+            ("N120 G500", N),
+            ("N130 SCALE X2", N),
+            ("N140 G153 G0 Z0", P),
+            ("N150 M30", P),
+        ],
+    );
+    let want = r(Axis::Y, 45.0);
+    assert!(dist(&p.frame.rotation, &want) < 1e-12);
+    assert_eq!(
+        p.line(Dialect::Sinumerik, b"CYCLE800()").unwrap().0.frame,
+        Frame::IDENTITY
+    );
+
+    remarks(
+        Dialect::Twincat,
+        &[
+            ("N10 G54", N),
+            ("N20 G01 X10 F1000", P),
+            ("N30 ROT Z30", A),
+            ("N40 #CS ON [0,0,0,0,0,30]", N),
+            ("N50 (a comment)", P),
+            ("N60 M30", P),
+        ],
+    );
+    remarks(
+        Dialect::Haas,
+        &[
+            ("O00001 (HAAS)", P),
+            ("N10 G154 P1", N),
+            ("N20 G268 X0 Y0 Z0 I0 J45 K0 Q123", A),
+            ("N30 G253", A),
+            ("N40 G101 X0", N),
+            ("N50 G0 G269", A),
+            ("N60 M30", P),
+        ],
+    );
+    remarks(
+        Dialect::Syntec,
+        &[
+            ("N10 G54.1 P1", N),
+            ("N20 G158 P10157 X0 Y0 Z0 A0 B30 C0 U0 V0 W0", A),
+            ("N30 G1 X10 F100", P),
+            ("N40 G69", A),
+            ("N50 G90 G68.2 X0 Y0 Z0 I0 J30 K0", A),
+            ("N60 M30", P),
+        ],
+    );
 }

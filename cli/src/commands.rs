@@ -6,7 +6,7 @@ use crate::output::{num, nums, Json};
 use crate::{run, Common, Report};
 use cncrot::dialects::cycle600::{self, Call, State};
 use cncrot::dialects::head_def::HeadTable;
-use cncrot::dialects::program::{write_line, Dialect, Program};
+use cncrot::dialects::program::{write_line, Dialect, Program, Remark};
 use cncrot::kinematics::{Machine, RotaryAxis, Rule, Side, MAX_AXES};
 use cncrot::{
     angles_from_matrix, closest_of, decompose, matrix_from_angles, probe, second_solution,
@@ -242,9 +242,28 @@ pub fn line(
     };
     let d = common.decimals;
     run(common, text.map(str::to_string), |line| {
-        program = program
+        let (next, remark) = program
             .line(dialect, line.as_bytes())
             .map_err(|e| Failure::at(e.column, e.error.message()))?;
+        program = next;
+        let note = match remark {
+            Remark::Applied => None,
+            Remark::Passed => Some(("passed", "the block does not concern the frame")),
+            Remark::NotFollowed => Some((
+                "not followed",
+                "the block changes the frame in a way cncrot does not follow \
+                 (a work offset, preset, table or variable write, mirroring, scaling or a \
+                 tilt through the machine's axes): cncrot's frame stays as it was and may no \
+                 longer be the control's",
+            )),
+        };
+        if let Some((brief, why)) = note {
+            return Ok(Report {
+                full: format!("{brief}: {why}\n"),
+                brief: brief.to_string(),
+                json: Json::Obj(vec![("remark", Json::str(brief.to_string()))]),
+            });
+        }
         frame_report(
             &program.frame,
             &targets,

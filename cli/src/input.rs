@@ -230,14 +230,13 @@ pub fn all_targets() -> Vec<Target> {
         .collect()
 }
 
-/// The inputs of a batch: the lines of a file (`-`: standard input), each with its 1-based
-/// number; lines of only spaces are skipped, a `\r` before the line end is dropped.
+/// The inputs of a batch: every line of a file (`-`: standard input), each with its 1-based
+/// number, so that the outputs align with them; a `\r` before the line end is dropped.
 pub fn batch_lines(source: &str) -> Result<Vec<(usize, String)>, Failure> {
     let text = read_source(source)?;
     Ok(text
         .lines()
         .enumerate()
-        .filter(|(_, l)| !l.trim().is_empty())
         .map(|(i, l)| (i + 1, l.to_string()))
         .collect())
 }

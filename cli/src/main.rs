@@ -340,6 +340,23 @@ pub(crate) fn run(
     let mut out = stdout.lock();
     let mut ok = true;
     for (line, text) in inputs {
+        // One output line per input line: a blank input gives a blank output (a line of
+        // its own in JSON), a failed one a marked line.
+        if batch && text.trim().is_empty() {
+            let blank = if common.json {
+                let j = Json::Obj(vec![
+                    ("line", Json::Int(line as i64)),
+                    ("blank", Json::Bool(true)),
+                ]);
+                writeln!(out, "{}", j.text())
+            } else {
+                writeln!(out)
+            };
+            if blank.is_err() {
+                return Ok(ok);
+            }
+            continue;
+        }
         let result = each(&text);
         let written = match (&result, common.json) {
             (Ok(r), true) => {
@@ -370,6 +387,8 @@ pub(crate) fn run(
                         e = e.with("line", Json::Int(line as i64));
                     }
                     writeln!(out, "{}", e.text())
+                } else if batch {
+                    writeln!(out, "error: {place}{}", f.message)
                 } else {
                     Ok(())
                 }

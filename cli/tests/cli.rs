@@ -252,15 +252,19 @@ fn batch_reports_each_line_and_fails_if_any_failed() {
     ];
     let r = cncrot(&args, input);
     assert_eq!(r.code, 1);
-    // Line 2 is blank (skipped), line 3 fails at its 5th column, lines 1 and 4 are written.
-    assert_eq!(r.stdout.lines().count(), 2, "{}", r.stdout);
+    // One output line per input line, so that they align: line 2 is blank and stays blank,
+    // line 3 fails at its 5th column and leaves a marked line.
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(lines.len(), 4, "{}", r.stdout);
+    assert_eq!(lines[1], "");
+    assert_eq!(lines[2], "error: line 3, column 5: 'x' is not a number");
     assert_eq!(
         r.stderr.trim(),
         "cncrot: line 3, column 5: 'x' is not a number"
     );
     // Extrinsic X, Y, Z = (0, 90, 10) is intrinsic Z, Y', X'' = (10, 90, 0).
     close(
-        &numbers(r.stdout.lines().nth(1).expect("line 4")),
+        &numbers(r.stdout.lines().nth(3).expect("line 4")),
         &[10.0, 90.0, 0.0],
         1e-9,
     );
@@ -269,10 +273,11 @@ fn batch_reports_each_line_and_fails_if_any_failed() {
     json.push("--json");
     let r = cncrot(&json, input);
     let lines: Vec<&str> = r.stdout.lines().collect();
-    assert_eq!(lines.len(), 3);
+    assert_eq!(lines.len(), 4);
     assert!(lines[0].ends_with("\"line\":1}"));
+    assert_eq!(lines[1], "{\"line\":2,\"blank\":true}");
     assert_eq!(
-        lines[1],
+        lines[2],
         "{\"error\":\"'x' is not a number\",\"column\":5,\"line\":3}"
     );
     // All good: exit 0.
@@ -317,11 +322,16 @@ fn line_translates_between_dialects() {
     );
     assert_eq!(r.code, 1);
     let lines: Vec<&str> = r.stdout.lines().collect();
-    assert_eq!(lines.len(), 2, "{}", r.stdout);
+    assert_eq!(lines.len(), 3, "{}", r.stdout);
     assert!(
-        lines[1].starts_with("ROT X0 Y0 Z45\tG68.2 "),
+        lines[1].starts_with("error: line 2, column 11: "),
         "{}",
         lines[1]
+    );
+    assert!(
+        lines[2].starts_with("ROT X0 Y0 Z45\tG68.2 "),
+        "{}",
+        lines[2]
     );
     assert!(r.stderr.contains("line 2, column 11:"), "{}", r.stderr);
     // A named form, and the origin kept where the form has no origin words.
@@ -717,4 +727,54 @@ fn hostile_input_never_panics() {
         r.stderr
     );
     std::fs::remove_file(&file).ok();
+}
+
+/// A whole Heidenhain program through `line --batch`: one output line per block, the
+/// blocks that do not concern the frame marked as passed, the datum shift as not followed,
+/// and the exit status 0 (nothing was refused).
+#[test]
+fn line_reads_a_whole_program() {
+    let program = "0 BEGIN PGM TILT MM\n1 TOOL CALL 1 Z S5000\n2 CYCL DEF 7.0 DATUM SHIFT\n\
+                   3 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-\n\
+                   4 L X+10 Y+0 FMAX\n5 PLANE RESET STAY\n6 END PGM TILT MM\n";
+    let r = cncrot(
+        &[
+            "line",
+            "--from",
+            "heidenhain",
+            "--to",
+            "fanuc",
+            "--batch",
+            "-",
+        ],
+        program,
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(lines.len(), 7, "{}", r.stdout);
+    for k in [0, 1, 4, 6] {
+        assert_eq!(lines[k], "passed", "{k}");
+    }
+    assert_eq!(lines[2], "not followed");
+    // A tilt about Y by 30° is Rz(90)·Rx(30)·Rz(-90) in G68.2's Euler angles.
+    assert!(
+        lines[3].starts_with("G68.2 X0. Y0. Z0. I90. J30. K-90."),
+        "{}",
+        lines[3]
+    );
+    assert!(
+        lines[5].starts_with("G68.2 X0. Y0. Z0. I0. J0. K0."),
+        "{}",
+        lines[5]
+    );
+    let r = cncrot(
+        &["line", "--from", "heidenhain", "--json", "--batch", "-"],
+        program,
+    );
+    assert!(r
+        .stdout
+        .lines()
+        .nth(2)
+        .unwrap()
+        .contains("\"remark\":\"not followed\""));
 }

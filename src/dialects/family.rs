@@ -42,6 +42,21 @@ impl Modal {
     }
 }
 
+/// What one block of a program does, as its family's reader sees it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Block {
+    /// A command the family reads, and the state it leaves (possibly the same: `G53.1`).
+    Frame(Modal),
+    /// Nothing to do with the frame: motion, tool, M and S words, program structure,
+    /// labels and calls, parameter assignments, comments, a blank line.
+    Passed,
+    /// A change of the frame the library does not follow: a work-offset, preset or datum
+    /// table selection, a write to such a table or to a frame variable, mirroring, scaling,
+    /// a plane rotation of its own, a tilt that needs the machine. The state stays as it
+    /// was and may no longer be the control's.
+    NotFollowed,
+}
+
 /// A tilted-plane command as written, with the order of its words. The codes are the C
 /// boundary's `CNCROT_FORM_*` (an ABI list: a family that brings a new command adds its
 /// code here, numbered by hand).
@@ -168,9 +183,11 @@ pub(crate) trait Family {
     /// The forms whose frames this family computes (each form has exactly one owner).
     const FORMS: &'static [FormInfo];
 
-    /// Applies one block to `m` and returns the next state; a refused block names its
-    /// column.
-    fn read_line(m: &Modal, text: &[u8]) -> Result<Modal, LineError>;
+    /// What one block does to `m` (any block of a program in this dialect: a command the
+    /// family reads gives the next state, any other block is passed over or, if it changes
+    /// the frame in a way the family does not follow, says so); only a malformed command
+    /// the family reads is refused, with its column.
+    fn read_line(m: &Modal, text: &[u8]) -> Result<Block, LineError>;
 
     /// Whether `m`, restored from elsewhere, is a state this family's reader can leave
     /// (the rotation itself is checked by the caller). Most families keep no angles.

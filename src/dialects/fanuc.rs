@@ -87,9 +87,11 @@ pub const G69: Frame = Frame::IDENTITY;
 
 // Program lines.
 
-use super::family::{no_selector, put, v3, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use super::family::{
+    no_selector, put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
+};
 use crate::text::number::{write_word, Out, Style};
-use crate::text::scan::{address_words, Cursor, LineError, Syntax};
+use crate::text::scan::{address_words, Comments, Cursor, LineError, Syntax, Tokens};
 
 const SYNTAX: Syntax = crate::text::scan::G_WORDS;
 
@@ -115,7 +117,13 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Modal, LineEr
     } else if c.keyword(b"G68.4") {
         true
     } else if c.keyword(b"G69") {
-        return Some(c.end(true, true).map(|()| m.with_frame(G69)));
+        // With other words on the block, the cancel is found among them (`iso_block`); an
+        // unclosed comment is malformed text.
+        return match c.end(true, true) {
+            Ok(()) => Some(Ok(m.with_frame(G69))),
+            Err(e) if e.error == Error::Parse => Some(Err(e)),
+            Err(_) => None,
+        };
     } else if c.keyword(b"G53.1") || c.keyword(b"G53.6") {
         // Turns the tool to the plane: no frame change.
         return Some(c.end(true, true).map(|()| *m));
@@ -137,6 +145,88 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Modal, LineEr
             call
         })
     }))
+}
+
+/// Skips the modal words a post may write before the tilt on its block (`N50 G90 G68.2 …`):
+/// plane selection, absolute positions, the cancels of cutter and length compensation and
+/// of canned cycles, units, feed per minute. None of them changes the frame.
+/// Whether any was skipped.
+pub(crate) fn skip_leading(c: &mut Cursor) -> bool {
+    const LEADING: [&[u8]; 9] = [
+        b"G17", b"G90", b"G40", b"G49", b"G80", b"G94", b"G20", b"G21", b"G15",
+    ];
+    let mut any = false;
+    while LEADING.iter().any(|k| c.keyword(k)) {
+        c.spaces();
+        any = true;
+    }
+    any
+}
+
+/// G-codes (in tenths: `G54.1` is 541) that change the frame in ways the library does not
+/// follow, in every ISO-style dialect: `G10` (offset tables), `G50`/`G51` (scaling),
+/// `G50.1`/`G51.1` (mirroring), `G52` (local coordinate system, not yet followed), `G54`–`G59`,
+/// `G54.1`, `G54.2` (work offsets, fixture offsets), `G68`/`G69.1` (rotation in the plane,
+/// 3-D coordinate conversion), `G92`, `G92.1` (coordinate system setting).
+pub(crate) const ISO_NOT_FOLLOWED: &[u32] = &[
+    100, 500, 501, 510, 511, 520, 540, 541, 542, 550, 560, 570, 580, 590, 680, 691, 920, 921,
+];
+
+/// Whether `#n = …` writes a work-offset variable (Fanuc and Haas: `#2500`–`#2999`,
+/// `#5201`–`#5335`, `#7001`–`#7999`, `#14001`–`#19999`).
+fn offset_variable(value: &[u8]) -> bool {
+    let mut n = 0u32;
+    for &b in value.iter().take(6) {
+        if !b.is_ascii_digit() {
+            return false;
+        }
+        n = n * 10 + u32::from(b - b'0');
+    }
+    matches!(n, 2500..=2999 | 5201..=5335 | 7001..=7999 | 14001..=19999)
+}
+
+/// What a block of an ISO-style program (Fanuc, Haas, Syntec) does when it does not start
+/// with a command its family reads: a cancel among other words (`cancels`) applies; a
+/// command the family reads standing elsewhere (`commands`) is refused at its column; a
+/// G-code of [`ISO_NOT_FOLLOWED`] or `more`, or a write to a work-offset variable, is
+/// [`Block::NotFollowed`] (it wins over a cancel on the same block: the library's state is
+/// then not the control's either way); anything else is [`Block::Passed`].
+#[inline(never)]
+pub(crate) fn iso_block(
+    m: &Modal,
+    text: &[u8],
+    commands: &[u32],
+    cancels: &[u32],
+    more: &[u32],
+) -> Result<Block, LineError> {
+    let comments = Comments {
+        semicolon: true,
+        parens: true,
+    };
+    let (mut cancel, mut not_followed) = (false, false);
+    for t in Tokens::new(text, comments, true) {
+        match (t.letter, t.code()) {
+            (b'G', Some(code)) if cancels.contains(&code) => cancel = true,
+            (b'G', Some(code)) if commands.contains(&code) => {
+                return Err(LineError {
+                    error: Error::UnknownWord,
+                    column: t.column,
+                })
+            }
+            (b'G', Some(code)) if ISO_NOT_FOLLOWED.contains(&code) || more.contains(&code) => {
+                not_followed = true
+            }
+            (b'#', _) if t.assigned && offset_variable(t.value) => not_followed = true,
+            _ => {}
+        }
+    }
+    Ok(if not_followed {
+        Block::NotFollowed
+    } else if cancel {
+        Block::Frame(m.with_frame(Frame::IDENTITY))
+    } else {
+        Block::Passed
+    })
 }
 
 /// Writes `G68.2 X Y Z I J K` (Syntec's `G68.2` mode too).
@@ -170,19 +260,26 @@ impl Family for Fanuc {
     /// plane), `G69` (cancel), `G53.1`/`G53.6` (no frame change), `G68.3` (needs the tool
     /// direction from the machine: [`Error::NotAvailable`]), with a block number, `/`,
     /// `( … )` and `;`. Numbers without a point are whole units (calculator-type input
-    /// \[choice: a parameter of the control; write the point to be safe\]).
+    /// \[choice: a parameter of the control; write the point to be safe\]). These commands
+    /// start the block (after its number); `G69` may stand among other words. Every other
+    /// block is passed over, or not followed if it changes the frame otherwise
+    /// ([`ISO_NOT_FOLLOWED`], work-offset variables).
     #[inline(never)]
-    fn read_line(m: &Modal, text: &[u8]) -> Result<Modal, LineError> {
+    fn read_line(m: &Modal, text: &[u8]) -> Result<Block, LineError> {
         let mut c = Cursor::new(text);
         if c.peek() == Some(b'%') {
             c.bump();
         }
         c.block_number(b'N');
         if let Some(result) = read_g68(m, &mut c) {
-            return result;
+            return result.map(Block::Frame);
         }
-        // Only comments may remain; an unclosed `(` is malformed text.
-        c.end(true, true).map(|()| *m)
+        if skip_leading(&mut c) {
+            if let Some(result) = read_g68(m, &mut c) {
+                return result.map(Block::Frame);
+            }
+        }
+        iso_block(m, text, &[682, 683, 684, 531, 536], &[690], &[])
     }
 
     fn parse_form(text: &[u8]) -> Result<FormSpec, Error> {

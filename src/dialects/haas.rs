@@ -66,7 +66,8 @@ pub const G269: Frame = Frame::IDENTITY;
 
 // Program lines.
 
-use super::family::{put, v3, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use super::family::{put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use super::fanuc;
 use crate::text::number::{write_integer, write_word, Out, Style};
 use crate::text::scan::{address_words, whole, Cursor, LineError, Syntax};
 
@@ -89,7 +90,7 @@ impl Family for Haas {
     /// the spindle: no frame change), with a block number and `( … )` comments. A `G268`
     /// while one is active replaces it \[choice\].
     #[inline(never)]
-    fn read_line(m: &Modal, text: &[u8]) -> Result<Modal, LineError> {
+    fn read_line(m: &Modal, text: &[u8]) -> Result<Block, LineError> {
         let mut c = Cursor::new(text);
         c.block_number(b'N');
         let column = c.column();
@@ -103,15 +104,30 @@ impl Family for Haas {
             let q = whole(q, w.column(6))?;
             LineError::at(w.column(6), q_order(q))?;
             let frame = LineError::at(column, g268([x, y, z], [i, j, k], q))?;
-            return Ok(m.with_frame(frame));
+            return Ok(Block::Frame(m.with_frame(frame)));
         }
         if c.keyword(b"G269") {
-            c.end(true, true)?;
-            return Ok(m.with_frame(Frame::IDENTITY));
+            // With other words on the block, the cancel is found among them (`iso_block`);
+            // an unclosed comment is malformed text.
+            match c.end(true, true) {
+                Ok(()) => return Ok(Block::Frame(m.with_frame(Frame::IDENTITY))),
+                Err(e) if e.error == Error::Parse => return Err(e),
+                Err(_) => {}
+            }
         }
-        c.keyword(b"G253");
-        // Only comments may remain; an unclosed `(` is malformed text.
-        c.end(true, true).map(|()| *m)
+        if c.keyword(b"G253") {
+            // Turns the tool to the plane: no frame change.
+            return c.end(true, true).map(|()| Block::Frame(*m));
+        }
+        // Haas adds `G154` (work offsets P1–P99), `G100`/`G101` (mirroring), `G254`/`G255`
+        // (dynamic work offsets) to the ISO codes the library does not follow.
+        fanuc::iso_block(
+            m,
+            text,
+            &[2680, 2530],
+            &[2690],
+            &[1540, 1000, 1010, 2540, 2550],
+        )
     }
 
     /// `G268` (`Q123`), `G268 Q<q>`.

@@ -135,9 +135,11 @@ pub const RESET: Frame = Frame::IDENTITY;
 
 // Program lines.
 
-use super::family::{no_selector, put, v3, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use super::family::{
+    no_selector, put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
+};
 use crate::text::number::{write_word, Out, Style};
-use crate::text::scan::{Cursor, Exponent, LineError, Syntax};
+use crate::text::scan::{Comments, Cursor, Exponent, LineError, Syntax, Token, Tokens};
 
 const SYNTAX: Syntax = Syntax {
     exponent: Exponent::None,
@@ -227,6 +229,44 @@ fn plane_frame(form: Form, w: &[f64]) -> Result<Frame, Error> {
     })
 }
 
+/// A Heidenhain block (from its first word, after the block number) that is not a `PLANE`:
+/// not followed when it shifts, mirrors, rotates, scales or tilts the coordinate system or
+/// selects or writes a datum (`CYCL DEF` 7 datum shift, 8 mirror image, 10 rotation, 11 and
+/// 26 scaling, 19 working plane, 247 datum setting; `TRANS` datum, mirror and rotation
+/// functions; `PRESET`; `FN 17: SYSWRITE`); passed over otherwise (`L`, `C`, `CC`, `TOOL
+/// CALL`, `CYCL DEF` of machining cycles, `CALL`, `LBL`, `FN` arithmetic, `Q` parameters,
+/// `M` functions, `BEGIN`/`END PGM`, `BLK FORM`, `FUNCTION`, …).
+#[inline(never)]
+fn other_block(text: &[u8]) -> Block {
+    let comments = Comments {
+        semicolon: true,
+        parens: false,
+    };
+    let mut t = Tokens::new(text, comments, false);
+    let (first, second) = (t.next(), t.next());
+    let is = |t: Option<Token>, name: &[u8]| t.is_some_and(|t| t.is(name));
+    let integer = |t: Option<Token>| {
+        let digits = t.map_or(&[][..], |t| t.value);
+        let end = digits
+            .iter()
+            .position(|b| !b.is_ascii_digit())
+            .unwrap_or(digits.len());
+        let mut n = 0u32;
+        for &b in digits.iter().take(end.min(6)) {
+            n = n * 10 + u32::from(b - b'0');
+        }
+        (end > 0).then_some(n)
+    };
+    let cycle = is(first, b"CYCL") && is(second, b"DEF");
+    let frame_cycle = cycle && matches!(integer(t.next()), Some(7 | 8 | 10 | 11 | 19 | 26 | 247));
+    let syswrite = is(first, b"FN17") || (is(first, b"FN") && integer(second) == Some(17));
+    if frame_cycle || is(first, b"TRANS") || is(first, b"PRESET") || syswrite {
+        Block::NotFollowed
+    } else {
+        Block::Passed
+    }
+}
+
 /// The Heidenhain family: `PLANE`.
 pub(crate) struct Heidenhain;
 
@@ -269,12 +309,12 @@ impl Family for Heidenhain {
     /// `PLANE PROJECTED PROPR PROMIN ROT`, `PLANE EULER EULPR EULNU EULROT`,
     /// `PLANE VECTOR BX BY BZ NX NY NZ`, `PLANE POINTS P1X … P3Z` (every word required, in any
     /// order), `PLANE RELATIV SPA|SPB|SPC` (on the active plane), `PLANE RESET`, each with the
-    /// positioning and solution options, after a line number, with `;` comments; `BEGIN PGM`
-    /// and `END PGM` lines change nothing; `PLANE AXIAL` needs the kinematics
+    /// positioning and solution options, after a line number, with `;` comments; every other
+    /// block is passed over or not followed (`other_block`); `PLANE AXIAL` needs the kinematics
     /// ([`Error::NotAvailable`]). A `PLANE` replaces the active one; the datum is not part of
     /// the plane (`POINTS` too: P1 is a point of the plane, the datum stays) \[doc\].
     #[inline(never)]
-    fn read_line(m: &Modal, text: &[u8]) -> Result<Modal, LineError> {
+    fn read_line(m: &Modal, text: &[u8]) -> Result<Block, LineError> {
         let mut c = Cursor::new(text);
         c.spaces();
         while c.peek().is_some_and(|b| b.is_ascii_digit()) {
@@ -282,18 +322,11 @@ impl Family for Heidenhain {
         }
         c.spaces();
         if c.at_end() || c.peek() == Some(b'*') || c.rest_is_comment(true, false) {
-            return Ok(*m);
-        }
-        if c.keyword(b"BEGIN") || c.keyword(b"END") {
-            c.spaces();
-            if c.keyword(b"PGM") {
-                return Ok(*m);
-            }
-            return Err(c.error(Error::UnknownWord));
+            return Ok(Block::Passed);
         }
         let column = c.column();
         if !c.keyword(b"PLANE") {
-            return Err(c.error(Error::UnknownWord));
+            return Ok(other_block(text.get(column - 1..).unwrap_or(&[])));
         }
         c.spaces();
         let at = c.column();
@@ -340,7 +373,7 @@ impl Family for Heidenhain {
             return Err(c.error(Error::UnknownWord));
         };
         options(&mut c)?;
-        Ok(m.with_frame(frame))
+        Ok(Block::Frame(m.with_frame(frame)))
     }
 
     /// `PLANE SPATIAL`, `PLANE EULER`, `PLANE VECTOR`, `PLANE POINTS`, `PLANE PROJECTED`.

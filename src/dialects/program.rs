@@ -9,7 +9,7 @@
 //! this module holds what is the same for all: the state, line ends and lengths, the checks
 //! of a restored state and of a written line.
 
-use super::family::{Modal, MAX_VALUES};
+use super::family::{Block, Modal, MAX_VALUES};
 use super::form;
 pub use super::registry::Dialect;
 use crate::text::number::Out;
@@ -20,12 +20,13 @@ use crate::{Error, Frame};
 /// default is nothing active.
 ///
 /// ```
-/// use cncrot::dialects::program::{Dialect, Program};
+/// use cncrot::dialects::program::{Dialect, Program, Remark};
 /// // The TwinCAT manual's example: ROT Z30, then AROT Z15, is a rotation of 45° about Z.
-/// let p = Program::default()
-///     .line(Dialect::Twincat, b"N65 ROT Z30").unwrap()
-///     .line(Dialect::Twincat, b"N90 AROT Z15").unwrap();
-/// assert_eq!(p.angles, [0.0, 0.0, 45.0]);
+/// let (p, _) = Program::default().line(Dialect::Twincat, b"N65 ROT Z30").unwrap();
+/// let (p, remark) = p.line(Dialect::Twincat, b"N90 AROT Z15").unwrap();
+/// assert_eq!((p.angles, remark), ([0.0, 0.0, 45.0], Remark::Applied));
+/// // Any other block of the program is passed over, the state unchanged.
+/// assert_eq!(p.line(Dialect::Twincat, b"N100 G01 X10 F500").unwrap(), (p, Remark::Passed));
 /// // A line that cannot be executed is refused with the column of its first bad character.
 /// let e = p.line(Dialect::Twincat, b"ROT Z=R1").unwrap_err();
 /// assert_eq!((e.error, e.column), (cncrot::Error::NotANumber, 7));
@@ -43,14 +44,31 @@ pub struct Program {
     pub euler: bool,
 }
 
+/// What a block did, beside the state it leaves (`CNCROT_STATUS_PASSED` and
+/// `CNCROT_STATUS_NOT_FOLLOWED` in C).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Remark {
+    /// A command that concerns the frame was applied (the state may be the same: a
+    /// `G53.1`, a cancel with nothing active).
+    Applied,
+    /// The block does not concern the frame (motion, tool, M and S words, program
+    /// structure, comments, a blank line): the state is the one given, byte for byte.
+    Passed,
+    /// The block changes the frame in a way the library does not follow (a work-offset or
+    /// preset selection, a table or frame-variable write, mirroring, scaling, a tilt that
+    /// needs the machine): the state is the one given, and may no longer be the control's.
+    NotFollowed,
+}
+
 impl Program {
-    /// Applies one block in `dialect`; returns the next state. Refused (with the column):
+    /// Applies one block in `dialect` (any block of a program: see [`Remark`]); returns the
+    /// next state and what the block did. Refused (with the column):
     /// another dialect than the program's ([`Error::BadArgument`]), a line longer than
     /// [`Dialect::max_line`] ([`Error::LineTooLong`]), an unknown, repeated or misplaced word
     /// ([`Error::UnknownWord`]), a variable or expression where a number must stand
     /// ([`Error::NotANumber`]), a missing word ([`Error::MissingWord`]), a malformed number
     /// ([`Error::Parse`]), and whatever the command's mathematics refuses.
-    pub fn line(&self, dialect: Dialect, text: &[u8]) -> Result<Program, LineError> {
+    pub fn line(&self, dialect: Dialect, text: &[u8]) -> Result<(Program, Remark), LineError> {
         if self.dialect.is_some_and(|d| d != dialect) {
             return Err(LineError {
                 error: Error::BadArgument,
@@ -68,7 +86,11 @@ impl Program {
                 column: dialect.max_line() + 1,
             });
         }
-        let next = dialect.read_line(&self.modal(), text)?;
+        let next = match dialect.read_line(&self.modal(), text)? {
+            Block::Frame(next) => next,
+            Block::Passed => return Ok((*self, Remark::Passed)),
+            Block::NotFollowed => return Ok((*self, Remark::NotFollowed)),
+        };
         let h = next.frame.to_homogeneous();
         if !h.iter().flatten().all(|x| x.is_finite()) {
             return Err(LineError {
@@ -76,12 +98,15 @@ impl Program {
                 column: 1,
             });
         }
-        Ok(Program {
-            frame: next.frame,
-            angles: next.angles,
-            dialect: Some(dialect),
-            euler: next.euler,
-        })
+        Ok((
+            Program {
+                frame: next.frame,
+                angles: next.angles,
+                dialect: Some(dialect),
+                euler: next.euler,
+            },
+            Remark::Applied,
+        ))
     }
 
     /// What the families read and write.
@@ -99,7 +124,7 @@ impl Program {
     ///
     /// ```
     /// use cncrot::dialects::program::{Dialect, Program};
-    /// let p = Program::default().line(Dialect::Twincat, b"ROT Z30").unwrap();
+    /// let (p, _) = Program::default().line(Dialect::Twincat, b"ROT Z30").unwrap();
     /// assert!(p.check().is_ok());
     /// assert!(Program { angles: [0.0, 0.0, 31.0], ..p }.check().is_err());
     /// ```
@@ -223,7 +248,7 @@ mod tests {
 
     #[test]
     fn a_program_speaks_one_dialect() {
-        let p = Program::default()
+        let (p, _) = Program::default()
             .line(Dialect::Fanuc, b"G68.2 J30")
             .unwrap();
         assert_eq!(

@@ -6,7 +6,7 @@
 //! `form_values`, the C boundary's codes) goes through the `match`es generated here: static
 //! dispatch, no function pointers, so the no-panic proof sees every path.
 
-use super::family::{Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use super::family::{Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
 use super::{fanuc, haas, heidenhain, sinumerik, syntec, twincat};
 use crate::text::number::Out;
 use crate::text::scan::LineError;
@@ -49,7 +49,7 @@ macro_rules! families {
                 }
             }
 
-            pub(crate) fn read_line(self, m: &Modal, text: &[u8]) -> Result<Modal, LineError> {
+            pub(crate) fn read_line(self, m: &Modal, text: &[u8]) -> Result<Block, LineError> {
                 match self {
                     $(Dialect::$name => <$family>::read_line(m, text),)*
                 }

@@ -138,7 +138,8 @@ fn normal(n: Vector) -> Result<Matrix, Error> {
 
 // Program lines.
 
-use super::family::{put, v3, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use super::family::{put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use super::fanuc;
 use crate::text::number::{write_integer, write_word, Out};
 use crate::text::scan::{address_words, whole, Cursor, LineError, Syntax};
 
@@ -161,14 +162,14 @@ impl Family for Syntec {
     /// \[choice\]), and the Fanuc-style `G68.2`, `G68.4`, `G69`, `G53.1` of its G68.2 mode,
     /// with a block number, `( … )` and `;` comments.
     #[inline(never)]
-    fn read_line(m: &Modal, text: &[u8]) -> Result<Modal, LineError> {
+    fn read_line(m: &Modal, text: &[u8]) -> Result<Block, LineError> {
         let mut c = Cursor::new(text);
         c.block_number(b'N');
         let column = c.column();
         if c.keyword(b"G158") {
             if c.rest_is_comment(true, true) {
                 c.end(true, true)?;
-                return Ok(m.with_frame(Frame::IDENTITY));
+                return Ok(Block::Frame(m.with_frame(Frame::IDENTITY)));
             }
             let w = address_words(&mut c, *b"LPXYZABCUVW", SYNTAX, false, (true, true))?;
             let [_, pw, x, y, z, a, b, cc, u, v, ww] = w.values;
@@ -179,13 +180,17 @@ impl Family for Syntec {
             let at = w.column(1);
             let pword = LineError::at(at, PWord::decode(whole(pw, at)?))?;
             let f = frame(&m.frame, pword, [x, y, z], [a, b, cc], [u, v, ww]);
-            return Ok(m.with_frame(LineError::at(column, f)?));
+            return Ok(Block::Frame(m.with_frame(LineError::at(column, f)?)));
         }
-        if let Some(result) = super::fanuc::read_g68(m, &mut c) {
-            return result;
+        if let Some(result) = fanuc::read_g68(m, &mut c) {
+            return result.map(Block::Frame);
         }
-        // Only comments may remain; an unclosed `(` is malformed text.
-        c.end(true, true).map(|()| *m)
+        if fanuc::skip_leading(&mut c) {
+            if let Some(result) = fanuc::read_g68(m, &mut c) {
+                return result.map(Block::Frame);
+            }
+        }
+        fanuc::iso_block(m, text, &[1580, 682, 683, 684, 531, 536], &[690], &[])
     }
 
     /// `G158` (`P10157`), `G158 P<p>`, `G68.2`.

@@ -82,12 +82,60 @@ pub fn rot_angles(m: &Matrix) -> Result<([f64; 3], bool), Error> {
 
 // Program lines.
 
-use super::family::{no_selector, put, v3, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use super::family::{
+    no_selector, put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
+};
 use crate::text::number::{write_word, Out, Style};
-use crate::text::scan::{address_words, Cursor, LineError, Syntax};
+use crate::text::scan::{address_words, Comments, Cursor, LineError, Syntax, Token, Tokens};
 use crate::Frame;
 
 const SYNTAX: Syntax = crate::text::scan::G_WORDS;
+
+/// A TwinCAT block that does not start with `ROT`, `AROT`, `ROTEXON`, `ROTEXOFF`: `ROT` or
+/// `AROT` elsewhere on it is refused at its column (the command starts its block), the zero
+/// offsets `G54`–`G59`, `G92` and mirroring `G351`, and the coordinate systems `#CS`, `#ACS`
+/// are not followed, anything else is passed over.
+#[inline(never)]
+fn other_block(text: &[u8]) -> Result<Block, LineError> {
+    let comments = Comments {
+        semicolon: true,
+        parens: true,
+    };
+    let mut not_followed = false;
+    for t in Tokens::new(text, comments, false) {
+        if t.is(b"ROT") || t.is(b"AROT") {
+            return Err(LineError {
+                error: Error::UnknownWord,
+                column: t.column,
+            });
+        }
+        let value = t.value;
+        let g = value.first().is_some_and(|b| b.eq_ignore_ascii_case(&b'G'));
+        let code = Token {
+            letter: b'G',
+            value: value.get(1..).unwrap_or(&[]),
+            ..t
+        }
+        .code();
+        let upper = |k: usize| value.get(k).map(u8::to_ascii_uppercase);
+        let coordinate_system = value.first() == Some(&b'#')
+            && (matches!((upper(1), upper(2)), (Some(b'C'), Some(b'S')))
+                || matches!(
+                    (upper(1), upper(2), upper(3)),
+                    (Some(b'A'), Some(b'C'), Some(b'S'))
+                ));
+        if (g && matches!(code, Some(540 | 550 | 560 | 570 | 580 | 590 | 920 | 3510)))
+            || coordinate_system
+        {
+            not_followed = true;
+        }
+    }
+    Ok(if not_followed {
+        Block::NotFollowed
+    } else {
+        Block::Passed
+    })
+}
 
 /// The TwinCAT NC I family: `ROT`, `AROT`.
 pub(crate) struct Twincat;
@@ -106,7 +154,7 @@ impl Family for Twincat {
     /// comments. "The rotation instructions must be programmed in their own block"
     /// \[doc\]: nothing else may stand on the line.
     #[inline(never)]
-    fn read_line(m: &Modal, text: &[u8]) -> Result<Modal, LineError> {
+    fn read_line(m: &Modal, text: &[u8]) -> Result<Block, LineError> {
         let mut c = Cursor::new(text);
         c.block_number(b'N');
         let column = c.column();
@@ -114,12 +162,11 @@ impl Family for Twincat {
             false
         } else if c.keyword(b"AROT") {
             true
-        } else if c.keyword(b"ROTEXON") || c.keyword(b"ROTEXOFF") || c.at_end() {
+        } else if c.keyword(b"ROTEXON") || c.keyword(b"ROTEXOFF") {
             c.end(true, true)?;
-            return Ok(*m);
+            return Ok(Block::Frame(*m));
         } else {
-            // Only comments may remain; an unclosed `(` is malformed text.
-            return c.end(true, true).map(|()| *m);
+            return other_block(text);
         };
         // `=` before a value is allowed (`X=R1` is how NC I assigns a parameter).
         let w = address_words(&mut c, *b"XYZ", SYNTAX, true, (true, true))?;
@@ -138,11 +185,11 @@ impl Family for Twincat {
                 column,
             });
         }
-        Ok(Modal {
+        Ok(Block::Frame(Modal {
             frame: Frame::from_rotation(matrix(angles)),
             angles: angles.map(|a| a + 0.0),
             ..*m
-        })
+        }))
     }
 
     /// TwinCAT keeps its programmed angles: the rotation must be theirs.

@@ -52,6 +52,14 @@ pub enum cncrot_status {
     /// Success; a Hirth axis was snapped to its grid: the residual is in the remaining
     /// frame.
     Snapped = 3,
+    /// Success; the program block does not concern the frame (motion, tool, M and S words,
+    /// program structure, a comment, a blank line): the state is unchanged.
+    Passed = 4,
+    /// Success; the program block changes the frame in a way the library does not follow
+    /// (a work-offset or preset selection, a table or system-variable write, mirroring,
+    /// scaling, a tilt that needs the machine): the state is unchanged and may differ from
+    /// the control's.
+    NotFollowed = 5,
     /// A pointer argument is NULL.
     NullPointer = -1,
     /// A floating-point argument is NaN or infinite.
@@ -304,6 +312,8 @@ mod tests {
             S::Singular,
             S::FreeAxis,
             S::Snapped,
+            S::Passed,
+            S::NotFollowed,
             S::NullPointer,
             S::NotFinite,
             S::BadFlag,

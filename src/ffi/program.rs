@@ -3,7 +3,7 @@
 
 use super::frame::{read_frame, write_frame};
 use super::{cncrot_status, guard, non_null};
-use crate::dialects::program::{self, Dialect, Program};
+use crate::dialects::program::{self, Dialect, Program, Remark};
 use crate::{crc32, Error, Frame};
 use core::ffi::c_char;
 
@@ -195,11 +195,12 @@ pub unsafe extern "C" fn cncrot_program_init(program: *mut cncrot_program, optio
 // to the caller's struct without intermediate copies (they were a fifth of a short line).
 #[inline(always)]
 unsafe fn read(
-    program: *const cncrot_program,
+    program: *mut cncrot_program,
     dialect: i32,
     line: *const c_char,
     len: usize,
-) -> Result<cncrot_program, (cncrot_status, usize)> {
+    write: bool,
+) -> Result<cncrot_status, (cncrot_status, usize)> {
     // The caller's struct is read in place when aligned (as C aligns it), copied if not.
     let copy;
     let c = if program.is_aligned() {
@@ -215,17 +216,38 @@ unsafe fn read(
         return Err((cncrot_status::LineTooLong, d.max_line() + 1));
     }
     let text = core::slice::from_raw_parts(line.cast::<u8>(), len);
-    let next = p.line(d, text).map_err(|e| (e.error.into(), e.column))?;
-    Ok(store(&next, c.options))
+    let (next, remark) = p.line(d, text).map_err(|e| (e.error.into(), e.column))?;
+    Ok(match remark {
+        Remark::Applied => {
+            // Written here, once: a state carried out in the result took stack.
+            if write {
+                program.write_unaligned(store(&next, c.options));
+            }
+            cncrot_status::Ok
+        }
+        // The state is not written at all: byte-identical.
+        Remark::Passed => cncrot_status::Passed,
+        Remark::NotFollowed => cncrot_status::NotFollowed,
+    })
 }
 
 /// Applies one block of a part program (`len` bytes, no NUL needed; a trailing line end is
 /// ignored) in `dialect` (`CNCROT_DIALECT_*`) to `*program`, as that controller does: a tilt
 /// replaces or adds to the active frame, a cancel (`ROT`, `CROT`, `CYCLE800()`,
-/// `PLANE RESET`, `G69`, `G269`, `G158`) restores none, a blank, comment-only or
-/// block-number-only line changes nothing. A program speaks one dialect.
+/// `PLANE RESET`, `G69`, `G269`, `G158`) restores none. Any other block of a program in
+/// that dialect is success with a remark and `*program` byte-identical:
+/// `CNCROT_STATUS_PASSED` when it does not concern the frame (motion, tool call, M and S
+/// words, program begin and end, labels and calls, parameter assignments, comments, blank
+/// and block-number-only lines), `CNCROT_STATUS_NOT_FOLLOWED` when it changes the frame in
+/// a way the library does not follow (work-offset or preset selections such as `G54`,
+/// `G54.1 P`, `G154 P`, `G505`, `CYCL DEF 247`, `PRESET SELECT`; `G92`; writes to offset
+/// tables and frame variables such as `G10 L2`, `#5221=`, `$P_UIFR[1]=`, `FN 17`; datum
+/// shifts not yet followed such as `G52`, `CYCL DEF 7`, `TRANS DATUM`; mirroring, scaling
+/// and plane rotations such as `MIRROR`, `G51.1`, `CYCL DEF 10`, `G68`; a tilt through the
+/// machine's axes such as `CYCL DEF 19`, `TOROT`). A program speaks one dialect.
 ///
-/// Returns 0, or a negative status with `*program` byte-identical:
+/// Returns 0, `CNCROT_STATUS_PASSED`, `CNCROT_STATUS_NOT_FOLLOWED`, or a negative status
+/// with `*program` byte-identical:
 /// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_UNKNOWN_WORD` (a word the dialect does not
 /// have there, or twice), `CNCROT_STATUS_NOT_A_NUMBER` (`R1`, `Q120`, `#100`, `30+5` where a
 /// number must stand), `CNCROT_STATUS_MISSING_WORD`, `CNCROT_STATUS_PARSE` (a malformed
@@ -263,9 +285,7 @@ pub unsafe extern "C" fn cncrot_program_line(
 ) -> i32 {
     guard(|| {
         non_null(&[program.is_null(), line.is_null()])?;
-        let next = read(program, dialect, line, len).map_err(|(s, _)| s)?;
-        program.write_unaligned(next);
-        Ok(cncrot_status::Ok)
+        read(program, dialect, line, len, true).map_err(|(s, _)| s)
     })
 }
 
@@ -295,10 +315,11 @@ pub unsafe extern "C" fn cncrot_program_column(
 ) -> i32 {
     guard(|| {
         non_null(&[program.is_null(), line.is_null(), column.is_null()])?;
-        match read(program, dialect, line, len) {
-            Ok(_) => {
+        // Never written: `program` is only read (`write` false).
+        match read(program.cast_mut(), dialect, line, len, false) {
+            Ok(status) => {
                 column.write_unaligned(0);
-                Ok(cncrot_status::Ok)
+                Ok(status)
             }
             Err((s, c)) => {
                 column.write_unaligned(c);
@@ -447,8 +468,10 @@ mod tests {
         let p = Program::default()
             .line(Dialect::Twincat, b"ROT Z30")
             .unwrap()
+            .0
             .line(Dialect::Twincat, b"AROT X10")
-            .unwrap();
+            .unwrap()
+            .0;
         let c = store(&p, 0);
         assert_eq!(load(&c), Ok(p));
         let mut bad = c;
@@ -472,7 +495,7 @@ mod tests {
         bad.origin[2] = f64::NAN;
         assert_eq!(load(&bad), Err(Error::BadState));
         // A cancelled program is all zero again but for its dialect and seal.
-        let off = p.line(Dialect::Twincat, b"ROT").unwrap();
+        let off = p.line(Dialect::Twincat, b"ROT").unwrap().0;
         let c = store(&off, 0);
         assert_eq!(
             c,
@@ -497,7 +520,8 @@ mod tests {
     fn the_seal_is_the_documented_one() {
         let p = Program::default()
             .line(Dialect::Fanuc, b"G68.2 X10 I0 J30 K0")
-            .unwrap();
+            .unwrap()
+            .0;
         let c = store(&p, 0);
         let bytes = program_bytes(&c);
         assert_eq!(c.reserved, crc32(&bytes[..132]) ^ 0x5052_4731);
@@ -512,11 +536,13 @@ mod tests {
     fn every_single_bit_flip_is_refused() {
         let fanuc = Program::default()
             .line(Dialect::Fanuc, b"G68.2 X10 I0 J30 K0")
-            .unwrap();
+            .unwrap()
+            .0;
         let twincat = Program::default()
             .line(Dialect::Twincat, b"ROT X10 Y-20 Z30")
-            .unwrap();
-        let off = fanuc.line(Dialect::Fanuc, b"G69").unwrap();
+            .unwrap()
+            .0;
+        let off = fanuc.line(Dialect::Fanuc, b"G69").unwrap().0;
         let states = [
             cncrot_program::default(),
             store(&Program::default(), 0),

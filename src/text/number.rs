@@ -181,35 +181,75 @@ pub fn parse(negative: bool, digits: &[u8], exp10: i32) -> Result<f64, Error> {
     parse_exact(digits, sig, e, w, used).map(sign)
 }
 
-/// [`parse`] of at most 19 digits scaled by at most 10^±80 (every number of a program in
-/// practice): the digits as one 64-bit integer, read in one pass, no range to check.
+/// The digits at the start of a number (digits with at most one point; a second point ends
+/// them), gathered in the same pass that finds where they end.
+#[derive(Clone, Copy, Debug)]
+pub struct Scanned {
+    /// How many bytes the digits and the point take.
+    pub len: usize,
+    /// The digits as one integer (meaningful for at most 19 of them).
+    w: u64,
+    /// How many digits.
+    n: usize,
+    /// How many digits after the point.
+    frac: i32,
+}
+
+/// Finds the digits at the start of `text` (see [`Scanned`]).
 #[inline(always)]
-fn parse_short(digits: &[u8], exp10: i32) -> Option<f64> {
-    if digits.len() > 20 {
-        return None;
-    }
-    let (mut w, mut n, mut frac, mut point) = (0u64, 0u32, 0i32, false);
-    for &b in digits {
+pub fn scan_digits(text: &[u8]) -> Scanned {
+    let (mut w, mut n, mut frac, mut point, mut len) = (0u64, 0usize, 0i32, false, 0usize);
+    for &b in text {
         let d = b.wrapping_sub(b'0');
         if d < 10 {
             w = w.wrapping_mul(10).wrapping_add(u64::from(d));
             n += 1;
-            frac += i32::from(point);
+            frac = frac.saturating_add(i32::from(point));
         } else if b == b'.' && !point {
             point = true;
         } else {
-            return None;
+            break;
         }
+        len += 1;
     }
-    let e = exp10.checked_sub(frac)?;
+    Scanned { len, w, n, frac }
+}
+
+/// [`parse`] of `digits` already scanned by [`scan_digits`] (`digits` is the text it
+/// scanned, `s.len` bytes): the same value, without a second pass for numbers of at most
+/// 19 digits.
+#[inline(always)]
+pub fn parse_scanned(negative: bool, digits: &[u8], s: &Scanned, exp10: i32) -> Result<f64, Error> {
+    match short(s, exp10) {
+        Some(v) if negative && v != 0.0 => Ok(-v),
+        Some(v) => Ok(v),
+        None => parse(negative, digits, exp10),
+    }
+}
+
+/// The value of at most 19 scanned digits scaled by at most 10^±80 (every number of a
+/// program in practice; no range to check), or `None`.
+#[inline(always)]
+fn short(s: &Scanned, exp10: i32) -> Option<f64> {
+    let e = exp10.checked_sub(s.frac)?;
     // 1 to 19 digits: the magnitude stays within 10^±100.
-    if n == 0 || n > 19 || !(-80..=80).contains(&e) {
+    if s.n == 0 || s.n > 19 || !(-80..=80).contains(&e) {
         return None;
     }
-    if w == 0 {
+    if s.w == 0 {
         return Some(0.0);
     }
-    parse_small(w, e)
+    parse_small(s.w, e)
+}
+
+/// [`parse`] of at most 19 digits scaled by at most 10^±80, in one pass.
+#[inline(always)]
+fn parse_short(digits: &[u8], exp10: i32) -> Option<f64> {
+    let s = scan_digits(digits);
+    if s.len != digits.len() {
+        return None;
+    }
+    short(&s, exp10)
 }
 
 /// `w · 10^e` for `w < 10^19`: Clinger's case first (`w` and `10^|e|` exact doubles, one

@@ -233,17 +233,11 @@ impl<'a> Cursor<'a> {
             }
             _ => false,
         };
-        let mut point = false;
         // A second point ends the digits, so that it is reported where it stands.
         let rest = self.rest();
-        let len = rest
-            .iter()
-            .take_while(|&&b| {
-                b.is_ascii_digit() || (b == b'.' && !core::mem::replace(&mut point, true))
-            })
-            .count();
-        let digits = rest.get(..len).unwrap_or(&[]);
-        self.pos += len;
+        let scanned = number::scan_digits(rest);
+        let digits = rest.get(..scanned.len).unwrap_or(&[]);
+        self.pos += scanned.len;
         if digits.is_empty() {
             // `R1`, `Q120`, `#100`, `$P_…`, `_name`, `(`, `[`: not a number the block can
             // be executed with here.
@@ -299,7 +293,7 @@ impl<'a> Cursor<'a> {
             }
             Some(_) => return Err(self.error(Error::Parse)),
         }
-        number::parse(negative, digits, exp).map_err(|error| LineError {
+        number::parse_scanned(negative, digits, &scanned, exp).map_err(|error| LineError {
             error,
             column: start + 1,
         })
@@ -406,6 +400,156 @@ pub fn address_words<const N: usize>(
             *g = true;
             *col = at;
         }
+    }
+}
+
+/// Which comments a dialect has: `;` to the end of the line, `( … )`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Comments {
+    /// `;` starts a comment to the end of the line.
+    pub semicolon: bool,
+    /// `(` starts a comment to the next `)`.
+    pub parens: bool,
+}
+
+/// One token of a block, for telling what a block does without reading it: an address
+/// word (`G54.1`, `X-10.`, `#5221`: `letter` upper-cased, `#` for a variable, `value` the
+/// number as written) or a name (`MIRROR`, `$P_UIFR`, `CYCL`, `7.0`: `letter` 0, `value`
+/// the whole name).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Token<'a> {
+    /// The address letter (upper case), `#`, or 0 for a name.
+    pub letter: u8,
+    /// The number after the letter, or the name.
+    pub value: &'a [u8],
+    /// 1-based column of the token.
+    pub column: usize,
+    /// Whether `=` follows (after an index in brackets): an assignment.
+    pub assigned: bool,
+}
+
+impl Token<'_> {
+    /// The value of an address word as a G- or M-code in tenths (`54.1` → 541, `69` → 690,
+    /// `068.2` → 682), if it is a plain number with at most one decimal.
+    pub fn code(&self) -> Option<u32> {
+        let (int, frac) = match self.value.iter().position(|&b| b == b'.') {
+            Some(k) => (self.value.get(..k)?, self.value.get(k + 1..)?),
+            None => (self.value, &[][..]),
+        };
+        if int.is_empty() || int.len() > 6 || frac.len() > 1 {
+            return None;
+        }
+        let mut v = 0u32;
+        for &b in int.iter().chain(frac) {
+            if !b.is_ascii_digit() {
+                return None;
+            }
+            v = v * 10 + u32::from(b - b'0');
+        }
+        Some(if frac.is_empty() { v * 10 } else { v })
+    }
+
+    /// Whether this is the name `name` (case-insensitive).
+    pub fn is(&self, name: &[u8]) -> bool {
+        self.letter == 0 && self.value.eq_ignore_ascii_case(name)
+    }
+}
+
+/// The tokens of a block, comments and strings skipped. `words`: address words, split
+/// where no space separates them (`G0G90G54X0` is four words: ISO dialects); otherwise
+/// names, runs of letters, digits, `_`, `$`, `#` and `.` (SINUMERIK, Heidenhain).
+pub struct Tokens<'a> {
+    text: &'a [u8],
+    pos: usize,
+    comments: Comments,
+    words: bool,
+}
+
+impl<'a> Tokens<'a> {
+    /// The tokens of `text`.
+    pub fn new(text: &'a [u8], comments: Comments, words: bool) -> Tokens<'a> {
+        Tokens {
+            text,
+            pos: 0,
+            comments,
+            words,
+        }
+    }
+
+    fn at(&self, k: usize) -> u8 {
+        self.text.get(k).copied().unwrap_or(0)
+    }
+
+    /// Whether `=` (not `==`) follows from `k` on, after spaces and one `[…]` index.
+    fn assigned_from(&self, mut k: usize) -> bool {
+        while self.at(k) == b' ' || self.at(k) == b'\t' {
+            k += 1;
+        }
+        if self.at(k) == b'[' {
+            while k < self.text.len() && self.at(k) != b']' {
+                k += 1;
+            }
+            k += 1;
+            while self.at(k) == b' ' || self.at(k) == b'\t' {
+                k += 1;
+            }
+        }
+        self.at(k) == b'=' && self.at(k + 1) != b'='
+    }
+}
+
+impl<'a> Iterator for Tokens<'a> {
+    type Item = Token<'a>;
+
+    fn next(&mut self) -> Option<Token<'a>> {
+        let name = |b: u8| b.is_ascii_alphanumeric() || b"_$#.".contains(&b);
+        while self.pos < self.text.len() {
+            let b = self.at(self.pos);
+            let start = self.pos;
+            if self.comments.semicolon && b == b';' {
+                self.pos = self.text.len();
+                return None;
+            }
+            if (self.comments.parens && b == b'(') || b == b'"' {
+                let close = if b == b'(' { b')' } else { b'"' };
+                self.pos += 1;
+                while self.pos < self.text.len() && self.at(self.pos) != close {
+                    self.pos += 1;
+                }
+                self.pos += 1;
+                continue;
+            }
+            if self.words && (b.is_ascii_alphabetic() || b == b'#') {
+                self.pos += 1;
+                let mut k = self.pos;
+                if matches!(self.at(k), b'+' | b'-') {
+                    k += 1;
+                }
+                while self.at(k).is_ascii_digit() || self.at(k) == b'.' {
+                    k += 1;
+                }
+                self.pos = k;
+                return Some(Token {
+                    letter: b.to_ascii_uppercase(),
+                    value: self.text.get(start + 1..k).unwrap_or(&[]),
+                    column: start + 1,
+                    assigned: self.assigned_from(k),
+                });
+            }
+            if !self.words && name(b) {
+                while self.pos < self.text.len() && name(self.at(self.pos)) {
+                    self.pos += 1;
+                }
+                return Some(Token {
+                    letter: 0,
+                    value: self.text.get(start..self.pos).unwrap_or(&[]),
+                    column: start + 1,
+                    assigned: self.assigned_from(self.pos),
+                });
+            }
+            self.pos += 1;
+        }
+        None
     }
 }
 

@@ -370,9 +370,11 @@ pub fn orirpy_angles(v: Vector) -> Result<([f64; 3], bool), Error> {
 
 // Program lines.
 
-use super::family::{put, v3, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use super::family::{put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
 use crate::text::number::{write, write_integer, write_word, Out, Style};
-use crate::text::scan::{address_words, whole, Cursor, Exponent, LineError, Syntax};
+use crate::text::scan::{
+    address_words, whole, Comments, Cursor, Exponent, LineError, Syntax, Tokens,
+};
 
 const WORDS: Syntax = Syntax {
     exponent: Exponent::Ex,
@@ -492,6 +494,8 @@ fn at(column: usize) -> impl Fn(Error) -> LineError {
 /// `CYCLE800()` and `_TC = "0"` deselect the swivel \[doc\]; `_ST` units digit 0 new plane,
 /// 1 additive \[choice\], the higher digits (tool alignment, …) do not change the plane;
 /// `_DIR`, `_FR`, `_FR_I`, `_DMODE` choose motion and solution, not the plane.
+// Its own frame: the reader's frame holds only the deepest command's (CYCLE600) locals.
+#[inline(never)]
 fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
     let args = Args::<16>::read(c, 1)?;
     c.end(true, false)?;
@@ -590,6 +594,91 @@ fn angle_mode(selector: i32) -> Result<AngleMode, Error> {
     }
 }
 
+/// A SINUMERIK block that does not start with a command the library reads (`rest`, which
+/// starts at byte `offset` of the line). A frame command elsewhere on it is refused at its
+/// column ("frame instructions are programmed in their own block" \[doc\]). Not followed:
+/// the settable frames `G54`–`G57`, `G505`–`G599` and `G500`, the axial offsets `G58`/`G59`,
+/// mirroring and scaling (`MIRROR`, `AMIRROR`, `SCALE`, `ASCALE`), frames from the tool
+/// orientation (`TOROT`, `TOROTX`/`Y`/`Z`, `TOFRAME`, `TOFRAMEX`/`Y`/`Z`, `TOROTOF`) and from
+/// the workpiece (`PAROT`, `PAROTOF`), and assignments to frame variables (`$P_…FRAME`,
+/// `$P_UIFR[…]`, `$P_UBFR`, `$P_UGFR`). Anything else is passed over (motion, `T`/`D`/`M`,
+/// `R` parameters, `DEF`, control structures, calls, `TRAORI`, `G53`/`G153`/`SUPA`, which
+/// suppress frames for their own block only).
+#[inline(never)]
+fn other_block(rest: &[u8], offset: usize) -> Result<Block, LineError> {
+    let comments = Comments {
+        semicolon: true,
+        parens: false,
+    };
+    const COMMANDS: [&[u8]; 10] = [
+        b"ROT",
+        b"CROT",
+        b"AROT",
+        b"ROTS",
+        b"CROTS",
+        b"AROTS",
+        b"TRANS",
+        b"ATRANS",
+        b"CYCLE800",
+        b"CYCLE600",
+    ];
+    const NOT_FOLLOWED: [&[u8]; 22] = [
+        b"G54",
+        b"G55",
+        b"G56",
+        b"G57",
+        b"G500",
+        b"G58",
+        b"G59",
+        b"MIRROR",
+        b"AMIRROR",
+        b"SCALE",
+        b"ASCALE",
+        b"TOROT",
+        b"TOROTX",
+        b"TOROTY",
+        b"TOROTZ",
+        b"TOFRAME",
+        b"TOFRAMEX",
+        b"TOFRAMEY",
+        b"TOFRAMEZ",
+        b"TOROTOF",
+        b"PAROT",
+        b"PAROTOF",
+    ];
+    let mut not_followed = false;
+    for t in Tokens::new(rest, comments, false) {
+        if COMMANDS.iter().any(|name| t.is(name)) {
+            return Err(LineError {
+                error: Error::UnknownWord,
+                column: offset + t.column,
+            });
+        }
+        let v = t.value;
+        let starts = |p: &[u8]| v.get(..p.len()).is_some_and(|h| h.eq_ignore_ascii_case(p));
+        let g = (starts(b"G") && v.len() == 4)
+            .then(|| v.get(1..))
+            .flatten()
+            .filter(|d| d.iter().all(u8::is_ascii_digit))
+            .map(|d| d.iter().fold(0u32, |n, &b| n * 10 + u32::from(b - b'0')));
+        let settable = g.is_some_and(|n| (505..=599).contains(&n));
+        let frame_variable = t.assigned
+            && starts(b"$P_")
+            && (v.windows(5).any(|w| w.eq_ignore_ascii_case(b"FRAME"))
+                || starts(b"$P_UIFR")
+                || starts(b"$P_UBFR")
+                || starts(b"$P_UGFR"));
+        if NOT_FOLLOWED.iter().any(|name| t.is(name)) || settable || frame_variable {
+            not_followed = true;
+        }
+    }
+    Ok(if not_followed {
+        Block::NotFollowed
+    } else {
+        Block::Passed
+    })
+}
+
 /// The SINUMERIK family: `CYCLE800`, `CYCLE600`, the frame commands.
 pub(crate) struct Sinumerik;
 
@@ -625,7 +714,7 @@ impl Family for Sinumerik {
     /// comments. "Frame instructions are programmed in their own block" \[doc\]: nothing else may
     /// stand on the line.
     #[inline(never)]
-    fn read_line(m: &Modal, text: &[u8]) -> Result<Modal, LineError> {
+    fn read_line(m: &Modal, text: &[u8]) -> Result<Block, LineError> {
         let mut c = Cursor::new(text);
         c.block_number(b'N');
         if c.peek() == Some(b':') {
@@ -637,14 +726,14 @@ impl Family for Sinumerik {
         }
         c.label();
         if c.at_end() || c.rest_is_comment(true, false) {
-            return Ok(*m);
+            return Ok(Block::Passed);
         }
         let column = c.column();
         if c.keyword(b"CYCLE800") {
-            return cycle800_line(m, &mut c);
+            return cycle800_line(m, &mut c).map(Block::Frame);
         }
         if c.keyword(b"CYCLE600") {
-            return cycle600_line(m, &mut c, column);
+            return cycle600_line(m, &mut c, column).map(Block::Frame);
         }
         // Frame commands: (substituting, additive) × (rotation, projection, translation).
         let commands: [(&[u8], bool, u8); 8] = [
@@ -659,7 +748,7 @@ impl Family for Sinumerik {
         ];
         let Some(&(_, additive, kind)) = commands.iter().find(|(name, _, _)| c.keyword(name))
         else {
-            return Err(c.error(Error::UnknownWord));
+            return other_block(text.get(column - 1..).unwrap_or(&[]), column - 1);
         };
         let words = address_words(&mut c, *b"XYZ", WORDS, true, (true, false))?;
         let (xyz, given) = (words.values, words.given);
@@ -668,7 +757,7 @@ impl Family for Sinumerik {
             return if additive {
                 Err(c.error(Error::MissingWord))
             } else {
-                Ok(m.with_frame(Frame::IDENTITY))
+                Ok(Block::Frame(m.with_frame(Frame::IDENTITY)))
             };
         }
         let step = match kind {
@@ -692,11 +781,11 @@ impl Family for Sinumerik {
             }
             _ => Frame::with_translations(xyz, crate::IDENTITY, [0.0; 3]),
         };
-        Ok(m.with_frame(if additive {
+        Ok(Block::Frame(m.with_frame(if additive {
             m.frame.compose(&step)
         } else {
             step
-        }))
+        })))
     }
 
     /// `CYCLE800` (`_MODE` 57), `CYCLE800 <_MODE>`, `ROT` (RPY), `ROT EULER`.
