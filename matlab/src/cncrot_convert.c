@@ -4,19 +4,19 @@
 
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   check_nargs(nrhs, 5, 5, nlhs, 2);
-  int32_t ki = integer_arg(prhs[0], "intrinsic_in");
-  int32_t si = integer_arg(prhs[1], "sequence_in");
-  size_t n = rows3_arg(prhs[2], "angles_in");
-  int32_t ko = integer_arg(prhs[3], "intrinsic_out");
-  int32_t so = integer_arg(prhs[4], "sequence_out");
-  const double *in = real_data(prhs[2], "angles_in");
+  int32_t ki = convention_arg(prhs[0], 1, "intrinsic_in");
+  int32_t si = sequence_arg(prhs[1], 2, "sequence_in", 0);
+  size_t n = rows3_arg(prhs[2], 3, "angles_in");
+  int32_t ko = convention_arg(prhs[3], 4, "intrinsic_out");
+  int32_t so = sequence_arg(prhs[4], 5, "sequence_out", 1);
+  const double *in = real_data(prhs[2], 3, "angles_in");
   size_t k, rows = n ? n : 1;
   /* Rows contiguous for the library (MATLAB keeps columns contiguous). */
   double *a = (double *)mxCalloc(3 * rows, sizeof(double));
   double *b = (double *)mxCalloc(3 * rows, sizeof(double));
   int32_t *st = batch_statuses(n);
   rows_from_columns(in, n, a);
-  raise_batch(cncrot_convert_many(ki, si, a, n, ko, so, b, st), st, n);
+  raise_batch(cncrot_convert_many(ki, si, a, n, ko, so, b, st), st, n, label(3, "angles_in"), "row");
   mxArray *out = mxCreateDoubleMatrix(n, 3, mxREAL);
   mxArray *sts = mxCreateDoubleMatrix(n, 1, mxREAL);
   double *o = mxGetDoubles(out), *s = mxGetDoubles(sts);

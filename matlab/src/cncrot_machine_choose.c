@@ -5,16 +5,32 @@
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   check_nargs(nrhs, 3, 5, nlhs, 4);
   cncrot_machine m;
-  machine_arg(prhs[0], &m);
-  if (squares_arg(prhs[1], "F", 4) != 1) mexErrMsgIdAndTxt("cncrot:badSize", "F must be 4-by-4");
-  if (mxGetNumberOfElements(prhs[2]) != 3) mexErrMsgIdAndTxt("cncrot:badSize", "current must have 3 elements");
+  machine_arg(prhs[0], 1, &m);
   double f[16], cur[3], ax[3], res[3], rem[16];
-  frame_to_row_major(real_data(prhs[1], "F"), f);
-  memcpy(cur, real_data(prhs[2], "current"), sizeof cur);
-  int32_t rule = nrhs > 3 ? integer_arg(prhs[3], "rule") : CNCROT_CHOOSE_CLOSEST;
-  int32_t ref = nrhs > 4 ? integer_arg(prhs[4], "reference axis") : 0;
+  frame_arg(prhs[1], 2, "F", f);
+  point_arg(prhs[2], 3, "current", cur);
+  int32_t rule = nrhs > 3 ? rule_arg(prhs[3], 4, "rule") : CNCROT_CHOOSE_CLOSEST;
+  int32_t ref = nrhs > 4 ? integer_arg(prhs[4], 5, "ref") : 0;
   int32_t s = cncrot_machine_choose(&m, f, cur, rule, ref, ax, res, rem);
-  if (s < 0) raise_status(s, -1, 0);
+  if (s == CNCROT_STATUS_BAD_ARGUMENT) {
+    /* Of the library's reasons, the one that holds (header: rule, reference axis, an
+     * unused current position not 0). */
+    int sided = rule == CNCROT_CHOOSE_MINUS || rule == CNCROT_CHOOSE_PLUS;
+    if (sided && (ref < 1 || ref > m.count))
+      fail("cncrot:badArgument", "%s must be an axis of the machine, 1..%d, for rule 'minus' or 'plus'; got %d", label(5, "ref"),
+           (int)m.count, (int)ref);
+    if (!sided && ref != 0)
+      fail("cncrot:badArgument", "%s must be 0 (or left out) for rule 'closest' or 'inverse'; got %d", label(5, "ref"), (int)ref);
+    for (int k = m.count; k < 3; k++)
+      if (cur[k] != 0)
+        fail("cncrot:badArgument", "%s: the position of axis %d, which the machine does not have, must be 0; got %s",
+             label(3, "current"), k + 1, number_text(cur[k]));
+  }
+  if (s < 0) {
+    const char *where = NULL;
+    if (s == CNCROT_STATUS_UNREACHABLE || s == CNCROT_STATUS_OUT_OF_TRAVEL || s == CNCROT_STATUS_NOT_A_ROTATION) where = label(2, "F");
+    raise_at(s, where, NULL, -1, 0);
+  }
   mxArray *a = mxCreateDoubleMatrix(1, 3, mxREAL);
   memcpy(mxGetDoubles(a), ax, sizeof ax);
   plhs[0] = a;

@@ -4,9 +4,9 @@
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   check_nargs(nrhs, 2, 2, nlhs, 1);
   cncrot_machine m;
-  machine_arg(prhs[0], &m);
-  size_t n = rows3_arg(prhs[1], "axes");
-  const double *a = real_data(prhs[1], "axes");
+  machine_arg(prhs[0], 1, &m);
+  size_t n = rows3_arg(prhs[1], 2, "axes");
+  const double *a = real_data(prhs[1], 2, "axes");
   mwSize dims[3] = {4, 4, (mwSize)n};
   mxArray *out = mxCreateNumericArray(3, dims, mxDOUBLE_CLASS, mxREAL);
   double *o = mxGetDoubles(out);
@@ -15,7 +15,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     int32_t s = cncrot_machine_forward(&m, ax, f);
     if (s < 0) {
       mxDestroyArray(out);
-      raise_status(s, (long)r, n);
+      raise_status(s, label(2, "axes"), "row", (long)r, n);
     }
     frame_to_col_major(f, o + 16 * r);
   }

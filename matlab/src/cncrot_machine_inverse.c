@@ -4,13 +4,12 @@
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   check_nargs(nrhs, 2, 2, nlhs, 2);
   cncrot_machine m;
-  machine_arg(prhs[0], &m);
-  if (squares_arg(prhs[1], "F", 4) != 1) mexErrMsgIdAndTxt("cncrot:badSize", "F must be 4-by-4");
+  machine_arg(prhs[0], 1, &m);
   double f[16], sol[6];
-  frame_to_row_major(real_data(prhs[1], "F"), f);
+  frame_arg(prhs[1], 2, "F", f);
   size_t n = 0;
   int32_t s = cncrot_machine_inverse(&m, f, sol, 2, &n);
-  if (s < 0) raise_status(s, -1, 0);
+  if (s < 0) raise_at(s, label(2, "F"), NULL, -1, 0);
   mxArray *out = mxCreateDoubleMatrix(n, 3, mxREAL);
   double *o = mxGetDoubles(out);
   for (size_t r = 0; r < n; r++)

@@ -9,8 +9,8 @@ static void field(const mxArray *s, const char *name, double *out, size_t n) {
   const mxArray *f = mxGetField(s, 0, name);
   if (!f) return;
   if (!mxIsDouble(f) || mxIsComplex(f) || mxIsSparse(f) || mxGetNumberOfElements(f) != n)
-    mexErrMsgIdAndTxt("cncrot:badState", "state.%s must be %zu real doubles", name, n);
-  const double *d = real_data(f, name);
+    fail("cncrot:badState", "%s: field %s must be %d real doubles", label(3, "state"), name, (int)n);
+  const double *d = real_data(f, 3, "state");
   memcpy(out, d, n * sizeof *out);
 }
 
@@ -28,7 +28,7 @@ static void from_struct(const mxArray *s, cncrot_program *p) {
   memset(p, 0, sizeof *p);
   if (mxIsEmpty(s) && !mxIsStruct(s)) return;
   if (!mxIsStruct(s) || mxGetNumberOfElements(s) != 1)
-    mexErrMsgIdAndTxt("cncrot:badClass", "state must be a 1-by-1 struct from cncrot_program_lines, or []");
+    fail("cncrot:badClass", "%s must be a 1-by-1 struct from cncrot_program_lines, or []; got %s", label(3, "state"), described(s));
   double r[9], v[3];
   field(s, "rotation", r, 9);
   to_row_major(r, p->rotation);
@@ -49,7 +49,7 @@ static void from_struct(const mxArray *s, cncrot_program *p) {
   memset(&fresh, 0, sizeof fresh);
   fresh.options = p->options;
   if (memcmp(&fresh, p, sizeof fresh) == 0 && cncrot_program_init(p, fresh.options) < 0)
-    mexErrMsgIdAndTxt("cncrot:badState", "state.options: %u is not a combination of cncrot program options", (unsigned)fresh.options);
+    fail("cncrot:badState", "%s: options %u is not a combination of cncrot program options", label(3, "state"), (unsigned)fresh.options);
 }
 
 static mxArray *to_struct(const cncrot_program *p) {
@@ -69,26 +69,33 @@ static mxArray *to_struct(const cncrot_program *p) {
   return s;
 }
 
-/* One line of text as bytes (characters beyond ASCII become a byte every dialect refuses). */
+/* One line of text as bytes (characters beyond ASCII become a byte every dialect refuses):
+ * a char row vector or a string scalar. */
 static size_t line_bytes(const mxArray *a, char *out, size_t cap) {
-  if (!mxIsChar(a)) mexErrMsgIdAndTxt("cncrot:badClass", "lines must be char or a cell array of char");
-  size_t n = mxGetNumberOfElements(a);
-  if (n > 0 && (mxGetNumberOfDimensions(a) != 2 || mxGetM(a) != 1))
-    mexErrMsgIdAndTxt("cncrot:badSize", "a line must be a char row vector");
-  const mxChar *c = mxGetChars(a);
+  size_t n = 0;
+  const mxChar *c = chars_of(a, 2, "lines", &n);
+  if (c == NULL)
+    fail("cncrot:badClass", "%s must be text (char, a string, or a cell array of them); got %s", label(2, "lines"), described(a));
   size_t k;
   /* Longer lines than any dialect reads arrive cut to cap bytes: the library refuses them. */
-  for (k = 0; k < n && k < cap; k++) out[k] = (char)(c[k] > 127 ? 0x80 : c[k]);
+  for (k = 0; k < n && k < cap; k++) out[k] = ascii_byte(c[k]);
   return k;
 }
 
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   check_nargs(nrhs, 2, 3, nlhs, 3);
-  int32_t dialect = integer_arg(prhs[0], "dialect");
+  int32_t dialect = dialect_arg(prhs[0], 1, "dialect");
   cncrot_program p;
   if (nrhs == 3) from_struct(prhs[2], &p);
   else memset(&p, 0, sizeof p);
   const mxArray *lines = prhs[1];
+  if (mxIsClass(lines, "string") && mxGetNumberOfElements(lines) != 1) {
+    /* A string array: its elements as a cell array of char, by MATLAB's cellstr. */
+    mxArray *cells = NULL, *in = (mxArray *)lines;
+    if (mexCallMATLABWithTrap(1, &cells, 1, &in, "cellstr") != NULL || cells == NULL)
+      fail("cncrot:badClass", "%s: the strings could not be read (a missing string?)", label(2, "lines"));
+    lines = cells;
+  }
   int cell = mxIsCell(lines);
   size_t n = cell ? mxGetNumberOfElements(lines) : 1;
   mxArray *frames = mxCreateNumericArray(3, (mwSize[]){4, 4, n}, mxDOUBLE_CLASS, mxREAL);
@@ -98,7 +105,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   int32_t s = cncrot_program_frame(&p, f);
   if (s < 0) {
     mxDestroyArray(frames);
-    raise_status(s, -1, 0);
+    raise_at(s, label(3, "state"), NULL, -1, 0);
   }
   for (size_t k = 0; k < n; k++) {
     const mxArray *a = cell ? mxGetCell(lines, k) : lines;
@@ -110,19 +117,18 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     if (s < 0) {
       cncrot_program_column(&p, dialect, buf, len, &column);
       mxDestroyArray(frames);
-      int per_row;
-      if (column > 0)
-        mexErrMsgIdAndTxt(status_id(s, &per_row), "line %zu, column %zu: %s", k + 1, column, cncrot_status_str(s));
-      raise_status(s, (long)k, n);
+      char where[96];
+      if (column > 0) {
+        snprintf(where, sizeof where, "%s, line %d, column %d", label(2, "lines"), (int)(k + 1), (int)column);
+        raise_at(s, where, NULL, -1, 0);
+      }
+      raise_at(s, label(2, "lines"), "line", (long)k, n);
     }
     cncrot_program_frame(&p, f);
-    for (int i = 0; i < 4; i++)
-      for (int j = 0; j < 4; j++) fr[16 * k + i + 4 * j] = f[4 * i + j];
+    frame_to_col_major(f, fr + 16 * k);
   }
   mxArray *F = mxCreateDoubleMatrix(4, 4, mxREAL);
-  double *fd = mxGetDoubles(F);
-  for (int i = 0; i < 4; i++)
-    for (int j = 0; j < 4; j++) fd[i + 4 * j] = f[4 * i + j];
+  frame_to_col_major(f, mxGetDoubles(F));
   plhs[0] = F;
   if (nlhs > 1) plhs[1] = to_struct(&p);
   if (nlhs > 2) plhs[2] = frames; else mxDestroyArray(frames);

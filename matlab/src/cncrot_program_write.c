@@ -1,42 +1,65 @@
 /* [line, status] = cncrot_program_write(dialect, form, F, decimals): see cncrot_program_write.m. */
 #include "gateway.h"
 
+static const double IDENTITY[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+/* Raises a status of frame k of n, naming what it concerns: what the library refuses with
+ * the identity frame and the shortest numbers is the form's, what it refuses with the
+ * identity and the decimals is the decimals', the rest the frame's. */
+static void raise_write(int32_t s, int32_t dialect, const char *form, int32_t decimals, long k, size_t n) {
+  char out[CNCROT_PROGRAM_LINE_MAX + 1];
+  char where[160];
+  if (cncrot_program_write(dialect, form, IDENTITY, -1, out, sizeof out) == s) {
+    char shown[65];
+    size_t k;
+    for (k = 0; form[k] && k < 64; k++) shown[k] = (unsigned char)form[k] >= 0x20 && (unsigned char)form[k] < 0x7F ? form[k] : '?';
+    shown[k] = '\0';
+    snprintf(where, sizeof where, "%s '%s'", label(2, "form"), shown);
+    raise_at(s, where, NULL, -1, 0);
+  }
+  if (cncrot_program_write(dialect, form, IDENTITY, decimals, out, sizeof out) == s) {
+    if (s == CNCROT_STATUS_BAD_ARGUMENT && decimals > 17)
+      fail("cncrot:badArgument", "%s must be 0..17, or negative for the shortest numbers that read back exactly; got %d",
+           label(4, "decimals"), (int)decimals);
+    raise_at(s, label(4, "decimals"), NULL, -1, 0);
+  }
+  raise_at(s, label(3, "F"), "frame", k, n);
+}
+
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   check_nargs(nrhs, 3, 4, nlhs, 2);
-  int32_t dialect = integer_arg(prhs[0], "dialect");
+  int32_t dialect = dialect_arg(prhs[0], 1, "dialect");
   char form[65];
-  if (!mxIsChar(prhs[1])) mexErrMsgIdAndTxt("cncrot:badClass", "form must be a char row vector");
-  size_t m = mxGetNumberOfElements(prhs[1]);
-  if (m > 64) mexErrMsgIdAndTxt("cncrot:badArgument", "form is longer than 64 characters");
-  const mxChar *c = mxGetChars(prhs[1]);
+  size_t m = 0;
+  const mxChar *c = chars_of(prhs[1], 2, "form", &m);
+  if (c == NULL) fail("cncrot:badClass", "%s must be text such as 'G68.2' or 'PLANE SPATIAL'; got %s", label(2, "form"), described(prhs[1]));
+  if (m > 64) fail("cncrot:badArgument", "%s is longer than 64 characters", label(2, "form"));
   for (size_t k = 0; k < m; k++) {
-    if (c[k] == 0) mexErrMsgIdAndTxt("cncrot:badArgument", "form contains a NUL character");
-    form[k] = (char)(c[k] > 127 ? 0x80 : c[k]);
+    if (char_code(c[k]) == 0) fail("cncrot:badArgument", "%s contains a NUL character", label(2, "form"));
+    form[k] = ascii_byte(c[k]);
   }
   form[m] = '\0';
-  int32_t decimals = nrhs > 3 ? integer_arg(prhs[3], "decimals") : -1;
-  size_t n = squares_arg(prhs[2], "F", 4);
-  const double *fd = real_data(prhs[2], "F");
+  size_t n = squares_arg(prhs[2], 3, "F", 4);
+  const double *fd = real_data(prhs[2], 3, "F");
+  int32_t decimals = nrhs > 3 ? integer_arg(prhs[3], 4, "decimals") : -1;
   char out[CNCROT_PROGRAM_LINE_MAX + 1];
   int32_t s;
   if (n == 0) {
     /* No frames: the arguments are still the library's to judge. */
-    double id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    s = cncrot_program_write(dialect, form, id, decimals, out, sizeof out);
-    if (s < 0 && s != CNCROT_STATUS_NOT_A_ROTATION) raise_status(s, -1, 0);
+    s = cncrot_program_write(dialect, form, IDENTITY, decimals, out, sizeof out);
+    if (s < 0 && s != CNCROT_STATUS_NOT_A_ROTATION) raise_write(s, dialect, form, decimals, -1, 0);
   }
   mxArray *lines = mxCreateCellMatrix(n, 1);
   mxArray *st = mxCreateDoubleMatrix(n, 1, mxREAL);
   double *sd = mxGetDoubles(st);
   for (size_t k = 0; k < n; k++) {
     double f[16];
-    for (int i = 0; i < 4; i++)
-      for (int j = 0; j < 4; j++) f[4 * i + j] = fd[16 * k + i + 4 * j];
+    frame_to_row_major(fd + 16 * k, f);
     s = cncrot_program_write(dialect, form, f, decimals, out, sizeof out);
     if (s < 0) {
       mxDestroyArray(lines);
       mxDestroyArray(st);
-      raise_status(s, (long)k, n);
+      raise_write(s, dialect, form, decimals, (long)k, n);
     }
     mxSetCell(lines, k, mxCreateString(out));
     sd[k] = s;
