@@ -18,6 +18,29 @@ function test_cncrot(cases_file)
       check(strcmp(err.identifier, id), sprintf('%s: got %s, expected %s', what, err.identifier, id));
     end
   end
+  % A function's result, or the identifier of its error.
+  function r = outcome(f)
+    try
+      r = f();
+    catch err
+      r = err.identifier;
+    end
+  end
+  % The identifier, and a message that begins with the function's name, holds no C status
+  % name, and contains each of `parts` (the argument, what it must be, what was given).
+  function expect_message(id, f, what, fname, varargin)
+    try
+      f();
+      check(false, [what ': no error']);
+    catch err
+      ok = strcmp(err.identifier, id) && strncmp(err.message, [fname ': '], numel(fname) + 2) ...
+           && isempty(strfind(err.message, 'CNCROT_STATUS'));
+      for k = 1:numel(varargin)
+        ok = ok && ~isempty(strfind(err.message, varargin{k}));
+      end
+      check(ok, sprintf('%s: got %s "%s", expected %s with %s', what, err.identifier, err.message, id, strjoin(varargin, ' | ')));
+    end
+  end
 
   % The paper's numbers (conventions.md).
   R = cncrot_matrix(0, 57, [30 45 60]);
@@ -101,8 +124,8 @@ function test_cncrot(cases_file)
   expect_error('cncrot:badClass', @() cncrot_matrix(1, 57, sparse([1 2 3])), 'sparse angles');
   expect_error('cncrot:badClass', @() cncrot_convert(0, 57, sparse([1 2 3]), 1, 39), 'sparse convert');
   expect_error('cncrot:badClass', @() cncrot_matrix(sparse(1), 57, [1 2 3]), 'sparse flag');
-  expect_error('cncrot:badClass', @() cncrot_matrix(int32(1), 57, [1 2 3]), 'int32 flag');
-  expect_error('cncrot:badClass', @() cncrot_matrix(true, 57, [1 2 3]), 'logical flag');
+  check(isequal(cncrot_matrix(int32(1), 57, [1 2 3]), cncrot_matrix(1, 57, [1 2 3])), 'int32 flag');
+  check(isequal(cncrot_matrix(true, 57, [1 2 3]), cncrot_matrix(1, 57, [1 2 3])), 'logical flag');
   expect_error('cncrot:badClass', @() cncrot_matrix(1, 57, int8([1 2 3])), 'int8 angles');
   check(isequal(size(cncrot_matrix(1, 57, zeros(0, 3))), [3 3 0]), 'empty angles');
   check(isequal(size(cncrot_matrix(1, 57, [])), [3 3 0]), '[] angles');
@@ -153,6 +176,140 @@ function test_cncrot(cases_file)
   check(isempty(strfind(messages{2}, 'row')), ['cycle600 error names no row: ' messages{2}]);
   check(~isempty(strfind(messages{3}, 'row 2:')), ['batch error names its row: ' messages{3}]);
   check(isempty(strfind(messages{4}, 'row')), ['single-row error names no row: ' messages{4}]);
+
+  % Names: conventions, dialects, rules and forms as MATLAB users write them, equal bit for
+  % bit to the numeric calls (codes: a1 + 4*a2 + 16*a3, X = 1, Y = 2, Z = 3, none = 0).
+  A = [30 45 60; 10 -20 170; 0 90 0];
+  check(isequal(cncrot_convert('extrinsic', 'XYZ', [30 45 60], 'intrinsic', 'ZXY'), cncrot_convert(0, 57, [30 45 60], 1, 39)), 'pinned: convert by names');
+  check(isequal(cncrot_matrix('intrinsic', 'ZYX', A), cncrot_matrix(1, 27, A)), 'pinned: matrix by names');
+  check(isequal(cncrot_convert("extrinsic", "XYZ", A, "intrinsic", "ZXY"), cncrot_convert(0, 57, A, 1, 39)), 'double-quoted names');
+  check(isequal(cncrot_convert('EXTRINSIC', 'xyz', A, 'Intrinsic', 'zXy'), cncrot_convert(0, 57, A, 1, 39)), 'names in any case');
+  check(isequal(cncrot_convert(0, "ZX'Y''", A, 1, 'Z''X''Y'''''), cncrot_convert(0, 39, A, 1, 39)), 'primes ignored');
+  check(isequal(cncrot_convert(0, "Z′X″Y", A, 1, 'ZXY'), cncrot_convert(0, 39, A, 1, 39)), 'Unicode primes ignored');
+  check(isequal(cncrot_matrix('extrinsic', 'X0Z', A), cncrot_matrix(0, 49, A)), 'X0Z skips the second rotation');
+  check(isequal(cncrot_matrix(1, '000', [1 2 3]), eye(3)), '000: no rotation');
+  check(isequal(cncrot_convert(int8(0), uint8(57), A, true, int32(39)), cncrot_convert(0, 57, A, 1, 39)), 'integer classes');
+  check(isequal(cncrot_convert(false, int64(57), A, uint16(1), single(39)), cncrot_convert(0, 57, A, 1, 39)), 'logical, int64, single');
+  check(isequal(cncrot_angles('intrinsic', 'ZXY', cncrot_matrix(0, 'XYZ', [30 45 60])), cncrot_angles(1, 39, cncrot_matrix(0, 57, [30 45 60]))), 'angles by names');
+  [a1, s1] = cncrot_angles(uint8(1), int16(27), cncrot_matrix(1, 27, [40 90 10]));
+  [a2, s2] = cncrot_angles(1, 27, cncrot_matrix(1, 27, [40 90 10]));
+  check(isequal(a1, a2) && isequal(s1, s2), 'angles with integer classes');
+  g1 = cycle600('extrinsic', 'UFK600', 1, 'XYZ', 0,0,0, 30,45,60, 0,0,0, 'intrinsic', 'ZXY', 0,0,0);
+  g2 = cycle600(0, 'UFK600', 1, 57, 0,0,0, 30,45,60, 0,0,0, 1, 39, 0,0,0);
+  check(isequal(g1, g2), 'cycle600 by names');
+  g1 = cycle600(int32(0), "UFK600", true, int8(57), 0,0,0, 30,45,60, 0,0,0, uint8(1), int32(39), false, int8(0), uint16(0));
+  check(isequal(g1, g2), 'cycle600 with integer classes and a double-quoted name');
+  d = cncrot_dialects();
+  names = {'sinumerik', 'heidenhain', 'fanuc', 'syntec', 'twincat', 'haas'};
+  codes = [d.SINUMERIK d.HEIDENHAIN d.FANUC d.SYNTEC d.TWINCAT d.HAAS];
+  lines = {'ROT Z30', 'PLANE SPATIAL SPA+0 SPB+0 SPC+30 TURN FMAX', 'G68.2 X0 Y0 Z0 I0 J0 K30', 'G68.2 X0 Y0 Z0 I0 J0 K30', 'ROT Z30', 'G268 Q123 X0 Y0 Z0 I0 J0 K30'};
+  for k = 1:numel(names)
+    F = cncrot_program_lines(codes(k), lines{k});
+    check(isequal(cncrot_program_lines(names{k}, lines{k}), F) && isequal(cncrot_program_lines(upper(names{k}), lines{k}), F) ...
+          && isequal(cncrot_program_lines(int32(codes(k)), lines{k}), F) && ~isequal(F, eye(4)), ['dialect by name: ' names{k}]);
+  end
+  F = cncrot_program_lines(d.FANUC, 'G68.2 X1 Y2 Z3 I10 J20 K30');
+  check(isequal(cncrot_program_write("fanuc", 'G68.2', F, int8(4)), cncrot_program_write(d.FANUC, 'G68.2', F, 4)), 'program_write by name');
+  R4 = [F(1:3, 1:3) [0; 0; 0]; 0 0 0 1];
+  check(isequal(cncrot_program_write('Heidenhain', "PLANE SPATIAL", R4), cncrot_program_write(d.HEIDENHAIN, 'PLANE SPATIAL', R4)), 'a double-quoted form');
+  [F3, st3, fr3] = cncrot_program_lines('twincat', {"N65 ROT Z30", 'N90 AROT Z15'});
+  [F4, st4, fr4] = cncrot_program_lines(5, {'N65 ROT Z30', 'N90 AROT Z15'});
+  check(isequal(F3, F4) && isequal(st3, st4) && isequal(fr3, fr4), 'lines as a cell with a double-quoted line');
+  fm = cncrot_forms();
+  check(isequal(cncrot_form_frame('g68_2', 0, [1 2 3 30 45 60]), cncrot_form_frame(fm.G68_2, 0, [1 2 3 30 45 60])), 'form g68_2');
+  check(isequal(cncrot_form_frame('G68.2', int8(0), [1 2 3 30 45 60]), cncrot_form_frame(fm.G68_2, 0, [1 2 3 30 45 60])), 'form G68.2, int8 selector');
+  check(isequal(cncrot_form_frame("PLANE SPATIAL", 0, [30 45 60]), cncrot_form_frame(fm.PLANE_SPATIAL, 0, [30 45 60])), 'form PLANE SPATIAL');
+  check(isequal(cncrot_form_frame('g268', uint16(123), [1 2 3 0 0 0]), cncrot_form_frame(fm.G268, 123, [1 2 3 0 0 0])), 'form g268, uint16 selector');
+  Fs = cncrot_form_frame(fm.PLANE_SPATIAL, 0, [30 45 60]);
+  [w1, t1] = cncrot_form_values('plane_spatial', 0, Fs);
+  [w2, t2] = cncrot_form_values(fm.PLANE_SPATIAL, 0, Fs);
+  check(isequal(w1, w2) && isequal(t1, t2), 'form_values by name');
+  fields = fieldnames(fm);
+  counts = struct('CYCLE800', 9, 'SINUMERIK_ROT', 3, 'SINUMERIK_ROTS', 2, 'PLANE_SPATIAL', 3, 'PLANE_EULER', 3, ...
+                  'PLANE_VECTOR', 6, 'PLANE_POINTS', 9, 'G68_2', 6, 'G158', 9, 'TWINCAT_ROT', 3, 'G268', 6, 'G68_3', 7, 'PLANE_PROJECTED', 3);
+  check(isequal(sort(fieldnames(counts)), sort(fields)), 'every form has a word count here');
+  for k = 1:numel(fields)
+    w = ones(1, counts.(fields{k}));
+    for sel = [0 1 57 123]
+      check(isequal(outcome(@() cncrot_form_frame(lower(fields{k}), sel, w)), outcome(@() cncrot_form_frame(fm.(fields{k}), sel, w))), ...
+            sprintf('form by name: %s, selector %d', lower(fields{k}), sel));
+    end
+  end
+  head = [0 0 0 1 0 0 0 0 0 0 0 0; 0 0 1 0 0 0 150 -100 100 0 0 0];
+  F = cncrot_machine_forward(head, [30 40 0]);
+  rules = {'closest', 0, 0; 'minus', 1, 2; 'plus', 2, 2; 'inverse', 3, 0};
+  for k = 1:size(rules, 1)
+    [x1, r1, e1, s1] = cncrot_machine_choose(head, F, [10 0 0], rules{k, 2}, rules{k, 3});
+    [x2, r2, e2, s2] = cncrot_machine_choose(head, F, [10 0 0], rules{k, 1}, int8(rules{k, 3}));
+    [x3, r3, e3, s3] = cncrot_machine_choose(head, F, [10 0 0], upper(rules{k, 1}), uint32(rules{k, 3}));
+    check(isequal({x1, r1, e1, s1}, {x2, r2, e2, s2}, {x3, r3, e3, s3}), ['rule by name: ' rules{k, 1}]);
+  end
+  check(isequal(cncrot_machine_choose(head, F, [0 0 0], "minus", 2), cncrot_machine_choose(head, F, [0 0 0], 1, 2)), 'rule as a double-quoted name');
+  % Refusals: the identifier, the function, the argument, what it must be, what was given.
+  expect_message('cncrot:badSequence', @() cncrot_convert(0, 'ZQY', [30 45 60], 1, 39), 'unknown letter', 'cncrot_convert', ...
+                 'argument 2 (sequence_in) must be an axis sequence such as ''ZXY'' or a code 0..63; got ''ZQY''');
+  expect_message('cncrot:badSequence', @() cncrot_convert(0, "ZQY", [30 45 60], 1, 39), 'unknown letter in a string', 'cncrot_convert', 'argument 2 (sequence_in)', '''ZQY''');
+  expect_message('cncrot:badSequence', @() cncrot_convert(0, 'ZZY', [30 45 60], 1, 39), 'repeated letter', 'cncrot_convert', 'argument 2 (sequence_in)', 'repeats');
+  expect_message('cncrot:badSequence', @() cncrot_convert(0, 'XY', [30 45 60], 1, 39), 'two letters', 'cncrot_convert', 'argument 2 (sequence_in)', '''XY''');
+  expect_message('cncrot:badSequence', @() cncrot_convert(0, 'XYZX', [30 45 60], 1, 39), 'four letters', 'cncrot_convert', 'argument 2 (sequence_in)');
+  expect_message('cncrot:badSequence', @() cncrot_convert(0, '', [30 45 60], 1, 39), 'no letters', 'cncrot_convert', 'argument 2 (sequence_in)');
+  expect_message('cncrot:badSequence', @() cncrot_convert(0, 57, [30 45 60], 1, 'X-Y-Z'), 'separators', 'cncrot_convert', 'argument 5 (sequence_out)', '''X-Y-Z''');
+  expect_message('cncrot:badSequence', @() cncrot_matrix(1, 64, [1 2 3]), 'code 64', 'cncrot_matrix', 'argument 2 (sequence)', 'got 64');
+  expect_message('cncrot:badSequence', @() cncrot_matrix(1, int8(22), [1 2 3]), 'int8 code 22', 'cncrot_matrix', 'argument 2 (sequence)', 'got 22', 'YXX');
+  expect_message('cncrot:badSequence', @() cncrot_matrix(1, uint64(2)^40, [1 2 3]), 'uint64 code 2^40', 'cncrot_matrix', 'argument 2 (sequence)', 'got 1099511627776');
+  expect_message('cncrot:badArgument', @() cncrot_matrix(1, 57.5, [1 2 3]), 'fractional code', 'cncrot_matrix', 'argument 2 (sequence)', 'got 57.5');
+  expect_message('cncrot:badArgument', @() cncrot_matrix(1, single(1.5), [1 2 3]), 'fractional single code', 'cncrot_matrix', 'argument 2 (sequence)', 'got 1.5');
+  expect_message('cncrot:badClass', @() cncrot_matrix(1, {57}, [1 2 3]), 'cell code', 'cncrot_matrix', 'argument 2 (sequence)', 'cell');
+  expect_message('cncrot:badSize', @() cncrot_matrix(1, [57 39], [1 2 3]), 'two codes', 'cncrot_matrix', 'argument 2 (sequence)', 'scalar');
+  expect_message('cncrot:badSize', @() cncrot_matrix(1, ['XYZ'; 'ZXY'], [1 2 3]), 'char matrix sequence', 'cncrot_matrix', 'argument 2 (sequence)');
+  expect_message('cncrot:incompleteSequence', @() cncrot_convert(0, 57, [30 45 60], 1, 'X0Z'), 'X0Z out', 'cncrot_convert', 'argument 5 (sequence_out)', 'three rotations', '''X0Z''');
+  expect_message('cncrot:incompleteSequence', @() cncrot_angles('intrinsic', 3, eye(3)), 'code 3 to decompose', 'cncrot_angles', 'argument 2 (sequence)', 'got 3');
+  expect_message('cncrot:incompleteSequence', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 'Z0X', 0,0,0), 'cycle600 _BIN_OUT', 'cycle600', 'argument 15 (_BIN_OUT)');
+  expect_message('cncrot:badFlag', @() cncrot_convert('sideways', 57, [30 45 60], 1, 39), 'unknown convention', 'cncrot_convert', ...
+                 'argument 1 (intrinsic_in) must be ''intrinsic'', ''extrinsic'', 1 or 0; got ''sideways''');
+  expect_message('cncrot:badFlag', @() cncrot_convert(0, 57, [30 45 60], "intrinsics", 39), 'misspelt convention', 'cncrot_convert', 'argument 4 (intrinsic_out)', '''intrinsics''');
+  expect_message('cncrot:badFlag', @() cncrot_matrix(int16(2), 57, [1 2 3]), 'int16 flag 2', 'cncrot_matrix', 'argument 1 (intrinsic)', 'got 2');
+  expect_message('cncrot:badFlag', @() cncrot_matrix(-1, 57, [1 2 3]), 'flag -1', 'cncrot_matrix', 'argument 1 (intrinsic)', 'got -1');
+  expect_message('cncrot:badFlag', @() cncrot_matrix(Inf, 57, [1 2 3]), 'flag Inf', 'cncrot_matrix', 'argument 1 (intrinsic)', 'got Inf');
+  expect_message('cncrot:badArgument', @() cncrot_matrix(0.5, 57, [1 2 3]), 'flag 0.5', 'cncrot_matrix', 'argument 1 (intrinsic)', 'got 0.5');
+  expect_message('cncrot:badArgument', @() cncrot_matrix(NaN, 57, [1 2 3]), 'flag NaN', 'cncrot_matrix', 'argument 1 (intrinsic)', 'got NaN');
+  expect_message('cncrot:complex', @() cncrot_matrix(complex(1, 1), 57, [1 2 3]), 'complex flag', 'cncrot_matrix', 'argument 1 (intrinsic)');
+  expect_message('cncrot:badClass', @() cncrot_matrix(1, 57, int8([1 2 3])), 'int8 angles', 'cncrot_matrix', 'argument 3 (angles)', 'double');
+  expect_message('cncrot:badFlag', @() cycle600(0, 'H', 2, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'cycle600 _SW_REC 2', 'cycle600', 'argument 3 (_SW_REC)');
+  expect_message('cncrot:badFlag', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,2,0), 'cycle600 _ROT_INV 2', 'cycle600', 'argument 17 (_ROT_INV)');
+  expect_message('cncrot:badFlag', @() cycle600('intrinsically', 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'cycle600 _INEXIN', 'cycle600', 'argument 1 (_INEXIN)');
+  expect_message('cncrot:badSequence', @() cycle600(0, 'H', 1, 'XXY', 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'cycle600 _BIN_IN', 'cycle600', 'argument 4 (_BIN_IN)', '''XXY''');
+  expect_message('cncrot:nameTooLong', @() cycle600(0, repmat('A', 1, 40), 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 0,0,0), 'cycle600 long name', 'cycle600', 'argument 2 (_MIHEAD)');
+  expect_message('cncrot:badClass', @() cycle600(0, 'H', 1, 57, 0,0,0, 1,2,3, 0,0,0, 1, 39, 1,0,0, 7), 'cycle600 previous gud', 'cycle600', 'argument 19 (previous gud)');
+  expect_message('cncrot:badArgument', @() cncrot_program_lines('klingon', 'G69'), 'unknown dialect', 'cncrot_program_lines', ...
+                 'argument 1 (dialect) must be a dialect', '''heidenhain''', 'got ''klingon''');
+  expect_message('cncrot:badArgument', @() cncrot_program_lines(int8(9), 'G69'), 'dialect 9', 'cncrot_program_lines', 'argument 1 (dialect)', 'got 9');
+  expect_message('cncrot:badArgument', @() cncrot_program_lines(2.5, 'G69'), 'dialect 2.5', 'cncrot_program_lines', 'argument 1 (dialect)', 'got 2.5');
+  expect_message('cncrot:badArgument', @() cncrot_program_write("siemens", 'ROT', eye(4)), 'unknown dialect, write', 'cncrot_program_write', 'argument 1 (dialect)', '''siemens''');
+  expect_message('cncrot:badArgument', @() cncrot_program_write('fanuc', 'PLANE SPATIAL', eye(4)), 'form of another dialect', 'cncrot_program_write', 'argument 2 (form)');
+  expect_message('cncrot:badArgument', @() cncrot_program_write('fanuc', 'G68.2', eye(4), 18), 'decimals 18', 'cncrot_program_write', 'argument 4 (decimals)', 'got 18');
+  expect_message('cncrot:badArgument', @() cncrot_program_write('heidenhain', 'PLANE SPATIAL', [eye(3) [1; 2; 3]; 0 0 0 1]), 'origin for SPATIAL', 'cncrot_program_write', 'argument 3 (F)');
+  expect_message('cncrot:notANumber', @() cncrot_program_lines('heidenhain', {'PLANE RESET', 'PLANE SPATIAL SPA+Q120 SPB+0 SPC+0'}), 'line and column', ...
+                 'cncrot_program_lines', 'argument 2 (lines), line 2, column 19');
+  expect_message('cncrot:badClass', @() cncrot_program_lines('fanuc', 42), 'numeric line', 'cncrot_program_lines', 'argument 2 (lines)');
+  expect_message('cncrot:badState', @() cncrot_program_lines('fanuc', 'G69', struct('active', 2)), 'bad state', 'cncrot_program_lines', 'argument 3 (state)');
+  expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 'sideways'), 'unknown rule', 'cncrot_machine_choose', ...
+                 'argument 4 (rule) must be a rule', '''minus''', 'got ''sideways''');
+  expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 4), 'rule 4', 'cncrot_machine_choose', 'argument 4 (rule)', 'got 4');
+  expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 'minus'), 'minus without an axis', 'cncrot_machine_choose', 'argument 5 (ref)', 'got 0');
+  expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 'plus', 3), 'plus on a missing axis', 'cncrot_machine_choose', 'argument 5 (ref)', 'got 3');
+  expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 'closest', 1), 'closest with an axis', 'cncrot_machine_choose', 'argument 5 (ref)', 'got 1');
+  expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 7], 'closest'), 'unused axis moved', 'cncrot_machine_choose', 'argument 3 (current)', 'axis 3');
+  expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 'minus', 1.5), 'fractional axis', 'cncrot_machine_choose', 'argument 5 (ref)', 'got 1.5');
+  expect_message('cncrot:parse', @() cncrot_machine_forward('$TC_CARR7[1]=1x', [0 0 0]), 'swivel text', 'cncrot_machine_forward', 'argument 1 (machine), swivel data line 1');
+  expect_message('cncrot:badArgument', @() cncrot_form_frame('g68.9', 0, [1 2 3]), 'unknown form', 'cncrot_form_frame', ...
+                 'argument 1 (form) must be a form', '''g68_2''', 'got ''g68.9''');
+  expect_message('cncrot:badArgument', @() cncrot_form_values(99, 0, eye(4)), 'form 99', 'cncrot_form_values', 'argument 1 (form)', 'got 99');
+  expect_message('cncrot:badArgument', @() cncrot_form_frame('plane_spatial', 5, [0 0 0]), 'selector 5', 'cncrot_form_frame', 'argument 2 (selector)');
+  expect_message('cncrot:badArgument', @() cncrot_form_frame('plane_spatial', 0.5, [0 0 0]), 'selector 0.5', 'cncrot_form_frame', 'argument 2 (selector)', 'got 0.5');
+  expect_message('cncrot:notFinite', @() cncrot_matrix('intrinsic', 'XYZ', [1 2 3; 4 NaN 6]), 'row named', 'cncrot_matrix', 'argument 3 (angles), row 2:');
+  expect_message('cncrot:notARotation', @() cncrot_angles(1, 'XYZ', cat(3, eye(3), 2 * eye(3))), 'matrix named', 'cncrot_angles', 'argument 3 (R), matrix 2:');
+  expect_message('cncrot:nargin', @() cncrot_convert(0, 'XYZ', [1 2 3]), 'nargin', 'cncrot_convert', 'not enough input arguments');
 
   % The dialects' forms: a worked number of docs/dialects.md, batches, errors, empty input.
   fm = cncrot_forms();
@@ -205,8 +362,11 @@ function test_cncrot(cases_file)
   check(max(max(abs(F(1:3, 1:3) - [0.707107 -0.630037 0.321020; 0.707107 0.630037 -0.321020; 0 0.453990 0.891007]))) < 1e-6, 'PLANE SPATIAL worked numbers');
   F = cncrot_program_lines(d.SINUMERIK, 'ROT X10 Y90 Z40');
   check(strcmp(cncrot_program_write(d.SINUMERIK, 'ROT', F, 4), 'ROT X=0 Y=90 Z=30'), 'SINUMERIK read-back');
-  ls = cncrot_program_write(d.FANUC, 'G68.2', cat(3, eye(4), F), 3);
-  check(iscell(ls) && strcmp(ls{1}, 'G68.2 X0. Y0. Z0. I0. J0. K0.'), 'two frames, two lines');
+  % (Two tilted frames: how the identity is written, a G68.2 of zeros or the cancel G69, is
+  % the library's choice and not this test's.)
+  F1 = cncrot_program_lines(d.FANUC, 'G68.2 X1. Y2. Z3. I30. J0. K0.');
+  ls = cncrot_program_write(d.FANUC, 'G68.2', cat(3, F1, F), 3);
+  check(iscell(ls) && numel(ls) == 2 && strcmp(ls{1}, 'G68.2 X1. Y2. Z3. I30. J0. K0.'), 'two frames, two lines');
   check(isequal(cncrot_program_lines(d.FANUC, ls{2}), F) || max(max(abs(cncrot_program_lines(d.FANUC, ls{2}) - F))) < 1e-6, 'written line reads back');
   expect_error('cncrot:notANumber', @() cncrot_program_lines(d.SINUMERIK, 'ROT X=R1'), 'variable');
   expect_error('cncrot:unknownWord', @() cncrot_program_lines(d.HAAS, 'G268 Q123 Y1 Y2'), 'repeated word');
