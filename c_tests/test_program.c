@@ -386,9 +386,18 @@ static void long_lines_and_points(void) {
    * origin words, and the rotation alone is written with P1 at the datum. */
   CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", f, -1, big, sizeof big),
                CNCROT_STATUS_BAD_ARGUMENT);
+  /* A tilt of 90° about Z: P2 one along Y', P3 one along -X. */
+  double rz[16] = {0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", rz, -1, big, sizeof big), CNCROT_STATUS_OK);
+  CHECK(strcmp(big, "PLANE POINTS P1X+0 P1Y+0 P1Z+0 P2X+0 P2Y+1 P2Z+0 P3X-1 P3Y+0 P3Z+0 STAY") == 0, "%s", big);
+  /* Nothing active is written as the cancel, in every dialect. */
   double id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", id, -1, big, sizeof big), CNCROT_STATUS_OK);
-  CHECK(strcmp(big, "PLANE POINTS P1X+0 P1Y+0 P1Z+0 P2X+1 P2Y+0 P2Z+0 P3X+0 P3Y+1 P3Z+0 STAY") == 0, "%s", big);
+  CHECK(strcmp(big, "PLANE RESET STAY") == 0, "%s", big);
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_FANUC, "G68.2", id, 4, big, sizeof big), CNCROT_STATUS_OK);
+  CHECK(strcmp(big, "G69") == 0, "%s", big);
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_SINUMERIK, "CYCLE800", id, 4, big, sizeof big), CNCROT_STATUS_OK);
+  CHECK(strcmp(big, "CYCLE800()") == 0, "%s", big);
 }
 
 /* Writers near their singularities: the frame Ry(90° - 1e-13°)·Rx(30°) as PLANE PROJECTED or

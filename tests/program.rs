@@ -719,8 +719,9 @@ fn writers_refuse() {
         w(Dialect::Fanuc, "G68.2", &id, 18, &mut buf),
         Err(Error::BadArgument)
     );
+    let tilted = Frame::from_rotation(r(Axis::X, 30.0));
     assert_eq!(
-        w(Dialect::Fanuc, "G68.2", &id, -1, &mut buf[..10]),
+        w(Dialect::Fanuc, "G68.2", &tilted, -1, &mut buf[..10]),
         Err(Error::NoRoom)
     );
     let far = Frame::with_translations([1e120, 0.0, 0.0], cncrot::IDENTITY, [0.0; 3]);
@@ -979,4 +980,48 @@ fn every_block_of_a_program() {
             ("N60 M30", P),
         ],
     );
+}
+
+/// Nothing active is written as each form's cancel, which its own reader reads back as the
+/// cancel; TwinCAT, which has none of its own, writes zero angles.
+#[test]
+fn cancels_are_written_as_cancels() {
+    let cases: [(Dialect, &str, &str); 11] = [
+        (Dialect::Sinumerik, "CYCLE800", "CYCLE800()"),
+        (Dialect::Sinumerik, "CYCLE800 27", "CYCLE800()"),
+        (Dialect::Sinumerik, "ROT", "ROT"),
+        (Dialect::Heidenhain, "PLANE SPATIAL", "PLANE RESET STAY"),
+        (Dialect::Heidenhain, "PLANE VECTOR", "PLANE RESET STAY"),
+        (Dialect::Fanuc, "G68.2", "G69"),
+        (Dialect::Syntec, "G158", "G158"),
+        (Dialect::Syntec, "G68.2", "G69"),
+        (Dialect::Haas, "G268", "G269"),
+        (Dialect::Haas, "G268 Q321", "G269"),
+        (Dialect::Twincat, "ROT", "ROT X0 Y0 Z0"),
+    ];
+    let tilted = read(Dialect::Fanuc, &["G68.2 J30"]);
+    for (d, form, want) in cases {
+        let mut buf = [0u8; 64];
+        let (n, _) = write_line(d, form.as_bytes(), &Frame::IDENTITY, 4, &mut buf).unwrap();
+        assert_eq!(
+            std::str::from_utf8(&buf[..n]).unwrap(),
+            want,
+            "{d:?} {form}"
+        );
+        let p = Program {
+            dialect: Some(d),
+            ..tilted
+        };
+        let (off, remark) = p.line(d, &buf[..n]).unwrap();
+        assert_eq!(
+            (off.frame, remark),
+            (Frame::IDENTITY, Remark::Applied),
+            "{want}"
+        );
+    }
+    // Anything but the exact identity is written with its words, however small the tilt.
+    let mut buf = [0u8; 64];
+    let nearly = Frame::from_rotation(r(Axis::X, 1e-9));
+    let (n, _) = write_line(Dialect::Fanuc, b"G68.2", &nearly, -1, &mut buf).unwrap();
+    assert!(buf[..n].starts_with(b"G68.2 "));
 }

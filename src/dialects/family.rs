@@ -207,6 +207,11 @@ pub(crate) trait Family {
         out: &mut Out,
     ) -> Result<(), Error>;
 
+    /// Writes the block that cancels the tilt programmed with `spec` (`G69`, `PLANE RESET
+    /// STAY`, `CYCLE800()`), what the writer gives for the identity frame; `false` (nothing
+    /// written) where the form has no cancel of its own and zero words are its cancel.
+    fn write_cancel(spec: &FormSpec, out: &mut Out) -> bool;
+
     /// The frame of an owned form's words.
     fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error>;
 

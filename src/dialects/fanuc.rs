@@ -298,6 +298,12 @@ impl Family for Fanuc {
         })
     }
 
+    /// `G69`.
+    fn write_cancel(_: &FormSpec, out: &mut Out) -> bool {
+        out.text(b"G69");
+        true
+    }
+
     /// `G68.2 X Y Z I J K`, numbers always with a point.
     #[inline(never)]
     fn write_line(

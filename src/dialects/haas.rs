@@ -157,6 +157,12 @@ impl Family for Haas {
 
     /// `G268 X Y Z I J K Q`, numbers always with a point.
     #[inline(never)]
+    /// `G269`.
+    fn write_cancel(_: &FormSpec, out: &mut Out) -> bool {
+        out.text(b"G269");
+        true
+    }
+
     fn write_line(
         spec: &FormSpec,
         words: &[f64],

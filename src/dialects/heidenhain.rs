@@ -404,6 +404,12 @@ impl Family for Heidenhain {
     /// `PLANE <form> <words> STAY`: the words with their signs (`SPA+30`), then `STAY`
     /// (the control asks for a positioning choice; `STAY` tilts the plane without moving).
     #[inline(never)]
+    /// `PLANE RESET STAY`.
+    fn write_cancel(_: &FormSpec, out: &mut Out) -> bool {
+        out.text(b"PLANE RESET STAY");
+        true
+    }
+
     fn write_line(
         spec: &FormSpec,
         words: &[f64],

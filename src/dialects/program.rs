@@ -188,6 +188,9 @@ pub fn write_line(
     buf: &mut [u8],
 ) -> Result<(usize, bool), Error> {
     let spec = dialect.parse_form(form_text)?;
+    if decimals > crate::text::number::MAX_DECIMALS {
+        return Err(Error::BadArgument);
+    }
     let n = spec.form.count();
     let mut words = [0.0; MAX_VALUES];
     let singular = form::form_values(
@@ -200,7 +203,12 @@ pub fn write_line(
     // dialect cannot read: no buffer would help.
     let room = buf.len();
     let mut out = Out::new(buf);
-    dialect.write_line(&spec, words.get(..n).unwrap_or(&[]), decimals, &mut out)?;
+    // Nothing active is written as the cancel, as a program cancels a tilt: `PLANE RESET`
+    // becomes `G69`, not a `G68.2` of zeros (which would leave the control in G68.2 mode).
+    let cancelled = *frame == Frame::IDENTITY && dialect.write_cancel(&spec, &mut out);
+    if !cancelled {
+        dialect.write_line(&spec, words.get(..n).unwrap_or(&[]), decimals, &mut out)?;
+    }
     let len = match out.finish() {
         Some(len) => len,
         None if room >= dialect.max_line() => return Err(Error::OutOfRange),
@@ -209,7 +217,8 @@ pub fn write_line(
     if len > dialect.max_line() {
         return Err(Error::OutOfRange);
     }
-    Ok((len, singular))
+    // A cancel has no angles whose decomposition could be singular.
+    Ok((len, singular && !cancelled))
 }
 
 #[cfg(test)]

@@ -67,6 +67,12 @@ macro_rules! families {
                 }
             }
 
+            pub(crate) fn write_cancel(self, spec: &FormSpec, out: &mut Out) -> bool {
+                match self {
+                    $(Dialect::$name => <$family>::write_cancel(spec, out),)*
+                }
+            }
+
             pub(crate) fn write_line(
                 self,
                 spec: &FormSpec,

@@ -227,6 +227,16 @@ impl Family for Syntec {
 
     /// `G158 P X Y Z A B C U V W` or `G68.2 X Y Z I J K`, numbers always with a point.
     #[inline(never)]
+    /// `G158` without words for its own form, `G69` in its G68.2 mode.
+    fn write_cancel(spec: &FormSpec, out: &mut Out) -> bool {
+        out.text(if spec.form == Form::G158 {
+            b"G158"
+        } else {
+            b"G69"
+        });
+        true
+    }
+
     fn write_line(
         spec: &FormSpec,
         words: &[f64],

@@ -216,6 +216,11 @@ impl Family for Twincat {
 
     /// `ROT X… Y… Z…`.
     #[inline(never)]
+    /// None of its own: `ROT X0 Y0 Z0` is TwinCAT's rotation off.
+    fn write_cancel(_: &FormSpec, _: &mut Out) -> bool {
+        false
+    }
+
     fn write_line(
         spec: &FormSpec,
         words: &[f64],

@@ -368,7 +368,10 @@ pub unsafe extern "C" fn cncrot_program_frame(
 /// | TwinCAT | `"ROT"` |
 /// | Haas | `"G268"` (`Q123`), `"G268 Q<q>"` |
 ///
-/// The same dialect's `cncrot_program_line` reads the line back as the same frame. With
+/// The same dialect's `cncrot_program_line` reads the line back as the same frame. The
+/// identity frame (nothing active) is written as the form's cancel: `CYCLE800()`, `ROT`,
+/// `PLANE RESET STAY`, `G69`, `G158`, `G269` (TwinCAT, which has none of its own, writes
+/// `ROT X0 Y0 Z0`). With
 /// `decimals` < 0 the numbers are the shortest that read back exactly; with 0..17 they are
 /// rounded to that many decimals (ties to even), trailing zeros dropped. Angles are in each
 /// dialect's read-back ranges; `CNCROT_STATUS_SINGULAR` says the middle angle was singular and

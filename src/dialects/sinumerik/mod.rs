@@ -818,6 +818,16 @@ impl Family for Sinumerik {
     /// `CYCLE800(0,"",0,_MODE,_X0,_Y0,_Z0,_A,_B,_C,_X1,_Y1,_Z1,-1,0,0)` (`_DIR` −1, "minus"
     /// \[choice\]) or `ROT X=… Y=… Z=…`.
     #[inline(never)]
+    /// `CYCLE800()` (deselects the swivel data set), `ROT` (no rotation).
+    fn write_cancel(spec: &FormSpec, out: &mut Out) -> bool {
+        out.text(if spec.form == Form::Cycle800 {
+            b"CYCLE800()"
+        } else {
+            b"ROT"
+        });
+        true
+    }
+
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
