@@ -16,7 +16,14 @@ function f = cncrot_forms()
 %     G68_3           selector 0;                  words X Y Z R TX TY TZ (T: tool direction)
 %     PLANE_PROJECTED selector 0;                  words PROPR PROMIN ROT
 %
+%   cncrot_form_frame and cncrot_form_values take the field names as well, in lower or
+%   upper case, char or string, with ' ', '.' or '-' for '_': 'g68_2', 'G68.2', 'PLANE
+%   SPATIAL', 'sinumerik_rot', ...
+%
 %   Example: F = cncrot_form_frame(cncrot_forms().G68_2, 0, [10 0 0 0 30 0])
+%            F = cncrot_form_frame('G68.2', 0, [10 0 0 0 30 0])   % the same
+%
+%   See also CNCROT_FORM_FRAME, CNCROT_FORM_VALUES, CNCROT_DIALECTS.
   f = struct('CYCLE800', 1, 'SINUMERIK_ROT', 2, 'SINUMERIK_ROTS', 3, 'PLANE_SPATIAL', 4, ...
              'PLANE_EULER', 5, 'PLANE_VECTOR', 6, 'PLANE_POINTS', 7, 'G68_2', 8, 'G158', 9, ...
              'TWINCAT_ROT', 10, 'G268', 11, 'G68_3', 12, 'PLANE_PROJECTED', 13);

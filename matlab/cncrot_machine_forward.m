@@ -7,7 +7,7 @@
 %   K-by-12 matrix, one row per rotary axis, outermost first:
 %   [work_side vx vy vz px py pz min max offset hirth_offset hirth_step] (work_side 0: the
 %   axis turns the tool, 1: the workpiece; min = max = 0: no travel limits; hirth_step 0:
-%   no Hirth grid).
+%   no Hirth grid). The text may be char or a string.
 %
 %   Example (a fork head: C about Z carrying B about Y, pivot 150 mm above the adapter):
 %     head = [0 0 0 1 0 0 0 0 0 0 0 0; 0 0 1 0 0 0 150 -100 100 0 0 0];

@@ -6,3 +6,5 @@
 %
 %   Example:
 %     a = cncrot_probe_edge(eye(4), [0 0 0], [100 100 0])   % 45
+%
+%   See also CNCROT_PROBE_PLANE, CNCROT_PROBE_FLANGE.

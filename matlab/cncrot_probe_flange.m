@@ -8,3 +8,5 @@
 %
 %   Example (a flange rising 10 mm over 100 mm along X):
 %     a = cncrot_probe_flange([0 0 0], [100 0 10], [0 0 0], [0 100 0])   % 0 -5.7106 0
+%
+%   See also CYCLE600, CNCROT_PROBE_PLANE, CNCROT_PROBE_EDGE.

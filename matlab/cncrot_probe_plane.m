@@ -8,3 +8,5 @@
 %
 %   Example:
 %     [F, flat, rms] = cncrot_probe_plane([0 0 5.01; 100 100 5.01; 0 100 4.99; 100 0 4.99])   % 0.02 0.01
+%
+%   See also CNCROT_PROBE_EDGE, CNCROT_PROBE_FLANGE, CNCROT_FORM_VALUES.

@@ -1,8 +1,10 @@
 % CNCROT_PROGRAM_LINES  What program lines do to the active frame, as the controller does.
 %   [F, state, frames] = cncrot_program_lines(dialect, lines)
 %   [F, state, frames] = cncrot_program_lines(dialect, lines, state)
-%   dialect is a code of cncrot_dialects; lines a char row (one block) or a cell array of
-%   them, applied in order. F is the 4-by-4 active frame after the last line
+%   dialect: 'sinumerik', 'heidenhain', 'fanuc', 'syntec', 'twincat' or 'haas' (any case,
+%   char or string), or its code (cncrot_dialects, of any numeric class); lines: one block
+%   (a char row or a string) or several (a cell array of them, or a string array), applied
+%   in order. F is the 4-by-4 active frame after the last line
 %   (p_old = F * [p_new; 1]), state the program's modal state to pass to the next call
 %   (start from [], or from struct('options', 1) to read SINUMERIK frame angles in Euler
 %   mode), frames the frame after each line (4-by-4-by-N). The state carries a seal: a
@@ -10,8 +12,12 @@
 %   A line the controller could not execute raises the status's error (cncrot:unknownWord,
 %   cncrot:notANumber for a variable, cncrot:missingWord, cncrot:parse, cncrot:lineTooLong,
 %   or the error of the command's mathematics) whose message names the line and the column
-%   of the first offending character.
+%   of the first offending character ("cncrot_program_lines: argument 2 (lines), line 2,
+%   column 19: ...").
 %
 %   Example (the TwinCAT manual: ROT Z30 then AROT Z15 is 45 degrees about Z):
-%     F = cncrot_program_lines(cncrot_dialects().TWINCAT, {'N65 ROT Z30', 'N90 AROT Z15'})
-%     F = cncrot_program_lines(cncrot_dialects().HEIDENHAIN, '5 PLANE SPATIAL SPA+27 SPB+0 SPC+45 TURN FMAX')
+%     F = cncrot_program_lines('twincat', {'N65 ROT Z30', 'N90 AROT Z15'})
+%     F = cncrot_program_lines(cncrot_dialects().TWINCAT, {'N65 ROT Z30', 'N90 AROT Z15'})   % the same
+%     F = cncrot_program_lines('heidenhain', '5 PLANE SPATIAL SPA+27 SPB+0 SPC+45 TURN FMAX')
+%
+%   See also CNCROT_PROGRAM_WRITE, CNCROT_DIALECTS, CNCROT_FORM_FRAME.

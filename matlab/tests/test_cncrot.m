@@ -311,6 +311,20 @@ function test_cncrot(cases_file)
   expect_message('cncrot:notARotation', @() cncrot_angles(1, 'XYZ', cat(3, eye(3), 2 * eye(3))), 'matrix named', 'cncrot_angles', 'argument 3 (R), matrix 2:');
   expect_message('cncrot:nargin', @() cncrot_convert(0, 'XYZ', [1 2 3]), 'nargin', 'cncrot_convert', 'not enough input arguments');
 
+  % The toolbox's help: Contents.m lists every function, every help text has See also, and
+  % cycle600's says what _SW_REC = 0 does now (recalculates; no cncrot:notAvailable).
+  here = fileparts(fileparts(mfilename('fullpath')));
+  contents = fileread(fullfile(here, 'Contents.m'));
+  files = dir(fullfile(here, '*.m'));
+  for k = 1:numel(files)
+    [~, fname] = fileparts(files(k).name);
+    if strcmp(fname, 'Contents'), continue; end
+    check(~isempty(regexp(contents, ['\n%\s+' fname '\s+- '], 'once')), ['Contents.m lists ' fname]);
+    check(~isempty(strfind(fileread(fullfile(here, files(k).name)), 'See also')), ['See also in ' fname]);
+  end
+  c600 = fileread(fullfile(here, 'cycle600.m'));
+  check(isempty(strfind(c600, 'notAvailable')) && ~isempty(strfind(c600, 'SW_REC = 0')), 'cycle600 help: _SW_REC = 0');
+
   % The dialects' forms: a worked number of docs/dialects.md, batches, errors, empty input.
   fm = cncrot_forms();
   F = cncrot_form_frame(fm.PLANE_SPATIAL, 0, [45 0 90]);

@@ -1,0 +1,38 @@
+% cncrot: CNC rotation conventions, tilted planes, probing and machine kinematics (MEX).
+% Version 0.1.0
+%
+% Conventions
+%   cncrot_matrix          - Rotation matrices from angles (degrees).
+%   cncrot_angles          - Angles (degrees) of rotation matrices in a convention.
+%   cncrot_convert         - Converts angles from one convention to another.
+%   cycle600               - The paper's cycle CYCLE600 (recalculation of rotations).
+%
+% Tilted-plane commands of the controllers
+%   cncrot_form_frame      - Frames (4-by-4) of tilted-plane commands (G68.2, PLANE SPATIAL, ...).
+%   cncrot_form_values     - The words of a tilted-plane command for given frames.
+%   cncrot_forms           - The forms' codes, with their selectors and words.
+%
+% Part programs
+%   cncrot_program_lines   - What program lines do to the active frame, as the controller does.
+%   cncrot_program_write   - The program line that programs a frame in a controller's language.
+%   cncrot_dialects        - The codes of the controller dialects.
+%
+% Probing
+%   cncrot_probe_flange    - The tilt of a flange from four probed points.
+%   cncrot_probe_plane     - The least-squares plane through probed points, and its flatness.
+%   cncrot_probe_edge      - The turn about a plane's normal that lays X' along a probed edge.
+%
+% Machine kinematics
+%   cncrot_machine_forward - The tool frame of a machine at rotary-axis positions.
+%   cncrot_machine_inverse - Every set of rotary-axis positions for an orientation.
+%   cncrot_machine_choose  - The rotary-axis positions to move to for an orientation.
+%
+% Building
+%   build_mex              - Builds the MEX functions, in MATLAB or GNU Octave.
+%
+% Names may stand where numeric codes do (case-insensitive, char or string):
+%   conventions 'intrinsic' (1), 'extrinsic' (0);
+%   axis sequences 'XYZ' (57), 'ZXY' (39), "ZX'Y''", 'X0Z' (49: '0' skips a rotation);
+%   dialects 'sinumerik' 'heidenhain' 'fanuc' 'syntec' 'twincat' 'haas' (1..6);
+%   rules 'closest' 'minus' 'plus' 'inverse' (0..3); forms as cncrot_forms lists them.
+% Integers may be of any numeric class or logical. The table: docs/matlab.md.
