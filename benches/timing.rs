@@ -132,6 +132,725 @@ struct Row {
     base: f64,
 }
 
+/// What every group of rows shares: the harness, its calibration and the rows so far.
+struct Bench {
+    h: Histogram,
+    calls: usize,
+    only: Option<String>,
+    overhead: u64,
+    ns: f64,
+    rows: Vec<Row>,
+}
+
+impl Bench {
+    /// The calls for a row: all of them, or none when `--only` names another row.
+    fn n(&self, function: &str, class: &str) -> usize {
+        match &self.only {
+            Some(row) if *row != format!("{function}/{class}") => 0,
+            _ => self.calls,
+        }
+    }
+
+    /// Times `f` over `inputs` for the row `function`/`class` and prints it.
+    fn time<T>(
+        &mut self,
+        function: &'static str,
+        class: &'static str,
+        inputs: &[T],
+        f: &mut impl FnMut(&T) -> i32,
+    ) {
+        let calls = self.n(function, class);
+        measure(&mut self.h, calls, self.overhead, inputs, f);
+        self.report(function, class);
+    }
+
+    /// Prints the row just measured, with its class's median relative to the function's
+    /// first (random) class.
+    fn report(&mut self, function: &'static str, class: &'static str) {
+        let (h, ns) = (&self.h, self.ns);
+        if h.n == 0 {
+            return;
+        }
+        let t = |q: f64| h.quantile(q) as f64 * ns;
+        let base = self
+            .rows
+            .iter()
+            .find(|r| r.function == function)
+            .map_or(t(0.5), |r| r.median);
+        self.rows.push(Row {
+            function,
+            class,
+            median: t(0.5),
+            p99: t(0.99),
+            p9999: t(0.9999),
+            max: h.max as f64 * ns,
+            base,
+        });
+        let r = self.rows.last().unwrap();
+        println!(
+            "{:<30} {:<20} {:>8.1} {:>8.1} {:>9.1} {:>10.1} {:>8.1} {:>7.2}{}",
+            r.function,
+            r.class,
+            r.median,
+            r.p99,
+            r.p9999,
+            r.max,
+            r.max / r.median.max(ns),
+            r.median / r.base.max(ns),
+            if r.median > 2.0 * r.base {
+                "  > 2x: GOAL MISSED"
+            } else {
+                ""
+            }
+        );
+    }
+}
+
+/// The input pools the groups draw from (POOL inputs each), made once from one seed.
+struct Inputs {
+    /// Angle triples per class: random, right angles, huge, extreme.
+    angle_classes: Vec<(&'static str, Vec<[f64; 3]>)>,
+    /// Row-major rotations per class: random, singular, near-singular, from huge angles.
+    matrix_classes: Vec<(&'static str, Vec<[f64; 9]>)>,
+    /// Matrices for the nearest rotation: exact, noisy, ill-conditioned.
+    nearest_classes: Vec<(&'static str, Vec<[f64; 9]>)>,
+    /// Random frames with origins, row-major 4x4.
+    frames: Vec<[f64; 16]>,
+    /// Pairs of them.
+    frame_pairs: Vec<([f64; 16], [f64; 16])>,
+    /// CYCLE800's sequence code (intrinsic Z, X', Y'').
+    code: i32,
+}
+
+/// Rotations: matrices from angles and back, conversions, the closest and the nearest
+/// rotation, the check, a vector rotated, additive rotations.
+fn rotations(b: &mut Bench, i: &Inputs) {
+    let mut out9 = [0.0; 9];
+    let mut out3 = [0.0; 3];
+    for (class, inputs) in &i.angle_classes {
+        b.time(
+            "cncrot_matrix_from_angles",
+            class,
+            inputs,
+            &mut |a| unsafe { cncrot_matrix_from_angles(1, i.code, a.as_ptr(), out9.as_mut_ptr()) },
+        );
+    }
+    for (class, inputs) in &i.matrix_classes {
+        b.time(
+            "cncrot_angles_from_matrix",
+            class,
+            inputs,
+            &mut |m| unsafe { cncrot_angles_from_matrix(1, i.code, m.as_ptr(), out3.as_mut_ptr()) },
+        );
+    }
+    for (class, inputs) in &i.angle_classes {
+        b.time("cncrot_convert", class, inputs, &mut |a| unsafe {
+            cncrot_convert(0, 57, a.as_ptr(), 1, i.code, out3.as_mut_ptr())
+        });
+    }
+    let reference = [10.0, 20.0, 30.0];
+    for (class, inputs) in &i.matrix_classes {
+        b.time("cncrot_closest_angles", class, inputs, &mut |m| unsafe {
+            cncrot_closest_angles(1, i.code, m.as_ptr(), reference.as_ptr(), out3.as_mut_ptr())
+        });
+    }
+    for (class, inputs) in &i.nearest_classes {
+        b.time("cncrot_nearest_rotation", class, inputs, &mut |m| unsafe {
+            cncrot_nearest_rotation(m.as_ptr(), out9.as_mut_ptr())
+        });
+    }
+    b.time(
+        "cncrot_check_rotation",
+        "random",
+        &i.matrix_classes[0].1,
+        &mut |m| unsafe { cncrot_check_rotation(m.as_ptr()) },
+    );
+    b.time(
+        "cncrot_rotate_vector",
+        "random",
+        &i.matrix_classes[0].1,
+        &mut |m| unsafe { cncrot_rotate_vector(m.as_ptr(), reference.as_ptr(), out3.as_mut_ptr()) },
+    );
+    for (class, inputs) in &i.angle_classes {
+        b.time("cncrot_add_rotation", class, inputs, &mut |a| unsafe {
+            cncrot_add_rotation(
+                1,
+                i.code,
+                a.as_ptr(),
+                i.matrix_classes[0].1[0].as_ptr(),
+                out9.as_mut_ptr(),
+            )
+        });
+    }
+    black_box((out3, out9));
+}
+
+/// Frames: composition, inverse, a point transformed.
+fn transforms(b: &mut Bench, i: &Inputs) {
+    let (mut out3, mut out16) = ([0.0; 3], [0.0; 16]);
+    let reference = [10.0, 20.0, 30.0];
+    b.time(
+        "cncrot_frame_compose",
+        "random",
+        &i.frame_pairs,
+        &mut |(a, b)| unsafe { cncrot_frame_compose(a.as_ptr(), b.as_ptr(), out16.as_mut_ptr()) },
+    );
+    b.time(
+        "cncrot_frame_inverse",
+        "random",
+        &i.frames,
+        &mut |f| unsafe { cncrot_frame_inverse(f.as_ptr(), out16.as_mut_ptr()) },
+    );
+    b.time(
+        "cncrot_frame_transform_point",
+        "random",
+        &i.frames,
+        &mut |f| unsafe {
+            cncrot_frame_transform_point(f.as_ptr(), reference.as_ptr(), out3.as_mut_ptr())
+        },
+    );
+    black_box((out3, out16));
+}
+
+/// The dialects' forms: words to a frame and a frame to words.
+fn forms(b: &mut Bench, i: &Inputs) {
+    // The dialects' forms: words to a frame and a frame to words, for the random angles
+    // (G68.2, the projection of CYCLE800, and PLANE POINTS, the form with the most work).
+    {
+        let random = &i.angle_classes[0].1;
+        let g68: Vec<[f64; 9]> = random
+            .iter()
+            .map(|a| [1.0, 2.0, 3.0, a[0], a[1], a[2], 0.0, 0.0, 0.0])
+            .collect();
+        let mut f = [0.0; 16];
+        let mut w = [0.0; 9];
+        for (class, form, selector, count) in [
+            ("G68.2", CNCROT_FORM_G68_2, 0, 6),
+            ("CYCLE800 projection", CNCROT_FORM_CYCLE800, 128 + 57, 9),
+            ("PLANE POINTS", CNCROT_FORM_PLANE_POINTS, 0, 9),
+        ] {
+            b.time("cncrot_form_frame", class, &g68, &mut |x| unsafe {
+                cncrot_form_frame(form, selector, x.as_ptr(), count, f.as_mut_ptr())
+            });
+        }
+        for (class, form, selector, count) in [
+            ("G68.2", CNCROT_FORM_G68_2, 0, 6),
+            ("CYCLE800 projection", CNCROT_FORM_CYCLE800, 128 + 57, 9),
+            ("G268 Q321", CNCROT_FORM_G268, 321, 6),
+        ] {
+            b.time("cncrot_form_values", class, &i.frames, &mut |x| unsafe {
+                cncrot_form_values(form, selector, x.as_ptr(), w.as_mut_ptr(), count)
+            });
+        }
+    }
+}
+
+/// Probing: a flange, a least-squares plane, an edge in a tilted plane.
+fn probing(b: &mut Bench, i: &Inputs) {
+    // Probing: a flange from four points, a least-squares plane of four points (the time is
+    // linear in the number of points), an edge in a tilted plane.
+    {
+        let random = &i.angle_classes[0].1;
+        let flanges: Vec<[[f64; 3]; 4]> = random
+            .iter()
+            .map(|a| {
+                let (sx, sy) = (a[0] / 400.0, a[1] / 400.0);
+                [
+                    [0.0, 0.0, 0.0],
+                    [100.0, 0.0, 100.0 * sx],
+                    [0.0, 0.0, 0.0],
+                    [0.0, 100.0, 100.0 * sy],
+                ]
+            })
+            .collect();
+        let (mut ang, mut f) = ([0.0; 3], [0.0; 16]);
+        b.time("cncrot_probe_flange", "random", &flanges, &mut |p| unsafe {
+            cncrot_probe_flange(
+                p[0].as_ptr(),
+                p[1].as_ptr(),
+                p[2].as_ptr(),
+                p[3].as_ptr(),
+                ang.as_mut_ptr(),
+                f.as_mut_ptr(),
+            )
+        });
+        // Four probed points on a tilted plane, exactly planar or with one 0.02 mm off.
+        let cloud = |a: &[f64; 3], off: f64| -> Vec<f64> {
+            (0..4)
+                .flat_map(|k| {
+                    let (x, y) = ((k % 2) as f64 * 100.0, (k / 2) as f64 * 80.0);
+                    let bump = if k == 3 { off } else { 0.0 };
+                    [x, y, 5.0 + a[0] / 1000.0 * x + a[1] / 1000.0 * y + bump]
+                })
+                .collect()
+        };
+        let mut res = [0.0; 2];
+        for (class, off) in [("4 points", 0.0), ("4 points, one off", 0.02)] {
+            let clouds: Vec<Vec<f64>> = random.iter().map(|a| cloud(a, off)).collect();
+            b.time("cncrot_probe_plane", class, &clouds, &mut |p| unsafe {
+                cncrot_probe_plane(p.as_ptr(), 4, f.as_mut_ptr(), res.as_mut_ptr())
+            });
+        }
+        let edges: Vec<[f64; 16]> = i.frames.clone();
+        let mut angle = 0.0;
+        let (e1, e2) = ([0.0; 3], [100.0, 30.0, 7.0]);
+        b.time("cncrot_probe_edge", "random", &edges, &mut |fr| unsafe {
+            cncrot_probe_edge(
+                fr.as_ptr(),
+                e1.as_ptr(),
+                e2.as_ptr(),
+                &mut angle,
+                f.as_mut_ptr(),
+            )
+        });
+    }
+}
+
+/// Program lines (setup time, but bounded): read, column, frame, init, write.
+fn programs(b: &mut Bench, i: &Inputs) {
+    {
+        let random = &i.angle_classes[0].1;
+        let mut f = [0.0; 16];
+        let edges: Vec<[f64; 16]> = i.frames.clone();
+        // Program lines (setup time, but bounded): a CYCLE800 call and a PLANE line read on
+        // the random angles, the active frame read, the lines written back.
+        let c800: Vec<Vec<u8>> = random
+            .iter()
+            .map(|a| {
+                let l = format!(
+                    "N10 CYCLE800(1,\"TC1\",0,57,10,0,0,{},{},{},0,0,0,-1,100,1)",
+                    a[0], a[1], a[2]
+                );
+                l.into_bytes()
+            })
+            .collect();
+        let plane: Vec<Vec<u8>> = random
+            .iter()
+            .map(|a| {
+                format!(
+                    "5 PLANE SPATIAL SPA{:+} SPB{:+} SPC{:+} TURN MB MAX FMAX",
+                    a[0], a[1], a[2]
+                )
+                .into_bytes()
+            })
+            .collect();
+        let mut p = cncrot_program::default();
+        for (class, dialect, lines) in [
+            ("CYCLE800 line", CNCROT_DIALECT_SINUMERIK, &c800),
+            ("PLANE SPATIAL line", CNCROT_DIALECT_HEIDENHAIN, &plane),
+        ] {
+            b.time("cncrot_program_line", class, lines, &mut |l| unsafe {
+                p = cncrot_program::default();
+                cncrot_program_line(&mut p, dialect, l.as_ptr().cast(), l.len())
+            });
+        }
+        let mut col = 0usize;
+        let bad = b"5 PLANE SPATIAL SPA+30 SPB+Q12 SPC+0".to_vec();
+        b.time(
+            "cncrot_program_column",
+            "variable",
+            &[bad],
+            &mut |l| unsafe {
+                cncrot_program_column(
+                    &p,
+                    CNCROT_DIALECT_HEIDENHAIN,
+                    l.as_ptr().cast(),
+                    l.len(),
+                    &mut col,
+                )
+            },
+        );
+        b.time("cncrot_program_frame", "active", &[p], &mut |q| unsafe {
+            cncrot_program_frame(q, f.as_mut_ptr())
+        });
+        let mut q = cncrot_program::default();
+        b.time(
+            "cncrot_program_init",
+            "Euler",
+            &[CNCROT_PROGRAM_SINUMERIK_EULER],
+            &mut |&o| unsafe { cncrot_program_init(&mut q, o) },
+        );
+        let mut out = [0u8; CNCROT_PROGRAM_LINE_MAX + 1];
+        for (class, dialect, form, decimals) in [
+            ("G68.2 shortest", CNCROT_DIALECT_FANUC, c"G68.2", -1),
+            (
+                "PLANE 4 decimals",
+                CNCROT_DIALECT_HEIDENHAIN,
+                c"PLANE SPATIAL",
+                4,
+            ),
+        ] {
+            b.time("cncrot_program_write", class, &edges, &mut |fr| unsafe {
+                let mut g = *fr;
+                if dialect == CNCROT_DIALECT_HEIDENHAIN {
+                    g[3] = 0.0;
+                    g[7] = 0.0;
+                    g[11] = 0.0;
+                }
+                cncrot_program_write(
+                    dialect,
+                    form.as_ptr(),
+                    g.as_ptr(),
+                    decimals,
+                    out.as_mut_ptr().cast(),
+                    out.len(),
+                )
+            });
+        }
+    }
+}
+
+/// Kinematics: forward, inverse, choice, follow-up, swivel data, CYCLE600 positions.
+fn machines(b: &mut Bench, _: &Inputs) {
+    {
+        // Kinematics: a fork head from swivel data (two axes) and the paper's three-axis
+        // machine (table C, head about Y then X), at random positions.
+        const CARR: &[u8] =
+            b"$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1 $TC_CARR10[1]=0 $TC_CARR11[1]=1
+$TC_CARR12[1]=0 $TC_CARR6[1]=-150 $TC_CARR23[1]=\"T\" $TC_CARR31[1]=-100 $TC_CARR33[1]=100
+$TC_CARR34[1]=\"HEAD_CB\"
+";
+        let mut head: cncrot_machine = unsafe { std::mem::zeroed() };
+        let mut three: cncrot_machine = unsafe { std::mem::zeroed() };
+        unsafe {
+            cncrot_machine_from_carr(&mut head, CARR.as_ptr().cast(), CARR.len(), 1);
+            let (z, y, x) = ([0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]);
+            cncrot_machine_add_axis(
+                &mut three,
+                1,
+                z.as_ptr(),
+                [500.0, 300.0, 0.0].as_ptr(),
+                0.0,
+                0.0,
+            );
+            cncrot_machine_add_axis(
+                &mut three,
+                0,
+                y.as_ptr(),
+                [0.0, 0.0, 540.0].as_ptr(),
+                -120.0,
+                120.0,
+            );
+            cncrot_machine_add_axis(
+                &mut three,
+                0,
+                x.as_ptr(),
+                [0.0, 0.0, 250.0].as_ptr(),
+                0.0,
+                0.0,
+            );
+        }
+        let mut seed = 0x1234_5678_9abc_def0u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let positions: Vec<[f64; 3]> = (0..1024)
+            .map(|_| {
+                [
+                    360.0 * next() - 180.0,
+                    200.0 * next() - 100.0,
+                    360.0 * next() - 180.0,
+                ]
+            })
+            .collect();
+        let mut f = [0.0; 16];
+        for (class, m) in [("fork head", &head), ("three axes", &three)] {
+            let pos: Vec<[f64; 3]> = positions
+                .iter()
+                .map(|p| {
+                    if class == "fork head" {
+                        [p[0], p[1], 0.0]
+                    } else {
+                        *p
+                    }
+                })
+                .collect();
+            let targets: Vec<[f64; 16]> = pos
+                .iter()
+                .map(|p| {
+                    let mut g = [0.0; 16];
+                    unsafe { cncrot_machine_forward(m, p.as_ptr(), g.as_mut_ptr()) };
+                    g
+                })
+                .collect();
+            b.time("cncrot_machine_forward", class, &pos, &mut |p| unsafe {
+                cncrot_machine_forward(m, p.as_ptr(), f.as_mut_ptr())
+            });
+            let (mut sol, mut cnt) = ([0.0; 6], 0usize);
+            b.time("cncrot_machine_inverse", class, &targets, &mut |t| unsafe {
+                cncrot_machine_inverse(m, t.as_ptr(), sol.as_mut_ptr(), 2, &mut cnt)
+            });
+            let (mut ax, mut res, mut rem) = ([0.0; 3], [0.0; 3], [0.0; 16]);
+            let cur = [750.0, 0.0, 0.0];
+            b.time("cncrot_machine_choose", class, &targets, &mut |t| unsafe {
+                cncrot_machine_choose(
+                    m,
+                    t.as_ptr(),
+                    cur.as_ptr(),
+                    0,
+                    0,
+                    ax.as_mut_ptr(),
+                    res.as_mut_ptr(),
+                    rem.as_mut_ptr(),
+                )
+            });
+            let mut lin = [0.0; 3];
+            b.time("cncrot_machine_follow", class, &pos, &mut |p| unsafe {
+                cncrot_machine_follow(
+                    m,
+                    [0.0; 3].as_ptr(),
+                    p.as_ptr(),
+                    [1.0, 2.0, 3.0].as_ptr(),
+                    100.0,
+                    lin.as_mut_ptr(),
+                )
+            });
+        }
+        let mut m: cncrot_machine = unsafe { std::mem::zeroed() };
+        b.time(
+            "cncrot_machine_from_carr",
+            "4 lines",
+            &[CARR],
+            &mut |t| unsafe { cncrot_machine_from_carr(&mut m, t.as_ptr().cast(), t.len(), 1) },
+        );
+        let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
+        unsafe {
+            cncrot_cycle600(
+                &mut gud,
+                std::ptr::null(),
+                1,
+                c"H".as_ptr(),
+                0,
+                7,
+                0.0,
+                0.0,
+                0.0,
+                30.0,
+                40.0,
+                0.0,
+                0.0,
+                0.0,
+                0.0,
+                1,
+                39,
+                0,
+                0,
+                0,
+            );
+        }
+        let (mut ax, mut res, mut rem) = ([0.0; 3], [0.0; 3], [0.0; 16]);
+        b.time(
+            "cncrot_cycle600_position",
+            "fork head",
+            &positions,
+            &mut |p| unsafe {
+                cncrot_cycle600_position(
+                    &gud,
+                    &head,
+                    [p[0], 0.0, 0.0].as_ptr(),
+                    ax.as_mut_ptr(),
+                    res.as_mut_ptr(),
+                    rem.as_mut_ptr(),
+                )
+            },
+        );
+    }
+}
+
+/// CYCLE600: the recalculation, the additive call, a full head table.
+fn cycle600(b: &mut Bench, i: &Inputs) {
+    for (class, inputs) in &i.angle_classes {
+        // CYCLE600 recalculation (paper, Example 3 with these angles), then the additive call.
+        let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
+        let name = c"UFK600";
+        b.time("cncrot_cycle600", class, inputs, &mut |a| unsafe {
+            cncrot_cycle600(
+                &mut gud,
+                std::ptr::null(),
+                0,
+                name.as_ptr(),
+                1,
+                57,
+                1.0,
+                2.0,
+                3.0,
+                a[0],
+                a[1],
+                a[2],
+                4.0,
+                5.0,
+                6.0,
+                1,
+                39,
+                0,
+                0,
+                0,
+            )
+        });
+    }
+    {
+        let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
+        let name = c"UFK600";
+        b.time(
+            "cncrot_cycle600",
+            "additive (_ROT_AD=1)",
+            &i.angle_classes[0].1,
+            &mut |a| unsafe {
+                cncrot_cycle600(
+                    &mut gud,
+                    std::ptr::null(),
+                    1,
+                    name.as_ptr(),
+                    1,
+                    57,
+                    0.0,
+                    0.0,
+                    0.0,
+                    a[0],
+                    a[1],
+                    a[2],
+                    0.0,
+                    0.0,
+                    0.0,
+                    1,
+                    39,
+                    1,
+                    0,
+                    0,
+                )
+            },
+        );
+    }
+    {
+        // With a full head table whose last entry is the one named: the lookup reads the
+        // table in place, so this costs about what a call without a table costs.
+        let mut text = String::new();
+        for k in 0..15 {
+            text.push_str(&format!("_HEAD_NAME=\"HEAD{k}\" _DELTA_L1={k}\n"));
+        }
+        text.push_str("_HEAD_NAME=\"UFK600\" _DELTA_L1=540.735\n");
+        let mut table: cncrot_head_table = unsafe { std::mem::zeroed() };
+        let parsed = unsafe {
+            cncrot_head_table_parse(
+                &mut table,
+                text.as_ptr().cast(),
+                text.len(),
+                std::ptr::null_mut(),
+            )
+        };
+        assert_eq!((parsed, table.count), (0, 16));
+        let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
+        let name = c"UFK600";
+        b.time(
+            "cncrot_cycle600",
+            "16 heads, last named",
+            &i.angle_classes[0].1,
+            &mut |a| unsafe {
+                cncrot_cycle600(
+                    &mut gud,
+                    &table,
+                    0,
+                    name.as_ptr(),
+                    1,
+                    57,
+                    1.0,
+                    2.0,
+                    3.0,
+                    a[0],
+                    a[1],
+                    a[2],
+                    4.0,
+                    5.0,
+                    6.0,
+                    1,
+                    39,
+                    0,
+                    0,
+                    0,
+                )
+            },
+        );
+    }
+}
+
+/// Batches of 64 rows per call.
+fn batches(b: &mut Bench, i: &Inputs) {
+    // Batches of 64 rows per call (the per-row cost is the median / 64): random rows, and
+    // every row singular.
+    const BATCH: usize = 64;
+    let batch_of =
+        |v: &[[f64; 3]]| -> Vec<f64> { v.iter().cycle().take(BATCH).flatten().copied().collect() };
+    let batch_m =
+        |v: &[[f64; 9]]| -> Vec<f64> { v.iter().cycle().take(BATCH).flatten().copied().collect() };
+    let angle_batch = [batch_of(&i.angle_classes[0].1)];
+    let matrix_batches = [
+        ("64 random rows", batch_m(&i.matrix_classes[0].1)),
+        ("64 singular rows", batch_m(&i.matrix_classes[1].1)),
+    ];
+    let mut many9 = vec![0.0; 9 * BATCH];
+    let mut many3 = vec![0.0; 3 * BATCH];
+    b.time(
+        "cncrot_matrices_from_angles",
+        "64 random rows",
+        &angle_batch,
+        &mut |a| unsafe {
+            cncrot_matrices_from_angles(
+                1,
+                i.code,
+                a.as_ptr(),
+                BATCH,
+                many9.as_mut_ptr(),
+                std::ptr::null_mut(),
+            )
+        },
+    );
+    for (class, m) in &matrix_batches {
+        b.time(
+            "cncrot_angles_from_matrices",
+            class,
+            std::slice::from_ref(m),
+            &mut |m| unsafe {
+                cncrot_angles_from_matrices(
+                    1,
+                    i.code,
+                    m.as_ptr(),
+                    BATCH,
+                    many3.as_mut_ptr(),
+                    std::ptr::null_mut(),
+                )
+            },
+        );
+    }
+    b.time(
+        "cncrot_convert_many",
+        "64 random rows",
+        &angle_batch,
+        &mut |a| unsafe {
+            cncrot_convert_many(
+                0,
+                57,
+                a.as_ptr(),
+                BATCH,
+                1,
+                i.code,
+                many3.as_mut_ptr(),
+                std::ptr::null_mut(),
+            )
+        },
+    );
+    for r in b.rows.iter().filter(|r| r.class.starts_with("64 ")) {
+        println!(
+            "per row: {} {}: {:.1} ns",
+            r.function,
+            r.class,
+            r.median / BATCH as f64
+        );
+    }
+}
+
 fn main() {
     let calls: usize = std::env::args()
         .skip_while(|a| a != "--calls")
@@ -141,10 +860,6 @@ fn main() {
     // `--only "FUNCTION/CLASS"` runs that row alone (benches/instructions.sh counts its
     // instructions under callgrind); the other rows get no calls and are not printed.
     let only: Option<String> = std::env::args().skip_while(|a| a != "--only").nth(1);
-    let n = |function: &str, class: &str| match &only {
-        Some(row) if *row != format!("{function}/{class}") => 0,
-        _ => calls,
-    };
     let ns = ns_per_tick();
     let mut h = Histogram::new();
     // The cost of the measurement alone: the median of empty measurements.
@@ -263,45 +978,6 @@ fn main() {
         .map(|k| (frames[k], frames[(k * 7 + 3) % POOL]))
         .collect();
 
-    let mut rows: Vec<Row> = Vec::new();
-    let report =
-        |function: &'static str, class: &'static str, h: &Histogram, rows: &mut Vec<Row>| {
-            if h.n == 0 {
-                return;
-            }
-            let t = |q: f64| h.quantile(q) as f64 * ns;
-            let base = rows
-                .iter()
-                .find(|r| r.function == function)
-                .map_or(t(0.5), |r| r.median);
-            rows.push(Row {
-                function,
-                class,
-                median: t(0.5),
-                p99: t(0.99),
-                p9999: t(0.9999),
-                max: h.max as f64 * ns,
-                base,
-            });
-            let r = rows.last().unwrap();
-            println!(
-                "{:<30} {:<20} {:>8.1} {:>8.1} {:>9.1} {:>10.1} {:>8.1} {:>7.2}{}",
-                r.function,
-                r.class,
-                r.median,
-                r.p99,
-                r.p9999,
-                r.max,
-                r.max / r.median.max(ns),
-                r.median / r.base.max(ns),
-                if r.median > 2.0 * r.base {
-                    "  > 2x: GOAL MISSED"
-                } else {
-                    ""
-                }
-            );
-        };
-
     println!("cncrot timing distribution: {calls} calls per row, ns per call (measurement overhead of {:.1} ns subtracted)", overhead as f64 * ns);
     println!(
         "math: {}",
@@ -320,774 +996,48 @@ fn main() {
         "{:<30} {:<20} {:>8} {:>8} {:>9} {:>10} {:>8} {:>7}",
         "function", "input class", "median", "p99", "p99.99", "max", "max/med", "class"
     );
+    let mut b = Bench {
+        h,
+        calls,
+        only,
+        overhead,
+        ns,
+        rows: Vec::new(),
+    };
     // The environment's own outliers: the same measurement around no call at all. Its
     // p99.99 and maximum are what interrupts and the hypervisor add to any row.
-    measure(
-        &mut h,
-        n("(no call: the measurement)", "-"),
-        overhead,
-        &[0u8],
-        &mut |_| 0,
-    );
-    report("(no call: the measurement)", "-", &h, &mut rows);
-    let mut out9 = [0.0; 9];
-    let mut out3 = [0.0; 3];
-    let mut out16 = [0.0; 16];
-    for (class, inputs) in &angle_classes {
-        measure(
-            &mut h,
-            n("cncrot_matrix_from_angles", class),
-            overhead,
-            inputs,
-            &mut |a| unsafe { cncrot_matrix_from_angles(1, code, a.as_ptr(), out9.as_mut_ptr()) },
-        );
-        report("cncrot_matrix_from_angles", class, &h, &mut rows);
-    }
-    for (class, inputs) in &matrix_classes {
-        measure(
-            &mut h,
-            n("cncrot_angles_from_matrix", class),
-            overhead,
-            inputs,
-            &mut |m| unsafe { cncrot_angles_from_matrix(1, code, m.as_ptr(), out3.as_mut_ptr()) },
-        );
-        report("cncrot_angles_from_matrix", class, &h, &mut rows);
-    }
-    for (class, inputs) in &angle_classes {
-        measure(
-            &mut h,
-            n("cncrot_convert", class),
-            overhead,
-            inputs,
-            &mut |a| unsafe { cncrot_convert(0, 57, a.as_ptr(), 1, code, out3.as_mut_ptr()) },
-        );
-        report("cncrot_convert", class, &h, &mut rows);
-    }
-    let reference = [10.0, 20.0, 30.0];
-    for (class, inputs) in &matrix_classes {
-        measure(
-            &mut h,
-            n("cncrot_closest_angles", class),
-            overhead,
-            inputs,
-            &mut |m| unsafe {
-                cncrot_closest_angles(1, code, m.as_ptr(), reference.as_ptr(), out3.as_mut_ptr())
-            },
-        );
-        report("cncrot_closest_angles", class, &h, &mut rows);
-    }
-    for (class, inputs) in &nearest_classes {
-        measure(
-            &mut h,
-            n("cncrot_nearest_rotation", class),
-            overhead,
-            inputs,
-            &mut |m| unsafe { cncrot_nearest_rotation(m.as_ptr(), out9.as_mut_ptr()) },
-        );
-        report("cncrot_nearest_rotation", class, &h, &mut rows);
-    }
-    measure(
-        &mut h,
-        n("cncrot_check_rotation", "random"),
-        overhead,
-        &matrix_classes[0].1,
-        &mut |m| unsafe { cncrot_check_rotation(m.as_ptr()) },
-    );
-    report("cncrot_check_rotation", "random", &h, &mut rows);
-    measure(
-        &mut h,
-        n("cncrot_rotate_vector", "random"),
-        overhead,
-        &matrix_classes[0].1,
-        &mut |m| unsafe { cncrot_rotate_vector(m.as_ptr(), reference.as_ptr(), out3.as_mut_ptr()) },
-    );
-    report("cncrot_rotate_vector", "random", &h, &mut rows);
-    for (class, inputs) in &angle_classes {
-        measure(
-            &mut h,
-            n("cncrot_add_rotation", class),
-            overhead,
-            inputs,
-            &mut |a| unsafe {
-                cncrot_add_rotation(
-                    1,
-                    code,
-                    a.as_ptr(),
-                    matrix_classes[0].1[0].as_ptr(),
-                    out9.as_mut_ptr(),
-                )
-            },
-        );
-        report("cncrot_add_rotation", class, &h, &mut rows);
-    }
-    measure(
-        &mut h,
-        n("cncrot_frame_compose", "random"),
-        overhead,
-        &frame_pairs,
-        &mut |(a, b)| unsafe { cncrot_frame_compose(a.as_ptr(), b.as_ptr(), out16.as_mut_ptr()) },
-    );
-    report("cncrot_frame_compose", "random", &h, &mut rows);
-    measure(
-        &mut h,
-        n("cncrot_frame_inverse", "random"),
-        overhead,
-        &frames,
-        &mut |f| unsafe { cncrot_frame_inverse(f.as_ptr(), out16.as_mut_ptr()) },
-    );
-    report("cncrot_frame_inverse", "random", &h, &mut rows);
-    measure(
-        &mut h,
-        n("cncrot_frame_transform_point", "random"),
-        overhead,
-        &frames,
-        &mut |f| unsafe {
-            cncrot_frame_transform_point(f.as_ptr(), reference.as_ptr(), out3.as_mut_ptr())
-        },
-    );
-    report("cncrot_frame_transform_point", "random", &h, &mut rows);
-    // The dialects' forms: words to a frame and a frame to words, for the random angles
-    // (G68.2, the projection of CYCLE800, and PLANE POINTS, the form with the most work).
-    {
-        let random = &angle_classes[0].1;
-        let g68: Vec<[f64; 9]> = random
-            .iter()
-            .map(|a| [1.0, 2.0, 3.0, a[0], a[1], a[2], 0.0, 0.0, 0.0])
-            .collect();
-        let mut f = [0.0; 16];
-        let mut w = [0.0; 9];
-        for (class, form, selector, count) in [
-            ("G68.2", CNCROT_FORM_G68_2, 0, 6),
-            ("CYCLE800 projection", CNCROT_FORM_CYCLE800, 128 + 57, 9),
-            ("PLANE POINTS", CNCROT_FORM_PLANE_POINTS, 0, 9),
-        ] {
-            measure(
-                &mut h,
-                n("cncrot_form_frame", class),
-                overhead,
-                &g68,
-                &mut |x| unsafe {
-                    cncrot_form_frame(form, selector, x.as_ptr(), count, f.as_mut_ptr())
-                },
-            );
-            report("cncrot_form_frame", class, &h, &mut rows);
-        }
-        for (class, form, selector, count) in [
-            ("G68.2", CNCROT_FORM_G68_2, 0, 6),
-            ("CYCLE800 projection", CNCROT_FORM_CYCLE800, 128 + 57, 9),
-            ("G268 Q321", CNCROT_FORM_G268, 321, 6),
-        ] {
-            measure(
-                &mut h,
-                n("cncrot_form_values", class),
-                overhead,
-                &frames,
-                &mut |x| unsafe {
-                    cncrot_form_values(form, selector, x.as_ptr(), w.as_mut_ptr(), count)
-                },
-            );
-            report("cncrot_form_values", class, &h, &mut rows);
-        }
-    }
-    // Probing: a flange from four points, a least-squares plane of four points (the time is
-    // linear in the number of points), an edge in a tilted plane.
-    {
-        let random = &angle_classes[0].1;
-        let flanges: Vec<[[f64; 3]; 4]> = random
-            .iter()
-            .map(|a| {
-                let (sx, sy) = (a[0] / 400.0, a[1] / 400.0);
-                [
-                    [0.0, 0.0, 0.0],
-                    [100.0, 0.0, 100.0 * sx],
-                    [0.0, 0.0, 0.0],
-                    [0.0, 100.0, 100.0 * sy],
-                ]
-            })
-            .collect();
-        let (mut ang, mut f) = ([0.0; 3], [0.0; 16]);
-        measure(
-            &mut h,
-            n("cncrot_probe_flange", "random"),
-            overhead,
-            &flanges,
-            &mut |p| unsafe {
-                cncrot_probe_flange(
-                    p[0].as_ptr(),
-                    p[1].as_ptr(),
-                    p[2].as_ptr(),
-                    p[3].as_ptr(),
-                    ang.as_mut_ptr(),
-                    f.as_mut_ptr(),
-                )
-            },
-        );
-        report("cncrot_probe_flange", "random", &h, &mut rows);
-        // Four probed points on a tilted plane, exactly planar or with one 0.02 mm off.
-        let cloud = |a: &[f64; 3], off: f64| -> Vec<f64> {
-            (0..4)
-                .flat_map(|k| {
-                    let (x, y) = ((k % 2) as f64 * 100.0, (k / 2) as f64 * 80.0);
-                    let bump = if k == 3 { off } else { 0.0 };
-                    [x, y, 5.0 + a[0] / 1000.0 * x + a[1] / 1000.0 * y + bump]
-                })
-                .collect()
-        };
-        let mut res = [0.0; 2];
-        for (class, off) in [("4 points", 0.0), ("4 points, one off", 0.02)] {
-            let clouds: Vec<Vec<f64>> = random.iter().map(|a| cloud(a, off)).collect();
-            measure(
-                &mut h,
-                n("cncrot_probe_plane", class),
-                overhead,
-                &clouds,
-                &mut |p| unsafe {
-                    cncrot_probe_plane(p.as_ptr(), 4, f.as_mut_ptr(), res.as_mut_ptr())
-                },
-            );
-            report("cncrot_probe_plane", class, &h, &mut rows);
-        }
-        let edges: Vec<[f64; 16]> = frames.clone();
-        let mut angle = 0.0;
-        let (e1, e2) = ([0.0; 3], [100.0, 30.0, 7.0]);
-        measure(
-            &mut h,
-            n("cncrot_probe_edge", "random"),
-            overhead,
-            &edges,
-            &mut |fr| unsafe {
-                cncrot_probe_edge(
-                    fr.as_ptr(),
-                    e1.as_ptr(),
-                    e2.as_ptr(),
-                    &mut angle,
-                    f.as_mut_ptr(),
-                )
-            },
-        );
-        report("cncrot_probe_edge", "random", &h, &mut rows);
-        // Program lines (setup time, but bounded): a CYCLE800 call and a PLANE line read on
-        // the random angles, the active frame read, the lines written back.
-        let c800: Vec<Vec<u8>> = random
-            .iter()
-            .map(|a| {
-                let l = format!(
-                    "N10 CYCLE800(1,\"TC1\",0,57,10,0,0,{},{},{},0,0,0,-1,100,1)",
-                    a[0], a[1], a[2]
-                );
-                l.into_bytes()
-            })
-            .collect();
-        let plane: Vec<Vec<u8>> = random
-            .iter()
-            .map(|a| {
-                format!(
-                    "5 PLANE SPATIAL SPA{:+} SPB{:+} SPC{:+} TURN MB MAX FMAX",
-                    a[0], a[1], a[2]
-                )
-                .into_bytes()
-            })
-            .collect();
-        let mut p = cncrot_program::default();
-        for (class, dialect, lines) in [
-            ("CYCLE800 line", CNCROT_DIALECT_SINUMERIK, &c800),
-            ("PLANE SPATIAL line", CNCROT_DIALECT_HEIDENHAIN, &plane),
-        ] {
-            measure(
-                &mut h,
-                n("cncrot_program_line", class),
-                overhead,
-                lines,
-                &mut |l| unsafe {
-                    p = cncrot_program::default();
-                    cncrot_program_line(&mut p, dialect, l.as_ptr().cast(), l.len())
-                },
-            );
-            report("cncrot_program_line", class, &h, &mut rows);
-        }
-        let mut col = 0usize;
-        let bad = b"5 PLANE SPATIAL SPA+30 SPB+Q12 SPC+0".to_vec();
-        measure(
-            &mut h,
-            n("cncrot_program_column", "variable"),
-            overhead,
-            &[bad],
-            &mut |l| unsafe {
-                cncrot_program_column(
-                    &p,
-                    CNCROT_DIALECT_HEIDENHAIN,
-                    l.as_ptr().cast(),
-                    l.len(),
-                    &mut col,
-                )
-            },
-        );
-        report("cncrot_program_column", "variable", &h, &mut rows);
-        measure(
-            &mut h,
-            n("cncrot_program_frame", "active"),
-            overhead,
-            &[p],
-            &mut |q| unsafe { cncrot_program_frame(q, f.as_mut_ptr()) },
-        );
-        report("cncrot_program_frame", "active", &h, &mut rows);
-        let mut q = cncrot_program::default();
-        measure(
-            &mut h,
-            n("cncrot_program_init", "Euler"),
-            overhead,
-            &[CNCROT_PROGRAM_SINUMERIK_EULER],
-            &mut |&o| unsafe { cncrot_program_init(&mut q, o) },
-        );
-        report("cncrot_program_init", "Euler", &h, &mut rows);
-        let mut out = [0u8; CNCROT_PROGRAM_LINE_MAX + 1];
-        for (class, dialect, form, decimals) in [
-            ("G68.2 shortest", CNCROT_DIALECT_FANUC, c"G68.2", -1),
-            (
-                "PLANE 4 decimals",
-                CNCROT_DIALECT_HEIDENHAIN,
-                c"PLANE SPATIAL",
-                4,
-            ),
-        ] {
-            measure(
-                &mut h,
-                n("cncrot_program_write", class),
-                overhead,
-                &edges,
-                &mut |fr| unsafe {
-                    let mut g = *fr;
-                    if dialect == CNCROT_DIALECT_HEIDENHAIN {
-                        g[3] = 0.0;
-                        g[7] = 0.0;
-                        g[11] = 0.0;
-                    }
-                    cncrot_program_write(
-                        dialect,
-                        form.as_ptr(),
-                        g.as_ptr(),
-                        decimals,
-                        out.as_mut_ptr().cast(),
-                        out.len(),
-                    )
-                },
-            );
-            report("cncrot_program_write", class, &h, &mut rows);
-        }
-    }
-    {
-        // Kinematics: a fork head from swivel data (two axes) and the paper's three-axis
-        // machine (table C, head about Y then X), at random positions.
-        const CARR: &[u8] =
-            b"$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1 $TC_CARR10[1]=0 $TC_CARR11[1]=1
-$TC_CARR12[1]=0 $TC_CARR6[1]=-150 $TC_CARR23[1]=\"T\" $TC_CARR31[1]=-100 $TC_CARR33[1]=100
-$TC_CARR34[1]=\"HEAD_CB\"
-";
-        let mut head: cncrot_machine = unsafe { std::mem::zeroed() };
-        let mut three: cncrot_machine = unsafe { std::mem::zeroed() };
-        unsafe {
-            cncrot_machine_from_carr(&mut head, CARR.as_ptr().cast(), CARR.len(), 1);
-            let (z, y, x) = ([0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]);
-            cncrot_machine_add_axis(
-                &mut three,
-                1,
-                z.as_ptr(),
-                [500.0, 300.0, 0.0].as_ptr(),
-                0.0,
-                0.0,
-            );
-            cncrot_machine_add_axis(
-                &mut three,
-                0,
-                y.as_ptr(),
-                [0.0, 0.0, 540.0].as_ptr(),
-                -120.0,
-                120.0,
-            );
-            cncrot_machine_add_axis(
-                &mut three,
-                0,
-                x.as_ptr(),
-                [0.0, 0.0, 250.0].as_ptr(),
-                0.0,
-                0.0,
-            );
-        }
-        let mut seed = 0x1234_5678_9abc_def0u64;
-        let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
-        let positions: Vec<[f64; 3]> = (0..1024)
-            .map(|_| {
-                [
-                    360.0 * next() - 180.0,
-                    200.0 * next() - 100.0,
-                    360.0 * next() - 180.0,
-                ]
-            })
-            .collect();
-        let mut f = [0.0; 16];
-        for (class, m) in [("fork head", &head), ("three axes", &three)] {
-            let pos: Vec<[f64; 3]> = positions
-                .iter()
-                .map(|p| {
-                    if class == "fork head" {
-                        [p[0], p[1], 0.0]
-                    } else {
-                        *p
-                    }
-                })
-                .collect();
-            let targets: Vec<[f64; 16]> = pos
-                .iter()
-                .map(|p| {
-                    let mut g = [0.0; 16];
-                    unsafe { cncrot_machine_forward(m, p.as_ptr(), g.as_mut_ptr()) };
-                    g
-                })
-                .collect();
-            measure(
-                &mut h,
-                n("cncrot_machine_forward", class),
-                overhead,
-                &pos,
-                &mut |p| unsafe { cncrot_machine_forward(m, p.as_ptr(), f.as_mut_ptr()) },
-            );
-            report("cncrot_machine_forward", class, &h, &mut rows);
-            let (mut sol, mut cnt) = ([0.0; 6], 0usize);
-            measure(
-                &mut h,
-                n("cncrot_machine_inverse", class),
-                overhead,
-                &targets,
-                &mut |t| unsafe {
-                    cncrot_machine_inverse(m, t.as_ptr(), sol.as_mut_ptr(), 2, &mut cnt)
-                },
-            );
-            report("cncrot_machine_inverse", class, &h, &mut rows);
-            let (mut ax, mut res, mut rem) = ([0.0; 3], [0.0; 3], [0.0; 16]);
-            let cur = [750.0, 0.0, 0.0];
-            measure(
-                &mut h,
-                n("cncrot_machine_choose", class),
-                overhead,
-                &targets,
-                &mut |t| unsafe {
-                    cncrot_machine_choose(
-                        m,
-                        t.as_ptr(),
-                        cur.as_ptr(),
-                        0,
-                        0,
-                        ax.as_mut_ptr(),
-                        res.as_mut_ptr(),
-                        rem.as_mut_ptr(),
-                    )
-                },
-            );
-            report("cncrot_machine_choose", class, &h, &mut rows);
-            let mut lin = [0.0; 3];
-            measure(
-                &mut h,
-                n("cncrot_machine_follow", class),
-                overhead,
-                &pos,
-                &mut |p| unsafe {
-                    cncrot_machine_follow(
-                        m,
-                        [0.0; 3].as_ptr(),
-                        p.as_ptr(),
-                        [1.0, 2.0, 3.0].as_ptr(),
-                        100.0,
-                        lin.as_mut_ptr(),
-                    )
-                },
-            );
-            report("cncrot_machine_follow", class, &h, &mut rows);
-        }
-        let mut m: cncrot_machine = unsafe { std::mem::zeroed() };
-        measure(
-            &mut h,
-            n("cncrot_machine_from_carr", "4 lines"),
-            overhead,
-            &[CARR],
-            &mut |t| unsafe { cncrot_machine_from_carr(&mut m, t.as_ptr().cast(), t.len(), 1) },
-        );
-        report("cncrot_machine_from_carr", "4 lines", &h, &mut rows);
-        let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
-        unsafe {
-            cncrot_cycle600(
-                &mut gud,
-                std::ptr::null(),
-                1,
-                c"H".as_ptr(),
-                0,
-                7,
-                0.0,
-                0.0,
-                0.0,
-                30.0,
-                40.0,
-                0.0,
-                0.0,
-                0.0,
-                0.0,
-                1,
-                39,
-                0,
-                0,
-                0,
-            );
-        }
-        let (mut ax, mut res, mut rem) = ([0.0; 3], [0.0; 3], [0.0; 16]);
-        measure(
-            &mut h,
-            n("cncrot_cycle600_position", "fork head"),
-            overhead,
-            &positions,
-            &mut |p| unsafe {
-                cncrot_cycle600_position(
-                    &gud,
-                    &head,
-                    [p[0], 0.0, 0.0].as_ptr(),
-                    ax.as_mut_ptr(),
-                    res.as_mut_ptr(),
-                    rem.as_mut_ptr(),
-                )
-            },
-        );
-        report("cncrot_cycle600_position", "fork head", &h, &mut rows);
-    }
-    for (class, inputs) in &angle_classes {
-        // CYCLE600 recalculation (paper, Example 3 with these angles), then the additive call.
-        let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
-        let name = c"UFK600";
-        measure(
-            &mut h,
-            n("cncrot_cycle600", class),
-            overhead,
-            inputs,
-            &mut |a| unsafe {
-                cncrot_cycle600(
-                    &mut gud,
-                    std::ptr::null(),
-                    0,
-                    name.as_ptr(),
-                    1,
-                    57,
-                    1.0,
-                    2.0,
-                    3.0,
-                    a[0],
-                    a[1],
-                    a[2],
-                    4.0,
-                    5.0,
-                    6.0,
-                    1,
-                    39,
-                    0,
-                    0,
-                    0,
-                )
-            },
-        );
-        report("cncrot_cycle600", class, &h, &mut rows);
-    }
-    {
-        let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
-        let name = c"UFK600";
-        measure(
-            &mut h,
-            n("cncrot_cycle600", "additive (_ROT_AD=1)"),
-            overhead,
-            &angle_classes[0].1,
-            &mut |a| unsafe {
-                cncrot_cycle600(
-                    &mut gud,
-                    std::ptr::null(),
-                    1,
-                    name.as_ptr(),
-                    1,
-                    57,
-                    0.0,
-                    0.0,
-                    0.0,
-                    a[0],
-                    a[1],
-                    a[2],
-                    0.0,
-                    0.0,
-                    0.0,
-                    1,
-                    39,
-                    1,
-                    0,
-                    0,
-                )
-            },
-        );
-        report("cncrot_cycle600", "additive (_ROT_AD=1)", &h, &mut rows);
-    }
-    {
-        // With a full head table whose last entry is the one named: the lookup reads the
-        // table in place, so this costs about what a call without a table costs.
-        let mut text = String::new();
-        for k in 0..15 {
-            text.push_str(&format!("_HEAD_NAME=\"HEAD{k}\" _DELTA_L1={k}\n"));
-        }
-        text.push_str("_HEAD_NAME=\"UFK600\" _DELTA_L1=540.735\n");
-        let mut table: cncrot_head_table = unsafe { std::mem::zeroed() };
-        let parsed = unsafe {
-            cncrot_head_table_parse(
-                &mut table,
-                text.as_ptr().cast(),
-                text.len(),
-                std::ptr::null_mut(),
-            )
-        };
-        assert_eq!((parsed, table.count), (0, 16));
-        let mut gud: cncrot_cycle600_gud = unsafe { std::mem::zeroed() };
-        let name = c"UFK600";
-        measure(
-            &mut h,
-            n("cncrot_cycle600", "16 heads, last named"),
-            overhead,
-            &angle_classes[0].1,
-            &mut |a| unsafe {
-                cncrot_cycle600(
-                    &mut gud,
-                    &table,
-                    0,
-                    name.as_ptr(),
-                    1,
-                    57,
-                    1.0,
-                    2.0,
-                    3.0,
-                    a[0],
-                    a[1],
-                    a[2],
-                    4.0,
-                    5.0,
-                    6.0,
-                    1,
-                    39,
-                    0,
-                    0,
-                    0,
-                )
-            },
-        );
-        report("cncrot_cycle600", "16 heads, last named", &h, &mut rows);
-    }
-    // Batches of 64 rows per call (the per-row cost is the median / 64): random rows, and
-    // every row singular.
-    const BATCH: usize = 64;
-    let batch_of =
-        |v: &[[f64; 3]]| -> Vec<f64> { v.iter().cycle().take(BATCH).flatten().copied().collect() };
-    let batch_m =
-        |v: &[[f64; 9]]| -> Vec<f64> { v.iter().cycle().take(BATCH).flatten().copied().collect() };
-    let angle_batch = [batch_of(&angle_classes[0].1)];
-    let matrix_batches = [
-        ("64 random rows", batch_m(&matrix_classes[0].1)),
-        ("64 singular rows", batch_m(&matrix_classes[1].1)),
-    ];
-    let mut many9 = vec![0.0; 9 * BATCH];
-    let mut many3 = vec![0.0; 3 * BATCH];
-    measure(
-        &mut h,
-        n("cncrot_matrices_from_angles", "64 random rows"),
-        overhead,
-        &angle_batch,
-        &mut |a| unsafe {
-            cncrot_matrices_from_angles(
-                1,
-                code,
-                a.as_ptr(),
-                BATCH,
-                many9.as_mut_ptr(),
-                std::ptr::null_mut(),
-            )
-        },
-    );
-    report(
-        "cncrot_matrices_from_angles",
-        "64 random rows",
-        &h,
-        &mut rows,
-    );
-    for (class, m) in &matrix_batches {
-        measure(
-            &mut h,
-            n("cncrot_angles_from_matrices", class),
-            overhead,
-            std::slice::from_ref(m),
-            &mut |m| unsafe {
-                cncrot_angles_from_matrices(
-                    1,
-                    code,
-                    m.as_ptr(),
-                    BATCH,
-                    many3.as_mut_ptr(),
-                    std::ptr::null_mut(),
-                )
-            },
-        );
-        report("cncrot_angles_from_matrices", class, &h, &mut rows);
-    }
-    measure(
-        &mut h,
-        n("cncrot_convert_many", "64 random rows"),
-        overhead,
-        &angle_batch,
-        &mut |a| unsafe {
-            cncrot_convert_many(
-                0,
-                57,
-                a.as_ptr(),
-                BATCH,
-                1,
-                code,
-                many3.as_mut_ptr(),
-                std::ptr::null_mut(),
-            )
-        },
-    );
-    report("cncrot_convert_many", "64 random rows", &h, &mut rows);
-    for r in rows.iter().filter(|r| r.class.starts_with("64 ")) {
-        println!(
-            "per row: {} {}: {:.1} ns",
-            r.function,
-            r.class,
-            r.median / BATCH as f64
-        );
-    }
+    b.time("(no call: the measurement)", "-", &[0u8], &mut |_| 0);
+    let i = Inputs {
+        angle_classes,
+        matrix_classes,
+        nearest_classes,
+        frames,
+        frame_pairs,
+        code,
+    };
+    rotations(&mut b, &i);
+    transforms(&mut b, &i);
+    forms(&mut b, &i);
+    probing(&mut b, &i);
+    programs(&mut b, &i);
+    machines(&mut b, &i);
+    cycle600(&mut b, &i);
+    batches(&mut b, &i);
     if std::env::args().any(|a| a == "--syscall-canary") {
         // For benches/syscalls.sh: a row that does make a system call per call, to show
         // that the check sees one.
-        measure(
-            &mut h,
-            n("sched_yield (canary)", "-"),
-            overhead,
-            &[0u8],
-            &mut |_| {
-                std::thread::yield_now();
-                0
-            },
-        );
-        report("sched_yield (canary)", "-", &h, &mut rows);
+        b.time("sched_yield (canary)", "-", &[0u8], &mut |_| {
+            std::thread::yield_now();
+            0
+        });
     }
-    let worst = rows
+    let worst = b
+        .rows
         .iter()
         .filter(|r| r.function.starts_with("cncrot_"))
         .map(|r| r.median / r.base)
         .fold(0.0, f64::max);
     println!("worst class median / random median: {worst:.2} (goal: at most 2)");
-    black_box((out3, out9, out16));
 }
 
 fn cpu_name() -> String {
