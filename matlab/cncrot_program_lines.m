@@ -4,11 +4,11 @@
 %   dialect: 'sinumerik', 'heidenhain', 'fanuc', 'syntec', 'twincat' or 'haas' (any case,
 %   char or string), or its code (cncrot_dialects, of any numeric class); lines: one block
 %   (a char row or a string) or several (a cell array of them, or a string array), applied
-%   in order. F is the 4-by-4 active frame after the last line
-%   (p_old = F * [p_new; 1]), state the program's modal state to pass to the next call
-%   (start from [], or from struct('options', 1) to read SINUMERIK frame angles in Euler
-%   mode), frames the frame after each line (4-by-4-by-N). The state carries a seal: a
-%   state whose fields were changed is refused (cncrot:badState).
+%   in order. F is the 4-by-4 active frame after the last line (p_old = F * [p_new; 1]),
+%   state the program's modal state to pass to the next call (start from [], or from
+%   struct('options', 1) to read SINUMERIK frame angles in Euler mode; options of any
+%   numeric class), frames the frame after each line (4-by-4-by-N). The state carries a
+%   seal: a state whose fields were changed is refused (cncrot:badState).
 %   A line the controller could not execute raises the status's error (cncrot:unknownWord,
 %   cncrot:notANumber for a variable, cncrot:missingWord, cncrot:parse, cncrot:lineTooLong,
 %   or the error of the command's mathematics) whose message names the line and the column

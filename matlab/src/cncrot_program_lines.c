@@ -38,7 +38,11 @@ static void from_struct(const mxArray *s, cncrot_program *p) {
   p->active = as_int(v[0]);
   field(s, "dialect", v, 1);
   p->dialect = as_int(v[0]);
-  field(s, "options", v, 1);
+  /* The one field a user sets: any numeric class or logical (struct('options', int32(1))). */
+  const mxArray *o = mxGetField(s, 0, "options");
+  if (o && !mxIsDouble(o) && (mxIsNumeric(o) || mxIsLogical(o)) && !mxIsComplex(o) && !mxIsSparse(o) && mxGetNumberOfElements(o) == 1)
+    v[0] = mxGetScalar(o);
+  else field(s, "options", v, 1);
   p->options = as_u32(v[0]);
   if (mxGetField(s, 0, "seal")) {
     field(s, "seal", v, 1);
