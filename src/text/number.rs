@@ -105,7 +105,7 @@ fn parse_fast(w: u64, e: i32) -> Option<f64> {
     }
     let p = u128::from(pow10(e.unsigned_abs())?);
     if e >= 0 {
-        return Some((u128::from(w) * p) as f64);
+        return Some(to_f64(u128::from(w) * p));
     }
     let lz = w.leading_zeros();
     let top = u128::from(w) << (64 + lz);
@@ -113,7 +113,22 @@ fn parse_fast(w: u64, e: i32) -> Option<f64> {
     let sticky = u128::from(top.checked_rem(p)? != 0);
     // 2^-(64 + lz), a normal double (64 + lz ≤ 127).
     let scale = f64::from_bits(u64::from(1023 - 64 - lz) << 52);
-    Some((q | sticky) as f64 * scale)
+    Some(to_f64(q | sticky) * scale)
+}
+
+/// `x` correctly rounded to a double, with 64-bit conversions only: Rust's `u128 as f64`
+/// calls a runtime helper (`__floatuntidf`) that the real-time library for MSVC would need
+/// from its host. Above 2^64 the top 64 bits with the rest folded into a sticky bit round
+/// as the whole does (the rounding position is 11 bits above the sticky one), and the
+/// scaling by a power of two is exact.
+fn to_f64(x: u128) -> f64 {
+    if x >> 64 == 0 {
+        return x as u64 as f64;
+    }
+    let lz = x.leading_zeros(); // < 64
+    let top = x << lz;
+    let high = (top >> 64) as u64 | u64::from(top as u64 != 0);
+    high as f64 * f64::from_bits(u64::from(1023 + 64 - lz) << 52)
 }
 
 /// The value of `digits` (ASCII digits with at most one `.`, at least one digit) times
@@ -1008,6 +1023,22 @@ mod tests {
         for i in 0..100_000 {
             let v = (rng.next() % 720_000_000) as f64 / 1e6 + f64::from(i % 7) * 1e-9 + 1e-4;
             assert!(shortest_fast(v).is_some(), "{v}");
+        }
+    }
+
+    /// The 64-bit conversion of 128-bit integers rounds as Rust's own (round to nearest,
+    /// ties to even), ties and near-ties included.
+    #[test]
+    fn to_f64_rounds_as_the_language() {
+        let mut rng = Rng(0xBB67_AE85_84CA_A73B);
+        for k in 0..200_000 {
+            let x = (u128::from(rng.next()) << 64 | u128::from(rng.next())) >> (k % 128);
+            assert_eq!(to_f64(x).to_bits(), (x as f64).to_bits(), "{x}");
+            // Exact ties and their neighbours: 54 significant bits ending in 1, then ± 1.
+            let tie = (u128::from(rng.next() >> 10) | 1) << (k % 70);
+            for y in [tie, tie + 1, tie - 1] {
+                assert_eq!(to_f64(y).to_bits(), (y as f64).to_bits(), "{y}");
+            }
         }
     }
 
