@@ -1,6 +1,7 @@
 % CNCROT_PROGRAM_LINES  What program lines do to the active frame, as the controller does.
 %   [F, state, frames] = cncrot_program_lines(dialect, lines)
 %   [F, state, frames] = cncrot_program_lines(dialect, lines, state)
+%   [F, state, frames, remarks] = cncrot_program_lines(...)
 %   dialect: 'sinumerik', 'heidenhain', 'fanuc', 'syntec', 'twincat' or 'haas' (any case,
 %   char or string), or its code (cncrot_dialects, of any numeric class); lines: one block
 %   (a char row or a string) or several (a cell array of them, or a string array), applied
@@ -8,7 +9,11 @@
 %   state the program's modal state to pass to the next call (start from [], or from
 %   struct('options', 1) to read SINUMERIK frame angles in Euler mode; options of any
 %   numeric class), frames the frame after each line (4-by-4-by-N). The state carries a
-%   seal: a state whose fields were changed is refused (cncrot:badState).
+%   seal: a state whose fields were changed is refused (cncrot:badState). Every block of a
+%   program is read: remarks (N-by-1 cell) says for each line 'applied' (a command that
+%   concerns the frame), 'passed' (motion, tool, M words, comments, program structure: the
+%   state unchanged) or 'not followed' (a work offset, preset, datum shift or table,
+%   mirroring, scaling: the state unchanged, and it may no longer be the control's).
 %   A line the controller could not execute raises the status's error (cncrot:unknownWord,
 %   cncrot:notANumber for a variable, cncrot:missingWord, cncrot:parse, cncrot:lineTooLong,
 %   or the error of the command's mathematics) whose message names the line and the column
@@ -19,5 +24,7 @@
 %     F = cncrot_program_lines('twincat', {'N65 ROT Z30', 'N90 AROT Z15'})
 %     F = cncrot_program_lines(cncrot_dialects().TWINCAT, {'N65 ROT Z30', 'N90 AROT Z15'})   % the same
 %     F = cncrot_program_lines('heidenhain', '5 PLANE SPATIAL SPA+27 SPB+0 SPC+45 TURN FMAX')
+%     [F, ~, ~, r] = cncrot_program_lines('fanuc', {'N10 G54', 'N20 G68.2 J30', 'N30 G1 X10'})
+%     % r = {'not followed'; 'applied'; 'passed'}
 %
 %   See also CNCROT_PROGRAM_WRITE, CNCROT_DIALECTS, CNCROT_FORM_FRAME.

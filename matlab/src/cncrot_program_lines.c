@@ -1,4 +1,5 @@
-/* [F, state, frames] = cncrot_program_lines(dialect, lines, state): see cncrot_program_lines.m. */
+/* [F, state, frames, remarks] = cncrot_program_lines(dialect, lines, state): see
+ * cncrot_program_lines.m. */
 #include "gateway.h"
 
 static const char *FIELDS[] = {"rotation", "origin", "angles", "active", "dialect", "options", "seal"};
@@ -87,7 +88,7 @@ static size_t line_bytes(const mxArray *a, char *out, size_t cap) {
 }
 
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
-  check_nargs(nrhs, 2, 3, nlhs, 3);
+  check_nargs(nrhs, 2, 3, nlhs, 4);
   int32_t dialect = dialect_arg(prhs[0], 1, "dialect");
   cncrot_program p;
   if (nrhs == 3) from_struct(prhs[2], &p);
@@ -103,6 +104,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   int cell = mxIsCell(lines);
   size_t n = cell ? mxGetNumberOfElements(lines) : 1;
   mxArray *frames = mxCreateNumericArray(3, (mwSize[]){4, 4, n}, mxDOUBLE_CLASS, mxREAL);
+  /* What each block did: 'applied', 'passed' (not about the frame), 'not followed'. */
+  mxArray *remarks = mxCreateCellMatrix(n, 1);
   double *fr = mxGetDoubles(frames);
   double f[16];
   /* The state's own check, also for no lines. */
@@ -121,6 +124,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     if (s < 0) {
       cncrot_program_column(&p, dialect, buf, len, &column);
       mxDestroyArray(frames);
+      mxDestroyArray(remarks);
       char where[96];
       if (column > 0) {
         snprintf(where, sizeof where, "%s, line %d, column %d", label(2, "lines"), (int)(k + 1), (int)column);
@@ -128,6 +132,10 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
       }
       raise_at(s, label(2, "lines"), "line", (long)k, n);
     }
+    mxSetCell(remarks, k,
+              mxCreateString(s == CNCROT_STATUS_PASSED         ? "passed"
+                             : s == CNCROT_STATUS_NOT_FOLLOWED ? "not followed"
+                                                               : "applied"));
     cncrot_program_frame(&p, f);
     frame_to_col_major(f, fr + 16 * k);
   }
@@ -136,4 +144,5 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   plhs[0] = F;
   if (nlhs > 1) plhs[1] = to_struct(&p);
   if (nlhs > 2) plhs[2] = frames; else mxDestroyArray(frames);
+  if (nlhs > 3) plhs[3] = remarks; else mxDestroyArray(remarks);
 }

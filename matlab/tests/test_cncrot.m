@@ -212,6 +212,12 @@ function test_cncrot(cases_file)
   check(isequal(cncrot_program_write("fanuc", 'G68.2', F, int8(4)), cncrot_program_write(d.FANUC, 'G68.2', F, 4)), 'program_write by name');
   R4 = [F(1:3, 1:3) [0; 0; 0]; 0 0 0 1];
   check(isequal(cncrot_program_write('Heidenhain', "PLANE SPATIAL", R4), cncrot_program_write(d.HEIDENHAIN, 'PLANE SPATIAL', R4)), 'a double-quoted form');
+  % A whole program: every block read, each with its remark, the frames after each.
+  prog = {'0 BEGIN PGM T MM', '1 TOOL CALL 1 Z S5000', '2 CYCL DEF 7.0 DATUM SHIFT', ...
+          '3 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-', '4 L X+10 FMAX', '5 PLANE RESET STAY', '6 END PGM T MM'};
+  [Fp, ~, frp, rp] = cncrot_program_lines('heidenhain', prog);
+  check(isequal(rp, {'passed'; 'passed'; 'not followed'; 'applied'; 'passed'; 'applied'; 'passed'}), 'remarks per block');
+  check(isequal(Fp, eye(4)) && isequal(frp(:, :, 5), frp(:, :, 4)) && abs(frp(1, 3, 4) - 0.5) < 1e-15, 'a whole program''s frames');
   [F3, st3, fr3] = cncrot_program_lines('twincat', {"N65 ROT Z30", 'N90 AROT Z15'});
   [F4, st4, fr4] = cncrot_program_lines(5, {'N65 ROT Z30', 'N90 AROT Z15'});
   check(isequal(F3, F4) && isequal(st3, st4) && isequal(fr3, fr4), 'lines as a cell with a double-quoted line');
