@@ -597,6 +597,29 @@ $TC_CARR34[1]=\"HEAD_CB\"
                     rem.as_mut_ptr(),
                 )
             });
+            // The same orientations as program states (a G68.2 line each): the positions a
+            // program's tilt moves the machine to.
+            let states: Vec<cncrot_program> = targets
+                .iter()
+                .map(|t| unsafe {
+                    let mut line = [0u8; CNCROT_PROGRAM_LINE_MAX + 1];
+                    cncrot_program_write(
+                        CNCROT_DIALECT_FANUC,
+                        c"G68.2".as_ptr(),
+                        t.as_ptr(),
+                        -1,
+                        line.as_mut_ptr().cast(),
+                        line.len(),
+                    );
+                    let n = line.iter().position(|&c| c == 0).unwrap_or(0);
+                    let mut p = cncrot_program::default();
+                    cncrot_program_line(&mut p, CNCROT_DIALECT_FANUC, line.as_ptr().cast(), n);
+                    p
+                })
+                .collect();
+            b.time("cncrot_program_axes", class, &states, &mut |p| unsafe {
+                cncrot_program_axes(p, m, cur.as_ptr(), ax.as_mut_ptr())
+            });
             let mut lin = [0.0; 3];
             b.time("cncrot_machine_follow", class, &pos, &mut |p| unsafe {
                 cncrot_machine_follow(

@@ -229,6 +229,11 @@ static void machine_choose(void) {
   sink += cncrot_machine_choose(&head3, TILT, cur, CNCROT_CHOOSE_CLOSEST, 0, ax, res, rem) +
           cncrot_machine_choose(&mach, TILT, cur, CNCROT_CHOOSE_MINUS, 2, ax, res, rem);
 }
+static void program_axes(void) {
+  static const double cur[3] = {750, 10, -20};
+  static double ax[3];
+  sink += cncrot_program_axes(&prog, &head3, cur, ax) + cncrot_program_axes(&prog, &mach, cur, ax);
+}
 static void machine_follow(void) {
   static const double from[3] = {0, 0, 0}, to[3] = {30, 40, 50}, lin[3] = {1, 2, 3};
   sink += cncrot_machine_follow(&head3, from, to, lin, 100, out3);
@@ -259,6 +264,7 @@ static const struct entry ENTRIES[] = {
     E(machine_from_carr, 1), E(machine_carr_error_line, 1), E(machine_from_head, 1),
     E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
     E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),
+    E(program_axes, 1),
     E(matrices_from_angles, 0), E(angles_from_matrices, 0), E(convert_many, 0),
 };
 

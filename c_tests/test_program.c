@@ -241,6 +241,42 @@ static void whole_programs(void) {
   CHECK(memcmp(&fresh, &zero, sizeof fresh) == 0, "a passed block wrote the state");
 }
 
+/* The positions a program's tilt moves a machine to: a fork head from swivel data (C about
+ * Z carrying B about Y, B within ±100°). Ry(30°) is C 0, B 30 or C 180, B -30; from C 730 the
+ * first, C unwound to 720. Nothing active: B 0 with C free, kept where it is. The same bits
+ * as cncrot_machine_choose with CNCROT_CHOOSE_CLOSEST. */
+static void program_axes(void) {
+  static const char carr[] =
+      "$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1 $TC_CARR10[1]=0 $TC_CARR11[1]=1 $TC_CARR12[1]=0\n"
+      "$TC_CARR6[1]=-150 $TC_CARR23[1]=\"T\" $TC_CARR31[1]=-100 $TC_CARR33[1]=100\n";
+  cncrot_machine m;
+  memset(&m, 0, sizeof m);
+  CHECK_STATUS(cncrot_machine_from_carr(&m, carr, strlen(carr), 1), CNCROT_STATUS_OK);
+  cncrot_program p;
+  memset(&p, 0, sizeof p);
+  double cur[3] = {730, 0, 0}, ax[3], want[3];
+  CHECK_STATUS(cncrot_program_axes(&p, &m, cur, ax), CNCROT_STATUS_FREE_AXIS);
+  CHECK(ax[0] == 730 && ax[1] == 0 && ax[2] == 0, "nothing active: %g %g %g", ax[0], ax[1], ax[2]);
+  const char *l = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-";
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_HEIDENHAIN, l, strlen(l)), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_program_axes(&p, &m, cur, ax), CNCROT_STATUS_OK);
+  CHECK(fabs(ax[0] - 720) < 1e-9 && fabs(ax[1] - 30) < 1e-9 && ax[2] == 0, "Ry(30): %g %g %g", ax[0], ax[1], ax[2]);
+  double f[16], res[3], rem[16];
+  cncrot_program_frame(&p, f);
+  CHECK_STATUS(cncrot_machine_choose(&m, f, cur, CNCROT_CHOOSE_CLOSEST, 0, want, res, rem), CNCROT_STATUS_OK);
+  CHECK(memcmp(ax, want, sizeof ax) == 0, "not the closest choice");
+  /* Refusals leave the output untouched. */
+  double keep[3] = {1, 2, 3}, out[3] = {1, 2, 3}, nan_cur[3] = {NAN, 0, 0};
+  CHECK_STATUS(cncrot_program_axes(&p, &m, nan_cur, out), CNCROT_STATUS_NOT_FINITE);
+  CHECK_STATUS(cncrot_program_axes(&p, NULL, cur, out), CNCROT_STATUS_NULL_POINTER);
+  cncrot_program bad = p;
+  bad.origin[2] = 1;
+  CHECK_STATUS(cncrot_program_axes(&bad, &m, cur, out), CNCROT_STATUS_BAD_STATE);
+  double far[3] = {0, 0, 5};
+  CHECK_STATUS(cncrot_program_axes(&p, &m, far, out), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK(memcmp(out, keep, sizeof out) == 0, "a refusal wrote the output");
+}
+
 /* Refused lines: the status, the column of the first bad character, the state untouched. */
 static void refusals(void) {
   static const struct {
@@ -477,6 +513,7 @@ int main(void) {
   readback_and_rules();
   every_pair_converts();
   whole_programs();
+  program_axes();
   refusals();
   writer_buffers();
   sealed_states();

@@ -1495,6 +1495,36 @@ int32_t cncrot_program_column(const struct cncrot_program *program,
                               size_t *column);
 
 /**
+ * The rotary-axis positions the active tilt of `program` moves `machine` to, seen from the
+ * current positions `current` (degrees): the solution closest to them, whole turns
+ * unwound toward them, within the travel limits and on the Hirth grids — what
+ * `cncrot_machine_choose` gives with `CNCROT_CHOOSE_CLOSEST`, the choice SINUMERIK makes
+ * for a frame and Heidenhain makes without `SEQ` (the block's own choice words, `_DIR`,
+ * `SEQ±`, `G53.1 P`, are not kept in the state yet). No tilt active: the positions of the
+ * identity frame. Axes the machine lacks are 0 in `axes` (and must be 0 in `current`).
+ *
+ * Returns 0, `CNCROT_STATUS_FREE_AXIS` (a free axis kept at its current position),
+ * `CNCROT_STATUS_SNAPPED` (a Hirth axis snapped to its grid), or with `axes` untouched:
+ * `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a program state this library did
+ * not write), `CNCROT_STATUS_UNREACHABLE`, `CNCROT_STATUS_OUT_OF_TRAVEL`,
+ * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE` (a current position), and the
+ * statuses of a description that is not a machine (see `cncrot_machine`).
+ *
+ * # Safety
+ * `program` points to a readable `cncrot_program`, `machine` to a `cncrot_machine`,
+ * `current` to 3 readable and `axes` to 3 writable doubles (or NULL: error).
+ *
+ * ```c
+ * double cur[3] = {0, 0, 0}, ax[3];
+ * cncrot_program_axes(&p, &m, cur, ax);   // after PLANE SPATIAL SPA+0 SPB+30 SPC+0
+ * ```
+ */
+int32_t cncrot_program_axes(const struct cncrot_program *program,
+                            const struct cncrot_machine *machine,
+                            const double *current,
+                            double *axes);
+
+/**
  * The active frame of a program (4x4, row-major; the identity when none is active).
  *
  * Returns 0, or with `frame` untouched `CNCROT_STATUS_NULL_POINTER` or

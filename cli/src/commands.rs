@@ -819,3 +819,189 @@ pub fn axes(
         })
     })
 }
+
+/// What `program` is asked: the file, its dialect, a translation, the positions before.
+pub struct ProgramArgs<'a> {
+    pub file: &'a str,
+    pub dialect: &'a str,
+    pub euler: bool,
+    pub to: Option<&'a str>,
+    pub current: Option<&'a str>,
+    pub json: bool,
+    pub decimals: i32,
+}
+
+/// A whole part program, block by block (see the command's help). Exit status 1 when a
+/// block was refused or (with `--to`) could not be carried across.
+pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
+    use std::io::Write;
+    let dialect = input::dialect(a.dialect).map_err(option("--dialect"))?;
+    let target =
+        a.to.map(input::target)
+            .transpose()
+            .map_err(option("--to"))?;
+    let machine = if m.carr.is_some() || !m.axis.is_empty() {
+        Some(machine(m)?)
+    } else {
+        None
+    };
+    let n = machine.as_ref().map_or(MAX_AXES, |m| m.axes().len());
+    let mut current = a
+        .current
+        .map(|t| positions(t, n, "positions"))
+        .transpose()
+        .map_err(option("--current"))?
+        .unwrap_or([0.0; MAX_AXES]);
+    if a.current.is_some() && machine.is_none() {
+        return Err(Failure::new(
+            "--current needs a machine: --carr FILE or --axis ...",
+        ));
+    }
+    let text = input::read_source(a.file)?;
+    let d = a.decimals;
+    let mut p = Program {
+        euler: a.euler && dialect == Dialect::Sinumerik,
+        ..Program::default()
+    };
+    let (mut applied, mut passed, mut unfollowed, mut refused) = (0, 0, 0, 0);
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
+    let mut ok = true;
+    let mut put = |s: String| writeln!(out, "{s}").is_ok();
+    for (k, raw) in text.lines().enumerate() {
+        let line = k + 1;
+        let block = raw.trim_end_matches('\r');
+        let (next, remark) = match p.line(dialect, block.as_bytes()) {
+            Ok(r) => r,
+            Err(e) => {
+                refused += 1;
+                ok = false;
+                let why = format!("line {line}, column {}: {}", e.column, e.error.message());
+                eprintln!("cncrot: {why}");
+                let row = match (&target, a.json) {
+                    (Some(_), _) => block.to_string(),
+                    (None, true) => Json::Obj(vec![
+                        ("line", Json::Int(line as i64)),
+                        ("error", Json::str(e.error.message())),
+                        ("column", Json::Int(e.column as i64)),
+                    ])
+                    .text(),
+                    (None, false) => format!(
+                        "line {line}: error: column {}: {}",
+                        e.column,
+                        e.error.message()
+                    ),
+                };
+                if !put(row) {
+                    return Ok(ok);
+                }
+                continue;
+            }
+        };
+        p = next;
+        let row = match remark {
+            Remark::Passed => {
+                passed += 1;
+                target.as_ref().map(|_| block.to_string())
+            }
+            Remark::NotFollowed => {
+                unfollowed += 1;
+                let why = "changes the frame in a way cncrot does not follow; cncrot's frame stays as it was";
+                if target.is_some() {
+                    eprintln!("cncrot: line {line}: not carried across (it {why}): {block}");
+                    ok = false;
+                    Some(block.to_string())
+                } else if a.json {
+                    Some(
+                        Json::Obj(vec![
+                            ("line", Json::Int(line as i64)),
+                            ("block", Json::str(block)),
+                            ("remark", Json::str("not followed")),
+                        ])
+                        .text(),
+                    )
+                } else {
+                    Some(format!("line {line}: not followed: {block}\n  (it {why})"))
+                }
+            }
+            Remark::Applied => {
+                applied += 1;
+                let f = p.frame;
+                if let Some(t) = &target {
+                    let mut buf = [0u8; 600];
+                    match write_line(t.dialect, t.form.as_bytes(), &f, d, &mut buf) {
+                        Ok((len, _)) => Some(String::from_utf8_lossy(&buf[..len]).into_owned()),
+                        Err(e) => {
+                            eprintln!(
+                                "cncrot: line {line}: not carried across as {} {}: {}: {block}",
+                                input::dialect_name(t.dialect),
+                                t.form,
+                                e.message()
+                            );
+                            ok = false;
+                            Some(block.to_string())
+                        }
+                    }
+                } else {
+                    let tool = column(&f.rotation, 2);
+                    let axes = machine.as_ref().map(|m| p.axes(m, current));
+                    let mut json = Json::Obj(vec![
+                        ("line", Json::Int(line as i64)),
+                        ("block", Json::str(block)),
+                        ("origin", Json::nums(&f.translation)),
+                        ("tool", Json::nums(&tool)),
+                    ]);
+                    let mut row = format!(
+                        "line {line}: {block}\n  origin: {}  tool direction: {}",
+                        nums(&f.translation, d),
+                        nums(&tool, d)
+                    );
+                    match axes {
+                        Some(Ok(c)) => {
+                            current = c.axes;
+                            let shown = c.axes.get(..n).unwrap_or(&c.axes);
+                            row += &format!("  axes: {}", nums(shown, d));
+                            if c.free {
+                                row += " (a free axis kept where it was)";
+                            }
+                            json = json.with("axes", Json::nums(shown));
+                        }
+                        Some(Err(e)) => {
+                            ok = false;
+                            row += &format!("  axes: {}", e.message());
+                            json = json.with("axes_error", Json::str(e.message()));
+                        }
+                        None => {}
+                    }
+                    Some(if a.json { json.text() } else { row })
+                }
+            }
+        };
+        if let Some(row) = row {
+            if !put(row) {
+                return Ok(ok);
+            }
+        }
+    }
+    let total = applied + passed + unfollowed + refused;
+    let summary = format!(
+        "{total} blocks: {applied} concerning the frame, {passed} passed over, {unfollowed} not followed, {refused} refused"
+    );
+    match (&target, a.json) {
+        (Some(_), _) => eprintln!("cncrot: {summary}"),
+        (None, true) => {
+            let j = Json::Obj(vec![
+                ("blocks", Json::Int(total as i64)),
+                ("applied", Json::Int(applied as i64)),
+                ("passed", Json::Int(passed as i64)),
+                ("not_followed", Json::Int(unfollowed as i64)),
+                ("refused", Json::Int(refused as i64)),
+            ]);
+            put(j.text());
+        }
+        (None, false) => {
+            put(summary);
+        }
+    }
+    Ok(ok)
+}

@@ -103,6 +103,54 @@ enum Command {
         #[command(flatten)]
         common: Common,
     },
+    /// A whole part program: what each block does to the frame, the frame after each tilt
+    /// and, with a machine, the rotary positions it moves to; or the program translated.
+    #[command(
+        after_help = "One row per block that concerns the frame (line number, block, origin, \
+                            tool direction; with --carr or --axis the rotary positions, chosen \
+                            closest to the positions before, and any travel violation), then a \
+                            summary of the blocks passed over. A block that changes the frame in \
+                            a way cncrot does not follow (a work offset, preset, datum shift, \
+                            mirroring) is flagged. --to writes the whole program with its tilt \
+                            and cancel blocks in the target's language and every other block as \
+                            it is, and flags on standard error what it cannot carry across.\n\n\
+                            Example:\n  cncrot program part.h --dialect heidenhain --carr head.carr \
+                            --current 0,0\n  cncrot program part.h --dialect heidenhain --to fanuc"
+    )]
+    Program {
+        /// The program file ('-': standard input).
+        file: String,
+        /// Its dialect.
+        #[arg(long, value_name = "DIALECT")]
+        dialect: String,
+        /// SINUMERIK: frame angles in Euler mode (machine data 10600 = 2), not RPY.
+        #[arg(long)]
+        euler: bool,
+        /// Write the program translated: DIALECT or DIALECT:FORM.
+        #[arg(long, value_name = "DIALECT[:FORM]")]
+        to: Option<String>,
+        /// SINUMERIK swivel data file ($TC_CARR1..65).
+        #[arg(long, value_name = "FILE")]
+        carr: Option<String>,
+        /// Swivel data set number in the --carr file.
+        #[arg(long, default_value_t = 1)]
+        set: i32,
+        /// A rotary axis (repeatable, at most 3, in chain order): SIDE:DX,DY,DZ[@PX,PY,PZ].
+        #[arg(long, value_name = "SIDE:DIR[@POINT]")]
+        axis: Vec<String>,
+        /// Tool direction with every axis at 0.
+        #[arg(long, value_name = "DX,DY,DZ", default_value = "0,0,1")]
+        tool: String,
+        /// Rotary positions before the program (the choice unwinds toward them).
+        #[arg(long, value_name = "A,B,C")]
+        current: Option<String>,
+        /// One JSON object per block that concerns the frame, then the summary.
+        #[arg(long)]
+        json: bool,
+        /// Decimals of the numbers written (0..17), or 'exact'.
+        #[arg(long, default_value = "4", value_parser = input::decimals)]
+        decimals: i32,
+    },
     /// Probed points to the least-squares plane, its flatness, and the controllers' lines.
     #[command(
         after_help = "Points: 'X,Y,Z' arguments, or --points-file FILE with one point per \
@@ -241,6 +289,35 @@ fn main() -> ExitCode {
             text,
             common,
         } => commands::line(&from, &to, euler, text.as_deref(), &common),
+        Command::Program {
+            file,
+            dialect,
+            euler,
+            to,
+            carr,
+            set,
+            axis,
+            tool,
+            current,
+            json,
+            decimals,
+        } => commands::program(
+            &commands::ProgramArgs {
+                file: &file,
+                dialect: &dialect,
+                euler,
+                to: to.as_deref(),
+                current: current.as_deref(),
+                json,
+                decimals,
+            },
+            &commands::MachineArgs {
+                carr: carr.as_deref(),
+                set,
+                axis: &axis,
+                tool: &tool,
+            },
+        ),
         Command::Probe {
             points,
             points_file,

@@ -773,3 +773,86 @@ fn line_reads_a_whole_program() {
         .unwrap()
         .contains("\"remark\":\"not followed\""));
 }
+
+/// `program`: a whole Heidenhain program on a fork head (C about Z carrying B about Y): one
+/// row per block that concerns the frame with the tool direction and the positions chosen
+/// closest to the ones before; the datum shift flagged; the summary. With `--to`, the whole
+/// program translated, other blocks as they are, what is not carried across on standard
+/// error and the exit status 1.
+#[test]
+fn program_reads_a_whole_program_on_a_machine() {
+    let dir = std::env::temp_dir();
+    let id = std::process::id();
+    let prog = dir.join(format!("cncrot_prog_{id}.h"));
+    let carr = dir.join(format!("cncrot_prog_{id}.carr"));
+    std::fs::write(
+        &prog,
+        "0 BEGIN PGM TILT MM\n1 TOOL CALL 1 Z S5000\n2 CYCL DEF 7.0 DATUM SHIFT\n\
+         3 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-\n4 L X+10 Y+0 FMAX\n\
+         5 PLANE SPATIAL SPA+0 SPB-20 SPC+90 TURN FMAX\n6 PLANE RESET STAY\n7 END PGM TILT MM\n",
+    )
+    .unwrap();
+    std::fs::write(
+        &carr,
+        "$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1 $TC_CARR10[1]=0 $TC_CARR11[1]=1\n\
+         $TC_CARR12[1]=0 $TC_CARR6[1]=-150 $TC_CARR23[1]=\"T\" $TC_CARR31[1]=-100 $TC_CARR33[1]=100\n",
+    )
+    .unwrap();
+    let (p, c) = (prog.to_str().unwrap(), carr.to_str().unwrap());
+    let out = ok(&[
+        "program",
+        p,
+        "--dialect",
+        "heidenhain",
+        "--carr",
+        c,
+        "--current",
+        "0,0",
+    ]);
+    // SPB+30 tilts the tool to (sin 30°, 0, cos 30°): C 0, B 30. SPB-20 SPC+90 to
+    // (0, -sin 20°, cos 20°): C -90, B 20 (C 90, B -20 is farther from C 0, B 30).
+    assert!(out.contains("line 4: 3 PLANE SPATIAL"), "{out}");
+    assert!(
+        out.contains("tool direction: 0.5000 0.0000 0.8660  axes: 0.0000 30.0000"),
+        "{out}"
+    );
+    assert!(
+        out.contains("tool direction: 0.0000 -0.3420 0.9397  axes: -90.0000 20.0000"),
+        "{out}"
+    );
+    assert!(
+        out.contains("line 3: not followed: 2 CYCL DEF 7.0"),
+        "{out}"
+    );
+    assert!(
+        out.contains("8 blocks: 3 concerning the frame, 4 passed over, 1 not followed, 0 refused"),
+        "{out}"
+    );
+    let r = cncrot(
+        &["program", p, "--dialect", "heidenhain", "--to", "fanuc"],
+        "",
+    );
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(lines.len(), 8, "{}", r.stdout);
+    assert_eq!(lines[1], "1 TOOL CALL 1 Z S5000");
+    assert_eq!(lines[3], "G68.2 X0. Y0. Z0. I90. J30. K-90.");
+    assert_eq!(lines[6], "G69");
+    assert!(
+        r.stderr.contains("line 3: not carried across"),
+        "{}",
+        r.stderr
+    );
+    let r = cncrot(
+        &["program", p, "--dialect", "heidenhain", "--current", "0,0"],
+        "",
+    );
+    assert_eq!(r.code, 2);
+    assert!(
+        r.stderr.contains("--current needs a machine"),
+        "{}",
+        r.stderr
+    );
+    std::fs::remove_file(prog).ok();
+    std::fs::remove_file(carr).ok();
+}

@@ -135,8 +135,52 @@ fuzz_target!(|data: &[u8]| {
         assert!(f.iter().all(|x| x.is_finite()));
         round_trips(dialect, &f);
         flips_are_refused(&p, line.len());
+        axes_of(&p, &line);
     }
 });
+
+/// The positions the state's tilt moves a fork head to (C about Z carrying B about Y, B
+/// within ±100°), from a current position made of the line's bytes: the outputs written
+/// only on success and then finite, the same as the machine's own closest choice.
+fn axes_of(p: &cncrot_program, line: &[u8]) {
+    const CARR: &[u8] = b"$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1
+$TC_CARR10[1]=0 $TC_CARR11[1]=1 $TC_CARR12[1]=0 $TC_CARR6[1]=-150 $TC_CARR23[1]=\"T\"
+$TC_CARR31[1]=-100 $TC_CARR33[1]=100
+";
+    // SAFETY: every bit pattern of zeros is a valid description to fill.
+    let mut m: cncrot_machine = unsafe { std::mem::zeroed() };
+    // SAFETY: valid pointers and lengths.
+    let s = unsafe { cncrot_machine_from_carr(&mut m, CARR.as_ptr().cast(), CARR.len(), 1) };
+    assert_eq!(s, 0);
+    let c = line.first().map_or(0.0, |&b| f64::from(b as i8) * 10.0);
+    let current = [c, 0.0, 0.0];
+    let (mut ax, mut want) = ([input::SENTINEL; 3], [0.0; 3]);
+    // SAFETY: valid pointers.
+    let s = unsafe { cncrot_program_axes(p, &m, current.as_ptr(), ax.as_mut_ptr()) };
+    input::check_outputs(s, &[&ax]);
+    let f = frame(p);
+    let (mut res, mut rem) = ([0.0; 3], [0.0; 16]);
+    // SAFETY: valid pointers.
+    let s2 = unsafe {
+        cncrot_machine_choose(
+            &m,
+            f.as_ptr(),
+            current.as_ptr(),
+            CNCROT_CHOOSE_CLOSEST,
+            0,
+            want.as_mut_ptr(),
+            res.as_mut_ptr(),
+            rem.as_mut_ptr(),
+        )
+    };
+    assert_eq!(
+        s, s2,
+        "program_axes and machine_choose disagree on the status"
+    );
+    if s >= 0 {
+        assert_eq!(ax.map(f64::to_bits), want.map(f64::to_bits));
+    }
+}
 
 /// Some single-bit flips of an accepted state, spread over all its bytes: each refused.
 fn flips_are_refused(p: &cncrot_program, salt: usize) {

@@ -218,6 +218,20 @@ function test_cncrot(cases_file)
   [Fp, ~, frp, rp] = cncrot_program_lines('heidenhain', prog);
   check(isequal(rp, {'passed'; 'passed'; 'not followed'; 'applied'; 'passed'; 'applied'; 'passed'}), 'remarks per block');
   check(isequal(Fp, eye(4)) && isequal(frp(:, :, 5), frp(:, :, 4)) && abs(frp(1, 3, 4) - 0.5) < 1e-15, 'a whole program''s frames');
+  % The positions a program's tilt moves a head to (C about Z carrying B about Y): Ry(30) is
+  % C 0, B 30 or C 180, B -30; from C 730 the first, unwound to 720; as the machine's closest
+  % choice, bit for bit. Nothing active: B 0, C free and kept.
+  hd = [0 0 0 1 0 0 0 0 0 0 0 0; 0 0 1 0 0 0 150 -100 100 0 0 0];
+  [~, stp] = cncrot_program_lines('heidenhain', 'PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY');
+  [ax, sx] = cncrot_program_axes(stp, hd, [730 0 0]);
+  check(abs(ax(1) - 720) < 1e-9 && abs(ax(2) - 30) < 1e-9 && ax(3) == 0 && sx == 0, 'program_axes');
+  Fp30 = cncrot_program_lines('heidenhain', 'PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY');
+  check(isequal(ax, cncrot_machine_choose(hd, Fp30, [730 0 0], 'closest')), 'program_axes is the closest choice');
+  [ax0, s0] = cncrot_program_axes([], hd, [730 0 0]);
+  check(isequal(ax0, [730 0 0]) && s0 == 2, 'program_axes with nothing active');
+  bad = stp; bad.origin(1) = 1;
+  expect_message('cncrot:badState', @() cncrot_program_axes(bad, hd, [0 0 0]), 'program_axes of an edited state', 'cncrot_program_axes', 'argument 1 (state)');
+  expect_message('cncrot:badArgument', @() cncrot_program_axes(stp, hd, [0 0 5]), 'program_axes: a position for no axis', 'cncrot_program_axes', 'argument 3 (current)');
   [F3, st3, fr3] = cncrot_program_lines('twincat', {"N65 ROT Z30", 'N90 AROT Z15'});
   [F4, st4, fr4] = cncrot_program_lines(5, {'N65 ROT Z30', 'N90 AROT Z15'});
   check(isequal(F3, F4) && isequal(st3, st4) && isequal(fr3, fr4), 'lines as a cell with a double-quoted line');

@@ -12,6 +12,7 @@
 use super::family::{Block, Modal, MAX_VALUES};
 use super::form;
 pub use super::registry::Dialect;
+use crate::kinematics::{Choice, Machine, Rule};
 use crate::text::number::Out;
 pub use crate::text::scan::LineError;
 use crate::{Error, Frame};
@@ -107,6 +108,31 @@ impl Program {
             },
             Remark::Applied,
         ))
+    }
+
+    /// The rotary-axis positions the active tilt moves `machine` to, seen from `current`
+    /// (degrees; axes the machine lacks are 0): the solution closest to the current
+    /// positions, whole turns unwound toward them, within the travel limits and on the Hirth
+    /// grids, as [`Machine::choose`] with [`Rule::Closest`] — what SINUMERIK does for a frame
+    /// \[doc\], Heidenhain without `SEQ` (the shortest way) \[doc\], and the library's
+    /// default for the others (`G53.1` without `P`, `G253`) \[choice\]. No tilt active: the
+    /// positions of the identity frame. The block's own choice words (`_DIR`, `SEQ±`,
+    /// `G53.1 P`) are not kept in the state yet.
+    ///
+    /// ```
+    /// use cncrot::dialects::program::{Dialect, Program};
+    /// use cncrot::kinematics::{Machine, RotaryAxis, Side};
+    /// // A head turning about Z, then about Y.
+    /// let m = Machine::new([0.0, 0.0, 1.0]).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3])).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3])).unwrap();
+    /// let (p, _) = Program::default().line(Dialect::Heidenhain, b"PLANE SPATIAL SPA+0 SPB+30 SPC+0").unwrap();
+    /// // From C = 750°: C = 720°, B = 30°.
+    /// let c = p.axes(&m, [750.0, 0.0, 0.0]).unwrap();
+    /// assert!((c.axes[0] - 720.0).abs() < 1e-9 && (c.axes[1] - 30.0).abs() < 1e-9);
+    /// ```
+    pub fn axes(&self, machine: &Machine, current: [f64; 3]) -> Result<Choice, Error> {
+        machine.choose(&self.frame.rotation, current, Rule::Closest)
     }
 
     /// What the families read and write.

@@ -2,7 +2,8 @@
 //! frame, write the block for a frame.
 
 use super::frame::{read_frame, write_frame};
-use super::{cncrot_status, guard, non_null};
+use super::machine::cncrot_machine;
+use super::{cncrot_status, guard, non_null, read_finite, write};
 use crate::dialects::program::{self, Dialect, Program, Remark};
 use crate::{crc32, Error, Frame};
 use core::ffi::c_char;
@@ -326,6 +327,59 @@ pub unsafe extern "C" fn cncrot_program_column(
                 Err(s)
             }
         }
+    })
+}
+
+/// The rotary-axis positions the active tilt of `program` moves `machine` to, seen from the
+/// current positions `current` (degrees): the solution closest to them, whole turns
+/// unwound toward them, within the travel limits and on the Hirth grids — what
+/// `cncrot_machine_choose` gives with `CNCROT_CHOOSE_CLOSEST`, the choice SINUMERIK makes
+/// for a frame and Heidenhain makes without `SEQ` (the block's own choice words, `_DIR`,
+/// `SEQ±`, `G53.1 P`, are not kept in the state yet). No tilt active: the positions of the
+/// identity frame. Axes the machine lacks are 0 in `axes` (and must be 0 in `current`).
+///
+/// Returns 0, `CNCROT_STATUS_FREE_AXIS` (a free axis kept at its current position),
+/// `CNCROT_STATUS_SNAPPED` (a Hirth axis snapped to its grid), or with `axes` untouched:
+/// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a program state this library did
+/// not write), `CNCROT_STATUS_UNREACHABLE`, `CNCROT_STATUS_OUT_OF_TRAVEL`,
+/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE` (a current position), and the
+/// statuses of a description that is not a machine (see `cncrot_machine`).
+///
+/// # Safety
+/// `program` points to a readable `cncrot_program`, `machine` to a `cncrot_machine`,
+/// `current` to 3 readable and `axes` to 3 writable doubles (or NULL: error).
+///
+/// ```c
+/// double cur[3] = {0, 0, 0}, ax[3];
+/// cncrot_program_axes(&p, &m, cur, ax);   // after PLANE SPATIAL SPA+0 SPB+30 SPC+0
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_program_axes(
+    program: *const cncrot_program,
+    machine: *const cncrot_machine,
+    current: *const f64,
+    axes: *mut f64,
+) -> i32 {
+    guard(|| {
+        non_null(&[
+            program.is_null(),
+            machine.is_null(),
+            current.is_null(),
+            axes.is_null(),
+        ])?;
+        let p = load(&program.read_unaligned())?;
+        let m = super::machine::load(machine)?;
+        let current = read_finite::<3>(current)?;
+        let c = p.axes(&m, current)?;
+        write::<3>(axes, c.axes)?;
+        Ok(if c.free {
+            cncrot_status::FreeAxis
+        } else if c.residual.iter().any(|&r| r != 0.0) {
+            cncrot_status::Snapped
+        } else {
+            cncrot_status::Ok
+        })
     })
 }
 

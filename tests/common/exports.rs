@@ -707,6 +707,54 @@ fn programs() -> Vec<Call> {
                 null_mut(),
             ));
         }),
+        ("cncrot_program_axes", |t| unsafe {
+            let m = head();
+            let mut p = cncrot_program::default();
+            let mut ax = [0.0; 3];
+            // Nothing active, a tilt, a current position to unwind toward, refusals.
+            t.status(cncrot_program_axes(
+                &p,
+                &m,
+                [0.0; 3].as_ptr(),
+                ax.as_mut_ptr(),
+            ));
+            t.f64s(&ax);
+            let l = b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY";
+            t.status(cncrot_program_line(
+                &mut p,
+                CNCROT_DIALECT_HEIDENHAIN,
+                l.as_ptr().cast(),
+                l.len(),
+            ));
+            t.status(cncrot_program_axes(
+                &p,
+                &m,
+                [730.0, 0.0, 0.0].as_ptr(),
+                ax.as_mut_ptr(),
+            ));
+            t.f64s(&ax);
+            t.status(cncrot_program_axes(
+                &p,
+                &m,
+                [f64::NAN, 0.0, 0.0].as_ptr(),
+                ax.as_mut_ptr(),
+            ));
+            t.status(cncrot_program_axes(
+                &p,
+                null(),
+                [0.0; 3].as_ptr(),
+                ax.as_mut_ptr(),
+            ));
+            let mut bad = p;
+            bad.origin[0] += 1.0;
+            t.status(cncrot_program_axes(
+                &bad,
+                &m,
+                [0.0; 3].as_ptr(),
+                ax.as_mut_ptr(),
+            ));
+            t.f64s(&ax);
+        }),
         ("cncrot_program_frame", |t| unsafe {
             let mut p = cncrot_program::default();
             let mut f = [0.0; 16];
