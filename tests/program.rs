@@ -347,7 +347,7 @@ fn fanuc_and_haas() {
 #[test]
 fn refusals_name_their_column() {
     let active = read(Dialect::Sinumerik, &["ROT Z30"]);
-    let cases: [(Dialect, &str, Error, &str); 30] = [
+    let cases: [(Dialect, &str, Error, &str); 32] = [
         (Dialect::Sinumerik, "ROT X=R1", Error::NotANumber, "R1"),
         (Dialect::Sinumerik, "ROT X10 A5", Error::UnknownWord, "A5"),
         (Dialect::Sinumerik, "ROT X10 X20", Error::UnknownWord, "X20"),
@@ -427,7 +427,14 @@ fn refusals_name_their_column() {
             Error::NotANumber,
             "#100",
         ),
-        (Dialect::Fanuc, "G68.2 X0 P1 Q123", Error::UnknownWord, "P1"),
+        (
+            Dialect::Fanuc,
+            "G68.2 X0 P7 Q123",
+            Error::BadArgument,
+            "7 Q",
+        ),
+        (Dialect::Fanuc, "G68.2 X0 P1.5", Error::BadArgument, "1.5"),
+        (Dialect::Fanuc, "G53.1 P1 X1", Error::UnknownWord, "X1"),
         (Dialect::Haas, "G268 X0 I0 J30 K0", Error::MissingWord, ""),
         (Dialect::Twincat, "ROT Z30 G1", Error::UnknownWord, "G1"),
         // A bad value is reported where it stands, not at its command.
@@ -897,6 +904,12 @@ fn every_block_of_a_program() {
             ("N160 G68 X0 Y0 R30.", N),
             ("N170 G0G90G55X0Y0", N),
             ("N180 G90 G68.2 X0 Y0 Z0 I0 J30 K0", A),
+            // Fanuc's other G68.2 forms and LinuxCNC's words: not followed, not guessed.
+            ("N182 G68.2 P1 Q123 X0 Y0 Z0 I10 J20 K30", N),
+            ("N183 G68.2 P2 X0 Y0 Z0 I1 J0 K0", N),
+            ("N184 G68.2 X0 Y0 Z0 I0 J30 K0 R10", N),
+            ("N185 G53.1 P1", A),
+            ("N186 G68.2 P0 X0 Y0 Z0 I0 J30 K0", A),
             ("N190 M30", P),
         ],
     );

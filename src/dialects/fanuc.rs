@@ -91,7 +91,7 @@ use super::family::{
     no_selector, put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
 };
 use crate::text::number::{write_word, Out, Style};
-use crate::text::scan::{address_words, Comments, Cursor, LineError, Syntax, Tokens};
+use crate::text::scan::{address_words, whole, Comments, Cursor, LineError, Syntax, Tokens};
 
 const SYNTAX: Syntax = crate::text::scan::G_WORDS;
 
@@ -110,7 +110,13 @@ pub(crate) struct Fanuc;
 
 /// `G68.2`, `G68.4`, `G69`, `G53.1`/`G53.6` at the cursor (also Syntec's `G68.2` mode):
 /// `None` when none of them stands there.
-pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Modal, LineError>> {
+///
+/// `G68.2 P0` is the Euler form (as `G68.2` without `P`); `P1` (roll, pitch, yaw in the
+/// order `Q`), `P2` (three points), `P3` (two vectors), `P4` (projection angles), LinuxCNC's
+/// `Q` on the Euler form and `R` are Fanuc's and LinuxCNC's other forms, whose words the
+/// library does not read yet: such a block is [`Block::NotFollowed`], never a guessed
+/// frame. `G53.1`/`G53.6` take a `P` (how the rotary axes turn), not kept yet.
+pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineError>> {
     let column = c.column();
     let incremental = if c.keyword(b"G68.2") {
         false
@@ -120,13 +126,17 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Modal, LineEr
         // With other words on the block, the cancel is found among them (`iso_block`); an
         // unclosed comment is malformed text.
         return match c.end(true, true) {
-            Ok(()) => Some(Ok(m.with_frame(G69))),
+            Ok(()) => Some(Ok(Block::Frame(m.with_frame(G69)))),
             Err(e) if e.error == Error::Parse => Some(Err(e)),
             Err(_) => None,
         };
     } else if c.keyword(b"G53.1") || c.keyword(b"G53.6") {
         // Turns the tool to the plane: no frame change.
-        return Some(c.end(true, true).map(|()| *m));
+        let p = address_words(c, *b"P", SYNTAX, false, (true, true));
+        return Some(p.and_then(|w| {
+            whole(w.values[0], w.column(0))?;
+            Ok(Block::Frame(*m))
+        }));
     } else if c.keyword(b"G68.3") {
         // The tool direction comes from the machine's position: needs the kinematics.
         return Some(Err(LineError {
@@ -136,14 +146,24 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Modal, LineEr
     } else {
         return None;
     };
-    let words = address_words(c, *b"XYZIJK", SYNTAX, false, (true, true));
-    Some(words.map(|w| {
+    let words = address_words(c, *b"XYZIJKPQR", SYNTAX, false, (true, true));
+    Some(words.and_then(|w| {
+        let form = whole(w.values[6], w.column(6))?;
+        if !(0..=4).contains(&form) {
+            return Err(LineError {
+                error: Error::BadArgument,
+                column: w.column(6),
+            });
+        }
+        if form != 0 || w.given[7] || w.given[8] {
+            return Ok(Block::NotFollowed);
+        }
         let call = g68_2(v3(&w.values, 0), v3(&w.values, 3));
-        m.with_frame(if incremental {
+        Ok(Block::Frame(m.with_frame(if incremental {
             g68_4(&m.frame, &call)
         } else {
             call
-        })
+        })))
     }))
 }
 
@@ -272,11 +292,11 @@ impl Family for Fanuc {
         }
         c.block_number(b'N');
         if let Some(result) = read_g68(m, &mut c) {
-            return result.map(Block::Frame);
+            return result;
         }
         if skip_leading(&mut c) {
             if let Some(result) = read_g68(m, &mut c) {
-                return result.map(Block::Frame);
+                return result;
             }
         }
         iso_block(m, text, &[682, 683, 684, 531, 536], &[690], &[])

@@ -183,11 +183,11 @@ impl Family for Syntec {
             return Ok(Block::Frame(m.with_frame(LineError::at(column, f)?)));
         }
         if let Some(result) = fanuc::read_g68(m, &mut c) {
-            return result.map(Block::Frame);
+            return result;
         }
         if fanuc::skip_leading(&mut c) {
             if let Some(result) = fanuc::read_g68(m, &mut c) {
-                return result.map(Block::Frame);
+                return result;
             }
         }
         fanuc::iso_block(m, text, &[1580, 682, 683, 684, 531, 536], &[690], &[])
