@@ -347,7 +347,7 @@ fn fanuc_and_haas() {
 #[test]
 fn refusals_name_their_column() {
     let active = read(Dialect::Sinumerik, &["ROT Z30"]);
-    let cases: [(Dialect, &str, Error, &str); 32] = [
+    let cases: [(Dialect, &str, Error, &str); 33] = [
         (Dialect::Sinumerik, "ROT X=R1", Error::NotANumber, "R1"),
         (Dialect::Sinumerik, "ROT X10 A5", Error::UnknownWord, "A5"),
         (Dialect::Sinumerik, "ROT X10 X20", Error::UnknownWord, "X20"),
@@ -414,6 +414,13 @@ fn refusals_name_their_column() {
             "PLANE WARPED SPA+0",
             Error::UnknownWord,
             "WARPED",
+        ),
+        // A word the command does not have is unknown, not a missing one.
+        (
+            Dialect::Heidenhain,
+            "PLANE SPATIAL SPX+10 SPB+0 SPC+0 STAY",
+            Error::UnknownWord,
+            "SPX",
         ),
         (
             Dialect::Heidenhain,

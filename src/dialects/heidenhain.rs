@@ -171,7 +171,14 @@ fn plane_words<const N: usize>(c: &mut Cursor, names: [&[u8]; N]) -> Result<[f64
         }
     }
     if given.contains(&false) {
-        return Err(c.error(Error::MissingWord));
+        // A word is missing if what follows is the line's end or the positioning options;
+        // anything else standing there is a word the command does not have (`SPX+10`).
+        let missing = options(&mut c.clone()).is_ok();
+        return Err(c.error(if missing {
+            Error::MissingWord
+        } else {
+            Error::UnknownWord
+        }));
     }
     Ok(values)
 }

@@ -50,6 +50,7 @@ pub const G_WORDS: Syntax = Syntax {
 };
 
 /// A position in a line, with the scanning the dialects share. Columns are 1-based bytes.
+#[derive(Clone)]
 pub struct Cursor<'a> {
     text: &'a [u8],
     pos: usize,
