@@ -108,10 +108,14 @@ pub fn convert(
             }
             None => {
                 full += &format!("{to_name}: {}\n", nums(&first.angles, d));
-                full += &format!("  second solution: {}\n", nums(&second.angles, d));
-                json = json
-                    .with("angles", Json::nums(&first.angles))
-                    .with("second", Json::nums(&second.angles));
+                json = json.with("angles", Json::nums(&first.angles));
+                // At a singular pose there is no second solution, only other splits of the
+                // determined sum or difference: printing one would contradict "the third is
+                // set to 0".
+                if !first.singular {
+                    full += &format!("  second solution: {}\n", nums(&second.angles, d));
+                    json = json.with("second", Json::nums(&second.angles));
+                }
                 nums(&first.angles, d)
             }
         };

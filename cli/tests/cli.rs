@@ -856,3 +856,33 @@ fn program_reads_a_whole_program_on_a_machine() {
     std::fs::remove_file(prog).ok();
     std::fs::remove_file(carr).ok();
 }
+
+/// At gimbal lock `convert` says the third angle is set to 0 and writes no second solution
+/// (any split of the sum would be one): the outputs agree with each other.
+#[test]
+fn convert_at_gimbal_lock_writes_one_solution() {
+    // A turn of 30° about Z alone is Z,X',Z'' = (30, 0, 0): the middle angle singular.
+    let out = ok(&[
+        "convert", "--from", "e:XYZ", "--to", "i:ZXZ", "0", "0", "30",
+    ]);
+    assert!(
+        out.contains("intrinsic ZXZ (55): 30.0000 0.0000 0.0000"),
+        "{out}"
+    );
+    assert!(
+        out.contains("the third is set to 0") && !out.contains("second solution"),
+        "{out}"
+    );
+    let json = ok(&[
+        "convert", "--from", "e:XYZ", "--to", "i:ZXZ", "--json", "0", "0", "30",
+    ]);
+    assert!(
+        json.contains("\"singular\":true") && !json.contains("\"second\""),
+        "{json}"
+    );
+    // Away from it both solutions are written.
+    let out = ok(&[
+        "convert", "--from", "e:XYZ", "--to", "i:ZXZ", "0", "10", "30",
+    ]);
+    assert!(out.contains("second solution"), "{out}");
+}
