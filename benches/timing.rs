@@ -391,6 +391,22 @@ fn probing(b: &mut Bench, i: &Inputs) {
                 cncrot_probe_plane(p.as_ptr(), 4, f.as_mut_ptr(), res.as_mut_ptr())
             });
         }
+        let clouds: Vec<Vec<f64>> = random.iter().map(|a| cloud(a, 0.0)).collect();
+        let order = [0.0; 3];
+        b.time(
+            "cncrot_probe_plane_toward",
+            "4 points, order",
+            &clouds,
+            &mut |p| unsafe {
+                cncrot_probe_plane_toward(
+                    p.as_ptr(),
+                    4,
+                    order.as_ptr(),
+                    f.as_mut_ptr(),
+                    res.as_mut_ptr(),
+                )
+            },
+        );
         let edges: Vec<[f64; 16]> = i.frames.clone();
         let mut angle = 0.0;
         let (e1, e2) = ([0.0; 3], [100.0, 30.0, 7.0]);

@@ -151,6 +151,11 @@ static void probe_plane(void) {
   static double res[2];
   sink += cncrot_probe_plane(pts, 8, f, res) + cncrot_probe_plane(pts, 2, f, res);
 }
+static void probe_plane_toward(void) {
+  static const double pts[12] = {0, 0, 0, 0, 50, 0, 100, 50, -10, 100, 0, -10}, none[3] = {0, 0, 0};
+  static double res[2];
+  sink += cncrot_probe_plane_toward(pts, 4, none, f, res) + cncrot_probe_plane_toward(pts, 2, none, f, res);
+}
 static void probe_edge(void) {
   static const double e1[3] = {0, 0, 0}, e2[3] = {100, 100, 0};
   static double a;
@@ -259,6 +264,7 @@ static const struct entry ENTRIES[] = {
     E(frame_transform_point, 0), E(cycle600_gud_size, 0), E(head_table_parse, 1),
     E(cycle600, 0),          E(form_frame, 0),         E(form_values, 0),
     E(form_word_count, 0),   E(probe_flange, 0),       E(probe_plane, 0),
+    E(probe_plane_toward, 0),
     E(probe_edge, 0),        E(program_line, 1),       E(program_column, 1),
     E(program_frame, 0),     E(program_write, 1),      E(program_init, 0),
     E(machine_from_carr, 1), E(machine_carr_error_line, 1), E(machine_from_head, 1),

@@ -290,6 +290,27 @@ static void probing(void) {
   CHECK_STATUS(cncrot_probe_plane(strip, 4, g, res), 0);
   double strip_z[3] = {g[2], g[6], g[10]}, n7[3] = {2.0 / 7, 3.0 / 7, 6.0 / 7};
   CHECK_NEAR(strip_z, n7, 3, 2.3e-10);
+  /* The tool's side: four corners of a plane falling 10 mm over 100 mm along X, probed
+   * clockwise from above, give Z' = (0.1, 0, 1)/|…| turned up, with the remark; in the
+   * points' order (toward all zero) Z' points down; toward -Z keeps it down. Hand geometry:
+   * the plane is z = -x/10. */
+  double cw[12] = {0, 0, 0, 0, 50, 0, 100, 50, -10, 100, 0, -10}, none[3] = {0, 0, 0}, down[3] = {0, 0, -5};
+  double up_n[3] = {0.1 / sqrt(1.01), 0, 1 / sqrt(1.01)}, down_n[3] = {-up_n[0], 0, -up_n[2]};
+  CHECK_STATUS(cncrot_probe_plane(cw, 4, g, res), CNCROT_STATUS_TURNED);
+  double cz[3] = {g[2], g[6], g[10]};
+  CHECK_NEAR(cz, up_n, 3, 1e-15);
+  double cx[3] = {g[0], g[4], g[8]}, plus_y[3] = {0, 1, 0};
+  CHECK_NEAR(cx, plus_y, 3, 1e-15);
+  CHECK_STATUS(cncrot_probe_plane_toward(cw, 4, none, g, res), 0);
+  double oz[3] = {g[2], g[6], g[10]};
+  CHECK_NEAR(oz, down_n, 3, 1e-15);
+  CHECK_STATUS(cncrot_probe_plane_toward(cw, 4, down, g, res), 0);
+  CHECK_STATUS(cncrot_probe_plane_toward(cw, 4, plus_z, g, res), CNCROT_STATUS_TURNED);
+  double nan3[3] = {NAN, 0, 0}, keep[16];
+  memcpy(keep, g, sizeof keep);
+  CHECK_STATUS(cncrot_probe_plane_toward(cw, 4, nan3, g, res), CNCROT_STATUS_NOT_FINITE);
+  CHECK(memcmp(keep, g, sizeof keep) == 0, "a refusal wrote the frame");
+  CHECK_STATUS(cncrot_probe_plane_toward(cw, 4, NULL, g, res), CNCROT_STATUS_NULL_POINTER);
   /* An edge at 20 degrees from X' in the tilted plane. */
   double c20 = cos(20 * PI / 180), s20 = sin(20 * PI / 180), e1[3], e2[3], angle, t[16];
   for (int i = 0; i < 3; i++) {

@@ -269,6 +269,11 @@ enum cncrot_status
    */
   CNCROT_STATUS_NOT_FOLLOWED = 5,
   /**
+   * Success; the probed plane's Z' was turned to the side asked for (the tool's): the
+   * order of the points gave the other side.
+   */
+  CNCROT_STATUS_TURNED = 6,
+  /**
    * A pointer argument is NULL.
    */
   CNCROT_STATUS_NULL_POINTER = -1,
@@ -1350,15 +1355,19 @@ int32_t cncrot_probe_flange(const double *a1,
 /**
  * The least-squares plane through `n` points (`points` holds `3·n` doubles, x y z for each)
  * and its flatness: `frame` gets the plane (origin at the first point's foot on it, X'
- * along the first two points' direction, Z' on the side of `(P2 − P1) × (P3 − P1)`: three
- * points give `PLANE POINTS`'s rotation), `residual[0]` the flatness (largest minus smallest
- * distance from the plane), `residual[1]` the RMS distance, millimetres. The normal is the
- * points' direction of least spread from their singular vectors, so a thin set (a strip,
- * an apex just off a line) gets its own plane. The time is linear in `n`, plus at most 10
- * sweeps of three Jacobi rotations (5 in practice).
+ * along the first two points' direction, Z' on the tool's side: a non-negative component
+ * along the machine's +Z, so that the same corners probed clockwise or anticlockwise give
+ * the same plane, the right way up), `residual[0]` the flatness (largest minus smallest
+ * distance from the plane), `residual[1]` the RMS distance, millimetres. Where the points'
+ * order put Z' the other way (`(P2 − P1) × (P3 − P1)`, `PLANE POINTS`'s rule), the plane is
+ * turned half a turn about X' and the status says so; `cncrot_probe_plane_toward` takes
+ * another side, or the points' order. The normal is the points' direction of least spread
+ * from their singular vectors, so a thin set (a strip, an apex just off a line) gets its
+ * own plane. The time is linear in `n`, plus at most 10 sweeps of three Jacobi rotations
+ * (5 in practice).
  *
- * Returns 0, or with nothing written: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_TOO_FEW`
- * (n < 3),
+ * Returns 0, `CNCROT_STATUS_TURNED` (Z' turned to the tool's side), or with nothing
+ * written: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_TOO_FEW` (n < 3),
  * `CNCROT_STATUS_COINCIDENT`, `CNCROT_STATUS_COLLINEAR` (the second extent at most 1e-12
  * of the first), `CNCROT_STATUS_DEGENERATE` (n > 3 and the two smallest extents differing
  * by at most 1e-12 of the first, e.g. points spread alike in every direction: no plane is
@@ -1376,6 +1385,30 @@ int32_t cncrot_probe_flange(const double *a1,
  * ```
  */
 int32_t cncrot_probe_plane(const double *points, size_t n, double *frame, double *residual);
+
+/**
+ * `cncrot_probe_plane` with Z' on the side of `toward` (a direction of any length: the
+ * side the tool comes from, for a plane probed on a wall or from below), or, with `toward`
+ * all zero, on the side the points' order gives (`(P2 − P1) × (P3 − P1)`: three points give
+ * `PLANE POINTS`'s rotation; the rule before the tool's side was the default).
+ *
+ * Returns 0, `CNCROT_STATUS_TURNED` (Z' turned to `toward`'s side), or with nothing
+ * written the statuses of `cncrot_probe_plane`, `CNCROT_STATUS_NOT_FINITE` for `toward`
+ * too.
+ *
+ * # Safety
+ * As `cncrot_probe_plane`; `toward` points to 3 readable doubles (or NULL: error).
+ *
+ * ```c
+ * double order[3] = {0, 0, 0};
+ * cncrot_probe_plane_toward(pts, 4, order, f, res);   // the points' order decides
+ * ```
+ */
+int32_t cncrot_probe_plane_toward(const double *points,
+                                  size_t n,
+                                  const double *toward,
+                                  double *frame,
+                                  double *residual);
 
 /**
  * Two points along an edge of the workpiece (E1 → E2, machine coordinates), probed in the

@@ -189,6 +189,8 @@ statuses! {
             "success at a singular pose; a rotary axis is free and was kept at its current position";
         3, "CNCROT_STATUS_SNAPPED",
             "success; a Hirth axis was snapped to its grid, the residual is in the remaining frame";
+        6, "CNCROT_STATUS_TURNED",
+            "success; the plane's Z' was turned to the tool's side: the order of the points gave the other side";
         4, "CNCROT_STATUS_PASSED",
             "success; the block does not concern the frame (motion, tool, M/S words, program structure, comment, blank): the state is unchanged";
         5, "CNCROT_STATUS_NOT_FOLLOWED",

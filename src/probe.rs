@@ -210,6 +210,50 @@ pub fn plane(points: &[Vector]) -> Result<Plane, Error> {
     }
 }
 
+/// [`plane`] with Z' on the side of `toward` (a direction, any length): the side the tool
+/// comes from. `[0, 0, 1]` is the machine's +Z, the default of `cncrot_probe_plane`: the
+/// same corners probed clockwise or anticlockwise give the same plane, the right way up. A
+/// plane whose Z' points away from `toward` is turned half a turn about its X' (X' stays
+/// along P1 → P2, Y' and Z' change sign); the second value says whether it was. Zero
+/// `toward`, or a Z' square to it, keeps the order of the points (`PLANE POINTS`'s rule:
+/// Z' on the side of `(P2 − P1) × (P3 − P1)`). Refused: as [`plane`], and
+/// [`Error::NotFinite`] for `toward`.
+///
+/// ```
+/// use cncrot::probe::{plane, plane_toward};
+/// // Four corners of a plane tilted 5.71° about Y, probed clockwise (seen from above):
+/// // the order alone puts Z' below the plane, toward the table.
+/// let pts = [[0.0, 0.0, 0.0], [0.0, 50.0, 0.0], [100.0, 50.0, -10.0], [100.0, 0.0, -10.0]];
+/// assert!(plane(&pts).unwrap().frame.rotation[2][2] < 0.0);
+/// let (p, turned) = plane_toward(&pts, [0.0, 0.0, 1.0]).unwrap();
+/// assert!(turned && p.frame.rotation[2][2] > 0.99);
+/// ```
+pub fn plane_toward(points: &[Vector], toward: Vector) -> Result<(Plane, bool), Error> {
+    if !toward.iter().all(|x| x.is_finite()) {
+        return Err(Error::NotFinite);
+    }
+    let mut p = plane(points)?;
+    // Scaled to its largest component: the dot product cannot overflow.
+    let m = toward
+        .iter()
+        .fold(0.0, |m: f64, x| m.max(crate::math::abs(*x)));
+    let t = if m > 0.0 {
+        toward.map(|x| x / m)
+    } else {
+        toward
+    };
+    let r = p.frame.rotation;
+    let turned = dot([r[0][2], r[1][2], r[2][2]], t) < 0.0;
+    if turned {
+        // 0 − x, not −x: no −0 in a result.
+        for row in p.frame.rotation.iter_mut() {
+            row[1] = 0.0 - row[1];
+            row[2] = 0.0 - row[2];
+        }
+    }
+    Ok((p, turned))
+}
+
 /// Refuses the extents `sigma` (largest first) of `points` points when they determine no
 /// plane: a second extent at most [`MIN_SINE`] times the first (collinear), or, past three
 /// points, the two smallest differing by at most [`MIN_SINE`] times the first (degenerate:

@@ -202,7 +202,9 @@ fn frame_report(
                     ("dialect", Json::str(name)),
                     ("form", Json::str(w.target.form.clone())),
                     ("text", Json::str(text.clone())),
-                    ("origin_apart", Json::Bool(*apart)),
+                    // As the text: an origin that rounds to zero at the decimals asked for
+                    // (2.6e-16 from a fit) is no datum to shift.
+                    ("origin_apart", Json::Bool(*apart && shown)),
                 ]));
             }
             Err(e) => failed.push(format!("{name} {}: {}", w.target.form, e.message())),
@@ -309,10 +311,16 @@ pub fn probe(
     args: &[String],
     file: Option<&str>,
     to: &[String],
+    toward: Option<&str>,
     json: bool,
     d: i32,
 ) -> Result<bool, Failure> {
     let targets = targets(to)?;
+    // The tool's side, or (--order) none: the points' order decides.
+    let toward = match toward {
+        Some(t) => input::exactly::<3>(t, "direction").map_err(option("--toward"))?,
+        None => [0.0; 3],
+    };
     let points: Vec<Vector> = match (file, args.is_empty()) {
         (Some(_), false) => {
             return Err(Failure::new(
@@ -355,7 +363,7 @@ pub fn probe(
             v
         }
     };
-    let plane = match probe::plane(&points) {
+    let (plane, turned) = match probe::plane_toward(&points, toward) {
         Ok(p) => p,
         Err(e) => {
             eprintln!("cncrot: {} points: {}", points.len(), e.message());
@@ -366,12 +374,19 @@ pub fn probe(
         Convention::new(Kind::Extrinsic, Sequence::XYZ),
         &plane.frame.rotation,
     )?;
-    let full = format!(
-        "points: {}\nflatness: {} mm\nrms: {} mm\nnormal (Z'): {}\nas extrinsic XYZ (CYCLE600 _BIN_IN 57): {}\n",
+    let mut full = format!(
+        "points: {}\nflatness: {} mm\nrms: {} mm\nnormal (Z'): {}\n",
         points.len(),
         num(plane.flatness, d),
         num(plane.rms, d),
         nums(&column(&plane.frame.rotation, 2), d),
+    );
+    if turned {
+        full += "  turned to the tool's side: the points' order, (P2-P1)x(P3-P1), gave the \
+                 other side (--order keeps it)\n";
+    }
+    full += &format!(
+        "as extrinsic XYZ (CYCLE600 _BIN_IN 57): {}\n",
         nums(&angles.angles, d)
     );
     let j = Json::Obj(vec![
@@ -379,6 +394,7 @@ pub fn probe(
         ("flatness", Json::Num(plane.flatness)),
         ("rms", Json::Num(plane.rms)),
         ("normal", Json::nums(&column(&plane.frame.rotation, 2))),
+        ("turned", Json::Bool(turned)),
         ("extrinsic_xyz", Json::nums(&angles.angles)),
     ]);
     match frame_report(&plane.frame, &targets, d, full, j) {

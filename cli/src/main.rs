@@ -168,6 +168,13 @@ enum Command {
         /// What to write (repeatable): DIALECT or DIALECT:FORM; default every dialect.
         #[arg(long, value_name = "DIALECT[:FORM]")]
         to: Vec<String>,
+        /// The side the tool comes from: Z' gets a non-negative component along it (default
+        /// the machine's +Z: the plane the right way up however the points were ordered).
+        #[arg(long, value_name = "DX,DY,DZ", default_value = "0,0,1")]
+        toward: String,
+        /// Z' on the side the points' order gives, (P2-P1)x(P3-P1), as PLANE POINTS does.
+        #[arg(long, conflicts_with = "toward")]
+        order: bool,
         /// One JSON object.
         #[arg(long)]
         json: bool,
@@ -322,9 +329,18 @@ fn main() -> ExitCode {
             points,
             points_file,
             to,
+            toward,
+            order,
             json,
             decimals,
-        } => commands::probe(&points, points_file.as_deref(), &to, json, decimals),
+        } => commands::probe(
+            &points,
+            points_file.as_deref(),
+            &to,
+            (!order).then_some(toward.as_str()),
+            json,
+            decimals,
+        ),
         Command::Cycle600 {
             call,
             heads,

@@ -886,3 +886,42 @@ fn convert_at_gimbal_lock_writes_one_solution() {
     ]);
     assert!(out.contains("second solution"), "{out}");
 }
+
+/// `probe`: the same corners probed clockwise give the plane the right way up (Z' toward
+/// the machine's +Z) and say it was turned; `--order` keeps the points' order (PLANE
+/// POINTS's rule: upside down here); `--toward` takes another side. The JSON agrees with
+/// the text: an origin of a few 1e-16 from the fit is no datum to shift.
+#[test]
+fn probe_defaults_to_the_tools_side() {
+    // Falling 10 mm over 100 mm along X, corners in clockwise order seen from above.
+    let pts = ["0,0,0", "0,50,0", "100,50,-10", "100,0,-10"];
+    let mut args = vec!["probe"];
+    args.extend(pts);
+    args.extend(["--to", "heidenhain"]);
+    let out = ok(&args);
+    assert!(out.contains("normal (Z'): 0.0995 0.0000 0.9950"), "{out}");
+    assert!(out.contains("turned to the tool's side"), "{out}");
+    assert!(
+        out.contains("PLANE SPATIAL SPA+5.7106 SPB+0 SPC+90 STAY"),
+        "{out}"
+    );
+    let mut order = args.clone();
+    order.push("--order");
+    let out = ok(&order);
+    assert!(out.contains("normal (Z'): -0.0995 0.0000 -0.9950"), "{out}");
+    assert!(!out.contains("turned"), "{out}");
+    let mut down = args.clone();
+    down.extend(["--toward", "0,0,-1"]);
+    let out = ok(&down);
+    assert!(
+        out.contains("normal (Z'): -0.0995 0.0000 -0.9950") && !out.contains("turned"),
+        "{out}"
+    );
+    let mut json = args.clone();
+    json.push("--json");
+    let out = ok(&json);
+    assert!(
+        out.contains("\"turned\":true") && out.contains("\"origin_apart\":false"),
+        "{out}"
+    );
+}

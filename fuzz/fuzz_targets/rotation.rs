@@ -339,6 +339,27 @@ fuzz_target!(|data: &[u8]| {
                     let m: Vec<f64> = (0..9).map(|k| f[4 * (k / 3) + k % 3]).collect();
                     assert!(orthonormality(&m) <= 2e-15, "{:?}", &f[..]);
                     assert!(r[0] >= 0.0 && r[1] >= 0.0, "{:?}", &r[..]);
+                    // The tool's side: Z' never points down.
+                    assert!(f[10] >= 0.0, "{:?}", &f[..]);
+                }
+                // Toward a side from the input (zero: the points' order): the same plane up
+                // to the side of Z', the same flatness.
+                let t = buffer_from(&inp.f64s::<3>());
+                let mut g = buffer(16, SENTINEL);
+                let mut q = buffer(2, SENTINEL);
+                let s2 = cncrot_probe_plane_toward(
+                    ptr(&w, n1),
+                    n,
+                    ptr(&t, n4),
+                    ptr_mut(&mut g, n2),
+                    ptr_mut(&mut q, n3),
+                );
+                check_outputs(s2, &[&g, &q]);
+                if s >= 0 && s2 >= 0 {
+                    assert_eq!(r[0].to_bits(), q[0].to_bits());
+                    for k in [2, 6, 10] {
+                        assert_eq!(f[k].abs().to_bits(), g[k].abs().to_bits(), "{k}");
+                    }
                 }
             }
             21 => {

@@ -212,6 +212,16 @@ function test_cncrot(cases_file)
   check(isequal(cncrot_program_write("fanuc", 'G68.2', F, int8(4)), cncrot_program_write(d.FANUC, 'G68.2', F, 4)), 'program_write by name');
   R4 = [F(1:3, 1:3) [0; 0; 0]; 0 0 0 1];
   check(isequal(cncrot_program_write('Heidenhain', "PLANE SPATIAL", R4), cncrot_program_write(d.HEIDENHAIN, 'PLANE SPATIAL', R4)), 'a double-quoted form');
+  % Probing: the tool's side by default (clockwise corners turned up, and said so), the
+  % points' order with 'order', a stated side, the same bits as the C library's default.
+  cw = [0 0 0; 0 50 0; 100 50 -10; 100 0 -10];
+  [Fu, ~, ~, tu] = cncrot_probe_plane(cw);
+  check(tu && abs(Fu(3, 3) - 1 / sqrt(1.01)) < 1e-15 && abs(Fu(1, 3) - 0.1 / sqrt(1.01)) < 1e-15, 'probe: the tool''s side');
+  [Fo, ~, ~, to] = cncrot_probe_plane(cw, 'order');
+  check(~to && isequal(Fo(1:3, 3), -Fu(1:3, 3)) && isequal(Fo(1:3, 1), Fu(1:3, 1)), 'probe: the points'' order');
+  check(isequal(cncrot_probe_plane(cw, "ORDER"), Fo) && isequal(cncrot_probe_plane(cw, [0 0 -2]), Fo) && isequal(cncrot_probe_plane(cw, [0 0 1]), Fu), 'probe: sides');
+  expect_message('cncrot:badArgument', @() cncrot_probe_plane(cw, 'up'), 'probe: a side by an unknown name', 'cncrot_probe_plane', 'argument 2 (toward)');
+  expect_message('cncrot:notFinite', @() cncrot_probe_plane(cw, [NaN 0 1]), 'probe: a side not finite', 'cncrot_probe_plane', 'argument 2 (toward)');
   % A whole program: every block read, each with its remark, the frames after each.
   prog = {'0 BEGIN PGM T MM', '1 TOOL CALL 1 Z S5000', '2 CYCL DEF 7.0 DATUM SHIFT', ...
           '3 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-', '4 L X+10 FMAX', '5 PLANE RESET STAY', '6 END PGM T MM'};

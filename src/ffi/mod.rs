@@ -60,6 +60,9 @@ pub enum cncrot_status {
     /// scaling, a tilt that needs the machine): the state is unchanged and may differ from
     /// the control's.
     NotFollowed = 5,
+    /// Success; the probed plane's Z' was turned to the side asked for (the tool's): the
+    /// order of the points gave the other side.
+    Turned = 6,
     /// A pointer argument is NULL.
     NullPointer = -1,
     /// A floating-point argument is NaN or infinite.
@@ -314,6 +317,7 @@ mod tests {
             S::Snapped,
             S::Passed,
             S::NotFollowed,
+            S::Turned,
             S::NullPointer,
             S::NotFinite,
             S::BadFlag,

@@ -64,15 +64,19 @@ pub unsafe extern "C" fn cncrot_probe_flange(
 
 /// The least-squares plane through `n` points (`points` holds `3·n` doubles, x y z for each)
 /// and its flatness: `frame` gets the plane (origin at the first point's foot on it, X'
-/// along the first two points' direction, Z' on the side of `(P2 − P1) × (P3 − P1)`: three
-/// points give `PLANE POINTS`'s rotation), `residual[0]` the flatness (largest minus smallest
-/// distance from the plane), `residual[1]` the RMS distance, millimetres. The normal is the
-/// points' direction of least spread from their singular vectors, so a thin set (a strip,
-/// an apex just off a line) gets its own plane. The time is linear in `n`, plus at most 10
-/// sweeps of three Jacobi rotations (5 in practice).
+/// along the first two points' direction, Z' on the tool's side: a non-negative component
+/// along the machine's +Z, so that the same corners probed clockwise or anticlockwise give
+/// the same plane, the right way up), `residual[0]` the flatness (largest minus smallest
+/// distance from the plane), `residual[1]` the RMS distance, millimetres. Where the points'
+/// order put Z' the other way (`(P2 − P1) × (P3 − P1)`, `PLANE POINTS`'s rule), the plane is
+/// turned half a turn about X' and the status says so; `cncrot_probe_plane_toward` takes
+/// another side, or the points' order. The normal is the points' direction of least spread
+/// from their singular vectors, so a thin set (a strip, an apex just off a line) gets its
+/// own plane. The time is linear in `n`, plus at most 10 sweeps of three Jacobi rotations
+/// (5 in practice).
 ///
-/// Returns 0, or with nothing written: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_TOO_FEW`
-/// (n < 3),
+/// Returns 0, `CNCROT_STATUS_TURNED` (Z' turned to the tool's side), or with nothing
+/// written: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_TOO_FEW` (n < 3),
 /// `CNCROT_STATUS_COINCIDENT`, `CNCROT_STATUS_COLLINEAR` (the second extent at most 1e-12
 /// of the first), `CNCROT_STATUS_DEGENERATE` (n > 3 and the two smallest extents differing
 /// by at most 1e-12 of the first, e.g. points spread alike in every direction: no plane is
@@ -98,32 +102,89 @@ pub unsafe extern "C" fn cncrot_probe_plane(
 ) -> i32 {
     guard(|| {
         non_null(&[points.is_null(), frame.is_null(), residual.is_null()])?;
-        if n < 3 {
-            return Err(cncrot_status::TooFew);
-        }
-        // No array holds more than isize::MAX bytes; and the points are read in place, so
-        // they must be aligned as doubles.
-        if n > isize::MAX as usize / core::mem::size_of::<Vector>()
-            || points.align_offset(core::mem::align_of::<f64>()) != 0
-        {
-            return Err(cncrot_status::BadArgument);
-        }
-        // SAFETY: non-NULL, aligned, and (the caller guarantees) 3·n readable doubles, laid
-        // out as n arrays of 3; every bit pattern is a double.
-        let pts = core::slice::from_raw_parts(points.cast::<Vector>(), n);
-        let p = probe::plane(pts)?;
-        let h = p.frame.to_homogeneous();
-        if !h
-            .iter()
-            .flatten()
-            .chain(&[p.flatness, p.rms])
-            .all(|x| x.is_finite())
-        {
-            return Err(cncrot_status::OutOfRange);
-        }
-        write(residual, [p.flatness, p.rms])?;
-        write_frame(frame, &p.frame)?;
-        Ok(cncrot_status::Ok)
+        plane_into(points, n, [0.0, 0.0, 1.0], frame, residual)
+    })
+}
+
+/// `cncrot_probe_plane` with Z' on the side of `toward` (a direction of any length: the
+/// side the tool comes from, for a plane probed on a wall or from below), or, with `toward`
+/// all zero, on the side the points' order gives (`(P2 − P1) × (P3 − P1)`: three points give
+/// `PLANE POINTS`'s rotation; the rule before the tool's side was the default).
+///
+/// Returns 0, `CNCROT_STATUS_TURNED` (Z' turned to `toward`'s side), or with nothing
+/// written the statuses of `cncrot_probe_plane`, `CNCROT_STATUS_NOT_FINITE` for `toward`
+/// too.
+///
+/// # Safety
+/// As `cncrot_probe_plane`; `toward` points to 3 readable doubles (or NULL: error).
+///
+/// ```c
+/// double order[3] = {0, 0, 0};
+/// cncrot_probe_plane_toward(pts, 4, order, f, res);   // the points' order decides
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_probe_plane_toward(
+    points: *const f64,
+    n: usize,
+    toward: *const f64,
+    frame: *mut f64,
+    residual: *mut f64,
+) -> i32 {
+    guard(|| {
+        non_null(&[
+            points.is_null(),
+            toward.is_null(),
+            frame.is_null(),
+            residual.is_null(),
+        ])?;
+        let toward = read_finite::<3>(toward)?;
+        plane_into(points, n, toward, frame, residual)
+    })
+}
+
+/// The plane of `n` points with Z' toward `toward`, written; its status.
+///
+/// # Safety
+/// The pointers are non-NULL; `points` to `3·n` readable doubles, `frame` to 16 and
+/// `residual` to 2 writable doubles.
+#[inline(always)]
+unsafe fn plane_into(
+    points: *const f64,
+    n: usize,
+    toward: Vector,
+    frame: *mut f64,
+    residual: *mut f64,
+) -> Result<cncrot_status, cncrot_status> {
+    if n < 3 {
+        return Err(cncrot_status::TooFew);
+    }
+    // No array holds more than isize::MAX bytes; and the points are read in place, so
+    // they must be aligned as doubles.
+    if n > isize::MAX as usize / core::mem::size_of::<Vector>()
+        || points.align_offset(core::mem::align_of::<f64>()) != 0
+    {
+        return Err(cncrot_status::BadArgument);
+    }
+    // SAFETY: non-NULL, aligned, and (the caller guarantees) 3·n readable doubles, laid
+    // out as n arrays of 3; every bit pattern is a double.
+    let pts = core::slice::from_raw_parts(points.cast::<Vector>(), n);
+    let (p, turned) = probe::plane_toward(pts, toward)?;
+    let h = p.frame.to_homogeneous();
+    if !h
+        .iter()
+        .flatten()
+        .chain(&[p.flatness, p.rms])
+        .all(|x| x.is_finite())
+    {
+        return Err(cncrot_status::OutOfRange);
+    }
+    write(residual, [p.flatness, p.rms])?;
+    write_frame(frame, &p.frame)?;
+    Ok(if turned {
+        cncrot_status::Turned
+    } else {
+        cncrot_status::Ok
     })
 }
 

@@ -529,6 +529,36 @@ fn probing() -> Vec<Call> {
             ));
             t.f64s(&a);
         }),
+        ("cncrot_probe_plane_toward", |t| unsafe {
+            let (mut f, mut r) = ([0.0; 16], [0.0; 2]);
+            // Clockwise from above: the order gives Z' down.
+            let pts = [
+                0.0, 0.0, 0.0, 0.0, 50.0, 0.0, 100.0, 50.0, -10.0, 100.0, 0.0, -10.0,
+            ];
+            for toward in [
+                [0.0, 0.0, 1.0],
+                [0.0; 3],
+                [0.0, 0.0, -1.0],
+                [f64::NAN, 0.0, 0.0],
+            ] {
+                t.status(cncrot_probe_plane_toward(
+                    pts.as_ptr(),
+                    4,
+                    toward.as_ptr(),
+                    f.as_mut_ptr(),
+                    r.as_mut_ptr(),
+                ));
+                t.f64s(&f);
+            }
+            t.status(cncrot_probe_plane_toward(
+                pts.as_ptr(),
+                4,
+                null(),
+                f.as_mut_ptr(),
+                r.as_mut_ptr(),
+            ));
+            t.f64s(&r);
+        }),
         ("cncrot_probe_plane", |t| unsafe {
             let (mut f, mut r) = ([0.0; 16], [0.0; 2]);
             let pts = [
