@@ -193,6 +193,17 @@ static void every_pair_converts(void) {
   CHECK(pairs == 40 * NFORMS * NFORMS, "%d pairs", pairs);
 }
 
+/* A program of `dialect` with a tilt active, for the cases that must leave it as it is. */
+static void tilted(int32_t dialect, cncrot_program *p) {
+  memset(p, 0, sizeof *p);
+  const char *start = dialect == CNCROT_DIALECT_HEIDENHAIN ? "PLANE SPATIAL SPA+0 SPB+30 SPC+0"
+                      : dialect == CNCROT_DIALECT_SINUMERIK ? "ROT Z30"
+                      : dialect == CNCROT_DIALECT_TWINCAT   ? "ROT Z30"
+                      : dialect == CNCROT_DIALECT_HAAS      ? "G268 K30 Q123"
+                                                            : "G68.2 K30";
+  CHECK_STATUS(cncrot_program_line(p, dialect, start, strlen(start)), CNCROT_STATUS_OK);
+}
+
 /* Every block of a program: blocks that do not concern the frame are passed over, blocks
  * that change it in ways the library does not follow say so; both leave the state
  * byte-identical and are successes. */
@@ -218,13 +229,7 @@ static void whole_programs(void) {
   };
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     cncrot_program p, before;
-    memset(&p, 0, sizeof p);
-    const char *start = cases[k].dialect == CNCROT_DIALECT_HEIDENHAIN ? "PLANE SPATIAL SPA+0 SPB+30 SPC+0"
-                        : cases[k].dialect == CNCROT_DIALECT_SINUMERIK ? "ROT Z30"
-                        : cases[k].dialect == CNCROT_DIALECT_TWINCAT   ? "ROT Z30"
-                        : cases[k].dialect == CNCROT_DIALECT_HAAS      ? "G268 K30 Q123"
-                                                                       : "G68.2 K30";
-    CHECK_STATUS(cncrot_program_line(&p, cases[k].dialect, start, strlen(start)), CNCROT_STATUS_OK);
+    tilted(cases[k].dialect, &p);
     before = p;
     size_t column = 999;
     CHECK_STATUS(cncrot_program_line(&p, cases[k].dialect, cases[k].line, strlen(cases[k].line)), cases[k].status);
@@ -312,13 +317,7 @@ static void refusals(void) {
   };
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     cncrot_program p, before;
-    memset(&p, 0, sizeof p);
-    const char *start = cases[k].dialect == CNCROT_DIALECT_HEIDENHAIN ? "PLANE SPATIAL SPA+0 SPB+30 SPC+0"
-                        : cases[k].dialect == CNCROT_DIALECT_SINUMERIK ? "ROT Z30"
-                        : cases[k].dialect == CNCROT_DIALECT_TWINCAT   ? "ROT Z30"
-                        : cases[k].dialect == CNCROT_DIALECT_HAAS      ? "G268 K30 Q123"
-                                                                       : "G68.2 K30";
-    CHECK_STATUS(cncrot_program_line(&p, cases[k].dialect, start, strlen(start)), CNCROT_STATUS_OK);
+    tilted(cases[k].dialect, &p);
     before = p;
     size_t column = 999;
     CHECK_STATUS(cncrot_program_line(&p, cases[k].dialect, cases[k].line, strlen(cases[k].line)), cases[k].status);

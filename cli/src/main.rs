@@ -36,7 +36,8 @@ struct Cli {
 /// What every subcommand shares: batch input, JSON output, decimals.
 #[derive(Args, Clone)]
 struct Common {
-    /// One input per line from FILE ('-': standard input); blank lines are skipped.
+    /// One input per line from FILE ('-': standard input); one output line per input line
+    /// (blank for a blank line, 'error: …' for a failed one).
     #[arg(long, value_name = "FILE")]
     batch: Option<String>,
     /// One JSON object per result (JSON Lines), numbers at full precision.
@@ -46,6 +47,34 @@ struct Common {
     /// read back to the same double.
     #[arg(long, default_value = "4", value_parser = input::decimals)]
     decimals: i32,
+}
+
+/// A machine: SINUMERIK swivel data, or rotary axes one by one.
+#[derive(Args, Clone)]
+struct MachineOpts {
+    /// SINUMERIK swivel data file ($TC_CARR1..65).
+    #[arg(long, value_name = "FILE")]
+    carr: Option<String>,
+    /// Swivel data set number in the --carr file.
+    #[arg(long, default_value_t = 1)]
+    set: i32,
+    /// A rotary axis (repeatable, at most 3, in chain order): SIDE:DX,DY,DZ[@PX,PY,PZ].
+    #[arg(long, value_name = "SIDE:DIR[@POINT]")]
+    axis: Vec<String>,
+    /// Tool direction with every axis at 0.
+    #[arg(long, value_name = "DX,DY,DZ", default_value = "0,0,1")]
+    tool: String,
+}
+
+impl MachineOpts {
+    fn args(&self) -> commands::MachineArgs<'_> {
+        commands::MachineArgs {
+            carr: self.carr.as_deref(),
+            set: self.set,
+            axis: &self.axis,
+            tool: &self.tool,
+        }
+    }
 }
 
 #[derive(Subcommand)]
@@ -129,18 +158,8 @@ enum Command {
         /// Write the program translated: DIALECT or DIALECT:FORM.
         #[arg(long, value_name = "DIALECT[:FORM]")]
         to: Option<String>,
-        /// SINUMERIK swivel data file ($TC_CARR1..65).
-        #[arg(long, value_name = "FILE")]
-        carr: Option<String>,
-        /// Swivel data set number in the --carr file.
-        #[arg(long, default_value_t = 1)]
-        set: i32,
-        /// A rotary axis (repeatable, at most 3, in chain order): SIDE:DX,DY,DZ[@PX,PY,PZ].
-        #[arg(long, value_name = "SIDE:DIR[@POINT]")]
-        axis: Vec<String>,
-        /// Tool direction with every axis at 0.
-        #[arg(long, value_name = "DX,DY,DZ", default_value = "0,0,1")]
-        tool: String,
+        #[command(flatten)]
+        machine: MachineOpts,
         /// Rotary positions before the program (the choice unwinds toward them).
         #[arg(long, value_name = "A,B,C")]
         current: Option<String>,
@@ -229,18 +248,8 @@ enum Command {
                       positions)."
     )]
     Axes {
-        /// SINUMERIK swivel data file ($TC_CARR1..65).
-        #[arg(long, value_name = "FILE")]
-        carr: Option<String>,
-        /// Swivel data set number in the --carr file.
-        #[arg(long, default_value_t = 1)]
-        set: i32,
-        /// A rotary axis (repeatable, at most 3, in chain order): SIDE:DX,DY,DZ[@PX,PY,PZ].
-        #[arg(long, value_name = "SIDE:DIR[@POINT]")]
-        axis: Vec<String>,
-        /// Tool direction with every axis at 0.
-        #[arg(long, value_name = "DX,DY,DZ", default_value = "0,0,1")]
-        tool: String,
+        #[command(flatten)]
+        machine: MachineOpts,
         /// Convention of the given orientation angles.
         #[arg(long, value_name = "KIND:SEQ", default_value = "extrinsic:XYZ")]
         from: String,
@@ -301,10 +310,7 @@ fn main() -> ExitCode {
             dialect,
             euler,
             to,
-            carr,
-            set,
-            axis,
-            tool,
+            machine,
             current,
             json,
             decimals,
@@ -318,12 +324,7 @@ fn main() -> ExitCode {
                 json,
                 decimals,
             },
-            &commands::MachineArgs {
-                carr: carr.as_deref(),
-                set,
-                axis: &axis,
-                tool: &tool,
-            },
+            &machine.args(),
         ),
         Command::Probe {
             points,
@@ -357,10 +358,7 @@ fn main() -> ExitCode {
             &common,
         ),
         Command::Axes {
-            carr,
-            set,
-            axis,
-            tool,
+            machine,
             from,
             current,
             rule,
@@ -369,12 +367,7 @@ fn main() -> ExitCode {
             values,
             common,
         } => commands::axes(
-            &commands::MachineArgs {
-                carr: carr.as_deref(),
-                set,
-                axis: &axis,
-                tool: &tool,
-            },
+            &machine.args(),
             &commands::AxesArgs {
                 from: &from,
                 current: current.as_deref(),

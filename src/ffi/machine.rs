@@ -682,13 +682,18 @@ pub(super) unsafe fn write_choice(
     write::<3>(axes, c.axes)?;
     write::<3>(residual, c.residual)?;
     write_frame(remaining, &rem)?;
-    Ok(if c.free {
+    Ok(choice_status(c))
+}
+
+/// The remark of a choice: a free axis kept, a Hirth axis snapped, or none.
+pub(super) fn choice_status(c: &Choice) -> cncrot_status {
+    if c.free {
         cncrot_status::FreeAxis
     } else if c.residual.iter().any(|&r| r != 0.0) {
         cncrot_status::Snapped
     } else {
         cncrot_status::Ok
-    })
+    }
 }
 
 /// Tool-tip follow-up: the linear-axis positions `linear_to` that keep the tip of a tool

@@ -373,13 +373,7 @@ pub unsafe extern "C" fn cncrot_program_axes(
         let current = read_finite::<3>(current)?;
         let c = p.axes(&m, current)?;
         write::<3>(axes, c.axes)?;
-        Ok(if c.free {
-            cncrot_status::FreeAxis
-        } else if c.residual.iter().any(|&r| r != 0.0) {
-            cncrot_status::Snapped
-        } else {
-            cncrot_status::Ok
-        })
+        Ok(super::machine::choice_status(&c))
     })
 }
 
