@@ -8,6 +8,7 @@
 #   LIBDIR/cmake/cncrot/cncrotConfig.cmake (+ ConfigVersion): cncrot::cncrot, cncrot::cncrot_static
 #   PREFIX/share/cncrot/matlab (the MEX sources; build_mex there finds this installation)
 #   PREFIX/share/doc/cncrot (README and docs)
+#   PREFIX/bin/cncrot (the command-line tool; not with --realtime or --target)
 #
 # Usage: ./install.sh [--prefix DIR] [--libdir DIR] [--destdir DIR] [--realtime] [--target T]
 #   --prefix   where the library is to live (default /usr/local)
@@ -200,4 +201,10 @@ install -m 644 matlab/src/*.c matlab/src/*.h "$(stage "$datadir/cncrot/matlab/sr
 install -m 644 matlab/tests/*.m "$(stage "$datadir/cncrot/matlab/tests")/"
 install -m 644 README.md "$(stage "$datadir/doc/cncrot")/"
 install -m 644 docs/*.md "$(stage "$datadir/doc/cncrot/docs")/"
+# The command-line tool, for people who do not program (its own release build).
+if [ $realtime -eq 0 ]; then
+  cargo build --release --quiet -p cncrot-cli
+  install -d "$(stage "$prefix/bin")"
+  install -m 755 "${CARGO_TARGET_DIR:-target}/release/cncrot" "$(stage "$prefix/bin")/cncrot"
+fi
 echo "install.sh: cncrot $version installed under $destdir$prefix (soname libcncrot.so.$abi)"

@@ -21,6 +21,9 @@ version=$(pkg-config --modversion cncrot)
 major=${version%%.*}; rest=${version#*.}; minor=${rest%%.*}
 if [ "$major" = 0 ]; then abi=0.$minor; next=0.$((minor + 1)); else abi=$major; next=$((major + 1)).0; fi
 echo "package: cncrot $version installed (ABI $abi)"
+# The command-line tool beside the library: the paper's Example 3.
+cli_out=$("$prefix/bin/cncrot" convert --from extrinsic:XYZ --to intrinsic:ZXY 30 45 60 2>&1) || fail "bin/cncrot did not run: $cli_out"
+grep -q "37.7923 20.7048 49.1066" <<<"$cli_out" || fail "bin/cncrot convert: $cli_out"
 
 soname=$(objdump -p "$prefix/lib/libcncrot.so.$version" | awk '$1 == "SONAME" {print $2}')
 [ "$soname" = "libcncrot.so.$abi" ] || fail "soname '$soname', expected libcncrot.so.$abi"

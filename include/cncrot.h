@@ -792,7 +792,8 @@ size_t cncrot_cycle600_gud_size(void);
  * NULL.
  *
  * ```c
- * cncrot_cycle600_gud gud = {0};   // paper, Example 3
+ * cncrot_cycle600_gud gud;   // paper, Example 3
+ * memset(&gud, 0, sizeof gud);
  * cncrot_cycle600(&gud, NULL, 0, "UFK600", 1, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0);
  * // gud.cyc600_2..4 = 37.7923, 20.7048, 49.1066; gud.cyc600_5 = 1; gud.cyc600_6 = 39
  * ```
@@ -1181,7 +1182,8 @@ int32_t cncrot_machine_from_head(struct cncrot_machine *machine,
  * `machine` points to a writable `cncrot_machine`, `direction` and `point` to 3 doubles.
  *
  * ```c
- * cncrot_machine m = {0};
+ * cncrot_machine m;
+ * memset(&m, 0, sizeof m);
  * double z[3] = {0, 0, 1}, y[3] = {0, 1, 0}, o[3] = {0, 0, 0}, p[3] = {0, 0, 150};
  * cncrot_machine_add_axis(&m, 0, z, o, 0, 0);        // C, modulo
  * cncrot_machine_add_axis(&m, 0, y, p, -100, 100);   // B on C, pivot 150 above the adapter
@@ -1494,7 +1496,8 @@ int32_t cncrot_program_init(struct cncrot_program *program, uint32_t options);
  * bytes (or NULL: error).
  *
  * ```c
- * cncrot_program p = {0};
+ * cncrot_program p;
+ * memset(&p, 0, sizeof p);
  * const char *l = "N10 PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY";
  * int s = cncrot_program_line(&p, CNCROT_DIALECT_HEIDENHAIN, l, strlen(l));
  * ```

@@ -208,7 +208,8 @@ pub extern "C" fn cncrot_cycle600_gud_size() -> usize {
 /// NULL.
 ///
 /// ```c
-/// cncrot_cycle600_gud gud = {0};   // paper, Example 3
+/// cncrot_cycle600_gud gud;   // paper, Example 3
+/// memset(&gud, 0, sizeof gud);
 /// cncrot_cycle600(&gud, NULL, 0, "UFK600", 1, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0);
 /// // gud.cyc600_2..4 = 37.7923, 20.7048, 49.1066; gud.cyc600_5 = 1; gud.cyc600_6 = 39
 /// ```

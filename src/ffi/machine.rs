@@ -456,7 +456,8 @@ pub unsafe extern "C" fn cncrot_machine_from_head(
 /// `machine` points to a writable `cncrot_machine`, `direction` and `point` to 3 doubles.
 ///
 /// ```c
-/// cncrot_machine m = {0};
+/// cncrot_machine m;
+/// memset(&m, 0, sizeof m);
 /// double z[3] = {0, 0, 1}, y[3] = {0, 1, 0}, o[3] = {0, 0, 0}, p[3] = {0, 0, 150};
 /// cncrot_machine_add_axis(&m, 0, z, o, 0, 0);        // C, modulo
 /// cncrot_machine_add_axis(&m, 0, y, p, -100, 100);   // B on C, pivot 150 above the adapter

@@ -272,7 +272,8 @@ unsafe fn read(
 /// bytes (or NULL: error).
 ///
 /// ```c
-/// cncrot_program p = {0};
+/// cncrot_program p;
+/// memset(&p, 0, sizeof p);
 /// const char *l = "N10 PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY";
 /// int s = cncrot_program_line(&p, CNCROT_DIALECT_HEIDENHAIN, l, strlen(l));
 /// ```
