@@ -192,17 +192,11 @@ pub(crate) const ISO_NOT_FOLLOWED: &[u32] = &[
     100, 500, 501, 510, 511, 520, 540, 541, 542, 550, 560, 570, 580, 590, 680, 691, 920, 921,
 ];
 
-/// Whether `#n = …` writes a work-offset variable (Fanuc and Haas: `#2500`–`#2999`,
-/// `#5201`–`#5335`, `#7001`–`#7999`, `#14001`–`#19999`).
-fn offset_variable(value: &[u8]) -> bool {
-    let mut n = 0u32;
-    for &b in value.iter().take(6) {
-        if !b.is_ascii_digit() {
-            return false;
-        }
-        n = n * 10 + u32::from(b - b'0');
-    }
-    matches!(n, 2500..=2999 | 5201..=5335 | 7001..=7999 | 14001..=19999)
+/// Whether variable `#n` (its number as a code in tenths, `Token::code`) holds a work
+/// offset (Fanuc and Haas: `#2500`–`#2999`, `#5201`–`#5335`, `#7001`–`#7999`,
+/// `#14001`–`#19999`).
+fn offset_variable(code: u32) -> bool {
+    code % 10 == 0 && matches!(code / 10, 2500..=2999 | 5201..=5335 | 7001..=7999 | 14001..=19999)
 }
 
 /// What a block of an ISO-style program (Fanuc, Haas, Syntec) does when it does not start
@@ -236,7 +230,7 @@ pub(crate) fn iso_block(
             (b'G', Some(code)) if ISO_NOT_FOLLOWED.contains(&code) || more.contains(&code) => {
                 not_followed = true
             }
-            (b'#', _) if t.assigned && offset_variable(t.value) => not_followed = true,
+            (b'#', Some(code)) if t.assigned && offset_variable(code) => not_followed = true,
             _ => {}
         }
     }

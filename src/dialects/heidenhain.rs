@@ -252,18 +252,8 @@ fn other_block(text: &[u8]) -> Block {
     let mut t = Tokens::new(text, comments, false);
     let (first, second) = (t.next(), t.next());
     let is = |t: Option<Token>, name: &[u8]| t.is_some_and(|t| t.is(name));
-    let integer = |t: Option<Token>| {
-        let digits = t.map_or(&[][..], |t| t.value);
-        let end = digits
-            .iter()
-            .position(|b| !b.is_ascii_digit())
-            .unwrap_or(digits.len());
-        let mut n = 0u32;
-        for &b in digits.iter().take(end.min(6)) {
-            n = n * 10 + u32::from(b - b'0');
-        }
-        (end > 0).then_some(n)
-    };
+    // A cycle or function number (`7.0` is cycle 7's first line): its whole part.
+    let integer = |t: Option<Token>| t.and_then(|t| t.code()).map(|c| c / 10);
     let cycle = is(first, b"CYCL") && is(second, b"DEF");
     let frame_cycle = cycle && matches!(integer(t.next()), Some(7 | 8 | 10 | 11 | 19 | 26 | 247));
     let syswrite = is(first, b"FN17") || (is(first, b"FN") && integer(second) == Some(17));

@@ -86,7 +86,7 @@ use super::family::{
     no_selector, put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
 };
 use crate::text::number::{write_word, Out, Style};
-use crate::text::scan::{address_words, Comments, Cursor, LineError, Syntax, Token, Tokens};
+use crate::text::scan::{address_words, Comments, Cursor, LineError, Syntax, Tokens};
 use crate::Frame;
 
 const SYNTAX: Syntax = crate::text::scan::G_WORDS;
@@ -109,24 +109,11 @@ fn other_block(text: &[u8]) -> Result<Block, LineError> {
                 column: t.column,
             });
         }
-        let value = t.value;
-        let g = value.first().is_some_and(|b| b.eq_ignore_ascii_case(&b'G'));
-        let code = Token {
-            letter: b'G',
-            value: value.get(1..).unwrap_or(&[]),
-            ..t
-        }
-        .code();
-        let upper = |k: usize| value.get(k).map(u8::to_ascii_uppercase);
-        let coordinate_system = value.first() == Some(&b'#')
-            && (matches!((upper(1), upper(2)), (Some(b'C'), Some(b'S')))
-                || matches!(
-                    (upper(1), upper(2), upper(3)),
-                    (Some(b'A'), Some(b'C'), Some(b'S'))
-                ));
-        if (g && matches!(code, Some(540 | 550 | 560 | 570 | 580 | 590 | 920 | 3510)))
-            || coordinate_system
-        {
+        let offset = matches!(
+            t.g_code(),
+            Some(540 | 550 | 560 | 570 | 580 | 590 | 920 | 3510)
+        );
+        if offset || t.is(b"#CS") || t.is(b"#ACS") {
             not_followed = true;
         }
     }

@@ -463,6 +463,20 @@ impl Token<'_> {
         Some(if frac.is_empty() { v * 10 } else { v })
     }
 
+    /// A name `G<code>` (`G505`, `g54.1`) as its code in tenths, as [`Token::code`]: the
+    /// G-codes of the dialects read as names (SINUMERIK, TwinCAT).
+    pub fn g_code(&self) -> Option<u32> {
+        let (first, rest) = self.value.split_first()?;
+        if !first.eq_ignore_ascii_case(&b'G') {
+            return None;
+        }
+        Token {
+            value: rest,
+            ..*self
+        }
+        .code()
+    }
+
     /// Whether this is the name `name` (case-insensitive).
     pub fn is(&self, name: &[u8]) -> bool {
         self.letter == 0 && self.value.eq_ignore_ascii_case(name)

@@ -656,12 +656,9 @@ fn other_block(rest: &[u8], offset: usize) -> Result<Block, LineError> {
         }
         let v = t.value;
         let starts = |p: &[u8]| v.get(..p.len()).is_some_and(|h| h.eq_ignore_ascii_case(p));
-        let g = (starts(b"G") && v.len() == 4)
-            .then(|| v.get(1..))
-            .flatten()
-            .filter(|d| d.iter().all(u8::is_ascii_digit))
-            .map(|d| d.iter().fold(0u32, |n, &b| n * 10 + u32::from(b - b'0')));
-        let settable = g.is_some_and(|n| (505..=599).contains(&n));
+        let settable = t
+            .g_code()
+            .is_some_and(|c| c % 10 == 0 && (5050..=5990).contains(&c));
         let frame_variable = t.assigned
             && starts(b"$P_")
             && (v.windows(5).any(|w| w.eq_ignore_ascii_case(b"FRAME"))
