@@ -123,6 +123,12 @@
 #define CNCROT_MACHINE_AXES 3
 
 /**
+ * Machine axes of the five-axis transformation (`cncrot_machine_tcp_forward` /
+ * `_tcp_inverse`): linear `X, Y, Z`, then the rotary axes 1..3.
+ */
+#define CNCROT_MACHINE_TCP_AXES 6
+
+/**
  * The most solutions `cncrot_machine_inverse` returns.
  */
 #define CNCROT_MACHINE_SOLUTIONS_MAX 2
@@ -1325,6 +1331,92 @@ int32_t cncrot_machine_follow(const struct cncrot_machine *machine,
                               const double *linear_from,
                               double tool_length,
                               double *linear_to);
+
+/**
+ * The five-axis transformation, forward: the tool's pose in workpiece coordinates at
+ * machine axes `axes` — `X, Y, Z` (mm, the machine coordinates of the tool adapter's
+ * reference point, as `cncrot_machine_follow` takes them) then the rotary positions 1..3
+ * (degrees, in the order the axes were added; unused ones 0) — with a tool of length
+ * `tool_length` (mm) along the tool's base direction. `pose` is a 4x4 frame, row-major, in
+ * the workpiece coordinates of `cncrot_machine_forward`: its rotation is that function's,
+ * its third column the tool direction, its translation the tool tip
+ * `W⁻¹·((X, Y, Z) + T·(−L·b))`.
+ *
+ * Real-time: no allocation, no panic, a bounded number of operations (no loop depends on
+ * the values), stack within the hot-path bound.
+ *
+ * Returns 0, or with `pose` untouched: `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_NOT_FINITE` (an axis, `tool_length`), `CNCROT_STATUS_BAD_ARGUMENT` (an
+ * unused rotary position not 0), `CNCROT_STATUS_OUT_OF_RANGE` (`tool_length` beyond
+ * ±`CNCROT_MACHINE_LENGTH_MAX_MM`, a result that overflows), `CNCROT_STATUS_BAD_ARGUMENT`,
+ * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`,
+ * `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a machine: see
+ * `cncrot_machine`).
+ *
+ * # Safety
+ * `machine` points to a `cncrot_machine`, `axes` to 6 and `pose` to 16 doubles.
+ *
+ * ```c
+ * double ax[6] = {10, 20, 150, 30, 40, 0}, pose[16];
+ * cncrot_machine_tcp_forward(&m, ax, 50.0, pose);   // tip (pose[3], pose[7], pose[11])
+ * ```
+ */
+int32_t cncrot_machine_tcp_forward(const struct cncrot_machine *machine,
+                                   const double *axes,
+                                   double tool_length,
+                                   double *pose);
+
+/**
+ * The five-axis transformation, inverse: the machine axes (`X, Y, Z`, rotary 1..3, as
+ * `cncrot_machine_tcp_forward` takes them) that put the tip of a tool of length
+ * `tool_length` at the translation of `pose` (a 4x4 frame, row-major, in workpiece
+ * coordinates) with the tool direction of its third column; with three rotary axes the
+ * whole rotation of `pose`, with fewer the direction only (the turn about the tool is
+ * left to the frame, as in `cncrot_machine_inverse`).
+ *
+ * The rotary solution is the one continuous with `previous` (the last cycle's output):
+ * each solution's whole turns unwound toward the previous positions, within the travel
+ * limits and Hirth grids, the closest taken (as `cncrot_machine_choose` with
+ * `CNCROT_CHOOSE_CLOSEST`); then the linear axes `W·tip − T·(−L·b)`. At a pole (the
+ * direction along a rotary axis) the free axis stays at its previous position
+ * (`CNCROT_STATUS_FREE_AXIS`); near one the exact solution is taken, so the axis turns as
+ * fast as the path requires and no faster. `previous`'s linear part is only checked for
+ * finiteness. On a Hirth axis the position is snapped (`CNCROT_STATUS_SNAPPED`): the
+ * linear axes still put the tip on the target; the direction is off by the residual.
+ *
+ * Real-time: no allocation, no panic, a bounded number of operations, stack within the
+ * hot-path bound.
+ *
+ * Returns 0, `CNCROT_STATUS_FREE_AXIS`, `CNCROT_STATUS_SNAPPED`, or with `axes`
+ * untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE` (the pose,
+ * `tool_length`, `previous`), `CNCROT_STATUS_NOT_A_ROTATION`,
+ * `CNCROT_STATUS_UNREACHABLE` (no rotary positions give the direction),
+ * `CNCROT_STATUS_OUT_OF_TRAVEL` (only outside the travel limits),
+ * `CNCROT_STATUS_BAD_ARGUMENT` (an unused previous rotary position not 0),
+ * `CNCROT_STATUS_OUT_OF_RANGE` (a previous rotary position of magnitude
+ * `CNCROT_MACHINE_ANGLE_MAX_DEG` or more, `tool_length` beyond
+ * ±`CNCROT_MACHINE_LENGTH_MAX_MM`, a result that overflows), `CNCROT_STATUS_BAD_ARGUMENT`,
+ * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`,
+ * `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a machine: see
+ * `cncrot_machine`).
+ *
+ * # Safety
+ * `machine` points to a `cncrot_machine`, `pose` to 16, `previous` and `axes` to 6
+ * doubles (`axes` may be `previous`).
+ *
+ * ```c
+ * double prev[6] = {0}, ax[6];
+ * for (int i = 0; i < n; i++) {          // one CL point per interpolation cycle
+ *   if (cncrot_machine_tcp_inverse(&m, poses[i], 50.0, prev, ax) < 0) break;
+ *   memcpy(prev, ax, sizeof ax);
+ * }
+ * ```
+ */
+int32_t cncrot_machine_tcp_inverse(const struct cncrot_machine *machine,
+                                   const double *pose,
+                                   double tool_length,
+                                   const double *previous,
+                                   double *axes);
 
 /**
  * The paper's flange probing: two points along the machine's X (`a1`, `a2`) and two along

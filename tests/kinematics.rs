@@ -929,3 +929,321 @@ fn a_machine_without_axes_reaches_its_tool_direction_only() {
         assert_eq!(m.inverse(&tilt(90.0)), Err(Error::Unreachable));
     }
 }
+
+// ---------------------------------------------------------------------------------------
+// The five-axis transformation (tool tip and direction <-> every machine axis).
+
+/// The tool tip written independently: nalgebra's 4x4 products,
+/// `W⁻¹·Trans(linear)·T·(−L·b)` with `b` the tool's base direction.
+fn reference_tip(
+    axes: &[RotaryAxis],
+    theta: [f64; 3],
+    linear: Vector,
+    l: f64,
+    b: Vector,
+) -> Vector {
+    let mut t = Matrix4::<f64>::identity();
+    let mut w = Matrix4::<f64>::identity();
+    for (a, th) in axes.iter().zip(theta) {
+        let v = Unit::new_normalize(Vector3::from(a.direction));
+        let r = Rotation3::from_axis_angle(&v, (th - a.offset).to_radians()).to_homogeneous();
+        let p = Vector3::from(a.point);
+        let h =
+            Translation3::from(p).to_homogeneous() * r * Translation3::from(-p).to_homogeneous();
+        match a.side {
+            Side::Tool => t *= h,
+            Side::Work => w *= h,
+        }
+    }
+    let tip = w.try_inverse().unwrap()
+        * Translation3::from(Vector3::from(linear)).to_homogeneous()
+        * t
+        * nalgebra::Vector4::new(-l * b[0], -l * b[1], -l * b[2], 1.0);
+    [tip[0], tip[1], tip[2]]
+}
+
+fn six(linear: Vector, theta: [f64; 3]) -> [f64; 6] {
+    [
+        linear[0], linear[1], linear[2], theta[0], theta[1], theta[2],
+    ]
+}
+
+#[test]
+fn tcp_forward_matches_an_independent_computation() {
+    let mut rng = Rng::new(23);
+    for n in 0..=3 {
+        for _ in 0..2000 {
+            let (m, axes) = random_machine(&mut rng, n);
+            let theta = angles(&mut rng, n);
+            let linear = [0.0; 3].map(|_: f64| rng.range(-800.0, 800.0));
+            let l = rng.range(0.0, 300.0);
+            let pose = m.tcp_forward(six(linear, theta), l).unwrap();
+            let r = reference_forward(&axes, theta);
+            let tip = reference_tip(&axes, theta, linear, l, Z);
+            for i in 0..3 {
+                assert!(
+                    (pose.translation[i] - tip[i]).abs() < 1e-9,
+                    "{pose:?} {tip:?}"
+                );
+                for j in 0..3 {
+                    assert!((pose.rotation[i][j] - r[(i, j)]).abs() < 1e-13);
+                }
+            }
+        }
+    }
+}
+
+/// A tool whose base direction is not +Z (a head mounted sideways): the tip lies `L` along
+/// the turned base direction, the pose's third column is that direction.
+#[test]
+fn tcp_forward_with_a_sideways_tool() {
+    let m = Machine::new([1.0, 0.0, 0.0])
+        .unwrap()
+        .with_axis(axis(Side::Tool, [0.0, 0.0, 1.0], [0.0, 0.0, 0.0]))
+        .unwrap();
+    // C = 90° turns the tool from +X to +Y: tip at the adapter minus 100 along +Y.
+    let pose = m
+        .tcp_forward([5.0, 6.0, 7.0, 90.0, 0.0, 0.0], 100.0)
+        .unwrap();
+    let want = [5.0, 6.0 - 100.0, 7.0];
+    for k in 0..3 {
+        assert!((pose.translation[k] - want[k]).abs() < 1e-12, "{pose:?}");
+    }
+    assert!((pose.rotation[1][2] - 1.0).abs() < 1e-15, "{pose:?}");
+}
+
+/// tcp_forward(tcp_inverse(pose)) = pose: tip to 1e-9 mm, direction (the whole rotation
+/// with three axes) to 1e-12, on random machines of every kind, from previous positions
+/// near the true ones and far from them; near the true ones the true solution comes back.
+#[test]
+fn tcp_inverse_reproduces_random_poses() {
+    let mut rng = Rng::new(24);
+    let mut exact = 0;
+    for n in 1..=3 {
+        for round in 0..3000 {
+            let (m, _) = random_machine(&mut rng, n);
+            let theta = angles(&mut rng, n);
+            let linear = [0.0; 3].map(|_: f64| rng.range(-800.0, 800.0));
+            let l = rng.range(0.0, 300.0);
+            let pose = m.tcp_forward(six(linear, theta), l).unwrap();
+            let near = round % 2 == 0;
+            let mut prev = theta;
+            for p in prev.iter_mut().take(n) {
+                *p += if near {
+                    rng.range(-0.5, 0.5)
+                } else {
+                    rng.range(-400.0, 400.0)
+                };
+            }
+            let t = m.tcp_inverse(&pose, l, six([0.0; 3], prev)).unwrap();
+            let back = m.tcp_forward(t.axes, l).unwrap();
+            for i in 0..3 {
+                assert!(
+                    (back.translation[i] - pose.translation[i]).abs() < 1e-9,
+                    "{n} {theta:?} {t:?}"
+                );
+                for j in 0..3 {
+                    if n == 3 || j == 2 {
+                        assert!((back.rotation[i][j] - pose.rotation[i][j]).abs() < 1e-12);
+                    }
+                }
+            }
+            if near && !t.free {
+                // The true solution, unless the two solutions lie within a degree of each
+                // other (near the edge of a cone the tool direction can reach, where the
+                // other branch can be nearer), or the axis is free (a single axis along the
+                // tool: every position is a solution): count the exact returns.
+                if (0..n).all(|k| (t.axes[3 + k] - theta[k]).abs() < 1e-7) {
+                    for k in 0..3 {
+                        assert!((t.axes[k] - linear[k]).abs() < 1e-8, "{t:?} {linear:?}");
+                    }
+                    exact += 1;
+                }
+            }
+        }
+    }
+    // 3 992 of the 4 500 (250 single axes along the tool, 2 pairs within a degree).
+    assert!(exact > 3900, "{exact}");
+}
+
+/// The worked example of docs/kinematics.md, by hand: an AC table (A about X through
+/// (0, 0, 100), C about Z carried by it), tool 50 mm. Tip at the workpiece point (10, 0, 0),
+/// direction (sin 30° sin 90°, sin 30° cos 90°, cos 30°) = (0.5, 0, √3/2): A = 30°, C = 90°,
+/// and W·tip = Rx(30°)·(Rz(90°)·(10, 0, 0) − (0, 0, 100)) + (0, 0, 100)
+/// = Rx(30°)·(0, 10, −100) + (0, 0, 100) = (0, 5√3 + 50, 5 − 50√3 + 100),
+/// the adapter 50 mm above the tip: X = 0, Y = 50 + 5√3, Z = 155 − 50√3.
+#[test]
+fn tcp_inverse_ac_table_by_hand() {
+    let m = machine(&[
+        axis(Side::Work, [1.0, 0.0, 0.0], [0.0, 0.0, 100.0]),
+        axis(Side::Work, [0.0, 0.0, 1.0], [0.0; 3]),
+    ]);
+    let s3 = 3.0f64.sqrt();
+    // Any rotation with that third column: the X' axis along -Y... chosen as Rz(-90)·Rx(-30)
+    // of the workpiece, which the table gives (F = W⁻¹ = Rz(-C)·Rx(-A)).
+    let rot = mul(&elementary(Axis::Z, -90.0), &elementary(Axis::X, -30.0));
+    assert!((rot[0][2] - 0.5).abs() < 1e-16 && rot[1][2].abs() < 1e-16);
+    let pose = cncrot::Frame {
+        rotation: rot,
+        translation: [10.0, 0.0, 0.0],
+    };
+    let t = m
+        .tcp_inverse(&pose, 50.0, [0.0, 0.0, 0.0, 20.0, 80.0, 0.0])
+        .unwrap();
+    let want = [0.0, 50.0 + 5.0 * s3, 155.0 - 50.0 * s3, 30.0, 90.0, 0.0];
+    for k in 0..6 {
+        assert!((t.axes[k] - want[k]).abs() < 1e-12, "{:?}", t.axes);
+    }
+    // The other solution (A = -30°, C = -90°) from previous positions near it.
+    let t = m
+        .tcp_inverse(&pose, 50.0, [0.0, 0.0, 0.0, -20.0, -80.0, 0.0])
+        .unwrap();
+    assert!((t.axes[3] + 30.0).abs() < 1e-12 && (t.axes[4] + 90.0).abs() < 1e-12);
+    // Whole turns unwound toward the previous C: 90 + 720.
+    let t = m
+        .tcp_inverse(&pose, 50.0, [0.0, 0.0, 0.0, 20.0, 800.0, 0.0])
+        .unwrap();
+    assert!((t.axes[4] - 810.0).abs() < 1e-12, "{:?}", t.axes);
+}
+
+fn ac_table() -> Machine {
+    machine(&[
+        axis(Side::Work, [1.0, 0.0, 0.0], [0.0, 0.0, 100.0]),
+        axis(Side::Work, [0.0, 0.0, 1.0], [30.0, -20.0, 0.0]),
+    ])
+}
+
+/// A path through the pole in the plane of the tilting axis (A from +10° to -10° at C =
+/// 37°): A passes through 0 and C stays where it was, at the pole too (a free axis kept).
+#[test]
+fn tcp_path_through_the_pole_keeps_the_other_axis_still() {
+    let m = ac_table();
+    let mut prev = [5.0, 6.0, 7.0, 10.0, 37.0, 0.0];
+    for i in 0..=2000 {
+        let a = 10.0 - 0.01 * i as f64;
+        let truth = [5.0, 6.0, 7.0, a, 37.0, 0.0];
+        let pose = m.tcp_forward(truth, 80.0).unwrap();
+        let t = m.tcp_inverse(&pose, 80.0, prev).unwrap();
+        assert_eq!(t.free, a == 0.0, "{a}");
+        for k in 0..6 {
+            assert!((t.axes[k] - truth[k]).abs() < 1e-9, "{a} {:?}", t.axes);
+        }
+        prev = t.axes;
+    }
+}
+
+/// A path passing the pole at a small distance: C turns by 180° over the pass, as fast as
+/// the direction's azimuth about C turns (computed here from the direction itself) and no
+/// faster, with no jump anywhere.
+#[test]
+fn tcp_path_near_the_pole_turns_as_the_geometry_requires() {
+    let m = ac_table();
+    for miss_deg in [1.0, 1e-2, 1e-4] {
+        let d0: f64 = f64::to_radians(miss_deg);
+        let mut prev = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        let mut first = true;
+        let mut prev_azimuth = 0.0;
+        let steps = 4000;
+        for i in 0..=steps {
+            // Tilt components: along x from -5° to +5°, along y held at the miss distance.
+            let sx = f64::to_radians(-5.0 + 10.0 * i as f64 / steps as f64);
+            let dir = [sx, d0, 1.0];
+            let n = (dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]).sqrt();
+            let dir = dir.map(|x| x / n);
+            // A frame with that third column.
+            let x_axis = {
+                let c = [dir[2], 0.0, -dir[0]];
+                let n = (c[0] * c[0] + c[2] * c[2]).sqrt();
+                c.map(|v| v / n)
+            };
+            let y_axis = [
+                dir[1] * x_axis[2] - dir[2] * x_axis[1],
+                dir[2] * x_axis[0] - dir[0] * x_axis[2],
+                dir[0] * x_axis[1] - dir[1] * x_axis[0],
+            ];
+            let rot = [
+                [x_axis[0], y_axis[0], dir[0]],
+                [x_axis[1], y_axis[1], dir[1]],
+                [x_axis[2], y_axis[2], dir[2]],
+            ];
+            let pose = cncrot::Frame {
+                rotation: rot,
+                translation: [1.0, 2.0, 3.0],
+            };
+            let t = m.tcp_inverse(&pose, 50.0, prev).unwrap();
+            // d = (sin A sin C, sin A cos C, cos A): the azimuth atan2(dx, dy) is C (mod 180).
+            let azimuth = f64::atan2(dir[0], dir[1]).to_degrees();
+            if !first {
+                let dc = t.axes[4] - prev[4];
+                let mut da = azimuth - prev_azimuth;
+                da -= 360.0 * (da / 360.0).round();
+                assert!(
+                    (dc - da).abs() < 1e-6,
+                    "{miss_deg} {i}: C moved {dc}, azimuth {da}"
+                );
+            }
+            first = false;
+            prev_azimuth = azimuth;
+            prev = t.axes;
+        }
+    }
+}
+
+/// Limits: a solution outside the travel gives way to the other; none inside is
+/// OUT_OF_TRAVEL. Hirth: snapped, the tip still on the target.
+#[test]
+fn tcp_inverse_travel_and_hirth() {
+    let limited = |lo, hi| {
+        machine(&[
+            RotaryAxis {
+                limits: Some([lo, hi]),
+                ..axis(Side::Work, [1.0, 0.0, 0.0], [0.0, 0.0, 100.0])
+            },
+            axis(Side::Work, [0.0, 0.0, 1.0], [0.0; 3]),
+        ])
+    };
+    let free = ac_table();
+    let pose = machine(&[
+        axis(Side::Work, [1.0, 0.0, 0.0], [0.0, 0.0, 100.0]),
+        axis(Side::Work, [0.0, 0.0, 1.0], [0.0; 3]),
+    ])
+    .tcp_forward([0.0, 0.0, 0.0, 30.0, 10.0, 0.0], 50.0)
+    .unwrap();
+    let _ = free;
+    // From A = 29 the closest is A = 30; with A limited to [-90, 0] it is A = -30, C = -170.
+    let t = limited(-90.0, 0.0)
+        .tcp_inverse(&pose, 50.0, [0.0, 0.0, 0.0, 29.0, 0.0, 0.0])
+        .unwrap();
+    assert!(
+        (t.axes[3] + 30.0).abs() < 1e-12 && (t.axes[4] + 170.0).abs() < 1e-9,
+        "{t:?}"
+    );
+    assert_eq!(
+        limited(-10.0, 10.0).tcp_inverse(&pose, 50.0, [0.0; 6]),
+        Err(Error::OutOfTravel)
+    );
+    let hirth = machine(&[
+        axis(Side::Work, [1.0, 0.0, 0.0], [0.0, 0.0, 100.0]),
+        RotaryAxis {
+            hirth: Some(Hirth {
+                offset: 0.0,
+                step: 1.0,
+            }),
+            ..axis(Side::Work, [0.0, 0.0, 1.0], [0.0; 3])
+        },
+    ]);
+    let pose = hirth
+        .tcp_forward([0.0, 0.0, 0.0, 30.0, 10.4, 0.0], 50.0)
+        .unwrap();
+    let t = hirth
+        .tcp_inverse(&pose, 50.0, [0.0, 0.0, 0.0, 29.0, 10.0, 0.0])
+        .unwrap();
+    assert!(
+        (t.axes[4] - 10.0).abs() < 1e-12 && (t.residual[1] + 0.4).abs() < 1e-9,
+        "{t:?}"
+    );
+    let back = hirth.tcp_forward(t.axes, 50.0).unwrap();
+    for k in 0..3 {
+        assert!((back.translation[k] - pose.translation[k]).abs() < 1e-9);
+    }
+}

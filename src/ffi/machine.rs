@@ -5,13 +5,16 @@ use super::frame::{read_frame, write_frame};
 use super::heads::{cncrot_head_table, CHeads, CNCROT_NAME_SIZE};
 use super::{byte, cncrot_status, guard, non_null, read_finite, write};
 use crate::dialects::carr::machine_from_carr;
-use crate::dialects::head_def::{Head, NAME_MAX};
+use crate::dialects::head_def::Head;
 use crate::kinematics::{Choice, Hirth, Machine, RotaryAxis, Rule, Side, MAX_AXES};
 use crate::Frame;
 use core::ffi::c_char;
 
 /// Capacity of `cncrot_machine.axes`.
 pub const CNCROT_MACHINE_AXES: usize = 3;
+/// Machine axes of the five-axis transformation (`cncrot_machine_tcp_forward` /
+/// `_tcp_inverse`): linear `X, Y, Z`, then the rotary axes 1..3.
+pub const CNCROT_MACHINE_TCP_AXES: usize = 6;
 /// The most solutions `cncrot_machine_inverse` returns.
 pub const CNCROT_MACHINE_SOLUTIONS_MAX: usize = 2;
 /// `cncrot_machine_choose`: the solution closest to the current positions.
@@ -45,6 +48,7 @@ pub const CNCROT_MACHINE_HIRTH_STEP_MIN_DEG: f64 = 1e-6;
 
 // The C capacities and limits are the Rust ones: a change on one side fails to compile.
 const _: () = assert!(CNCROT_MACHINE_AXES == MAX_AXES);
+const _: () = assert!(CNCROT_MACHINE_TCP_AXES == crate::kinematics::TCP_AXES);
 const _: () = assert!(CNCROT_MACHINE_SOLUTIONS_MAX == crate::kinematics::MAX_SOLUTIONS);
 const _: () = assert!(CNCROT_MACHINE_TRAVEL_TOLERANCE_DEG == crate::kinematics::TRAVEL_TOLERANCE);
 const _: () = assert!(CNCROT_MACHINE_LENGTH_MAX_MM == crate::kinematics::LENGTH_MAX);
@@ -152,15 +156,13 @@ fn machine_of(m: &cncrot_machine) -> Result<Machine, cncrot_status> {
     for a in m.axes.iter().take(count) {
         machine.push_axis(axis_of(a)?)?;
     }
-    let len = m
-        .name
+    // SAFETY: `c_char` is `i8` or `u8`: the same size and alignment as `u8`, every bit
+    // pattern valid. Read in place: a copy of the name cost a loop of its own.
+    let name: &[u8; CNCROT_NAME_SIZE] = unsafe { &*m.name.as_ptr().cast() };
+    let len = name
         .iter()
         .position(|&c| c == 0)
         .ok_or(cncrot_status::NameTooLong)?;
-    let mut name = [0u8; NAME_MAX];
-    for (n, &c) in name.iter_mut().zip(m.name.iter().take(len)) {
-        *n = byte(c);
-    }
     machine.set_name(name.get(..len).unwrap_or(&[]))?;
     Ok(machine)
 }
@@ -744,6 +746,132 @@ pub unsafe extern "C" fn cncrot_machine_follow(
         let next = m.follow_tool_tip(from, to, lin, tool_length)?;
         write::<3>(linear_to, next)?;
         Ok(cncrot_status::Ok)
+    })
+}
+
+/// The five-axis transformation, forward: the tool's pose in workpiece coordinates at
+/// machine axes `axes` — `X, Y, Z` (mm, the machine coordinates of the tool adapter's
+/// reference point, as `cncrot_machine_follow` takes them) then the rotary positions 1..3
+/// (degrees, in the order the axes were added; unused ones 0) — with a tool of length
+/// `tool_length` (mm) along the tool's base direction. `pose` is a 4x4 frame, row-major, in
+/// the workpiece coordinates of `cncrot_machine_forward`: its rotation is that function's,
+/// its third column the tool direction, its translation the tool tip
+/// `W⁻¹·((X, Y, Z) + T·(−L·b))`.
+///
+/// Real-time: no allocation, no panic, a bounded number of operations (no loop depends on
+/// the values), stack within the hot-path bound.
+///
+/// Returns 0, or with `pose` untouched: `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_NOT_FINITE` (an axis, `tool_length`), `CNCROT_STATUS_BAD_ARGUMENT` (an
+/// unused rotary position not 0), `CNCROT_STATUS_OUT_OF_RANGE` (`tool_length` beyond
+/// ±`CNCROT_MACHINE_LENGTH_MAX_MM`, a result that overflows), `CNCROT_STATUS_BAD_ARGUMENT`,
+/// `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`,
+/// `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a machine: see
+/// `cncrot_machine`).
+///
+/// # Safety
+/// `machine` points to a `cncrot_machine`, `axes` to 6 and `pose` to 16 doubles.
+///
+/// ```c
+/// double ax[6] = {10, 20, 150, 30, 40, 0}, pose[16];
+/// cncrot_machine_tcp_forward(&m, ax, 50.0, pose);   // tip (pose[3], pose[7], pose[11])
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_machine_tcp_forward(
+    machine: *const cncrot_machine,
+    axes: *const f64,
+    tool_length: f64,
+    pose: *mut f64,
+) -> i32 {
+    guard(|| {
+        non_null(&[machine.is_null(), axes.is_null(), pose.is_null()])?;
+        let ax = read_finite::<6>(axes)?;
+        if !tool_length.is_finite() {
+            return Err(cncrot_status::NotFinite);
+        }
+        let m = load(machine)?;
+        let f = m.tcp_forward(ax, tool_length)?;
+        write_frame(pose, &f)?;
+        Ok(cncrot_status::Ok)
+    })
+}
+
+/// The five-axis transformation, inverse: the machine axes (`X, Y, Z`, rotary 1..3, as
+/// `cncrot_machine_tcp_forward` takes them) that put the tip of a tool of length
+/// `tool_length` at the translation of `pose` (a 4x4 frame, row-major, in workpiece
+/// coordinates) with the tool direction of its third column; with three rotary axes the
+/// whole rotation of `pose`, with fewer the direction only (the turn about the tool is
+/// left to the frame, as in `cncrot_machine_inverse`).
+///
+/// The rotary solution is the one continuous with `previous` (the last cycle's output):
+/// each solution's whole turns unwound toward the previous positions, within the travel
+/// limits and Hirth grids, the closest taken (as `cncrot_machine_choose` with
+/// `CNCROT_CHOOSE_CLOSEST`); then the linear axes `W·tip − T·(−L·b)`. At a pole (the
+/// direction along a rotary axis) the free axis stays at its previous position
+/// (`CNCROT_STATUS_FREE_AXIS`); near one the exact solution is taken, so the axis turns as
+/// fast as the path requires and no faster. `previous`'s linear part is only checked for
+/// finiteness. On a Hirth axis the position is snapped (`CNCROT_STATUS_SNAPPED`): the
+/// linear axes still put the tip on the target; the direction is off by the residual.
+///
+/// Real-time: no allocation, no panic, a bounded number of operations, stack within the
+/// hot-path bound.
+///
+/// Returns 0, `CNCROT_STATUS_FREE_AXIS`, `CNCROT_STATUS_SNAPPED`, or with `axes`
+/// untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE` (the pose,
+/// `tool_length`, `previous`), `CNCROT_STATUS_NOT_A_ROTATION`,
+/// `CNCROT_STATUS_UNREACHABLE` (no rotary positions give the direction),
+/// `CNCROT_STATUS_OUT_OF_TRAVEL` (only outside the travel limits),
+/// `CNCROT_STATUS_BAD_ARGUMENT` (an unused previous rotary position not 0),
+/// `CNCROT_STATUS_OUT_OF_RANGE` (a previous rotary position of magnitude
+/// `CNCROT_MACHINE_ANGLE_MAX_DEG` or more, `tool_length` beyond
+/// ±`CNCROT_MACHINE_LENGTH_MAX_MM`, a result that overflows), `CNCROT_STATUS_BAD_ARGUMENT`,
+/// `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`,
+/// `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a machine: see
+/// `cncrot_machine`).
+///
+/// # Safety
+/// `machine` points to a `cncrot_machine`, `pose` to 16, `previous` and `axes` to 6
+/// doubles (`axes` may be `previous`).
+///
+/// ```c
+/// double prev[6] = {0}, ax[6];
+/// for (int i = 0; i < n; i++) {          // one CL point per interpolation cycle
+///   if (cncrot_machine_tcp_inverse(&m, poses[i], 50.0, prev, ax) < 0) break;
+///   memcpy(prev, ax, sizeof ax);
+/// }
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_machine_tcp_inverse(
+    machine: *const cncrot_machine,
+    pose: *const f64,
+    tool_length: f64,
+    previous: *const f64,
+    axes: *mut f64,
+) -> i32 {
+    guard(|| {
+        non_null(&[
+            machine.is_null(),
+            pose.is_null(),
+            previous.is_null(),
+            axes.is_null(),
+        ])?;
+        let target = read_frame(pose)?;
+        let prev = read_finite::<6>(previous)?;
+        if !tool_length.is_finite() {
+            return Err(cncrot_status::NotFinite);
+        }
+        let m = load(machine)?;
+        let t = m.tcp_inverse(&target, tool_length, prev)?;
+        write::<6>(axes, t.axes)?;
+        Ok(if t.free {
+            cncrot_status::FreeAxis
+        } else if t.residual.iter().any(|&r| r != 0.0) {
+            cncrot_status::Snapped
+        } else {
+            cncrot_status::Ok
+        })
     })
 }
 

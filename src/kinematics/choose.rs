@@ -3,7 +3,7 @@
 
 use super::{Machine, RotaryAxis, MAX_AXES, MAX_SOLUTIONS, TRAVEL_TOLERANCE};
 use crate::math::{ceil, round, turns_toward};
-use crate::{check_rotation, mul, transpose, Error, Matrix, CLOSEST_MAX};
+use crate::{check_rotation, mul, transpose, Error, Matrix, CLOSEST_MAX, IDENTITY};
 
 /// Which solution [`Machine::choose`] takes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -123,6 +123,22 @@ impl Machine {
         current: [f64; MAX_AXES],
         rule: Rule,
     ) -> Result<Choice, Error> {
+        let c = self.settle(target, current, rule)?;
+        let reached = self.rotation_at(c.axes);
+        Ok(Choice {
+            remaining: mul(&transpose(&reached), target),
+            ..c
+        })
+    }
+
+    /// [`Machine::choose`] without the remaining rotation (left the identity): what the
+    /// five-axis transformation needs, which computes the reached pose itself.
+    pub(crate) fn settle(
+        &self,
+        target: &Matrix,
+        current: [f64; MAX_AXES],
+        rule: Rule,
+    ) -> Result<Choice, Error> {
         check_rotation(target)?;
         let current = self.positions(current)?;
         // Written so that NaN refuses.
@@ -203,11 +219,10 @@ impl Machine {
         let Some(&(axes, residual, _)) = pick.and_then(|i| placed.get(i)) else {
             return Err(Error::OutOfTravel);
         };
-        let reached = self.rotation_at(axes);
         Ok(Choice {
             axes,
             residual,
-            remaining: mul(&transpose(&reached), target),
+            remaining: IDENTITY,
             free: solutions.free,
         })
     }

@@ -2,8 +2,8 @@
 //! (Paden–Kahan subproblems: a rotation about one axis that takes one direction onto
 //! another, and two rotations about two axes that do).
 
-use super::{about_axis, Machine, MAX_AXES, MAX_SOLUTIONS, REACH_TOLERANCE};
-use crate::math::{abs, atan2_deg, sqrt, wrap_deg};
+use super::{about_axis, about_axis_sc, Machine, MAX_AXES, MAX_SOLUTIONS, REACH_TOLERANCE};
+use crate::math::{abs, atan2_deg, atan2_deg4, sin_cos_deg4, sqrt, wrap_deg};
 use crate::vector::{cross, dot};
 use crate::{check_rotation, mul, rotate, transpose, Error, Matrix, Vector};
 
@@ -47,6 +47,12 @@ const VERIFY: f64 = 1e-9;
 /// (both made perpendicular to `u` first; their lengths do not matter). `None` when `x` is
 /// along `u`: every angle does.
 fn turn_onto(u: Vector, x: Vector, y: Vector) -> Option<f64> {
+    turn_pair(u, x, y).map(|[s, c]| atan2_deg(s, c))
+}
+
+/// The arguments `[sine, cosine]` (scaled alike) of the `atan2` that [`turn_onto`] takes:
+/// so that a solver can take several angles in one four-lane call, with the same bits.
+pub(crate) fn turn_pair(u: Vector, x: Vector, y: Vector) -> Option<[f64; 2]> {
     let ux = dot(u, x);
     let uy = dot(u, y);
     let xp: Vector = core::array::from_fn(|k| x[k] - ux * u[k]);
@@ -54,7 +60,7 @@ fn turn_onto(u: Vector, x: Vector, y: Vector) -> Option<f64> {
     if dot(xp, xp) <= POLE_SINE * POLE_SINE {
         return None;
     }
-    Some(atan2_deg(dot(u, cross(xp, yp)), dot(xp, yp)))
+    Some([dot(u, cross(xp, yp)), dot(xp, yp)])
 }
 
 /// Subproblem 1: `Rot(u, φ)·x = y`. The free angle `free` when `x` is along `u`.
@@ -125,13 +131,33 @@ fn two(u1: Vector, u2: Vector, b: Vector, d: Vector, free: [f64; 2]) -> Result<P
     let gamma = sqrt(h.max(0.0));
     let p: Vector = core::array::from_fn(|i| a1 * u1[i] + p2 * e2[i]);
     let signs: &[f64] = if gamma > 0.0 { &[1.0, -1.0] } else { &[1.0] };
-    for &sign in signs {
+    // Both solutions' four angles in one four-lane atan2 (the same bits as one by one).
+    let (mut ys, mut xs) = ([0.0; 4], [1.0; 4]);
+    let mut found = [false; 2];
+    for (k, &sign) in signs.iter().enumerate() {
         let c: Vector = core::array::from_fn(|i| p[i] + sign * gamma * n[i]);
-        if let (Some(phi2), Some(phi1)) = (turn_onto(u2, b, c), turn_onto(u1, c, d)) {
-            if let Some(slot) = out.phi.get_mut(out.count) {
-                *slot = [phi1, phi2];
-                out.count += 1;
+        if let (Some([y2, x2]), Some([y1, x1])) = (turn_pair(u2, b, c), turn_pair(u1, c, d)) {
+            if let (Some(f), Some(y), Some(x)) = (
+                found.get_mut(k),
+                ys.get_mut(2 * k..2 * k + 2),
+                xs.get_mut(2 * k..2 * k + 2),
+            ) {
+                *f = true;
+                y.copy_from_slice(&[y1, y2]);
+                x.copy_from_slice(&[x1, x2]);
             }
+        }
+    }
+    let angles = atan2_deg4(ys, xs);
+    for (k, _) in found.iter().enumerate().filter(|(_, &f)| f) {
+        if let (Some(slot), Some(&[phi1, phi2])) = (
+            out.phi.get_mut(out.count),
+            angles
+                .get(2 * k..2 * k + 2)
+                .and_then(|a| <&[f64; 2]>::try_from(a).ok()),
+        ) {
+            *slot = [phi1, phi2];
+            out.count += 1;
         }
     }
     if out.count == 0 {
@@ -217,12 +243,36 @@ impl Machine {
                 let target_u3 = rotate(&m, u3);
                 phis = two(l1.axis, l2.axis, u3, target_u3, [free_phi(0), free_phi(1)])?;
                 let x = perpendicular_to(u3);
-                for (slot, p) in third.iter_mut().zip(&phis.phi) {
+                // Sines and cosines of both solutions' first two angles, then both third
+                // angles, each in one four-lane call (the same bits as one by one).
+                let [p, q] = phis.phi;
+                let (s, c) = sin_cos_deg4([-p[0], -p[1], -q[0], -q[1]]);
+                let (mut ys, mut xs) = ([0.0; 4], [1.0; 4]);
+                for (k, _) in third.iter().enumerate().take(phis.count) {
+                    let at = |j: usize| (s.get(j).copied(), c.get(j).copied());
+                    let (Some(s1), Some(c1)) = at(2 * k) else {
+                        continue;
+                    };
+                    let (Some(s2), Some(c2)) = at(2 * k + 1) else {
+                        continue;
+                    };
                     let back = mul(
-                        &about_axis(l2.axis, -p[1]),
-                        &mul(&about_axis(l1.axis, -p[0]), &m),
+                        &about_axis_sc(l2.axis, s2, c2),
+                        &mul(&about_axis_sc(l1.axis, s1, c1), &m),
                     );
-                    *slot = turn_onto(u3, x, rotate(&back, x)).unwrap_or(0.0);
+                    // A lane left at (0, 1) gives 0: the angle where x would lie along u3
+                    // (never: x is perpendicular to it).
+                    if let (Some([y, xx]), Some(ty), Some(tx)) = (
+                        turn_pair(u3, x, rotate(&back, x)),
+                        ys.get_mut(k),
+                        xs.get_mut(k),
+                    ) {
+                        (*ty, *tx) = (y, xx);
+                    }
+                }
+                let t = atan2_deg4(ys, xs);
+                for (slot, angle) in third.iter_mut().zip(t) {
+                    *slot = angle;
                 }
             }
             _ => return Err(Error::BadArgument),

@@ -1247,6 +1247,133 @@ fn machines() -> Vec<Call> {
             ));
             t.f64s(&next);
         }),
+        ("cncrot_machine_tcp_forward", |t| unsafe {
+            let m = head();
+            let mut pose = [0.0; 16];
+            let ax = [10.0, 20.0, 30.0, 40.0, 50.0, 0.0];
+            t.status(cncrot_machine_tcp_forward(
+                &m,
+                ax.as_ptr(),
+                100.0,
+                pose.as_mut_ptr(),
+            ));
+            t.f64s(&pose);
+            // Pole: B = 0 puts the tool along C.
+            let pole = [1.0, 2.0, 3.0, 70.0, 0.0, 0.0];
+            t.status(cncrot_machine_tcp_forward(
+                &m,
+                pole.as_ptr(),
+                0.0,
+                pose.as_mut_ptr(),
+            ));
+            t.f64s(&pose);
+            let bad = [0.0, 0.0, f64::NAN, 0.0, 0.0, 0.0];
+            t.status(cncrot_machine_tcp_forward(
+                &m,
+                bad.as_ptr(),
+                1.0,
+                pose.as_mut_ptr(),
+            ));
+            let unused = [0.0, 0.0, 0.0, 0.0, 0.0, 1.0];
+            t.status(cncrot_machine_tcp_forward(
+                &m,
+                unused.as_ptr(),
+                1.0,
+                pose.as_mut_ptr(),
+            ));
+            t.status(cncrot_machine_tcp_forward(
+                &m,
+                ax.as_ptr(),
+                1e7,
+                pose.as_mut_ptr(),
+            ));
+            t.status(cncrot_machine_tcp_forward(
+                &m,
+                null(),
+                1.0,
+                pose.as_mut_ptr(),
+            ));
+            t.f64s(&pose);
+        }),
+        ("cncrot_machine_tcp_inverse", |t| unsafe {
+            let m = head();
+            let mut pose = [0.0; 16];
+            let ax = [10.0, 20.0, 30.0, 40.0, 50.0, 0.0];
+            cncrot_machine_tcp_forward(&m, ax.as_ptr(), 100.0, pose.as_mut_ptr());
+            let prev = [0.0, 0.0, 0.0, 400.0, 45.0, 0.0];
+            let mut out = [0.0; 6];
+            t.status(cncrot_machine_tcp_inverse(
+                &m,
+                pose.as_ptr(),
+                100.0,
+                prev.as_ptr(),
+                out.as_mut_ptr(),
+            ));
+            t.f64s(&out);
+            // At the pole C is free: it stays at 400.
+            t.status(cncrot_machine_tcp_inverse(
+                &m,
+                IDF.as_ptr(),
+                100.0,
+                prev.as_ptr(),
+                out.as_mut_ptr(),
+            ));
+            t.f64s(&out);
+            // B beyond its travel of ±100°: a tilt of 120° cannot be reached.
+            let far = [0.0, 0.0, 0.0, 0.0, 100.0, 0.0];
+            let mut tilt = [0.0; 16];
+            let m0 = {
+                let mut z = m;
+                z.axes[1].min_deg = 0.0;
+                z.axes[1].max_deg = 0.0;
+                z
+            };
+            cncrot_machine_tcp_forward(
+                &m0,
+                [0.0, 0.0, 0.0, 0.0, 120.0, 0.0].as_ptr(),
+                0.0,
+                tilt.as_mut_ptr(),
+            );
+            t.status(cncrot_machine_tcp_inverse(
+                &m,
+                tilt.as_ptr(),
+                0.0,
+                far.as_ptr(),
+                out.as_mut_ptr(),
+            ));
+            let mut skew = IDF;
+            skew[0] = 2.0;
+            t.status(cncrot_machine_tcp_inverse(
+                &m,
+                skew.as_ptr(),
+                0.0,
+                prev.as_ptr(),
+                out.as_mut_ptr(),
+            ));
+            let nan = [f64::NAN, 0.0, 0.0, 0.0, 0.0, 0.0];
+            t.status(cncrot_machine_tcp_inverse(
+                &m,
+                pose.as_ptr(),
+                0.0,
+                nan.as_ptr(),
+                out.as_mut_ptr(),
+            ));
+            t.status(cncrot_machine_tcp_inverse(
+                &m,
+                pose.as_ptr(),
+                f64::INFINITY,
+                prev.as_ptr(),
+                out.as_mut_ptr(),
+            ));
+            t.status(cncrot_machine_tcp_inverse(
+                &m,
+                pose.as_ptr(),
+                0.0,
+                prev.as_ptr(),
+                null_mut(),
+            ));
+            t.f64s(&out);
+        }),
     ]
 }
 

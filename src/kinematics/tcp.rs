@@ -1,0 +1,266 @@
+//! The five-axis transformation (tool centre point): the tool tip and direction in
+//! workpiece coordinates from every machine axis, linear and rotary, and back, as a
+//! controller computes it in each interpolation cycle (SINUMERIK `TRAORI`, Heidenhain
+//! `M128` / `FUNCTION TCPM`, Fanuc `G43.4` / `G43.5`) and a post-processor for each CL
+//! point.
+//!
+//! The linear axes `X, Y, Z` are the machine coordinates of the tool adapter's reference
+//! point: the origin of the axis points `p_k` when every rotary axis is at its initial
+//! position (so that `X = Y = Z = 0` with every turn 0 puts the adapter at the machine
+//! origin). For positions `θ` and a tool of length `L` along the base direction `b`:
+//!
+//! - the tool tip in machine coordinates is `(X, Y, Z) + T·(−L·b)` (the head's turns carry
+//!   the tip around their pivots; the linear axes carry the head);
+//! - in workpiece coordinates it is `W⁻¹·((X, Y, Z) + T·(−L·b))` (the table's turns carry
+//!   the workpiece);
+//! - the tool direction is the third column of `F = W⁻¹·T·B`, which is also the rotation of
+//!   the pose.
+//!
+//! The inverse takes the rotary solution that [`Machine::choose`] takes from the previous
+//! positions (the last cycle's), then the linear axes that put the tip on the target:
+//! `(X, Y, Z) = W·tip − T·(−L·b)`.
+
+use super::{about_axis_sc, Choice, Machine, Rule, Side, LENGTH_MAX, MAX_AXES};
+use crate::math::{abs, sin_cos_deg4};
+use crate::{mul, rotate, transpose, Error, Frame, Matrix, Vector, IDENTITY};
+
+/// Machine axes of the transformation: linear `X, Y, Z` (the tool adapter's reference
+/// point), then the rotary axes in the order they were added (unused ones 0).
+pub const TCP_AXES: usize = 6;
+
+/// What [`Machine::tcp_inverse`] returns.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tcp {
+    /// `X, Y, Z` (mm) then the rotary positions (degrees; unused ones 0).
+    pub axes: [f64; TCP_AXES],
+    /// Hirth snapping: the rotary position moved to minus the exact one (0 without a grid).
+    /// The linear axes keep the tip on the target; the direction is off by the residual.
+    pub residual: [f64; MAX_AXES],
+    /// A singular pose: a free rotary axis stayed at its previous position.
+    pub free: bool,
+}
+
+impl Machine {
+    /// The tool's pose in workpiece coordinates at machine axes `axes` (`X, Y, Z` in mm,
+    /// then the rotary positions in degrees, unused ones 0) with a tool of length
+    /// `tool_length` (mm): the rotation `F` of [`Machine::forward`], its third column the
+    /// tool direction, and as translation the tool tip.
+    ///
+    /// Errors: [`Error::NotFinite`], [`Error::BadArgument`] (an unused rotary position not
+    /// 0), [`Error::OutOfRange`] (a tool length beyond ±[`LENGTH_MAX`], a result that
+    /// overflows).
+    ///
+    /// ```
+    /// use cncrot::kinematics::{Machine, RotaryAxis, Side};
+    /// // A table tilting about X through (0, 0, 100) (A), carrying a rotary table about Z (C).
+    /// let m = Machine::new([0.0, 0.0, 1.0]).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Work, [1.0, 0.0, 0.0], [0.0, 0.0, 100.0])).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Work, [0.0, 0.0, 1.0], [0.0; 3])).unwrap();
+    /// // A = 90°: the workpiece tilts up about the line y = 0, z = 100; the tool, 50 mm long,
+    /// // with its adapter at (0, 0, 150), has its tip at the machine point (0, 0, 100),
+    /// // which is on the tilt axis: it stays the workpiece point (0, 0, 100).
+    /// let pose = m.tcp_forward([0.0, 0.0, 150.0, 90.0, 0.0, 0.0], 50.0).unwrap();
+    /// assert!(pose.translation[1].abs() < 1e-12 && (pose.translation[2] - 100.0).abs() < 1e-12);
+    /// // The tool, along the machine's +Z, is along +Y of the workpiece tilted by 90°:
+    /// // Rx(-90°)·e_z = (0, 1, 0).
+    /// assert!((pose.rotation[1][2] - 1.0).abs() < 1e-15);
+    /// ```
+    pub fn tcp_forward(&self, axes: [f64; TCP_AXES], tool_length: f64) -> Result<Frame, Error> {
+        if !(axes.iter().all(|x| x.is_finite()) && tool_length.is_finite()) {
+            return Err(Error::NotFinite);
+        }
+        let theta = self.positions([axes[3], axes[4], axes[5]])?;
+        length_in_range(tool_length)?;
+        let r = self.turns(theta);
+        let at = self.tool_point(&r, self.tip_in_tool(tool_length));
+        let machine: Vector = core::array::from_fn(|k| axes[k] + at[k]);
+        let pose = Frame {
+            rotation: self.rotation_of(&r),
+            translation: self.work_point_inverse(&r, machine),
+        };
+        finite_frame(pose)
+    }
+
+    /// The machine axes that put the tool tip of a tool of length `tool_length` (mm) at
+    /// the translation of `pose` with the tool direction of its third column: the rotary
+    /// solution continuous with `previous` (the last cycle's axes, as `tcp_forward` takes
+    /// them; its linear part is only checked), then the linear axes.
+    ///
+    /// The rotary positions are those [`Machine::choose`] takes with [`Rule::Closest`]
+    /// from the previous rotary positions: whole turns unwound toward them, within the
+    /// travel limits and Hirth grids. With three rotary axes the whole rotation of `pose`
+    /// is matched; with fewer, the tool direction, and the turn about the tool is left to
+    /// the frame. At a pole (the direction along a rotary axis, within
+    /// [`super::POLE_SINE`]) the free axis stays at its previous position
+    /// ([`Tcp::free`]); near one, the exact solution, so that an axis turns as fast as
+    /// the path requires and no faster.
+    ///
+    /// Errors: [`Error::Unreachable`], [`Error::OutOfTravel`], [`Error::NotARotation`],
+    /// [`Error::NotFinite`], [`Error::BadArgument`] (an unused previous rotary position
+    /// not 0), [`Error::OutOfRange`] (a previous rotary position of magnitude
+    /// [`crate::CLOSEST_MAX`] or more, a tool length beyond ±[`LENGTH_MAX`], a result
+    /// that overflows).
+    ///
+    /// ```
+    /// use cncrot::kinematics::{Machine, RotaryAxis, Side};
+    /// use cncrot::Frame;
+    /// let m = Machine::new([0.0, 0.0, 1.0]).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Work, [1.0, 0.0, 0.0], [0.0, 0.0, 100.0])).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Work, [0.0, 0.0, 1.0], [0.0; 3])).unwrap();
+    /// let pose = m.tcp_forward([10.0, 20.0, 150.0, 30.0, 40.0, 0.0], 50.0).unwrap();
+    /// let t = m.tcp_inverse(&pose, 50.0, [0.0, 0.0, 0.0, 25.0, 45.0, 0.0]).unwrap();
+    /// let want = [10.0, 20.0, 150.0, 30.0, 40.0, 0.0];
+    /// assert!(t.axes.iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-9));
+    /// ```
+    pub fn tcp_inverse(
+        &self,
+        pose: &Frame,
+        tool_length: f64,
+        previous: [f64; TCP_AXES],
+    ) -> Result<Tcp, Error> {
+        self.tcp_inverse_with(pose, tool_length, previous, Rule::Closest)
+    }
+
+    /// [`Machine::tcp_inverse`] with the rotary solution picked by `rule`: a priority axis
+    /// and its direction ([`Rule::Minus`] / [`Rule::Plus`]: the solution with that axis'
+    /// lower or higher position, as `G53.1 P1`/`P2` or `SEQ-`/`SEQ+` ask), or the other
+    /// solution of the pair ([`Rule::Inverse`]).
+    pub fn tcp_inverse_with(
+        &self,
+        pose: &Frame,
+        tool_length: f64,
+        previous: [f64; TCP_AXES],
+        rule: Rule,
+    ) -> Result<Tcp, Error> {
+        let tip = pose.translation;
+        if !(tip.iter().all(|x| x.is_finite())
+            && tool_length.is_finite()
+            && previous.iter().all(|x| x.is_finite()))
+        {
+            return Err(Error::NotFinite);
+        }
+        length_in_range(tool_length)?;
+        let c: Choice = self.settle(
+            &pose.rotation,
+            [previous[3], previous[4], previous[5]],
+            rule,
+        )?;
+        let r = self.turns(c.axes);
+        let at = self.tool_point(&r, self.tip_in_tool(tool_length));
+        let on = self.work_point(&r, tip);
+        let [x, y, z] = core::array::from_fn(|k| on[k] - at[k] + 0.0);
+        let [a, b, cc] = c.axes;
+        let axes = [x, y, z, a, b, cc];
+        if !axes.iter().all(|v| v.is_finite()) {
+            return Err(Error::OutOfRange);
+        }
+        Ok(Tcp {
+            axes,
+            residual: c.residual,
+            free: c.free,
+        })
+    }
+
+    /// The tool tip in the tool adapter's system: `−L·b`.
+    fn tip_in_tool(&self, length: f64) -> Vector {
+        self.tool_direction().map(|x| -length * x + 0.0)
+    }
+
+    /// The turn of each axis at positions `theta` as a rotation, in the order the axes
+    /// were added (the identity for unused ones): every sine and cosine in one four-lane
+    /// call.
+    pub(crate) fn turns(&self, theta: [f64; MAX_AXES]) -> [Matrix; MAX_AXES] {
+        let t = [
+            self.turn(0, theta),
+            self.turn(1, theta),
+            self.turn(2, theta),
+            0.0,
+        ];
+        let (s, c) = sin_cos_deg4(t);
+        core::array::from_fn(|k| match (self.axes().get(k), s.get(k), c.get(k)) {
+            (Some(a), Some(&sk), Some(&ck)) => about_axis_sc(a.direction, sk, ck),
+            _ => IDENTITY,
+        })
+    }
+
+    /// `T·q`: a point of the tool adapter's system in machine coordinates (the head's
+    /// axes, innermost first).
+    pub(crate) fn tool_point(&self, r: &[Matrix; MAX_AXES], q: Vector) -> Vector {
+        self.axes()
+            .iter()
+            .zip(r)
+            .rev()
+            .filter(|(a, _)| a.side == Side::Tool)
+            .fold(q, |q, (a, rk)| about_point(rk, a.point, q))
+    }
+
+    /// `W·q`: a workpiece point in machine coordinates (the table's axes, innermost
+    /// first).
+    pub(crate) fn work_point(&self, r: &[Matrix; MAX_AXES], q: Vector) -> Vector {
+        self.axes()
+            .iter()
+            .zip(r)
+            .rev()
+            .filter(|(a, _)| a.side == Side::Work)
+            .fold(q, |q, (a, rk)| about_point(rk, a.point, q))
+    }
+
+    /// `W⁻¹·q`: a machine point in workpiece coordinates (the table's axes undone,
+    /// outermost first).
+    pub(crate) fn work_point_inverse(&self, r: &[Matrix; MAX_AXES], q: Vector) -> Vector {
+        self.axes()
+            .iter()
+            .zip(r)
+            .filter(|(a, _)| a.side == Side::Work)
+            .fold(q, |q, (a, rk)| about_point(&transpose(rk), a.point, q))
+    }
+
+    /// The rotation of `F = W⁻¹·T·B` from the turns: the chain's product, the identity
+    /// factors left out.
+    pub(crate) fn rotation_of(&self, r: &[Matrix; MAX_AXES]) -> Matrix {
+        let (chain, n) = self.chain();
+        let mut out: Option<Matrix> = None;
+        for link in chain.iter().take(n) {
+            let Some(rk) = r.get(link.index) else {
+                continue;
+            };
+            let h = if link.sign < 0.0 { transpose(rk) } else { *rk };
+            out = Some(match out {
+                None => h,
+                Some(o) => mul(&o, &h),
+            });
+        }
+        let out = out.unwrap_or(IDENTITY);
+        if self.base_is_identity() {
+            out
+        } else {
+            mul(&out, &self.base())
+        }
+    }
+}
+
+/// `R·(q − p) + p`: the turn `R` about the line through `p`.
+#[inline(always)]
+fn about_point(r: &Matrix, p: Vector, q: Vector) -> Vector {
+    let d: Vector = core::array::from_fn(|k| q[k] - p[k]);
+    let t = rotate(r, d);
+    core::array::from_fn(|k| t[k] + p[k] + 0.0)
+}
+
+fn length_in_range(length: f64) -> Result<(), Error> {
+    if abs(length) <= LENGTH_MAX {
+        Ok(())
+    } else {
+        Err(Error::OutOfRange)
+    }
+}
+
+fn finite_frame(f: Frame) -> Result<Frame, Error> {
+    let ok = f.rotation.iter().flatten().all(|x| x.is_finite())
+        && f.translation.iter().all(|x| x.is_finite());
+    if ok {
+        Ok(f)
+    } else {
+        Err(Error::OutOfRange)
+    }
+}
