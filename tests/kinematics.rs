@@ -1006,8 +1006,8 @@ fn tcp_forward_with_a_sideways_tool() {
         .tcp_forward([5.0, 6.0, 7.0, 90.0, 0.0, 0.0], 100.0)
         .unwrap();
     let want = [5.0, 6.0 - 100.0, 7.0];
-    for k in 0..3 {
-        assert!((pose.translation[k] - want[k]).abs() < 1e-12, "{pose:?}");
+    for (got, want) in pose.translation.iter().zip(want) {
+        assert!((got - want).abs() < 1e-12, "{pose:?}");
     }
     assert!((pose.rotation[1][2] - 1.0).abs() < 1e-15, "{pose:?}");
 }
@@ -1091,8 +1091,8 @@ fn tcp_inverse_ac_table_by_hand() {
         .tcp_inverse(&pose, 50.0, [0.0, 0.0, 0.0, 20.0, 80.0, 0.0])
         .unwrap();
     let want = [0.0, 50.0 + 5.0 * s3, 155.0 - 50.0 * s3, 30.0, 90.0, 0.0];
-    for k in 0..6 {
-        assert!((t.axes[k] - want[k]).abs() < 1e-12, "{:?}", t.axes);
+    for (got, want) in t.axes.iter().zip(want) {
+        assert!((got - want).abs() < 1e-12, "{:?}", t.axes);
     }
     // The other solution (A = -30°, C = -90°) from previous positions near it.
     let t = m
@@ -1125,8 +1125,8 @@ fn tcp_path_through_the_pole_keeps_the_other_axis_still() {
         let pose = m.tcp_forward(truth, 80.0).unwrap();
         let t = m.tcp_inverse(&pose, 80.0, prev).unwrap();
         assert_eq!(t.free, a == 0.0, "{a}");
-        for k in 0..6 {
-            assert!((t.axes[k] - truth[k]).abs() < 1e-9, "{a} {:?}", t.axes);
+        for (got, want) in t.axes.iter().zip(truth) {
+            assert!((got - want).abs() < 1e-9, "{a} {:?}", t.axes);
         }
         prev = t.axes;
     }
