@@ -636,6 +636,44 @@ $TC_CARR34[1]=\"HEAD_CB\"
             b.time("cncrot_program_axes", class, &states, &mut |p| unsafe {
                 cncrot_program_axes(p, m, cur.as_ptr(), ax.as_mut_ptr())
             });
+            // The five-axis transformation: poses (tip and direction) at random axes, and back
+            // from previous positions a cycle away (0.1° off on every rotary axis).
+            let six: Vec<[f64; 6]> = pos
+                .iter()
+                .map(|p| [10.0 * p[0], 5.0 * p[1], 2.0 * p[2], p[0], p[1], p[2]])
+                .collect();
+            let tcp: Vec<([f64; 16], [f64; 6])> = six
+                .iter()
+                .map(|a| {
+                    let mut pose = [0.0; 16];
+                    unsafe { cncrot_machine_tcp_forward(m, a.as_ptr(), 120.0, pose.as_mut_ptr()) };
+                    let mut prev = *a;
+                    for (k, x) in prev.iter_mut().enumerate().skip(3) {
+                        if *x != 0.0 || k == 3 {
+                            *x += 0.1;
+                        }
+                    }
+                    (pose, prev)
+                })
+                .collect();
+            let mut out6 = [0.0; 6];
+            b.time("cncrot_machine_tcp_forward", class, &six, &mut |a| unsafe {
+                cncrot_machine_tcp_forward(m, a.as_ptr(), 120.0, f.as_mut_ptr())
+            });
+            b.time(
+                "cncrot_machine_tcp_inverse",
+                class,
+                &tcp,
+                &mut |(pose, prev)| unsafe {
+                    cncrot_machine_tcp_inverse(
+                        m,
+                        pose.as_ptr(),
+                        120.0,
+                        prev.as_ptr(),
+                        out6.as_mut_ptr(),
+                    )
+                },
+            );
             let mut lin = [0.0; 3];
             b.time("cncrot_machine_follow", class, &pos, &mut |p| unsafe {
                 cncrot_machine_follow(
@@ -1077,6 +1115,27 @@ fn main() {
         .map(|r| r.median / r.base)
         .fold(0.0, f64::max);
     println!("worst class median / random median: {worst:.2} (goal: at most 2)");
+    // The five-axis transformation runs every interpolation cycle: its cost against a
+    // conversion measured in the same run (goal: at most 3).
+    let median = |f: &str, c: &str| {
+        b.rows
+            .iter()
+            .find(|r| r.function == f && r.class == c)
+            .map(|r| r.median)
+    };
+    if let Some(convert) = median("cncrot_convert", "random") {
+        for f in ["cncrot_machine_tcp_forward", "cncrot_machine_tcp_inverse"] {
+            for c in ["fork head", "three axes"] {
+                if let Some(t) = median(f, c) {
+                    let ratio = t / convert.max(ns);
+                    println!(
+                        "{f} {c} / cncrot_convert random: {ratio:.2} (goal: at most 3){}",
+                        if ratio > 3.0 { "  GOAL MISSED" } else { "" }
+                    );
+                }
+            }
+        }
+    }
 }
 
 fn cpu_name() -> String {

@@ -11,6 +11,23 @@ pub(super) unsafe fn read_frame(p: *const f64) -> Result<Frame, cncrot_status> {
     Ok(Frame::from_homogeneous(&h)?)
 }
 
+/// A 4x4 frame read as [`read_frame`] reads it, but with its rotation left to be checked
+/// by the Rust function it goes to (which checks it anyway): so that a call in the
+/// interpolation cycle checks it once.
+///
+/// # Safety
+/// `p` is non-NULL and points to 16 readable doubles.
+pub(super) unsafe fn read_frame_unchecked(p: *const f64) -> Result<Frame, cncrot_status> {
+    let v: [f64; 16] = read_finite(p)?;
+    if [v[12], v[13], v[14], v[15]] != [0.0, 0.0, 0.0, 1.0] {
+        return Err(cncrot_status::NotARotation);
+    }
+    Ok(Frame {
+        rotation: [[v[0], v[1], v[2]], [v[4], v[5], v[6]], [v[8], v[9], v[10]]],
+        translation: [v[3], v[7], v[11]],
+    })
+}
+
 /// # Safety
 /// `p` is non-NULL and points to 16 writable doubles.
 pub(super) unsafe fn write_frame(p: *mut f64, f: &Frame) -> Result<(), cncrot_status> {

@@ -1,7 +1,7 @@
 //! Exports of the swivel kinematics: a caller-owned machine description, its forward and
 //! inverse computation, the choice of positions and the tool-tip follow-up.
 
-use super::frame::{read_frame, write_frame};
+use super::frame::{read_frame, read_frame_unchecked, write_frame};
 use super::heads::{cncrot_head_table, CHeads, CNCROT_NAME_SIZE};
 use super::{byte, cncrot_status, guard, non_null, read_finite, write};
 use crate::dialects::carr::machine_from_carr;
@@ -857,7 +857,8 @@ pub unsafe extern "C" fn cncrot_machine_tcp_inverse(
             previous.is_null(),
             axes.is_null(),
         ])?;
-        let target = read_frame(pose)?;
+        // The rotation is checked by `tcp_inverse` (once: this runs every cycle).
+        let target = read_frame_unchecked(pose)?;
         let prev = read_finite::<6>(previous)?;
         if !tool_length.is_finite() {
             return Err(cncrot_status::NotFinite);

@@ -123,7 +123,7 @@ impl Machine {
         current: [f64; MAX_AXES],
         rule: Rule,
     ) -> Result<Choice, Error> {
-        let c = self.settle(target, current, rule)?;
+        let c = self.settle(target, current, rule, true)?;
         let reached = self.rotation_at(c.axes);
         Ok(Choice {
             remaining: mul(&transpose(&reached), target),
@@ -132,12 +132,14 @@ impl Machine {
     }
 
     /// [`Machine::choose`] without the remaining rotation (left the identity): what the
-    /// five-axis transformation needs, which computes the reached pose itself.
+    /// five-axis transformation needs, which computes the reached pose itself. `verify`:
+    /// as in [`Machine::solve`].
     pub(crate) fn settle(
         &self,
         target: &Matrix,
         current: [f64; MAX_AXES],
         rule: Rule,
+        verify: bool,
     ) -> Result<Choice, Error> {
         check_rotation(target)?;
         let current = self.positions(current)?;
@@ -151,7 +153,7 @@ impl Machine {
                 return Err(Error::BadArgument);
             }
         }
-        let solutions = self.solve(target, current)?;
+        let solutions = self.solve(target, current, verify)?;
         let mut placed = [([0.0; MAX_AXES], [0.0; MAX_AXES], 0.0f64); MAX_SOLUTIONS];
         let mut count = 0;
         'solutions: for s in solutions.as_slice() {

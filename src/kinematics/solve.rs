@@ -41,7 +41,7 @@ pub const POLE_SINE: f64 = 1e-14;
 
 /// Beyond this a solution whose forward computation misses the target is dropped as not
 /// a solution (a safety net: the construction reaches it to rounding).
-const VERIFY: f64 = 1e-9;
+pub(crate) const VERIFY: f64 = 1e-9;
 
 /// The angle (degrees) of the turn about the unit vector `u` that takes `x` onto `y`
 /// (both made perpendicular to `u` first; their lengths do not matter). `None` when `x` is
@@ -195,12 +195,20 @@ impl Machine {
     /// assert!((rows[1][0] - 180.0).abs() < 1e-12 && (rows[1][1] + 30.0).abs() < 1e-12);
     /// ```
     pub fn inverse(&self, target: &Matrix) -> Result<Solutions, Error> {
-        self.solve(target, [0.0; MAX_AXES])
+        check_rotation(target)?;
+        self.solve(target, [0.0; MAX_AXES], true)
     }
 
-    /// [`Machine::inverse`] with a free axis placed at its position in `free` (unwrapped).
-    pub(crate) fn solve(&self, target: &Matrix, free: [f64; MAX_AXES]) -> Result<Solutions, Error> {
-        check_rotation(target)?;
+    /// [`Machine::inverse`] with a free axis placed at its position in `free` (unwrapped),
+    /// for a `target` already checked as a rotation. `verify`: drop a solution whose
+    /// forward computation misses the target (a safety net; the five-axis transformation
+    /// checks the one it takes instead, at a third of the cost).
+    pub(crate) fn solve(
+        &self,
+        target: &Matrix,
+        free: [f64; MAX_AXES],
+        verify: bool,
+    ) -> Result<Solutions, Error> {
         if !free.iter().all(|x| x.is_finite()) {
             return Err(Error::NotFinite);
         }
@@ -293,7 +301,7 @@ impl Machine {
                     }
                 }
             }
-            if self.misses(&theta, target, n) <= VERIFY {
+            if !verify || self.misses(&theta, target, n) <= VERIFY {
                 if let Some(slot) = out.angles.get_mut(out.count) {
                     *slot = theta;
                     out.count += 1;

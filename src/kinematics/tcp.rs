@@ -20,6 +20,7 @@
 //! positions (the last cycle's), then the linear axes that put the tip on the target:
 //! `(X, Y, Z) = W·tip − T·(−L·b)`.
 
+use super::solve::VERIFY;
 use super::{about_axis_sc, Choice, Machine, Rule, Side, LENGTH_MAX, MAX_AXES};
 use crate::math::{abs, sin_cos_deg4};
 use crate::{mul, rotate, transpose, Error, Frame, Matrix, Vector, IDENTITY};
@@ -140,12 +141,19 @@ impl Machine {
             return Err(Error::NotFinite);
         }
         length_in_range(tool_length)?;
-        let c: Choice = self.settle(
-            &pose.rotation,
-            [previous[3], previous[4], previous[5]],
-            rule,
-        )?;
-        let r = self.turns(c.axes);
+        let current = [previous[3], previous[4], previous[5]];
+        // The solutions unverified, the one taken verified (the forward rotation is needed
+        // anyway); should it miss, or be snapped to a Hirth grid (which misses by design),
+        // the choice is made again among verified solutions, as `choose` makes it.
+        let mut c: Choice = self.settle(&pose.rotation, current, rule, false)?;
+        let mut r = self.turns(c.axes);
+        let snapped = c.residual.iter().any(|&x| x != 0.0);
+        // Written so that NaN retries.
+        let reached = self.rotation_misses(&r, &pose.rotation) <= VERIFY;
+        if snapped || !reached {
+            c = self.settle(&pose.rotation, current, rule, true)?;
+            r = self.turns(c.axes);
+        }
         let at = self.tool_point(&r, self.tip_in_tool(tool_length));
         let on = self.work_point(&r, tip);
         let [x, y, z] = core::array::from_fn(|k| on[k] - at[k] + 0.0);
@@ -159,6 +167,41 @@ impl Machine {
             residual: c.residual,
             free: c.free,
         })
+    }
+
+    /// How far the rotation at the turns `r` is from `target`: the largest element
+    /// difference of the whole rotation with three axes, of the tool direction with fewer.
+    fn rotation_misses(&self, r: &[Matrix; MAX_AXES], target: &Matrix) -> f64 {
+        let whole = self.axes().len() == MAX_AXES;
+        if !whole {
+            // The direction alone: the chain applied to `b`, vector by vector.
+            let (chain, n) = self.chain();
+            let mut v = self.tool_direction();
+            for link in chain.iter().take(n).rev() {
+                if let Some(rk) = r.get(link.index) {
+                    v = if link.sign < 0.0 {
+                        rotate(&transpose(rk), v)
+                    } else {
+                        rotate(rk, v)
+                    };
+                }
+            }
+            let e = [0, 1, 2].map(|i| abs(v[i] - target[i][2]));
+            // NaN would make the miss NaN, which the caller refuses.
+            return e[0].max(e[1]).max(e[2]) + (e[0] + e[1] + e[2]) * 0.0;
+        }
+        let reached = self.rotation_of(r);
+        let mut worst = 0.0f64;
+        for (row_r, row_t) in reached.iter().zip(target) {
+            for (j, (a, b)) in row_r.iter().zip(row_t).enumerate() {
+                if whole || j == 2 {
+                    // NaN would make the miss infinite.
+                    let e = abs(a - b);
+                    worst = if e <= worst { worst } else { e };
+                }
+            }
+        }
+        worst
     }
 
     /// The tool tip in the tool adapter's system: `−L·b`.
