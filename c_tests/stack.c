@@ -243,6 +243,16 @@ static void machine_follow(void) {
   static const double from[3] = {0, 0, 0}, to[3] = {30, 40, 50}, lin[3] = {1, 2, 3};
   sink += cncrot_machine_follow(&head3, from, to, lin, 100, out3);
 }
+static void machine_tcp_forward(void) {
+  static const double ax[6] = {10, 20, 30, 40, 50, 60};
+  static double pose[16];
+  sink += cncrot_machine_tcp_forward(&head3, ax, 100, pose) + cncrot_machine_tcp_forward(&mach, ax, 100, pose);
+}
+static void machine_tcp_inverse(void) {
+  static const double prev[6] = {0, 0, 0, 750, 10, -20};
+  static double ax[6];
+  sink += cncrot_machine_tcp_inverse(&head3, TILT, 100, prev, ax) + cncrot_machine_tcp_inverse(&mach, TILT, 100, prev, ax);
+}
 static void cycle600_position(void) {
   static const double cur[3] = {0, 0, 0};
   static double ax[3], res[3], rem[16];
@@ -270,7 +280,7 @@ static const struct entry ENTRIES[] = {
     E(machine_from_carr, 1), E(machine_carr_error_line, 1), E(machine_from_head, 1),
     E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
     E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),
-    E(program_axes, 1),
+    E(program_axes, 1),      E(machine_tcp_forward, 0), E(machine_tcp_inverse, 1),
     E(matrices_from_angles, 0), E(angles_from_matrices, 0), E(convert_many, 0),
 };
 

@@ -776,7 +776,7 @@ fn c_machine() -> cncrot_machine {
 /// The statuses of every export that reads a description, on `m`: forward, inverse,
 /// choose, follow-up, adding an axis, CYCLE600 positioning. On a refusal each must leave
 /// its outputs (and the description) untouched.
-fn statuses_of(m: &cncrot_machine) -> [i32; 6] {
+fn statuses_of(m: &cncrot_machine) -> [i32; 8] {
     let id = [
         1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
     ];
@@ -785,9 +785,10 @@ fn statuses_of(m: &cncrot_machine) -> [i32; 6] {
     pos[..n].fill(10.0);
     let x = [1.0, 0.0, 0.0];
     let gud = valid_state();
-    let mut out = [[7.0f64; 16]; 6];
+    let mut out = [[7.0f64; 16]; 8];
     let mut count = 99usize;
     let mut copy = *m;
+    let six = [1.0, 2.0, 3.0, pos[0], pos[1], pos[2]];
     let s = unsafe {
         [
             cncrot_machine_forward(m, pos.as_ptr(), out[0].as_mut_ptr()),
@@ -819,6 +820,8 @@ fn statuses_of(m: &cncrot_machine) -> [i32; 6] {
                 out[3].as_mut_ptr(),
                 out[4].as_mut_ptr(),
             ),
+            cncrot_machine_tcp_forward(m, six.as_ptr(), 50.0, out[6].as_mut_ptr()),
+            cncrot_machine_tcp_inverse(m, id.as_ptr(), 50.0, six.as_ptr(), out[7].as_mut_ptr()),
         ]
     };
     if s.iter().all(|&x| x < 0) {
@@ -940,7 +943,7 @@ fn a_hand_filled_machine_is_refused_unless_it_is_one() {
     for (what, edit, want) in refused {
         let mut m = good;
         edit(&mut m);
-        assert_eq!(statuses_of(&m), [want; 6], "{what}");
+        assert_eq!(statuses_of(&m), [want; 8], "{what}");
     }
     let accepted: [(&str, Edit); 7] = [
         ("a direction of any length", |m| {
@@ -1113,6 +1116,23 @@ fn every_status_of_a_kinematics_export_is_named_in_its_header_doc() {
                     a.as_mut_ptr(),
                 ),
             );
+            let six = [lin[0], 1.0, 2.0, current[0], current[1], current[2]];
+            let length = [50.0, 1e7, f64::NAN, -20.0][round % 4];
+            let mut six_out = [0.0; 6];
+            note(
+                "cncrot_machine_tcp_forward",
+                cncrot_machine_tcp_forward(&m, six.as_ptr(), length, c.as_mut_ptr()),
+            );
+            note(
+                "cncrot_machine_tcp_inverse",
+                cncrot_machine_tcp_inverse(
+                    &m,
+                    frame.as_ptr(),
+                    length,
+                    six.as_ptr(),
+                    six_out.as_mut_ptr(),
+                ),
+            );
             note(
                 "cncrot_machine_add_axis",
                 cncrot_machine_add_axis(
@@ -1261,6 +1281,14 @@ fn every_status_of_a_kinematics_export_is_named_in_its_header_doc() {
                 o.as_mut_ptr(),
                 o.as_mut_ptr(),
             ),
+        );
+        note(
+            "cncrot_machine_tcp_forward",
+            cncrot_machine_tcp_forward(&m, null(), 1.0, o.as_mut_ptr()),
+        );
+        note(
+            "cncrot_machine_tcp_inverse",
+            cncrot_machine_tcp_inverse(&m, d.as_ptr(), 1.0, null(), o.as_mut_ptr()),
         );
         note(
             "cncrot_machine_from_carr",

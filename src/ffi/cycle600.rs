@@ -330,7 +330,8 @@ pub unsafe extern "C" fn cncrot_cycle600_position(
             remaining.is_null(),
         ])?;
         let state = load(gud)?;
-        let m = super::machine::load(machine)?;
+        let mut m = crate::kinematics::Machine::EMPTY;
+        super::machine::load_into(machine, &mut m)?;
         let current = super::read_finite::<3>(current_deg)?;
         let c = cycle600::position(&state, &m, current)?;
         super::machine::write_choice(&c, axes_deg, residual_deg, remaining)

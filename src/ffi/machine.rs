@@ -131,10 +131,11 @@ const EMPTY_AXIS: cncrot_machine_axis = cncrot_machine_axis {
     hirth_step_deg: 0.0,
 };
 
-/// The Rust machine a C description stands for, checked. Not inlined: its temporaries
-/// would otherwise stay in every export's frame (stack bound).
+/// The Rust machine a C description stands for, checked, built in `out` (which is left
+/// in an unspecified state on an error). Not inlined: its temporaries would otherwise stay
+/// in every export's frame (stack bound).
 #[inline(never)]
-fn machine_of(m: &cncrot_machine) -> Result<Machine, cncrot_status> {
+fn machine_of(m: &cncrot_machine, out: &mut Machine) -> Result<(), cncrot_status> {
     let count = usize::try_from(m.count)
         .ok()
         .filter(|&c| c <= MAX_AXES)
@@ -152,9 +153,9 @@ fn machine_of(m: &cncrot_machine) -> Result<Machine, cncrot_status> {
     } else {
         m.tool_direction
     };
-    let mut machine = Machine::new(b)?;
+    out.reset(b)?;
     for a in m.axes.iter().take(count) {
-        machine.push_axis(axis_of(a)?)?;
+        out.push_axis(axis_of(a)?)?;
     }
     // SAFETY: `c_char` is `i8` or `u8`: the same size and alignment as `u8`, every bit
     // pattern valid. Read in place: a copy of the name cost a loop of its own.
@@ -163,8 +164,8 @@ fn machine_of(m: &cncrot_machine) -> Result<Machine, cncrot_status> {
         .iter()
         .position(|&c| c == 0)
         .ok_or(cncrot_status::NameTooLong)?;
-    machine.set_name(name.get(..len).unwrap_or(&[]))?;
-    Ok(machine)
+    out.set_name(name.get(..len).unwrap_or(&[]))?;
+    Ok(())
 }
 
 /// Whether the entries of `axes` from `count` on have every field 0 (−0 included; NaN is
@@ -253,19 +254,24 @@ fn c_of(m: &Machine) -> cncrot_machine {
     out
 }
 
-/// The machine at `p`, read in place; a pointer not aligned like the C type is refused
-/// (`CNCROT_STATUS_BAD_ARGUMENT`) rather than copied (a copy would cost 352 bytes of stack).
+/// The machine at `p`, checked and built in `out` in place: the exports keep one machine
+/// in their frame, not the copies a returned `Result<Machine, _>` leaves (stack bound). A
+/// pointer not aligned like the C type is refused (`CNCROT_STATUS_BAD_ARGUMENT`) rather
+/// than copied (a copy would cost 352 bytes of stack).
 ///
 /// # Safety
 /// `p` is non-NULL and points to a readable `cncrot_machine`.
-pub(super) unsafe fn load(p: *const cncrot_machine) -> Result<Machine, cncrot_status> {
+pub(super) unsafe fn load_into(
+    p: *const cncrot_machine,
+    out: &mut Machine,
+) -> Result<(), cncrot_status> {
     if p.align_offset(core::mem::align_of::<cncrot_machine>()) != 0 {
         return Err(cncrot_status::BadArgument);
     }
     // SAFETY: non-NULL and aligned (checked); every bit pattern of its integer and double
     // fields is valid.
     match p.as_ref() {
-        Some(m) => machine_of(m),
+        Some(m) => machine_of(m, out),
         None => Err(cncrot_status::NullPointer),
     }
 }
@@ -476,7 +482,8 @@ pub unsafe extern "C" fn cncrot_machine_add_axis(
 ) -> i32 {
     guard(|| {
         non_null(&[machine.is_null(), direction.is_null(), point.is_null()])?;
-        let mut m = load(machine)?;
+        let mut m = Machine::EMPTY;
+        load_into(machine, &mut m)?;
         let new = cncrot_machine_axis {
             work_side,
             direction: read_finite::<3>(direction)?,
@@ -518,7 +525,8 @@ pub unsafe extern "C" fn cncrot_machine_forward(
 ) -> i32 {
     guard(|| {
         non_null(&[machine.is_null(), axes_deg.is_null(), frame.is_null()])?;
-        let m = load(machine)?;
+        let mut m = Machine::EMPTY;
+        load_into(machine, &mut m)?;
         let f = m.forward(read_finite::<3>(axes_deg)?)?;
         write_frame(frame, &f)?;
         Ok(cncrot_status::Ok)
@@ -562,7 +570,8 @@ pub unsafe extern "C" fn cncrot_machine_inverse(
             solutions_deg.is_null(),
             count.is_null(),
         ])?;
-        let m = load(machine)?;
+        let mut m = Machine::EMPTY;
+        load_into(machine, &mut m)?;
         let target = read_frame(frame)?;
         let s = m.inverse(&target.rotation)?;
         let rows = s.as_slice();
@@ -644,7 +653,8 @@ pub unsafe extern "C" fn cncrot_machine_choose(
             remaining.is_null(),
         ])?;
         let rule = rule_of(rule, reference_axis)?;
-        let m = load(machine)?;
+        let mut m = Machine::EMPTY;
+        load_into(machine, &mut m)?;
         let target = read_frame(frame)?;
         let current = read_finite::<3>(current_deg)?;
         let c = m.choose(&target.rotation, current, rule)?;
@@ -739,7 +749,8 @@ pub unsafe extern "C" fn cncrot_machine_follow(
         if !tool_length.is_finite() {
             return Err(cncrot_status::NotFinite);
         }
-        let m = load(machine)?;
+        let mut m = Machine::EMPTY;
+        load_into(machine, &mut m)?;
         let from = read_finite::<3>(from_deg)?;
         let to = read_finite::<3>(to_deg)?;
         let lin = read_finite::<3>(linear_from)?;
@@ -790,7 +801,8 @@ pub unsafe extern "C" fn cncrot_machine_tcp_forward(
         if !tool_length.is_finite() {
             return Err(cncrot_status::NotFinite);
         }
-        let m = load(machine)?;
+        let mut m = Machine::EMPTY;
+        load_into(machine, &mut m)?;
         let f = m.tcp_forward(ax, tool_length)?;
         write_frame(pose, &f)?;
         Ok(cncrot_status::Ok)
@@ -863,7 +875,8 @@ pub unsafe extern "C" fn cncrot_machine_tcp_inverse(
         if !tool_length.is_finite() {
             return Err(cncrot_status::NotFinite);
         }
-        let m = load(machine)?;
+        let mut m = Machine::EMPTY;
+        load_into(machine, &mut m)?;
         let t = m.tcp_inverse(&target, tool_length, prev)?;
         write::<6>(axes, t.axes)?;
         Ok(if t.free {

@@ -370,7 +370,8 @@ pub unsafe extern "C" fn cncrot_program_axes(
             axes.is_null(),
         ])?;
         let p = load(&program.read_unaligned())?;
-        let m = super::machine::load(machine)?;
+        let mut m = crate::kinematics::Machine::EMPTY;
+        super::machine::load_into(machine, &mut m)?;
         let current = read_finite::<3>(current)?;
         let c = p.axes(&m, current)?;
         write::<3>(axes, c.axes)?;

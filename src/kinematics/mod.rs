@@ -197,6 +197,29 @@ pub(crate) struct Link {
 }
 
 impl Machine {
+    /// A machine without rotary axes whose tool points along +Z: where a machine is built
+    /// in place ([`Machine::reset`]).
+    pub(crate) const EMPTY: Machine = Machine {
+        axes: [RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]); MAX_AXES],
+        count: 0,
+        tool_direction: [0.0, 0.0, 1.0],
+        name: [0; MACHINE_NAME_MAX],
+        name_len: 0,
+    };
+
+    /// Makes `self` [`Machine::new`]`(tool_direction)` in place (unchanged on an error):
+    /// the C boundary builds its machine in the caller's frame instead of returning 400
+    /// bytes through two `Result`s (stack bound of the hot path).
+    pub(crate) fn reset(&mut self, tool_direction: Vector) -> Result<(), Error> {
+        if !tool_direction.iter().all(|x| x.is_finite()) {
+            return Err(Error::NotFinite);
+        }
+        let b = unit_vector(tool_direction).map_err(|_| Error::BadArgument)?;
+        *self = Machine::EMPTY;
+        self.tool_direction = b;
+        Ok(())
+    }
+
     /// A machine without rotary axes whose tool points along `tool_direction` (any length)
     /// when every axis is in its initial position; +Z on most machines.
     pub fn new(tool_direction: Vector) -> Result<Machine, Error> {

@@ -250,38 +250,7 @@ impl Machine {
                 let u3 = l3.axis;
                 let target_u3 = rotate(&m, u3);
                 phis = two(l1.axis, l2.axis, u3, target_u3, [free_phi(0), free_phi(1)])?;
-                let x = perpendicular_to(u3);
-                // Sines and cosines of both solutions' first two angles, then both third
-                // angles, each in one four-lane call (the same bits as one by one).
-                let [p, q] = phis.phi;
-                let (s, c) = sin_cos_deg4([-p[0], -p[1], -q[0], -q[1]]);
-                let (mut ys, mut xs) = ([0.0; 4], [1.0; 4]);
-                for (k, _) in third.iter().enumerate().take(phis.count) {
-                    let at = |j: usize| (s.get(j).copied(), c.get(j).copied());
-                    let (Some(s1), Some(c1)) = at(2 * k) else {
-                        continue;
-                    };
-                    let (Some(s2), Some(c2)) = at(2 * k + 1) else {
-                        continue;
-                    };
-                    let back = mul(
-                        &about_axis_sc(l2.axis, s2, c2),
-                        &mul(&about_axis_sc(l1.axis, s1, c1), &m),
-                    );
-                    // A lane left at (0, 1) gives 0: the angle where x would lie along u3
-                    // (never: x is perpendicular to it).
-                    if let (Some([y, xx]), Some(ty), Some(tx)) = (
-                        turn_pair(u3, x, rotate(&back, x)),
-                        ys.get_mut(k),
-                        xs.get_mut(k),
-                    ) {
-                        (*ty, *tx) = (y, xx);
-                    }
-                }
-                let t = atan2_deg4(ys, xs);
-                for (slot, angle) in third.iter_mut().zip(t) {
-                    *slot = angle;
-                }
+                third = third_angles(l1.axis, l2.axis, u3, &m, &phis);
             }
             _ => return Err(Error::BadArgument),
         }
@@ -330,6 +299,49 @@ impl Machine {
         }
         worst
     }
+}
+
+/// The third angles of a three-axis machine's solutions: the turn about `u3` left once
+/// the first two axes of each solution have turned (`m` the target without the tool
+/// base). Sines and cosines of both solutions' first two angles, then both third angles,
+/// each in one four-lane call (the same bits as one by one). Not inlined: its matrices
+/// would otherwise sit in the frame of `solve` under every subproblem (stack bound).
+#[inline(never)]
+fn third_angles(
+    u1: Vector,
+    u2: Vector,
+    u3: Vector,
+    m: &Matrix,
+    phis: &Phis,
+) -> [f64; MAX_SOLUTIONS] {
+    let x = perpendicular_to(u3);
+    let [p, q] = phis.phi;
+    let (s, c) = sin_cos_deg4([-p[0], -p[1], -q[0], -q[1]]);
+    let (mut ys, mut xs) = ([0.0; 4], [1.0; 4]);
+    for k in 0..phis.count.min(MAX_SOLUTIONS) {
+        let at = |j: usize| (s.get(j).copied(), c.get(j).copied());
+        let (Some(s1), Some(c1)) = at(2 * k) else {
+            continue;
+        };
+        let (Some(s2), Some(c2)) = at(2 * k + 1) else {
+            continue;
+        };
+        let back = mul(
+            &about_axis_sc(u2, s2, c2),
+            &mul(&about_axis_sc(u1, s1, c1), m),
+        );
+        // A lane left at (0, 1) gives 0: the angle where x would lie along u3 (never: x is
+        // perpendicular to it).
+        if let (Some([y, xx]), Some(ty), Some(tx)) = (
+            turn_pair(u3, x, rotate(&back, x)),
+            ys.get_mut(k),
+            xs.get_mut(k),
+        ) {
+            (*ty, *tx) = (y, xx);
+        }
+    }
+    let t = atan2_deg4(ys, xs);
+    [t[0], t[1]]
 }
 
 /// A unit vector perpendicular to the unit vector `u`.

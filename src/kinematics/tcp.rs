@@ -145,28 +145,48 @@ impl Machine {
         // The solutions unverified, the one taken verified (the forward rotation is needed
         // anyway); should it miss, or be snapped to a Hirth grid (which misses by design),
         // the choice is made again among verified solutions, as `choose` makes it.
-        let mut c: Choice = self.settle(&pose.rotation, current, rule, false)?;
-        let mut r = self.turns(c.axes);
-        let snapped = c.residual.iter().any(|&x| x != 0.0);
-        // Written so that NaN retries.
-        let reached = self.rotation_misses(&r, &pose.rotation) <= VERIFY;
-        if snapped || !reached {
-            c = self.settle(&pose.rotation, current, rule, true)?;
-            r = self.turns(c.axes);
+        let c = self.settle(&pose.rotation, current, rule, false)?;
+        if let Some(t) = self.tcp_linear(&c, pose, tool_length, true)? {
+            return Ok(t);
+        }
+        let c = self.settle(&pose.rotation, current, rule, true)?;
+        self.tcp_linear(&c, pose, tool_length, false)?
+            .ok_or(Error::Unreachable)
+    }
+
+    /// The linear axes for the rotary choice `c`: `None` when `verify` is set and the
+    /// choice misses the pose's rotation or was snapped to a Hirth grid. Not inlined: its
+    /// turns would otherwise sit in the caller's frame under the solver (stack bound).
+    #[inline(never)]
+    fn tcp_linear(
+        &self,
+        c: &Choice,
+        pose: &Frame,
+        tool_length: f64,
+        verify: bool,
+    ) -> Result<Option<Tcp>, Error> {
+        let r = self.turns(c.axes);
+        if verify {
+            let snapped = c.residual.iter().any(|&x| x != 0.0);
+            // Written so that NaN retries.
+            let reached = self.rotation_misses(&r, &pose.rotation) <= VERIFY;
+            if snapped || !reached {
+                return Ok(None);
+            }
         }
         let at = self.tool_point(&r, self.tip_in_tool(tool_length));
-        let on = self.work_point(&r, tip);
+        let on = self.work_point(&r, pose.translation);
         let [x, y, z] = core::array::from_fn(|k| on[k] - at[k] + 0.0);
         let [a, b, cc] = c.axes;
         let axes = [x, y, z, a, b, cc];
         if !axes.iter().all(|v| v.is_finite()) {
             return Err(Error::OutOfRange);
         }
-        Ok(Tcp {
+        Ok(Some(Tcp {
             axes,
             residual: c.residual,
             free: c.free,
-        })
+        }))
     }
 
     /// How far the rotation at the turns `r` is from `target`: the largest element
