@@ -4,7 +4,8 @@
 //! solution the inverse returns reproduces the target to 1e-9 through the forward
 //! computation; a choice lies within the travel and on the Hirth grid; a target made with
 //! an axis exactly at an end of its travel is chosen at that end; the follow-up keeps the
-//! tool tip where it was.
+//! tool tip where it was; the five-axis transformation brings a pose it made back (tip and
+//! direction) from any previous positions.
 #![no_main]
 
 #[path = "input.rs"]
@@ -51,6 +52,62 @@ fn miss(m: &cncrot_machine, ax: &[f64], target: &[f64; 16], whole: bool) -> f64 
         }
     }
     worst
+}
+
+/// The five-axis transformation on the machine: a pose made by the forward computation at
+/// `pos` comes back to a tip within 1e-9 (relative to the sizes involved) and a direction
+/// within 1e-9 from any previous positions; a refusal leaves the output untouched.
+fn tcp(m: &cncrot_machine, n: usize, pos: &[f64; 3], current: &[f64; 3], t: &[u8]) {
+    let length = f64_at(t, 8);
+    let six = [
+        f64_at(t, 9),
+        f64_at(t, 10),
+        f64_at(t, 11),
+        pos[0],
+        pos[1],
+        pos[2],
+    ];
+    let mut pose = [9.0; 16];
+    let s = unsafe { cncrot_machine_tcp_forward(m, six.as_ptr(), length, pose.as_mut_ptr()) };
+    if s < 0 {
+        assert_eq!(pose, [9.0; 16]);
+        return;
+    }
+    assert!(pose.iter().all(|x| x.is_finite()));
+    let prev = [0.0, 0.0, 0.0, current[0], current[1], current[2]];
+    let mut out = [4.0; 6];
+    let s = unsafe {
+        cncrot_machine_tcp_inverse(m, pose.as_ptr(), length, prev.as_ptr(), out.as_mut_ptr())
+    };
+    if s < 0 {
+        assert_eq!(out, [4.0; 6]);
+        return;
+    }
+    assert!(out.iter().all(|x| x.is_finite()));
+    // A Hirth axis snaps (the status may name a free axis instead, which ranks first): the
+    // tip stays on the target, the direction is off by the residual.
+    let hirth = m.axes.iter().take(n).any(|a| a.hirth_step_deg > 0.0);
+    let mut back = [0.0; 16];
+    let s = unsafe { cncrot_machine_tcp_forward(m, out.as_ptr(), length, back.as_mut_ptr()) };
+    if s != 0 {
+        return;
+    }
+    // The sizes the tip is made of: rounding is relative to them.
+    let scale = 1.0
+        + six.iter().take(3).fold(0.0f64, |a, x| a.max(x.abs()))
+        + out.iter().take(3).fold(0.0f64, |a, x| a.max(x.abs()))
+        + length.abs()
+        + m.axes
+            .iter()
+            .take(n)
+            .flat_map(|a| a.point)
+            .fold(0.0f64, |a, x| a.max(x.abs()));
+    for i in 0..3 {
+        let d = (back[4 * i + 3] - pose[4 * i + 3]).abs();
+        assert!(d <= 1e-9 * scale, "tip {i}: {d} {pose:?} {back:?} {out:?}");
+        let e = (back[4 * i + 2] - pose[4 * i + 2]).abs();
+        assert!(hirth || e <= 1e-9, "direction {i}: {e}");
+    }
 }
 
 /// Whether `a` and `b` are the same angle to within `tol`, whole turns apart.
@@ -296,6 +353,7 @@ fuzz_target!(|data: &[u8]| {
     if s < 0 {
         assert_eq!(next, [3.0; 3]);
     }
+    tcp(&m, n, &pos, &current, t);
     let mut gud: Box<cncrot_cycle600_gud> = Box::new(unsafe { std::mem::zeroed() });
     unsafe {
         cncrot_cycle600(
