@@ -423,6 +423,52 @@ static void hand_filled_descriptions(void) {
   CHECK(memcmp(&keep, &m, sizeof m) == 0, "untouched");
 }
 
+/* The five-axis transformation on an AC table (A about X through (0, 0, 100), C about Z
+ * carried by it), tool 50 mm, by hand: tip at the workpiece point (10, 0, 0), direction
+ * (0.5, 0, sqrt(3)/2) = (sin A sin C, sin A cos C, cos A) at A = 30, C = 90; the adapter
+ * at W·tip + (0, 0, 50) = (0, 50 + 5·sqrt(3), 155 - 50·sqrt(3)). */
+static void five_axis_transformation(void) {
+  cncrot_machine m;
+  memset(&m, 0, sizeof m);
+  double x[3] = {1, 0, 0}, z[3] = {0, 0, 1}, pa[3] = {0, 0, 100}, pc[3] = {0, 0, 0};
+  CHECK_STATUS(cncrot_machine_add_axis(&m, 1, x, pa, 0, 0), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_add_axis(&m, 1, z, pc, 0, 0), CNCROT_STATUS_OK);
+  double s3 = sqrt(3.0);
+  /* Rz(-90)·Rx(-30): the workpiece's view of the tool at A = 30, C = 90. */
+  double pose[16] = {0, s3 / 2, 0.5, 10, -1, 0, 0, 0, 0, -0.5, s3 / 2, 0, 0, 0, 0, 1};
+  double prev[6] = {0, 0, 0, 20, 80, 0}, ax[6];
+  CHECK_STATUS(cncrot_machine_tcp_inverse(&m, pose, 50, prev, ax), CNCROT_STATUS_OK);
+  double want[6] = {0, 50 + 5 * s3, 155 - 50 * s3, 30, 90, 0};
+  CHECK_NEAR(ax, want, 6, 1e-12);
+  /* And forward again: the tip and the direction. */
+  double back[16];
+  CHECK_STATUS(cncrot_machine_tcp_forward(&m, ax, 50, back), CNCROT_STATUS_OK);
+  double tip[3] = {back[3], back[7], back[11]}, tip0[3] = {10, 0, 0};
+  double dir[3] = {back[2], back[6], back[10]}, dir0[3] = {0.5, 0, s3 / 2};
+  CHECK_NEAR(tip, tip0, 3, 1e-12);
+  CHECK_NEAR(dir, dir0, 3, 1e-15);
+  /* The output may be the previous positions (one cycle after another). */
+  CHECK_STATUS(cncrot_machine_tcp_inverse(&m, pose, 50, prev, prev), CNCROT_STATUS_OK);
+  CHECK_NEAR(prev, want, 6, 1e-12);
+  /* At the pole C is free and stays where it was. */
+  double pole[16] = {1, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1};
+  double at[6] = {0, 0, 0, 0, 123, 0}, out[6];
+  CHECK_STATUS(cncrot_machine_tcp_inverse(&m, pole, 50, at, out), CNCROT_STATUS_FREE_AXIS);
+  CHECK(out[3] == 0 && out[4] == 123, "C kept at the pole: %g %g", out[3], out[4]);
+  /* Refusals leave the output untouched. */
+  double keep[6] = {7, 7, 7, 7, 7, 7}, seven[6] = {7, 7, 7, 7, 7, 7};
+  double skew[16];
+  memcpy(skew, pose, sizeof skew);
+  skew[0] = 2;
+  CHECK_STATUS(cncrot_machine_tcp_inverse(&m, skew, 50, prev, keep), CNCROT_STATUS_NOT_A_ROTATION);
+  CHECK_STATUS(cncrot_machine_tcp_inverse(&m, pose, NAN, prev, keep), CNCROT_STATUS_NOT_FINITE);
+  CHECK_STATUS(cncrot_machine_tcp_inverse(NULL, pose, 50, prev, keep), CNCROT_STATUS_NULL_POINTER);
+  double unused[6] = {0, 0, 0, 0, 0, 1};
+  CHECK_STATUS(cncrot_machine_tcp_inverse(&m, pose, 50, unused, keep), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_NEAR(keep, seven, 6, 0);
+  CHECK_STATUS(cncrot_machine_tcp_forward(&m, unused, 50, back), CNCROT_STATUS_BAD_ARGUMENT);
+}
+
 int main(void) {
   fork_head();
   table_and_mixed();
@@ -430,5 +476,6 @@ int main(void) {
   cycle600_and_refusals();
   travel_ends();
   hand_filled_descriptions();
+  five_axis_transformation();
   return finish("test_kinematics");
 }
