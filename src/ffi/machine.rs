@@ -826,8 +826,9 @@ pub unsafe extern "C" fn cncrot_machine_tcp_forward(
 /// finiteness. On a Hirth axis the position is snapped (`CNCROT_STATUS_SNAPPED`): the
 /// linear axes still put the tip on the target; the direction is off by the residual.
 ///
-/// Real-time: no allocation, no panic, a bounded number of operations, stack within the
-/// hot-path bound.
+/// No allocation, no panic, a bounded number of operations (no loop depends on the
+/// values). Stack and time are measured in `docs/kinematics.md`: within the bound of block
+/// preparation (3 584 bytes), not yet the interpolation cycle's 2 048.
 ///
 /// Returns 0, `CNCROT_STATUS_FREE_AXIS`, `CNCROT_STATUS_SNAPPED`, or with `axes`
 /// untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE` (the pose,
