@@ -18,13 +18,20 @@ pub(super) unsafe fn read_frame(p: *const f64) -> Result<Frame, cncrot_status> {
 /// # Safety
 /// `p` is non-NULL and points to 16 readable doubles.
 pub(super) unsafe fn read_frame_unchecked(p: *const f64) -> Result<Frame, cncrot_status> {
-    let v: [f64; 16] = read_finite(p)?;
-    if [v[12], v[13], v[14], v[15]] != [0.0, 0.0, 0.0, 1.0] {
+    // Row by row into the frame, so that no copy of the 16 doubles stays in the caller's
+    // frame (stack bound of the hot path).
+    let row = |i: usize| read_finite::<4>(p.add(4 * i));
+    let (r0, r1, r2, r3) = (row(0)?, row(1)?, row(2)?, row(3)?);
+    if r3 != [0.0, 0.0, 0.0, 1.0] {
         return Err(cncrot_status::NotARotation);
     }
     Ok(Frame {
-        rotation: [[v[0], v[1], v[2]], [v[4], v[5], v[6]], [v[8], v[9], v[10]]],
-        translation: [v[3], v[7], v[11]],
+        rotation: [
+            [r0[0], r0[1], r0[2]],
+            [r1[0], r1[1], r1[2]],
+            [r2[0], r2[1], r2[2]],
+        ],
+        translation: [r0[3], r1[3], r2[3]],
     })
 }
 

@@ -45,7 +45,7 @@ pub struct Choice {
 /// nothing. Every comparison is written so that NaN refuses. Not inlined: its temporaries
 /// would otherwise stay in the frame of `choose` through the inverse (stack bound).
 #[inline(never)]
-fn place(axis: &RotaryAxis, angle: f64, current: f64) -> Option<(f64, f64)> {
+pub(crate) fn place(axis: &RotaryAxis, angle: f64, current: f64) -> Option<(f64, f64)> {
     let mut x = angle + turns_toward(angle, current) + 0.0;
     if let Some([lo, hi]) = axis.limits {
         if x > hi + TRAVEL_TOLERANCE {

@@ -28,10 +28,10 @@ impl Solutions {
 
 /// Up to two solutions in chain angles `φ`.
 #[derive(Clone, Copy)]
-struct Phis {
-    phi: [[f64; 2]; 2],
-    count: usize,
-    free: bool,
+pub(crate) struct Phis {
+    pub(crate) phi: [[f64; 2]; 2],
+    pub(crate) count: usize,
+    pub(crate) free: bool,
 }
 
 /// A direction within this sine of an axis is along it: the axis is free \[choice\]. Below
@@ -46,7 +46,7 @@ pub(crate) const VERIFY: f64 = 1e-9;
 /// The angle (degrees) of the turn about the unit vector `u` that takes `x` onto `y`
 /// (both made perpendicular to `u` first; their lengths do not matter). `None` when `x` is
 /// along `u`: every angle does.
-fn turn_onto(u: Vector, x: Vector, y: Vector) -> Option<f64> {
+pub(crate) fn turn_onto(u: Vector, x: Vector, y: Vector) -> Option<f64> {
     turn_pair(u, x, y).map(|[s, c]| atan2_deg(s, c))
 }
 
@@ -64,6 +64,7 @@ pub(crate) fn turn_pair(u: Vector, x: Vector, y: Vector) -> Option<[f64; 2]> {
 }
 
 /// Subproblem 1: `Rot(u, φ)·x = y`. The free angle `free` when `x` is along `u`.
+#[inline(never)]
 fn one(u: Vector, x: Vector, y: Vector, free: f64) -> Result<(f64, bool), Error> {
     if abs(dot(u, x) - dot(u, y)) > REACH_TOLERANCE {
         return Err(Error::Unreachable);
@@ -84,10 +85,6 @@ fn two(u1: Vector, u2: Vector, b: Vector, d: Vector, free: [f64; 2]) -> Result<P
         count: 0,
         free: false,
     };
-    let along = |u: Vector, v: Vector| {
-        let c = cross(u, v);
-        dot(c, c) <= POLE_SINE * POLE_SINE
-    };
     if along(u2, b) {
         // The inner axis turns the tool about itself: φ2 is free.
         let (phi1, _) = one(u1, b, d, free[0])?;
@@ -105,6 +102,23 @@ fn two(u1: Vector, u2: Vector, b: Vector, d: Vector, free: [f64; 2]) -> Result<P
         out.free = true;
         return Ok(out);
     }
+    two_isolated(u1, u2, b, d)
+}
+
+/// Whether the unit vectors `u` and `v` are parallel within [`POLE_SINE`]: a free axis.
+pub(crate) fn along(u: Vector, v: Vector) -> bool {
+    let c = cross(u, v);
+    dot(c, c) <= POLE_SINE * POLE_SINE
+}
+
+/// Subproblem 2 away from its poles (`b` not along `u2`, `d` not along `u1`): the isolated
+/// solutions, one or two.
+pub(crate) fn two_isolated(u1: Vector, u2: Vector, b: Vector, d: Vector) -> Result<Phis, Error> {
+    let mut out = Phis {
+        phi: [[0.0; 2]; 2],
+        count: 0,
+        free: false,
+    };
     // In the orthonormal frame u1, e2 (u2 made perpendicular to u1), n = u1 × u2 / |…|:
     // c = a1·u1 + p2·e2 ± g·n. The height g² = r² − q² is formed from a cone radius r
     // computed as a cross product (|u × v|, exact to rounding even when tiny) instead of
@@ -285,6 +299,7 @@ impl Machine {
 
     /// How far the orientation at `theta` is from `target`: the largest element difference
     /// of the whole rotation with three axes, of the tool direction with fewer.
+    #[inline(never)]
     pub(crate) fn misses(&self, theta: &[f64; MAX_AXES], target: &Matrix, n: usize) -> f64 {
         let r = self.rotation_at(*theta);
         let mut worst = 0.0f64;
@@ -326,14 +341,10 @@ fn third_angles(
         let (Some(s2), Some(c2)) = at(2 * k + 1) else {
             continue;
         };
-        let back = mul(
-            &about_axis_sc(u2, s2, c2),
-            &mul(&about_axis_sc(u1, s1, c1), m),
-        );
         // A lane left at (0, 1) gives 0: the angle where x would lie along u3 (never: x is
         // perpendicular to it).
         if let (Some([y, xx]), Some(ty), Some(tx)) = (
-            turn_pair(u3, x, rotate(&back, x)),
+            third_pair([u1, u2, u3], [s1, c1, s2, c2], m, x),
             ys.get_mut(k),
             xs.get_mut(k),
         ) {
@@ -342,6 +353,21 @@ fn third_angles(
     }
     let t = atan2_deg4(ys, xs);
     [t[0], t[1]]
+}
+
+/// The `atan2` arguments of one solution's third angle: `x` turned back by the first two
+/// turns (sines and cosines `s1, c1, s2, c2`) from the target `m`, against `x` itself.
+/// Not inlined: its matrices would otherwise sit beside the lanes of `third_angles`
+/// (stack bound).
+#[inline(never)]
+fn third_pair(u: [Vector; 3], sc: [f64; 4], m: &Matrix, x: Vector) -> Option<[f64; 2]> {
+    let [u1, u2, u3] = u;
+    let [s1, c1, s2, c2] = sc;
+    let back = mul(
+        &about_axis_sc(u2, s2, c2),
+        &mul(&about_axis_sc(u1, s1, c1), m),
+    );
+    turn_pair(u3, x, rotate(&back, x))
 }
 
 /// A unit vector perpendicular to the unit vector `u`.

@@ -20,10 +20,14 @@
 //! positions (the last cycle's), then the linear axes that put the tip on the target:
 //! `(X, Y, Z) = W·tip − T·(−L·b)`.
 
-use super::solve::VERIFY;
-use super::{about_axis_sc, Choice, Machine, Rule, Side, LENGTH_MAX, MAX_AXES};
-use crate::math::{abs, sin_cos_deg4};
-use crate::{mul, rotate, transpose, Error, Frame, Matrix, Vector, IDENTITY};
+use super::choose::place;
+use super::solve::{along, turn_onto, two_isolated, Phis, VERIFY};
+use super::{about_axis_sc, Choice, Machine, Rule, Side, LENGTH_MAX, MAX_AXES, REACH_TOLERANCE};
+use crate::math::{abs, sin_cos_deg4, wrap_deg};
+use crate::vector::dot;
+use crate::{
+    check_rotation, mul, rotate, transpose, Error, Frame, Matrix, Vector, CLOSEST_MAX, IDENTITY,
+};
 
 /// Machine axes of the transformation: linear `X, Y, Z` (the tool adapter's reference
 /// point), then the rotary axes in the order they were added (unused ones 0).
@@ -142,16 +146,136 @@ impl Machine {
         }
         length_in_range(tool_length)?;
         let current = [previous[3], previous[4], previous[5]];
-        // The solutions unverified, the one taken verified (the forward rotation is needed
-        // anyway); should it miss, or be snapped to a Hirth grid (which misses by design),
-        // the choice is made again among verified solutions, as `choose` makes it.
-        let c = self.settle(&pose.rotation, current, rule, false)?;
-        if let Some(t) = self.tcp_linear(&c, pose, tool_length, true)? {
-            return Ok(t);
+        if rule == Rule::Closest {
+            if let Some(t) = self.tcp_closest(pose, tool_length, current)? {
+                return Ok(t);
+            }
         }
-        let c = self.settle(&pose.rotation, current, rule, true)?;
-        self.tcp_linear(&c, pose, tool_length, false)?
-            .ok_or(Error::Unreachable)
+        self.tcp_general(pose, tool_length, current, rule)
+    }
+
+    /// The common case of [`Machine::tcp_inverse`]: the checks of `settle`, in its order,
+    /// then one or two axes away from a pole in one pass. `None`: the general way decides.
+    /// Not inlined, like the general way: each path's frames stack alone (stack bound).
+    #[inline(never)]
+    fn tcp_closest(
+        &self,
+        pose: &Frame,
+        tool_length: f64,
+        current: [f64; MAX_AXES],
+    ) -> Result<Option<Tcp>, Error> {
+        check_rotation(&pose.rotation)?;
+        let cur = self.positions(current)?;
+        if !cur.iter().all(|x| abs(*x) < CLOSEST_MAX) {
+            return Err(Error::OutOfRange);
+        }
+        match self.closest_isolated(&pose.rotation, cur) {
+            Some(c) => self.tcp_linear(&c?, pose, tool_length, true),
+            None => Ok(None),
+        }
+    }
+
+    /// The general way: the solutions unverified, the one taken verified (the forward
+    /// rotation is needed anyway); should it miss, or be snapped to a Hirth grid (which
+    /// misses by design), the choice is made again among verified solutions, as `choose`
+    /// makes it.
+    #[inline(never)]
+    fn tcp_general(
+        &self,
+        pose: &Frame,
+        tool_length: f64,
+        current: [f64; MAX_AXES],
+        rule: Rule,
+    ) -> Result<Tcp, Error> {
+        // One binding for both rounds: two would each keep a slot in this frame.
+        for verified in [false, true] {
+            let c = self.settle(&pose.rotation, current, rule, verified)?;
+            if let Some(t) = self.tcp_linear(&c, pose, tool_length, !verified)? {
+                return Ok(t);
+            }
+        }
+        Err(Error::Unreachable)
+    }
+
+    /// The rotary positions [`Machine::settle`] takes for [`Rule::Closest`] (unverified),
+    /// for one or two axes away from their poles, solved and placed in one pass over fixed
+    /// arrays: the same solutions in the same order, the same placement, the distances
+    /// summed in the same order, so the same choice. `None`: another case (no axis, three
+    /// axes, a pole), which the general path decides. Not inlined (stack bound).
+    #[inline(never)]
+    fn closest_isolated(
+        &self,
+        target: &Matrix,
+        current: [f64; MAX_AXES],
+    ) -> Option<Result<Choice, Error>> {
+        let n = self.axes().len();
+        if n == 0 || n == MAX_AXES {
+            return None;
+        }
+        let (chain, _) = self.chain();
+        let [l1, l2, _] = chain;
+        let b = self.tool_direction();
+        let d = [target[0][2], target[1][2], target[2][2]];
+        let phis = if n == 1 {
+            // Subproblem 1, as `one` solves it; a pole goes the general way.
+            let u = l1.axis;
+            if abs(dot(u, b) - dot(u, d)) > REACH_TOLERANCE {
+                return Some(Err(Error::Unreachable));
+            }
+            let phi = turn_onto(u, b, d)?;
+            Phis {
+                phi: [[phi, 0.0], [0.0; 2]],
+                count: 1,
+                free: false,
+            }
+        } else {
+            if along(l2.axis, b) || along(l1.axis, d) {
+                return None;
+            }
+            match two_isolated(l1.axis, l2.axis, b, d) {
+                Ok(p) => p,
+                Err(e) => return Some(Err(e)),
+            }
+        };
+        let axes = self.axes();
+        let mut best: Option<([f64; MAX_AXES], [f64; MAX_AXES], f64)> = None;
+        'solutions: for p in phis.phi.iter().take(phis.count) {
+            // The positions as `solve` writes them.
+            let mut theta = [0.0; MAX_AXES];
+            for (link, &ph) in [l1, l2].iter().zip(p).take(n) {
+                let offset = axes.get(link.index).map_or(0.0, |a| a.offset);
+                if let Some(t) = theta.get_mut(link.index) {
+                    *t = wrap_deg(offset + link.sign * ph);
+                }
+            }
+            // Placed as `settle` places them, the distance summed in axis order.
+            let (mut placed, mut residual, mut distance) = ([0.0; MAX_AXES], [0.0; MAX_AXES], 0.0);
+            for (k, a) in axes.iter().enumerate() {
+                let (Some(&angle), Some(&cur)) = (theta.get(k), current.get(k)) else {
+                    continue;
+                };
+                let Some((x, r)) = place(a, angle, cur) else {
+                    continue 'solutions;
+                };
+                if let (Some(ax), Some(re)) = (placed.get_mut(k), residual.get_mut(k)) {
+                    *ax = x;
+                    *re = r;
+                }
+                distance += (x - cur) * (x - cur);
+            }
+            if best.map_or(true, |q| distance < q.2) {
+                best = Some((placed, residual, distance));
+            }
+        }
+        Some(match best {
+            Some((axes, residual, _)) => Ok(Choice {
+                axes,
+                residual,
+                remaining: IDENTITY,
+                free: false,
+            }),
+            None => Err(Error::OutOfTravel),
+        })
     }
 
     /// The linear axes for the rotary choice `c`: `None` when `verify` is set and the
