@@ -1025,3 +1025,111 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     }
     Ok(ok)
 }
+
+/// What `path` takes besides the machine.
+pub struct PathArgs<'a> {
+    pub file: &'a str,
+    pub tool_length: f64,
+    pub current: Option<&'a str>,
+    pub rule: &'a str,
+}
+
+/// A frame whose third column is the unit vector `k`: X' the component of the machine's X
+/// (or, for `k` near X, of Y) perpendicular to it, Y' = Z' × X'. Only the direction counts
+/// for machines of fewer than three rotary axes; with three, the turn about the tool is
+/// this frame's.
+fn frame_along(k: Vector) -> Matrix {
+    let helper = if k[0].abs() < 0.9 {
+        [1.0, 0.0, 0.0]
+    } else {
+        [0.0, 1.0, 0.0]
+    };
+    let along = helper[0] * k[0] + helper[1] * k[1] + helper[2] * k[2];
+    let x0: Vector = std::array::from_fn(|i| helper[i] - along * k[i]);
+    let len = (x0[0] * x0[0] + x0[1] * x0[1] + x0[2] * x0[2]).sqrt();
+    let x: Vector = x0.map(|v| v / len);
+    let y = [
+        k[1] * x[2] - k[2] * x[1],
+        k[2] * x[0] - k[0] * x[2],
+        k[0] * x[1] - k[1] * x[0],
+    ];
+    [[x[0], y[0], k[0]], [x[1], y[1], k[1]], [x[2], y[2], k[2]]]
+}
+
+/// The five-axis transformation along a path of CL points (tool tip and direction): the
+/// machine's linear and rotary axes for each, continuous with the row before.
+pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Failure> {
+    let machine = machine(m)?;
+    let n = machine.axes().len();
+    if !a.tool_length.is_finite() {
+        return Err(Failure::new("--tool-length: not a finite number"));
+    }
+    let rule = rule(a.rule, n)?;
+    // The start: the rotary positions, or X,Y,Z and the rotary positions.
+    let mut previous = [0.0; 6];
+    if let Some(text) = a.current {
+        let v = input::numbers(text).map_err(option("--current"))?;
+        let rotary: &[f64] = if v.len() > MAX_AXES {
+            &v[3.min(v.len())..]
+        } else {
+            &v
+        };
+        if v.len() > MAX_AXES {
+            previous[..3].copy_from_slice(&v[..3]);
+        }
+        let p = positions(&nums(rotary, 17), n, "positions").map_err(option("--current"))?;
+        previous[3..].copy_from_slice(&p);
+    }
+    let d = common.decimals;
+    let common = Common {
+        batch: Some(a.file.to_string()),
+        json: common.json,
+        decimals: common.decimals,
+    };
+    let mut first = true;
+    run(&common, None, |text| {
+        let trimmed = text.trim_start();
+        let header =
+            first && !trimmed.starts_with(|c: char| c.is_ascii_digit() || "+-.".contains(c));
+        first = false;
+        if trimmed.starts_with('#') || header {
+            // A comment or a column header: a blank line keeps the rows aligned.
+            return Ok(Report {
+                full: String::new(),
+                brief: String::new(),
+                json: Json::Obj(vec![("comment", Json::Bool(true))]),
+            });
+        }
+        let v = input::exactly::<6>(text, "a CL point x y z i j k")?;
+        let k = [v[3], v[4], v[5]];
+        let len = (k[0] * k[0] + k[1] * k[1] + k[2] * k[2]).sqrt();
+        // The numbers are finite (read as such): a plain comparison decides.
+        if len <= 1e-9 {
+            return Err(Failure::new("the tool direction i j k is zero"));
+        }
+        let pose = Frame {
+            rotation: frame_along(k.map(|x| x / len)),
+            translation: [v[0], v[1], v[2]],
+        };
+        let t = machine.tcp_inverse_with(&pose, a.tool_length, previous, rule)?;
+        previous = t.axes;
+        let shown = &t.axes[..3 + n];
+        let mut brief = nums(shown, d);
+        if t.free {
+            brief += "  (free axis kept)";
+        } else if t.residual.iter().any(|&r| r != 0.0) {
+            brief += &format!("  (Hirth: snapped by {})", nums(&t.residual[..n], d));
+        }
+        let json = Json::Obj(vec![
+            ("linear", Json::nums(&t.axes[..3])),
+            ("rotary", Json::nums(&t.axes[3..3 + n])),
+            ("free", Json::Bool(t.free)),
+            ("residual", Json::nums(&t.residual[..n])),
+        ]);
+        Ok(Report {
+            full: brief.clone() + "\n",
+            brief,
+            json,
+        })
+    })
+}

@@ -231,6 +231,42 @@ enum Command {
         #[command(flatten)]
         common: Common,
     },
+    /// The five-axis transformation along a path: CL points (tool tip x y z and direction
+    /// i j k) to the machine's linear and rotary axes, each row continuous with the one
+    /// before.
+    #[command(
+        after_help = "FILE holds one CL point per line, 'x y z i j k' (spaces, commas or \
+                      semicolons); '#' lines and a first line of column names are comments. \
+                      The output has one line per input line: X Y Z (the tool adapter's \
+                      reference point) and the rotary positions, blank for a comment, \
+                      'error: ...' for a point the machine cannot reach (the path goes on from \
+                      the last point reached). The machine as for 'axes'.\n\n\
+                      Example (an AC table: A about X through z = 100, C on it; tool 50 mm):\n  \
+                      cncrot path cl.txt --axis work:1,0,0@0,0,100 --axis work:0,0,1 \\\n    \
+                      --tool-length 50 --current 20,80"
+    )]
+    Path {
+        /// The CL file ('-': standard input).
+        file: String,
+        #[command(flatten)]
+        machine: MachineOpts,
+        /// Tool length, mm: the tip lies this far from the tool adapter along the tool.
+        #[arg(long, default_value_t = 0.0)]
+        tool_length: f64,
+        /// Positions before the first point: the rotary axes (A,B,C) or X,Y,Z then them.
+        #[arg(long, value_name = "[X,Y,Z,]A,B,C")]
+        current: Option<String>,
+        /// Which solution: closest (continuous with the row before), or a priority axis
+        /// minus:K / plus:K (its lower / higher position), or inverse.
+        #[arg(long, default_value = "closest")]
+        rule: String,
+        /// One JSON object per line.
+        #[arg(long)]
+        json: bool,
+        /// Decimals of the numbers written (0..17), or 'exact'.
+        #[arg(long, default_value = "4", value_parser = input::decimals)]
+        decimals: i32,
+    },
     /// Rotary-axis positions of a described machine for an orientation (or, with
     /// --forward, the orientation of given positions).
     #[command(
@@ -356,6 +392,28 @@ fn main() -> ExitCode {
             set,
             current.as_deref(),
             &common,
+        ),
+        Command::Path {
+            file,
+            machine,
+            tool_length,
+            current,
+            rule,
+            json,
+            decimals,
+        } => commands::path(
+            &commands::PathArgs {
+                file: &file,
+                tool_length,
+                current: current.as_deref(),
+                rule: &rule,
+            },
+            &machine.args(),
+            &Common {
+                batch: None,
+                json,
+                decimals,
+            },
         ),
         Command::Axes {
             machine,

@@ -925,3 +925,66 @@ fn probe_defaults_to_the_tools_side() {
         "{out}"
     );
 }
+
+/// The AC table of docs/kinematics.md: A about X through z = 100, C on it, tool 50 mm.
+const AC: [&str; 6] = [
+    "--axis",
+    "work:1,0,0@0,0,100",
+    "--axis",
+    "work:0,0,1",
+    "--tool-length",
+    "50",
+];
+
+/// `path`: the worked example by hand (X 0, Y 50 + 5√3, Z 155 − 50√3, A 30, C 90), a
+/// header and a comment as blank lines, a zero direction as an error line in place, the
+/// pole keeping C, and the rows after an error going on.
+#[test]
+fn path_worked_example_alignment_and_the_pole() {
+    let cl = "x,y,z,i,j,k\n10 0 0 0.5 0 0.8660254037844386\n# a comment\n10 0 0 0 0 0\n\
+              10 0 0 0 0 1\n10 0 0 -0.5 0 0.8660254037844386\n";
+    let mut args = vec!["path", "-", "--current", "20,80", "--decimals", "exact"];
+    args.extend(AC);
+    let r = cncrot(&args, cl);
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(lines.len(), 6, "{}", r.stdout);
+    assert_eq!(lines[0], "");
+    let s3 = 3f64.sqrt();
+    close(
+        &numbers(lines[1]),
+        &[0.0, 50.0 + 5.0 * s3, 155.0 - 50.0 * s3, 30.0, 90.0],
+        1e-12,
+    );
+    assert_eq!(lines[2], "");
+    assert!(
+        lines[3].starts_with("error: line 4") && lines[3].contains("zero"),
+        "{}",
+        lines[3]
+    );
+    // The pole: A = 0, C stays at 90 (free), the tip 50 below the adapter.
+    assert!(lines[4].contains("free axis kept"), "{}", lines[4]);
+    close(&numbers(lines[4]), &[0.0, 10.0, 50.0, 0.0, 90.0], 1e-12);
+    // Past the pole in the plane of A: A changes sign, C stays still. Rx(-30°)·(0, 10, -100)
+    // + (0, 0, 100) = (0, 5√3 - 50, -5 - 50√3 + 100), the adapter 50 above.
+    close(
+        &numbers(lines[5]),
+        &[0.0, 5.0 * s3 - 50.0, 145.0 - 50.0 * s3, -30.0, 90.0],
+        1e-12,
+    );
+}
+
+/// `path --json`: one object per input line, numbers at full precision.
+#[test]
+fn path_json() {
+    let mut args = vec!["path", "-", "--json", "--current", "0,0,0,20,80"];
+    args.extend(AC);
+    let r = cncrot(&args, "10 0 0 0.5 0 0.8660254037844386\n");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(
+        r.stdout
+            .starts_with("{\"linear\":[0,58.66025403784438,68.39745962155614],\"rotary\":[30"),
+        "{}",
+        r.stdout
+    );
+}
