@@ -173,6 +173,16 @@ int main(void) {
       printf("KF %d", k), hexes(ax, 3), hexes(f, 16), printf("\n");
       int32_t s = cncrot_machine_inverse(&m, f, sol, 2, &n);
       printf("KI %d", k), hexes(f, 16), printf(" %d", (int)n), hexes(sol, 6), printf(" %d\n", s);
+      /* The five-axis transformation: a pose from random axes, back from positions near. */
+      double six[6] = {rnd(-300, 300), rnd(-300, 300), rnd(-300, 300), ax[0], ax[1], ax[2]}, len = rnd(0, 200);
+      double pose[16], prev6[6] = {0, 0, 0, ax[0] + rnd(-5, 5), ax[1] + rnd(-5, 5), k ? ax[2] + rnd(-5, 5) : 0}, back[6];
+      if (cncrot_machine_tcp_forward(&m, six, len, pose) == 0) {
+        int32_t t = cncrot_machine_tcp_inverse(&m, pose, len, prev6, back);
+        if (t >= 0) {
+          printf("KT %d", k), hexes(six, 6), hexes(&len, 1), hexes(pose, 16), hexes(prev6, 6), hexes(back, 6);
+          printf(" %d\n", t);
+        }
+      }
       int32_t rule = j % 4, ref = rule == 1 || rule == 2 ? 2 : 0;
       s = cncrot_machine_choose(&m, f, cur, rule, ref, out, res, rem);
       if (s >= 0) {

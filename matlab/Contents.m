@@ -27,6 +27,8 @@
 %   cncrot_machine_forward - The tool frame of a machine at rotary-axis positions.
 %   cncrot_machine_inverse - Every set of rotary-axis positions for an orientation.
 %   cncrot_machine_choose  - The rotary-axis positions to move to for an orientation.
+%   cncrot_machine_tcp_forward - Tool tip and direction from every machine axis.
+%   cncrot_machine_tcp_inverse - Every machine axis for tool tips and directions (a path).
 %
 % Building
 %   build_mex              - Builds the MEX functions, in MATLAB or GNU Octave.

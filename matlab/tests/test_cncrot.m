@@ -459,6 +459,26 @@ function test_cncrot(cases_file)
   expect_error('cncrot:parse', @() cncrot_machine_forward('$TC_CARR7[1]=1x', [0 0 0]), 'machine: swivel text');
   carr = sprintf('$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1\n$TC_CARR10[1]=0 $TC_CARR11[1]=1 $TC_CARR12[1]=0\n$TC_CARR6[1]=-150\n');
   check(max(max(abs(cncrot_machine_forward(carr, [30 40 0]) - F))) < 1e-12, 'machine: swivel text = matrix');
+  % The five-axis transformation: the AC table of docs/kinematics.md, by hand.
+  ac = [1 1 0 0 0 0 100 0 0 0 0 0; 1 0 0 1 0 0 0 0 0 0 0 0];
+  want = [0, 50 + 5 * sqrt(3), 155 - 50 * sqrt(3), 30, 90, 0];
+  A = cncrot_machine_tcp_inverse(ac, [10 0 0 0.5 0 sqrt(3)/2], 50, [0 0 0 20 80 0]);
+  check(max(abs(A - want)) < 1e-12, 'tcp: AC table by hand (CL row)');
+  P = cncrot_machine_tcp_forward(ac, want, 50);
+  check(max(abs(P(1:3, 4) - [10; 0; 0])) < 1e-12 && max(abs(P(1:3, 3) - [0.5; 0; sqrt(3)/2])) < 1e-15, 'tcp: forward by hand');
+  check(max(abs(cncrot_machine_tcp_inverse(ac, P, 50, [0 0 0 20 80 0]) - want)) < 1e-12, 'tcp: a pose as input');
+  % A path through the pole in the plane of A: C stays at 37, A passes 0 (free there).
+  a = (10:-0.5:-10).';
+  axes_in = [repmat([5 6 7], numel(a), 1), a, repmat([37 0], numel(a), 1)];
+  Ps = cncrot_machine_tcp_forward(ac, axes_in, 80);
+  [As, st] = cncrot_machine_tcp_inverse(ac, Ps, 80, axes_in(1, :));
+  check(max(max(abs(As - axes_in))) < 1e-9 && isequal(st.', double(a.' == 0) * 2), 'tcp: path through the pole');
+  check(isequal(size(cncrot_machine_tcp_inverse(ac, zeros(0, 6), 50)), [0 6]), 'tcp: no rows');
+  expect_message('cncrot:badArgument', @() cncrot_machine_tcp_inverse(ac, [1 2 3 0 0 0; 1 2 3 0 0 0], 50), 'tcp: zero direction', ...
+                 'cncrot_machine_tcp_inverse', 'row 1', 'must not be zero');
+  expect_error('cncrot:badSize', @() cncrot_machine_tcp_inverse(ac, [1 2 3 0 0 1], 50, [0 0 0]), 'tcp: previous of 3');
+  expect_error('cncrot:outOfTravel', @() cncrot_machine_tcp_inverse([1 1 0 0 0 0 100 -10 10 0 0 0; 1 0 0 1 0 0 0 0 0 0 0 0], ...
+                                                                  [10 0 0 0.5 0 sqrt(3)/2], 50), 'tcp: travel');
   fid = fopen(cases_file, 'r');
   check(fid >= 0, 'cases file');
   n = 0;
@@ -521,6 +541,10 @@ function test_cncrot(cases_file)
         [a, R, res, st] = cncrot_machine_choose(machines{str2double(t{2}) + 1}, reshape(hv(5, 16), 4, 4).', ...
                                                 hv(21, 3), str2double(t{3}), str2double(t{4}));
         check(same(a, 24) && same(res, 27) && same(reshape(R.', 1, 16), 30) && st == str2double(t{46}), ['parity ' line]);
+      case 'KT'
+        P = cncrot_machine_tcp_forward(machines{str2double(t{2}) + 1}, hv(3, 6), h(9));
+        [A, st] = cncrot_machine_tcp_inverse(machines{str2double(t{2}) + 1}, reshape(hv(10, 16), 4, 4).', h(9), hv(26, 6));
+        check(same(reshape(P.', 1, 16), 10) && same(A, 32) && st == str2double(t{38}), ['parity ' line]);
       case 'PE'
         [a, F2] = cncrot_probe_edge(reshape(hv(2, 16), 4, 4).', hv(18, 3), hv(21, 3));
         check(same(a, 24) && same(reshape(F2.', 1, 16), 25), ['parity ' line]);

@@ -1,0 +1,86 @@
+/* [axes, status] = cncrot_machine_tcp_inverse(machine, P, L, previous):
+ * see cncrot_machine_tcp_inverse.m. */
+#include <math.h>
+#include "gateway.h"
+
+/* A frame (row-major) whose third column is the direction (i, j, k) made a unit vector,
+ * X' the component of the machine's X (of Y for a direction near X) perpendicular to it:
+ * the frame `cncrot path` builds for a CL point. 0 when the direction is zero. */
+static int frame_along(const double tip[3], const double dir[3], double f[16]) {
+  double len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+  if (!(len > 1e-9)) return 0;
+  double k[3] = {dir[0] / len, dir[1] / len, dir[2] / len};
+  double h[3] = {fabs(k[0]) < 0.9 ? 1.0 : 0.0, fabs(k[0]) < 0.9 ? 0.0 : 1.0, 0.0};
+  double along = h[0] * k[0] + h[1] * k[1] + h[2] * k[2];
+  double x[3] = {h[0] - along * k[0], h[1] - along * k[1], h[2] - along * k[2]};
+  double xl = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+  for (int i = 0; i < 3; i++) x[i] /= xl;
+  double y[3] = {k[1] * x[2] - k[2] * x[1], k[2] * x[0] - k[0] * x[2], k[0] * x[1] - k[1] * x[0]};
+  for (int i = 0; i < 3; i++) {
+    f[4 * i] = x[i];
+    f[4 * i + 1] = y[i];
+    f[4 * i + 2] = k[i];
+    f[4 * i + 3] = tip[i];
+  }
+  f[12] = f[13] = f[14] = 0;
+  f[15] = 1;
+  return 1;
+}
+
+void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
+  check_nargs(nrhs, 3, 4, nlhs, 2);
+  cncrot_machine m;
+  machine_arg(prhs[0], 1, &m);
+  /* Poses 4-by-4-by-N, or CL rows N-by-6 (x y z i j k). */
+  const mxArray *p = prhs[1];
+  (void)real_data(p, 2, "P");
+  const mwSize *d = mxGetDimensions(p);
+  int cl = mxGetNumberOfDimensions(p) == 2 && d[1] == 6;
+  size_t n = cl ? rows_arg(p, 2, "P", 6) : squares_arg(p, 2, "P", 4);
+  const double *pd = real_data(p, 2, "P");
+  double len = scalar_arg(prhs[2], 3, "L");
+  double prev[6] = {0, 0, 0, 0, 0, 0};
+  if (nrhs > 3) {
+    const double *q = real_data(prhs[3], 4, "previous");
+    if (mxGetNumberOfElements(prhs[3]) != 6)
+      fail("cncrot:badSize", "%s must have 6 elements (X Y Z and 3 rotary axes); got %s", label(4, "previous"),
+           described(prhs[3]));
+    memcpy(prev, q, sizeof prev);
+  }
+  mxArray *out = mxCreateDoubleMatrix(n, 6, mxREAL);
+  mxArray *st = mxCreateDoubleMatrix(n, 1, mxREAL);
+  double *o = mxGetDoubles(out), *so = mxGetDoubles(st);
+  for (size_t r = 0; r < n; r++) {
+    double f[16], ax[6];
+    if (cl) {
+      double tip[3] = {pd[r], pd[r + n], pd[r + 2 * n]}, dir[3] = {pd[r + 3 * n], pd[r + 4 * n], pd[r + 5 * n]};
+      if (!frame_along(tip, dir, f)) {
+        mxDestroyArray(out);
+        mxDestroyArray(st);
+        if (n > 1)
+          fail("cncrot:badArgument", "%s, row %d: the tool direction (i, j, k) must not be zero", label(2, "P"), (int)r + 1);
+        fail("cncrot:badArgument", "%s: the tool direction (i, j, k) must not be zero", label(2, "P"));
+      }
+    } else {
+      frame_to_row_major(pd + 16 * r, f);
+    }
+    int32_t s = cncrot_machine_tcp_inverse(&m, f, len, prev, ax);
+    if (s < 0) {
+      mxDestroyArray(out);
+      mxDestroyArray(st);
+      const char *where = s == CNCROT_STATUS_BAD_ARGUMENT || (s == CNCROT_STATUS_OUT_OF_RANGE && len >= -1e6 && len <= 1e6)
+                              ? (r == 0 ? label(4, "previous") : label(2, "P"))
+                          : s == CNCROT_STATUS_OUT_OF_RANGE ? label(3, "L")
+                                                            : label(2, "P");
+      raise_status(s, where, "row", (long)r, n);
+    }
+    for (int c = 0; c < 6; c++) o[r + n * c] = ax[c];
+    so[r] = s;
+    memcpy(prev, ax, sizeof prev);
+  }
+  plhs[0] = out;
+  if (nlhs > 1)
+    plhs[1] = st;
+  else
+    mxDestroyArray(st);
+}
