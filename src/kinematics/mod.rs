@@ -207,7 +207,8 @@ impl Machine {
         name_len: 0,
     };
 
-    /// Makes `self` [`Machine::new`]`(tool_direction)` in place (unchanged on an error):
+    /// Makes `self`, a [`Machine::EMPTY`], [`Machine::new`]`(tool_direction)` in place
+    /// (unchanged on an error):
     /// the C boundary builds its machine in the caller's frame instead of returning 400
     /// bytes through two `Result`s (stack bound of the hot path).
     pub(crate) fn reset(&mut self, tool_direction: Vector) -> Result<(), Error> {
@@ -215,7 +216,11 @@ impl Machine {
             return Err(Error::NotFinite);
         }
         let b = unit_vector(tool_direction).map_err(|_| Error::BadArgument)?;
-        *self = Machine::EMPTY;
+        // The fields a machine without axes reads; the slots of the axes and the name's
+        // bytes are written as axes and a name are added (a copy of `EMPTY` cost 400 bytes
+        // of stores on every call).
+        self.count = 0;
+        self.name_len = 0;
         self.tool_direction = b;
         Ok(())
     }
@@ -327,23 +332,26 @@ impl Machine {
         }; MAX_AXES];
         let mut n = 0;
         let axes = self.axes();
-        let work = axes
-            .iter()
-            .enumerate()
-            .rev()
-            .filter(|(_, a)| a.side == Side::Work);
-        let tool = axes
-            .iter()
-            .enumerate()
-            .filter(|(_, a)| a.side == Side::Tool);
-        for (index, a) in work.chain(tool) {
+        // Plain loops over the three slots: the iterator adapters cost a tenth of a
+        // five-axis transformation, which builds the chain more than once.
+        let mut put = |index: usize, a: &RotaryAxis, sign: f64| {
             if let Some(link) = chain.get_mut(n) {
                 *link = Link {
                     axis: a.direction,
-                    sign: if a.side == Side::Tool { 1.0 } else { -1.0 },
+                    sign,
                     index,
                 };
                 n += 1;
+            }
+        };
+        for index in (0..axes.len()).rev() {
+            if let Some(a) = axes.get(index).filter(|a| a.side == Side::Work) {
+                put(index, a, -1.0);
+            }
+        }
+        for index in 0..axes.len() {
+            if let Some(a) = axes.get(index).filter(|a| a.side == Side::Tool) {
+                put(index, a, 1.0);
             }
         }
         (chain, n)
