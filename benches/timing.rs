@@ -674,6 +674,22 @@ $TC_CARR34[1]=\"HEAD_CB\"
                     )
                 },
             );
+            b.time(
+                "cncrot_machine_tcp_inverse_rule",
+                class,
+                &tcp,
+                &mut |(pose, prev)| unsafe {
+                    cncrot_machine_tcp_inverse_rule(
+                        m,
+                        pose.as_ptr(),
+                        120.0,
+                        prev.as_ptr(),
+                        CNCROT_CHOOSE_MINUS,
+                        2,
+                        out6.as_mut_ptr(),
+                    )
+                },
+            );
             let mut lin = [0.0; 3];
             b.time("cncrot_machine_follow", class, &pos, &mut |p| unsafe {
                 cncrot_machine_follow(

@@ -450,6 +450,20 @@ static void five_axis_transformation(void) {
   /* The output may be the previous positions (one cycle after another). */
   CHECK_STATUS(cncrot_machine_tcp_inverse(&m, pose, 50, prev, prev), CNCROT_STATUS_OK);
   CHECK_NEAR(prev, want, 6, 1e-12);
+  /* A priority axis: A's lower position is the other solution (A = -30, C = -90), from the
+   * same previous positions; its higher one is the first; a rule that is not one, refused. */
+  double prev2[6] = {0, 0, 0, 20, 80, 0}, low[6], high[6];
+  CHECK_STATUS(cncrot_machine_tcp_inverse_rule(&m, pose, 50, prev2, CNCROT_CHOOSE_MINUS, 1, low), CNCROT_STATUS_OK);
+  CHECK(fabs(low[3] + 30) < 1e-12 && fabs(low[4] + 90) < 1e-12, "minus on A: %g %g", low[3], low[4]);
+  CHECK_STATUS(cncrot_machine_tcp_inverse_rule(&m, pose, 50, prev2, CNCROT_CHOOSE_PLUS, 1, high), CNCROT_STATUS_OK);
+  CHECK_NEAR(high, want, 6, 1e-12);
+  CHECK_STATUS(cncrot_machine_tcp_inverse_rule(&m, pose, 50, prev2, CNCROT_CHOOSE_MINUS, 3, high), CNCROT_STATUS_BAD_ARGUMENT);
+  /* The tip is the same from either solution. */
+  double tl[16];
+  CHECK_STATUS(cncrot_machine_tcp_forward(&m, low, 50, tl), CNCROT_STATUS_OK);
+  double tip_low[3] = {tl[3], tl[7], tl[11]}, dir_low[3] = {tl[2], tl[6], tl[10]};
+  CHECK_NEAR(tip_low, tip0, 3, 1e-12);
+  CHECK_NEAR(dir_low, dir0, 3, 1e-15);
   /* At the pole C is free and stays where it was. */
   double pole[16] = {1, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1};
   double at[6] = {0, 0, 0, 0, 123, 0}, out[6];

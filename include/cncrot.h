@@ -1420,6 +1420,43 @@ int32_t cncrot_machine_tcp_inverse(const struct cncrot_machine *machine,
                                    double *axes);
 
 /**
+ * `cncrot_machine_tcp_inverse` with the rotary solution picked by `rule` and
+ * `reference_axis` as in `cncrot_machine_choose`: `CNCROT_CHOOSE_CLOSEST` (`reference_axis`
+ * 0; the same as `cncrot_machine_tcp_inverse`), `CNCROT_CHOOSE_MINUS` / `_PLUS` (a priority
+ * axis, 1-based, and its direction: the solution with its lower / higher position, as
+ * `G53.1 P1/P2` or `SEQ-`/`SEQ+` ask; the other one when that lies outside the travel),
+ * `CNCROT_CHOOSE_INVERSE` (`reference_axis` 0; the other solution of the pair). Whole turns
+ * are unwound toward `previous` in every case.
+ *
+ * Returns 0, `CNCROT_STATUS_FREE_AXIS`, `CNCROT_STATUS_SNAPPED`, or with `axes`
+ * untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_ARGUMENT` (a rule or
+ * reference axis that is not one, an unused previous rotary position not 0),
+ * `CNCROT_STATUS_NOT_FINITE` (the pose, `tool_length`, `previous`),
+ * `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_UNREACHABLE`,
+ * `CNCROT_STATUS_OUT_OF_TRAVEL`, `CNCROT_STATUS_OUT_OF_RANGE` (a previous rotary position
+ * of magnitude `CNCROT_MACHINE_ANGLE_MAX_DEG` or more, `tool_length` beyond
+ * ±`CNCROT_MACHINE_LENGTH_MAX_MM`, a result that overflows), `CNCROT_STATUS_BAD_ARGUMENT`,
+ * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`,
+ * `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a machine: see
+ * `cncrot_machine`).
+ *
+ * # Safety
+ * As `cncrot_machine_tcp_inverse`.
+ *
+ * ```c
+ * // B is the priority axis: its lower position.
+ * cncrot_machine_tcp_inverse_rule(&m, pose, 50.0, prev, CNCROT_CHOOSE_MINUS, 2, ax);
+ * ```
+ */
+int32_t cncrot_machine_tcp_inverse_rule(const struct cncrot_machine *machine,
+                                        const double *pose,
+                                        double tool_length,
+                                        const double *previous,
+                                        int32_t rule,
+                                        int32_t reference_axis,
+                                        double *axes);
+
+/**
  * The paper's flange probing: two points along the machine's X (`a1`, `a2`) and two along
  * Y (`b1`, `b2`), probed on the flange in machine coordinates, give the flange's tilt as
  * extrinsic angles about X, Y, Z (for CYCLE600 with `_INEXIN = 0`, `_BIN_IN = 57`; the

@@ -776,7 +776,7 @@ fn c_machine() -> cncrot_machine {
 /// The statuses of every export that reads a description, on `m`: forward, inverse,
 /// choose, follow-up, adding an axis, CYCLE600 positioning. On a refusal each must leave
 /// its outputs (and the description) untouched.
-fn statuses_of(m: &cncrot_machine) -> [i32; 8] {
+fn statuses_of(m: &cncrot_machine) -> [i32; 9] {
     let id = [
         1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
     ];
@@ -785,7 +785,7 @@ fn statuses_of(m: &cncrot_machine) -> [i32; 8] {
     pos[..n].fill(10.0);
     let x = [1.0, 0.0, 0.0];
     let gud = valid_state();
-    let mut out = [[7.0f64; 16]; 8];
+    let mut out = [[7.0f64; 16]; 9];
     let mut count = 99usize;
     let mut copy = *m;
     let six = [1.0, 2.0, 3.0, pos[0], pos[1], pos[2]];
@@ -822,6 +822,15 @@ fn statuses_of(m: &cncrot_machine) -> [i32; 8] {
             ),
             cncrot_machine_tcp_forward(m, six.as_ptr(), 50.0, out[6].as_mut_ptr()),
             cncrot_machine_tcp_inverse(m, id.as_ptr(), 50.0, six.as_ptr(), out[7].as_mut_ptr()),
+            cncrot_machine_tcp_inverse_rule(
+                m,
+                id.as_ptr(),
+                50.0,
+                six.as_ptr(),
+                CNCROT_CHOOSE_CLOSEST,
+                0,
+                out[8].as_mut_ptr(),
+            ),
         ]
     };
     if s.iter().all(|&x| x < 0) {
@@ -943,7 +952,7 @@ fn a_hand_filled_machine_is_refused_unless_it_is_one() {
     for (what, edit, want) in refused {
         let mut m = good;
         edit(&mut m);
-        assert_eq!(statuses_of(&m), [want; 8], "{what}");
+        assert_eq!(statuses_of(&m), [want; 9], "{what}");
     }
     let accepted: [(&str, Edit); 7] = [
         ("a direction of any length", |m| {
@@ -1134,6 +1143,18 @@ fn every_status_of_a_kinematics_export_is_named_in_its_header_doc() {
                 ),
             );
             note(
+                "cncrot_machine_tcp_inverse_rule",
+                cncrot_machine_tcp_inverse_rule(
+                    &m,
+                    frame.as_ptr(),
+                    length,
+                    six.as_ptr(),
+                    rule,
+                    reference,
+                    six_out.as_mut_ptr(),
+                ),
+            );
+            note(
                 "cncrot_machine_add_axis",
                 cncrot_machine_add_axis(
                     &mut copy,
@@ -1289,6 +1310,10 @@ fn every_status_of_a_kinematics_export_is_named_in_its_header_doc() {
         note(
             "cncrot_machine_tcp_inverse",
             cncrot_machine_tcp_inverse(&m, d.as_ptr(), 1.0, null(), o.as_mut_ptr()),
+        );
+        note(
+            "cncrot_machine_tcp_inverse_rule",
+            cncrot_machine_tcp_inverse_rule(&m, null(), 1.0, d.as_ptr(), 0, 0, o.as_mut_ptr()),
         );
         note(
             "cncrot_machine_from_carr",

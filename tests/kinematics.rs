@@ -1298,3 +1298,48 @@ fn tcp_inverse_takes_the_rotary_positions_choose_takes() {
     // 7 007 of the 9 000 reach their pose within the travel; the others fail alike.
     assert!(compared > 6500, "{compared}");
 }
+
+/// A tool 7.5e-9 rad from −Z (found by the fuzz target): the base rotation `B` turned +Z
+/// onto a direction 6.5e-9 off the tool's through `1/(1 + c)`, and the five-axis inverse
+/// then reached a direction that far from its target. The arc is computed stably now: `B`
+/// takes +Z onto the tool direction to rounding, at and near −Z, for tools on every side.
+#[test]
+fn the_base_rotation_near_minus_z() {
+    for b in [
+        [-7.53866525610176e-9, 0.0, -1.0],
+        [1e-12, -2e-12, -1.0],
+        [0.0, 0.0, -1.0],
+        [0.6, 0.0, -0.8],
+        [0.0, 0.0, 1.0],
+        [0.3, -0.4, 0.5],
+    ] {
+        let m = Machine::new(b)
+            .unwrap()
+            .with_axis(axis(Side::Tool, [0.0, -1.0, 0.0], [0.0; 3]))
+            .unwrap();
+        let unit = m.tool_direction();
+        let f = m.forward([0.0; 3]).unwrap().rotation;
+        for (i, u) in unit.iter().enumerate() {
+            assert!((f[i][2] - u).abs() < 1e-15, "{b:?}: {f:?}");
+        }
+        // An orthonormal B.
+        let ftf = mul(&cncrot::transpose(&f), &f);
+        for (i, row) in ftf.iter().enumerate() {
+            for (j, x) in row.iter().enumerate() {
+                let want = if i == j { 1.0 } else { 0.0 };
+                assert!((x - want).abs() < 1e-15, "{b:?}: {ftf:?}");
+            }
+        }
+        let pose = m
+            .tcp_forward([0.0, 0.0, 0.0, 30.333, 0.0, 0.0], 10.0)
+            .unwrap();
+        let t = m
+            .tcp_inverse(&pose, 10.0, [0.0, 0.0, 0.0, 537.984, 0.0, 0.0])
+            .unwrap();
+        let back = m.tcp_forward(t.axes, 10.0).unwrap();
+        for i in 0..3 {
+            assert!((back.rotation[i][2] - pose.rotation[i][2]).abs() < 1e-15);
+            assert!((back.translation[i] - pose.translation[i]).abs() < 1e-12);
+        }
+    }
+}

@@ -79,6 +79,28 @@ fn tcp(m: &cncrot_machine, n: usize, pos: &[f64; 3], current: &[f64; 3], t: &[u8
     let s = unsafe {
         cncrot_machine_tcp_inverse(m, pose.as_ptr(), length, prev.as_ptr(), out.as_mut_ptr())
     };
+    // Every rule and reference axis the bytes give: untouched on refusal, finite otherwise.
+    let (rule, reference) = (
+        i32::from(t.first().copied().unwrap_or(0) % 5),
+        i32::from(t.get(1).copied().unwrap_or(0) % 4),
+    );
+    let mut ruled = [6.0; 6];
+    let r = unsafe {
+        cncrot_machine_tcp_inverse_rule(
+            m,
+            pose.as_ptr(),
+            length,
+            prev.as_ptr(),
+            rule,
+            reference,
+            ruled.as_mut_ptr(),
+        )
+    };
+    if r < 0 {
+        assert_eq!(ruled, [6.0; 6]);
+    } else {
+        assert!(ruled.iter().all(|x| x.is_finite()));
+    }
     if s < 0 {
         assert_eq!(out, [4.0; 6]);
         return;

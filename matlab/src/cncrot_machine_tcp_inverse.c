@@ -1,4 +1,4 @@
-/* [axes, status] = cncrot_machine_tcp_inverse(machine, P, L, previous):
+/* [axes, status] = cncrot_machine_tcp_inverse(machine, P, L, previous, rule, ref):
  * see cncrot_machine_tcp_inverse.m. */
 #include <math.h>
 #include "gateway.h"
@@ -28,7 +28,7 @@ static int frame_along(const double tip[3], const double dir[3], double f[16]) {
 }
 
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
-  check_nargs(nrhs, 3, 4, nlhs, 2);
+  check_nargs(nrhs, 3, 6, nlhs, 2);
   cncrot_machine m;
   machine_arg(prhs[0], 1, &m);
   /* Poses 4-by-4-by-N, or CL rows N-by-6 (x y z i j k). */
@@ -47,6 +47,14 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
            described(prhs[3]));
     memcpy(prev, q, sizeof prev);
   }
+  int32_t rule = nrhs > 4 ? rule_arg(prhs[4], 5, "rule") : CNCROT_CHOOSE_CLOSEST;
+  int32_t ref = nrhs > 5 ? integer_arg(prhs[5], 6, "ref") : 0;
+  int sided = rule == CNCROT_CHOOSE_MINUS || rule == CNCROT_CHOOSE_PLUS;
+  if (sided && (ref < 1 || ref > m.count))
+    fail("cncrot:badArgument", "%s must be an axis of the machine, 1..%d, for rule 'minus' or 'plus'; got %d", label(6, "ref"),
+         (int)m.count, (int)ref);
+  if (!sided && ref != 0)
+    fail("cncrot:badArgument", "%s must be 0 (or left out) for rule 'closest' or 'inverse'; got %d", label(6, "ref"), (int)ref);
   mxArray *out = mxCreateDoubleMatrix(n, 6, mxREAL);
   mxArray *st = mxCreateDoubleMatrix(n, 1, mxREAL);
   double *o = mxGetDoubles(out), *so = mxGetDoubles(st);
@@ -64,7 +72,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     } else {
       frame_to_row_major(pd + 16 * r, f);
     }
-    int32_t s = cncrot_machine_tcp_inverse(&m, f, len, prev, ax);
+    int32_t s = cncrot_machine_tcp_inverse_rule(&m, f, len, prev, rule, ref, ax);
     if (s < 0) {
       mxDestroyArray(out);
       mxDestroyArray(st);

@@ -474,6 +474,9 @@ function test_cncrot(cases_file)
   [As, st] = cncrot_machine_tcp_inverse(ac, Ps, 80, axes_in(1, :));
   check(max(max(abs(As - axes_in))) < 1e-9 && isequal(st.', double(a.' == 0) * 2), 'tcp: path through the pole');
   check(isequal(size(cncrot_machine_tcp_inverse(ac, zeros(0, 6), 50)), [0 6]), 'tcp: no rows');
+  low = cncrot_machine_tcp_inverse(ac, [10 0 0 0.5 0 sqrt(3)/2], 50, [0 0 0 20 80 0], 'minus', 1);
+  check(abs(low(4) + 30) < 1e-12 && abs(low(5) + 90) < 1e-12, 'tcp: A the priority axis, its lower position');
+  expect_error('cncrot:badArgument', @() cncrot_machine_tcp_inverse(ac, [10 0 0 0.5 0 sqrt(3)/2], 50, zeros(1, 6), 'minus', 3), 'tcp: ref beyond the axes');
   expect_message('cncrot:badArgument', @() cncrot_machine_tcp_inverse(ac, [1 2 3 0 0 0; 1 2 3 0 0 0], 50), 'tcp: zero direction', ...
                  'cncrot_machine_tcp_inverse', 'row 1', 'must not be zero');
   expect_error('cncrot:badSize', @() cncrot_machine_tcp_inverse(ac, [1 2 3 0 0 1], 50, [0 0 0]), 'tcp: previous of 3');

@@ -879,14 +879,83 @@ pub unsafe extern "C" fn cncrot_machine_tcp_inverse(
         let mut m = Machine::EMPTY;
         load_into(machine, &mut m)?;
         let t = m.tcp_inverse(&target, tool_length, prev)?;
-        write::<6>(axes, t.axes)?;
-        Ok(if t.free {
-            cncrot_status::FreeAxis
-        } else if t.residual.iter().any(|&r| r != 0.0) {
-            cncrot_status::Snapped
-        } else {
-            cncrot_status::Ok
-        })
+        write_tcp(axes, &t)
+    })
+}
+
+/// `cncrot_machine_tcp_inverse` with the rotary solution picked by `rule` and
+/// `reference_axis` as in `cncrot_machine_choose`: `CNCROT_CHOOSE_CLOSEST` (`reference_axis`
+/// 0; the same as `cncrot_machine_tcp_inverse`), `CNCROT_CHOOSE_MINUS` / `_PLUS` (a priority
+/// axis, 1-based, and its direction: the solution with its lower / higher position, as
+/// `G53.1 P1/P2` or `SEQ-`/`SEQ+` ask; the other one when that lies outside the travel),
+/// `CNCROT_CHOOSE_INVERSE` (`reference_axis` 0; the other solution of the pair). Whole turns
+/// are unwound toward `previous` in every case.
+///
+/// Returns 0, `CNCROT_STATUS_FREE_AXIS`, `CNCROT_STATUS_SNAPPED`, or with `axes`
+/// untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_ARGUMENT` (a rule or
+/// reference axis that is not one, an unused previous rotary position not 0),
+/// `CNCROT_STATUS_NOT_FINITE` (the pose, `tool_length`, `previous`),
+/// `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_UNREACHABLE`,
+/// `CNCROT_STATUS_OUT_OF_TRAVEL`, `CNCROT_STATUS_OUT_OF_RANGE` (a previous rotary position
+/// of magnitude `CNCROT_MACHINE_ANGLE_MAX_DEG` or more, `tool_length` beyond
+/// ±`CNCROT_MACHINE_LENGTH_MAX_MM`, a result that overflows), `CNCROT_STATUS_BAD_ARGUMENT`,
+/// `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`,
+/// `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a machine: see
+/// `cncrot_machine`).
+///
+/// # Safety
+/// As `cncrot_machine_tcp_inverse`.
+///
+/// ```c
+/// // B is the priority axis: its lower position.
+/// cncrot_machine_tcp_inverse_rule(&m, pose, 50.0, prev, CNCROT_CHOOSE_MINUS, 2, ax);
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_machine_tcp_inverse_rule(
+    machine: *const cncrot_machine,
+    pose: *const f64,
+    tool_length: f64,
+    previous: *const f64,
+    rule: i32,
+    reference_axis: i32,
+    axes: *mut f64,
+) -> i32 {
+    guard(|| {
+        non_null(&[
+            machine.is_null(),
+            pose.is_null(),
+            previous.is_null(),
+            axes.is_null(),
+        ])?;
+        let rule = rule_of(rule, reference_axis)?;
+        let target = read_frame_unchecked(pose)?;
+        let prev = read_finite::<6>(previous)?;
+        if !tool_length.is_finite() {
+            return Err(cncrot_status::NotFinite);
+        }
+        let mut m = Machine::EMPTY;
+        load_into(machine, &mut m)?;
+        let t = m.tcp_inverse_with(&target, tool_length, prev, rule)?;
+        write_tcp(axes, &t)
+    })
+}
+
+/// Writes the axes of a five-axis solution and returns its status.
+///
+/// # Safety
+/// `axes` is non-NULL and points to 6 writable doubles.
+unsafe fn write_tcp(
+    axes: *mut f64,
+    t: &crate::kinematics::Tcp,
+) -> Result<cncrot_status, cncrot_status> {
+    write::<6>(axes, t.axes)?;
+    Ok(if t.free {
+        cncrot_status::FreeAxis
+    } else if t.residual.iter().any(|&r| r != 0.0) {
+        cncrot_status::Snapped
+    } else {
+        cncrot_status::Ok
     })
 }
 

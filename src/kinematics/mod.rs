@@ -361,12 +361,23 @@ impl Machine {
     /// arc (a half turn about X for −Z) \[choice\].
     pub(crate) fn base(&self) -> Matrix {
         let b = self.tool_direction;
-        if b[2] <= -1.0 {
+        // sin² of the arc, from the components (exact to rounding however small).
+        let s2 = b[0] * b[0] + b[1] * b[1];
+        if b[2] < 0.0 && s2 <= 1e-200 {
+            // −Z (within 1e-100 rad): the arc has no direction of its own.
             return [[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]];
         }
-        // I + [k]× + [k]×²/(1 + c) with k = e_z × b, c = b_z: exact for axis directions.
+        // I + [k]× + f·[k]×² with k = e_z × b, c = b_z and f = 1/(1 + c) = (1 − c)/s²: exact
+        // for axis directions. The second form below the equator, where 1 + c cancels: a
+        // tool 7.5e-9 rad from −Z had its direction off by 6.5e-9 through 1/(1 + c) (found
+        // by the fuzz target), and exactly at c = −1 a tool slightly off −Z was turned
+        // onto −Z itself.
         let k = [-b[1], b[0], 0.0];
-        let s = 1.0 / (1.0 + b[2]);
+        let s = if b[2] >= 0.0 {
+            1.0 / (1.0 + b[2])
+        } else {
+            (1.0 - b[2]) / s2
+        };
         let kx = [[0.0, -k[2], k[1]], [k[2], 0.0, -k[0]], [-k[1], k[0], 0.0]];
         let kk = mul(&kx, &kx);
         core::array::from_fn(|i| {

@@ -1374,6 +1374,26 @@ fn machines() -> Vec<Call> {
             ));
             t.f64s(&out);
         }),
+        ("cncrot_machine_tcp_inverse_rule", |t| unsafe {
+            let m = head();
+            let mut pose = [0.0; 16];
+            let ax = [10.0, 20.0, 30.0, 40.0, 50.0, 0.0];
+            cncrot_machine_tcp_forward(&m, ax.as_ptr(), 100.0, pose.as_mut_ptr());
+            let prev = [0.0, 0.0, 0.0, 40.0, 50.0, 0.0];
+            let mut out = [0.0; 6];
+            for (rule, reference) in [(0, 0), (1, 2), (2, 2), (3, 0), (1, 0), (7, 0), (0, 1)] {
+                t.status(cncrot_machine_tcp_inverse_rule(
+                    &m,
+                    pose.as_ptr(),
+                    100.0,
+                    prev.as_ptr(),
+                    rule,
+                    reference,
+                    out.as_mut_ptr(),
+                ));
+                t.f64s(&out);
+            }
+        }),
     ]
 }
 
