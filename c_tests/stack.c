@@ -253,6 +253,12 @@ static void machine_tcp_inverse(void) {
   static double ax[6];
   sink += cncrot_machine_tcp_inverse(&head3, TILT, 100, prev, ax) + cncrot_machine_tcp_inverse(&mach, TILT, 100, prev, ax);
 }
+static void machine_tcp_inverse_rule(void) {
+  static const double prev[6] = {0, 0, 0, 750, 10, -20};
+  static double ax[6];
+  sink += cncrot_machine_tcp_inverse_rule(&head3, TILT, 100, prev, CNCROT_CHOOSE_MINUS, 2, ax) +
+          cncrot_machine_tcp_inverse_rule(&mach, TILT, 100, prev, CNCROT_CHOOSE_CLOSEST, 0, ax);
+}
 static void cycle600_position(void) {
   static const double cur[3] = {0, 0, 0};
   static double ax[3], res[3], rem[16];
@@ -281,6 +287,7 @@ static const struct entry ENTRIES[] = {
     E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
     E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),
     E(program_axes, 1),      E(machine_tcp_forward, 0), E(machine_tcp_inverse, 1),
+    E(machine_tcp_inverse_rule, 1),
     E(matrices_from_angles, 0), E(angles_from_matrices, 0), E(convert_many, 0),
 };
 
