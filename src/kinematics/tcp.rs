@@ -175,10 +175,9 @@ impl Machine {
         }
     }
 
-    /// The general way: the solutions unverified, the one taken verified (the forward
-    /// rotation is needed anyway); should it miss, or be snapped to a Hirth grid (which
-    /// misses by design), the choice is made again among verified solutions, as `choose`
-    /// makes it.
+    /// The general way (three axes, a pole, a rule other than the closest, a choice that
+    /// missed its verification or was snapped to a Hirth grid): the choice among verified
+    /// solutions, as `choose` makes it.
     #[inline(never)]
     fn tcp_general(
         &self,
@@ -187,14 +186,11 @@ impl Machine {
         current: [f64; MAX_AXES],
         rule: Rule,
     ) -> Result<Tcp, Error> {
-        // One binding for both rounds: two would each keep a slot in this frame.
-        for verified in [false, true] {
-            let c = self.settle(&pose.rotation, current, rule, verified)?;
-            if let Some(t) = self.tcp_linear(&c, pose, tool_length, !verified)? {
-                return Ok(t);
-            }
-        }
-        Err(Error::Unreachable)
+        // Verified solutions at once: the first-unverified round of the common case would
+        // keep a second choice in this frame, on the deepest path (stack bound).
+        let c = self.settle(&pose.rotation, current, rule, true)?;
+        self.tcp_linear(&c, pose, tool_length, false)?
+            .ok_or(Error::Unreachable)
     }
 
     /// The rotary positions [`Machine::settle`] takes for [`Rule::Closest`] (unverified),
