@@ -322,7 +322,7 @@ impl Machine {
 /// each in one four-lane call (the same bits as one by one). Not inlined: its matrices
 /// would otherwise sit in the frame of `solve` under every subproblem (stack bound).
 #[inline(never)]
-fn third_angles(
+pub(crate) fn third_angles(
     u1: Vector,
     u2: Vector,
     u3: Vector,

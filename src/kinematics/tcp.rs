@@ -21,7 +21,7 @@
 //! `(X, Y, Z) = W·tip − T·(−L·b)`.
 
 use super::choose::place;
-use super::solve::{along, turn_onto, two_isolated, Phis, VERIFY};
+use super::solve::{along, third_angles, turn_onto, two_isolated, Phis, VERIFY};
 use super::{about_axis_sc, Choice, Machine, Rule, Side, LENGTH_MAX, MAX_AXES, REACH_TOLERANCE};
 use crate::math::{abs, sin_cos_deg4, wrap_deg};
 use crate::vector::dot;
@@ -175,7 +175,7 @@ impl Machine {
         }
     }
 
-    /// The general way (three axes, a pole, a rule other than the closest, a choice that
+    /// The general way (a pole, a rule other than the closest, a choice that
     /// missed its verification or was snapped to a Hirth grid): the choice among verified
     /// solutions, as `choose` makes it.
     #[inline(never)]
@@ -194,10 +194,10 @@ impl Machine {
     }
 
     /// The rotary positions [`Machine::settle`] takes for [`Rule::Closest`] (unverified),
-    /// for one or two axes away from their poles, solved and placed in one pass over fixed
-    /// arrays: the same solutions in the same order, the same placement, the distances
-    /// summed in the same order, so the same choice. `None`: another case (no axis, three
-    /// axes, a pole), which the general path decides. Not inlined (stack bound).
+    /// away from the poles, solved and placed in one pass over fixed arrays: the same
+    /// solutions in the same order, the same placement, the distances summed in the same
+    /// order, so the same choice. `None`: another case (no axis, a pole), which the general
+    /// path decides. Not inlined (stack bound).
     #[inline(never)]
     fn closest_isolated(
         &self,
@@ -205,14 +205,30 @@ impl Machine {
         current: [f64; MAX_AXES],
     ) -> Option<Result<Choice, Error>> {
         let n = self.axes().len();
-        if n == 0 || n == MAX_AXES {
+        if n == 0 {
             return None;
         }
         let (chain, _) = self.chain();
-        let [l1, l2, _] = chain;
+        let [l1, l2, l3] = chain;
         let b = self.tool_direction();
         let d = [target[0][2], target[1][2], target[2][2]];
-        let phis = if n == 1 {
+        let mut third = [0.0; 2];
+        let phis = if n == MAX_AXES {
+            // As `solve` does it: the first two axes bring the third's direction where the
+            // target has it, the third turns about it for the rest.
+            let m = mul(target, &transpose(&self.base()));
+            let u3 = l3.axis;
+            let t3 = rotate(&m, u3);
+            if along(l2.axis, u3) || along(l1.axis, t3) {
+                return None;
+            }
+            let phis = match two_isolated(l1.axis, l2.axis, u3, t3) {
+                Ok(p) => p,
+                Err(e) => return Some(Err(e)),
+            };
+            third = third_angles(l1.axis, l2.axis, u3, &m, &phis);
+            phis
+        } else if n == 1 {
             // Subproblem 1, as `one` solves it; a pole goes the general way.
             let u = l1.axis;
             if abs(dot(u, b) - dot(u, d)) > REACH_TOLERANCE {
@@ -235,10 +251,10 @@ impl Machine {
         };
         let axes = self.axes();
         let mut best: Option<([f64; MAX_AXES], [f64; MAX_AXES], f64)> = None;
-        'solutions: for p in phis.phi.iter().take(phis.count) {
+        'solutions: for (p, t3) in phis.phi.iter().zip(third).take(phis.count) {
             // The positions as `solve` writes them.
             let mut theta = [0.0; MAX_AXES];
-            for (link, &ph) in [l1, l2].iter().zip(p).take(n) {
+            for (link, ph) in [l1, l2, l3].iter().zip([p[0], p[1], t3]).take(n) {
                 let offset = axes.get(link.index).map_or(0.0, |a| a.offset);
                 if let Some(t) = theta.get_mut(link.index) {
                     *t = wrap_deg(offset + link.sign * ph);
