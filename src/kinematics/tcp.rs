@@ -129,7 +129,22 @@ impl Machine {
     /// [`Machine::tcp_inverse`] with the rotary solution picked by `rule`: a priority axis
     /// and its direction ([`Rule::Minus`] / [`Rule::Plus`]: the solution with that axis'
     /// lower or higher position, as `G53.1 P1`/`P2` or `SEQ-`/`SEQ+` ask), or the other
-    /// solution of the pair ([`Rule::Inverse`]).
+    /// solution of the pair ([`Rule::Inverse`]). Whole turns are unwound toward `previous`
+    /// in every case.
+    ///
+    /// ```
+    /// use cncrot::kinematics::{Machine, RotaryAxis, Rule, Side};
+    /// // An AC table: A about X through (0, 0, 100), C on it.
+    /// let m = Machine::new([0.0, 0.0, 1.0]).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Work, [1.0, 0.0, 0.0], [0.0, 0.0, 100.0])).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Work, [0.0, 0.0, 1.0], [0.0; 3])).unwrap();
+    /// let pose = m.tcp_forward([0.0, 0.0, 150.0, 30.0, 90.0, 0.0], 50.0).unwrap();
+    /// // A is the priority axis, its lower position: A = -30°, C = -90°, the same tip.
+    /// let t = m.tcp_inverse_with(&pose, 50.0, [0.0; 6], Rule::Minus(0)).unwrap();
+    /// assert!((t.axes[3] + 30.0).abs() < 1e-12 && (t.axes[4] + 90.0).abs() < 1e-12);
+    /// let back = m.tcp_forward(t.axes, 50.0).unwrap();
+    /// assert!((back.translation[2] - pose.translation[2]).abs() < 1e-12);
+    /// ```
     pub fn tcp_inverse_with(
         &self,
         pose: &Frame,
