@@ -1350,7 +1350,9 @@ fn the_base_rotation_near_minus_z() {
 #[test]
 fn tcp_without_rotary_axes() {
     let m = Machine::new(Z).unwrap();
-    let pose = m.tcp_forward([10.0, 20.0, 30.0, 0.0, 0.0, 0.0], 40.0).unwrap();
+    let pose = m
+        .tcp_forward([10.0, 20.0, 30.0, 0.0, 0.0, 0.0], 40.0)
+        .unwrap();
     assert_eq!(pose.translation, [10.0, 20.0, -10.0]);
     let t = m.tcp_inverse(&pose, 40.0, [0.0; 6]).unwrap();
     assert_eq!(t.axes, [10.0, 20.0, 30.0, 0.0, 0.0, 0.0]);
@@ -1358,7 +1360,10 @@ fn tcp_without_rotary_axes() {
         rotation: elementary(Axis::X, 1.0),
         translation: [0.0; 3],
     };
-    assert_eq!(m.tcp_inverse(&tilted, 40.0, [0.0; 6]), Err(Error::Unreachable));
+    assert_eq!(
+        m.tcp_inverse(&tilted, 40.0, [0.0; 6]),
+        Err(Error::Unreachable)
+    );
     assert_eq!(
         m.tcp_forward([0.0, 0.0, 0.0, 1.0, 0.0, 0.0], 40.0),
         Err(Error::BadArgument)
