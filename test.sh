@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Runs every test of cncrot: formatting, clippy, the Rust tests of the library and the
 # command-line tool (unit, integration, doc, header freshness, ABI check, no-allocation,
-# property and concurrency tests, every CLI subcommand), the no-panic proof, the C harness
+# property and concurrency tests, every CLI subcommand, its pictures through librsvg), the
+# no-panic proof, the C harness
 # (shared and static library, ASan+UBSan, valgrind, header as C99 and C++, the real-time
 # build and its symbols), the installed packages (pkg-config, CMake, MATLAB from the
 # installed copy), the Windows builds (symbols, C harness under Wine), the system-call check of the timing benchmark, every fuzz target for
 # 20 s, and the MATLAB/Octave suite.
 # Installs what the tests need (C compiler, valgrind, strace, pkg-config, CMake, MinGW-w64,
-# Wine, GNU Octave, cargo-fuzz; the Rust Windows targets) when missing. Long runs (fuzzing for 10 minutes a target, timing over 10^7 calls): .ci/long-runs
+# Wine, GNU Octave, librsvg's rsvg-convert, cargo-fuzz; the Rust Windows targets) when missing. Long runs (fuzzing for 10 minutes a target, timing over 10^7 calls): .ci/long-runs
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -21,6 +22,7 @@ command -v cmake >/dev/null || need+=(cmake)
 command -v x86_64-w64-mingw32-gcc >/dev/null || need+=(mingw-w64)
 command -v wine >/dev/null || need+=(wine wine64)
 command -v mkoctfile >/dev/null || need+=(octave liboctave-dev)
+command -v rsvg-convert >/dev/null || need+=(librsvg2-bin)
 if [ ${#need[@]} -gt 0 ]; then
   echo "== installing ${need[*]}"
   sudo=""
@@ -42,6 +44,8 @@ echo "== cargo test"
 cargo test --workspace --features cncrot/nalgebra
 # The trigonometry's bounds and lanes again with the real-time build's libm (sqrt, fmod).
 cargo test --lib --features pure-rust-math math::
+echo "== the CLI's pictures through a renderer (librsvg)"
+bash cli/tests/render.sh
 echo "== cargo doc"
 RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --quiet --features nalgebra
 echo "== no-panic proof"

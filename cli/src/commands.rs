@@ -3,6 +3,7 @@
 
 use crate::input::{self, Failure, Target};
 use crate::output::{num, nums, Json};
+use crate::svg;
 use crate::{run, Common, Report};
 use cncrot::dialects::cycle600::{self, Call, State};
 use cncrot::dialects::head_def::HeadTable;
@@ -239,6 +240,7 @@ pub fn line(
     euler: bool,
     text: Option<&str>,
     common: &Common,
+    svg: Option<&str>,
 ) -> Result<bool, Failure> {
     let dialect = input::dialect(from).map_err(option("--from"))?;
     let targets = targets(to)?;
@@ -247,7 +249,8 @@ pub fn line(
         ..Program::default()
     };
     let d = common.decimals;
-    run(common, text.map(str::to_string), |line| {
+    let mut last = None;
+    let ok = run(common, text.map(str::to_string), |line| {
         let (next, remark) = program
             .line(dialect, line.as_bytes())
             .map_err(|e| Failure::at(e.column, e.error.message()))?;
@@ -270,6 +273,7 @@ pub fn line(
                 json: Json::Obj(vec![("remark", Json::str(brief.to_string()))]),
             });
         }
+        last = Some(line.trim().to_string());
         frame_report(
             &program.frame,
             &targets,
@@ -277,7 +281,31 @@ pub fn line(
             String::new(),
             Json::Obj(vec![]),
         )
-    })
+    })?;
+    if let (Some(path), Some(block)) = (svg, last) {
+        let title = match &common.batch {
+            Some(_) => "the frame after the last tilt of the program".to_string(),
+            None => block,
+        };
+        svg::write(
+            path,
+            &svg::Picture {
+                title,
+                planes: vec![svg::Plane {
+                    frame: program.frame,
+                    label: String::new(),
+                }],
+                size: 50.0,
+                points: Vec::new(),
+                notes: vec![format!(
+                    "origin {}   tool direction (Z') {}",
+                    nums(&program.frame.translation, d),
+                    nums(&column(&program.frame.rotation, 2), d)
+                )],
+            },
+        )?;
+    }
+    Ok(ok)
 }
 
 /// A points file: one point per line; `#` lines, blank lines and a first line that is not
@@ -314,6 +342,7 @@ pub fn probe(
     toward: Option<&str>,
     json: bool,
     d: i32,
+    svg: Option<&str>,
 ) -> Result<bool, Failure> {
     let targets = targets(to)?;
     // The tool's side, or (--order) none: the points' order decides.
@@ -397,6 +426,40 @@ pub fn probe(
         ("turned", Json::Bool(turned)),
         ("extrinsic_xyz", Json::nums(&angles.angles)),
     ]);
+    if let Some(path) = svg {
+        let o = plane.frame.translation;
+        let z = column(&plane.frame.rotation, 2);
+        let dev = |p: &Vector| (0..3).map(|k| (p[k] - o[k]) * z[k]).sum::<f64>();
+        // The patch covers the points: half its side the farthest point's distance.
+        let reach = points
+            .iter()
+            .map(|p| (0..3).map(|k| (p[k] - o[k]).powi(2)).sum::<f64>().sqrt())
+            .fold(0.0f64, f64::max);
+        let mut notes = vec![
+            format!(
+                "flatness {} mm   normal (Z') {}",
+                num(plane.flatness, d),
+                nums(&z, d)
+            ),
+            format!("as extrinsic XYZ: {}", nums(&angles.angles, d)),
+        ];
+        if turned {
+            notes.push("turned to the tool's side (the points' order gave the other)".into());
+        }
+        svg::write(
+            path,
+            &svg::Picture {
+                title: format!("probed plane of {} points", points.len()),
+                planes: vec![svg::Plane {
+                    frame: plane.frame,
+                    label: String::new(),
+                }],
+                size: if reach > 0.0 { reach } else { 50.0 },
+                points: points.iter().map(|p| (*p, dev(p))).collect(),
+                notes,
+            },
+        )?;
+    }
     match frame_report(&plane.frame, &targets, d, full, j) {
         Ok(r) if json => println!("{}", r.json.text()),
         Ok(r) => print!("{}", r.full),
@@ -709,6 +772,8 @@ pub struct AxesArgs<'a> {
     pub rule: &'a str,
     pub all: bool,
     pub forward: bool,
+    /// Draw the last orientation with its positions into this SVG file.
+    pub svg: Option<&'a str>,
 }
 
 fn rule(text: &str, n: usize) -> Result<Rule, Failure> {
@@ -749,7 +814,9 @@ pub fn axes(
         .unwrap_or([0.0; MAX_AXES]);
     let rule = rule(a.rule, n)?;
     let d = common.decimals;
-    run(common, joined(values), |text| {
+    // What the picture shows: the last orientation, and its positions.
+    let mut last: Option<(Frame, Vec<String>)> = None;
+    let ok = run(common, joined(values), |text| {
         if a.forward {
             let p = positions(text, n, "positions")?;
             let f = machine.forward(p)?;
@@ -775,6 +842,7 @@ pub fn axes(
                 brief = nums(&ang.angles, d);
                 json = json.with("angles", Json::nums(&ang.angles));
             }
+            last = Some((f, vec![format!("positions: {}", axes_text(&p[..n], d))]));
             return Ok(Report { full, brief, json });
         }
         let target = matrix_from_angles(kind, code, angles_for(code, text)?);
@@ -800,6 +868,12 @@ pub fn axes(
                 ),
                 ("free", Json::Bool(s.free)),
             ]);
+            let notes = rows
+                .iter()
+                .enumerate()
+                .map(|(k, r)| format!("solution {}: {}", k + 1, axes_text(r, d)))
+                .collect();
+            last = Some((Frame::from_rotation(target), notes));
             return Ok(Report { full, brief, json });
         }
         let c = machine.choose(&target, current, rule)?;
@@ -832,12 +906,41 @@ pub fn axes(
             );
             json = json.with("remaining_extrinsic_xyz", Json::nums(&r.angles));
         }
+        last = Some((
+            Frame::from_rotation(target),
+            vec![format!("positions: {}", axes_text(used, d))],
+        ));
         Ok(Report {
             full,
             brief: nums(used, d),
             json,
         })
-    })
+    })?;
+    if let (Some(path), Some((frame, mut notes))) = (a.svg, last) {
+        notes.push(format!(
+            "tool direction (Z') {}",
+            nums(&column(&frame.rotation, 2), d)
+        ));
+        let name = String::from_utf8_lossy(machine.name()).into_owned();
+        svg::write(
+            path,
+            &svg::Picture {
+                title: if name.is_empty() {
+                    "the machine's orientation".to_string()
+                } else {
+                    format!("the orientation of {name}")
+                },
+                planes: vec![svg::Plane {
+                    frame,
+                    label: String::new(),
+                }],
+                size: 50.0,
+                points: Vec::new(),
+                notes,
+            },
+        )?;
+    }
+    Ok(ok)
 }
 
 /// What `program` is asked: the file, its dialect, a translation, the positions before.
@@ -849,6 +952,8 @@ pub struct ProgramArgs<'a> {
     pub current: Option<&'a str>,
     pub json: bool,
     pub decimals: i32,
+    /// Draw every tilt the program applies into this SVG file.
+    pub svg: Option<&'a str>,
 }
 
 /// A whole part program, block by block (see the command's help). Exit status 1 when a
@@ -888,6 +993,9 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     let mut out = stdout.lock();
     let mut ok = true;
     let mut put = |s: String| writeln!(out, "{s}").is_ok();
+    // The tilts the picture shows: the first few, more would hide each other.
+    const MAX_DRAWN: usize = 6;
+    let (mut drawn, mut tilts) = (Vec::new(), 0);
     for (k, raw) in text.lines().enumerate() {
         let line = k + 1;
         let block = raw.trim_end_matches('\r');
@@ -947,6 +1055,15 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
             Remark::Applied => {
                 applied += 1;
                 let f = p.frame;
+                if f != Frame::IDENTITY {
+                    tilts += 1;
+                    if drawn.len() < MAX_DRAWN {
+                        drawn.push(svg::Plane {
+                            frame: f,
+                            label: format!("line {line}"),
+                        });
+                    }
+                }
                 if let Some(t) = &target {
                     let mut buf = [0u8; 600];
                     match write_line(t.dialect, t.form.as_bytes(), &f, d, &mut buf) {
@@ -1020,8 +1137,27 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
             put(j.text());
         }
         (None, false) => {
-            put(summary);
+            put(summary.clone());
         }
+    }
+    if let Some(path) = a.svg {
+        let mut notes = vec![summary];
+        if tilts > drawn.len() {
+            notes.push(format!(
+                "the first {} of {tilts} tilts are drawn",
+                drawn.len()
+            ));
+        }
+        svg::write(
+            path,
+            &svg::Picture {
+                title: format!("the tilts of {}", a.file),
+                planes: drawn,
+                size: 50.0,
+                points: Vec::new(),
+                notes,
+            },
+        )?;
     }
     Ok(ok)
 }

@@ -7,6 +7,7 @@
 mod commands;
 mod input;
 mod output;
+mod svg;
 
 use clap::{Args, Parser, Subcommand};
 use input::Failure;
@@ -129,6 +130,9 @@ enum Command {
         euler: bool,
         /// The line to read.
         text: Option<String>,
+        /// Draw the frame (after the last line) into FILE as an SVG picture.
+        #[arg(long, value_name = "FILE")]
+        svg: Option<String>,
         #[command(flatten)]
         common: Common,
     },
@@ -166,6 +170,9 @@ enum Command {
         /// One JSON object per block that concerns the frame, then the summary.
         #[arg(long)]
         json: bool,
+        /// Draw the program's tilts (the first six) into FILE as an SVG picture.
+        #[arg(long, value_name = "FILE")]
+        svg: Option<String>,
         /// Decimals of the numbers written (0..17), or 'exact'.
         #[arg(long, default_value = "4", value_parser = input::decimals)]
         decimals: i32,
@@ -194,6 +201,10 @@ enum Command {
         /// Z' on the side the points' order gives, (P2-P1)x(P3-P1), as PLANE POINTS does.
         #[arg(long, conflicts_with = "toward")]
         order: bool,
+        /// Draw the plane, its axes and the points (deviations enlarged) into FILE as an SVG
+        /// picture.
+        #[arg(long, value_name = "FILE")]
+        svg: Option<String>,
         /// One JSON object.
         #[arg(long)]
         json: bool,
@@ -305,6 +316,9 @@ enum Command {
         forward: bool,
         /// The orientation angles (or positions with --forward).
         values: Vec<String>,
+        /// Draw the (last) orientation and its positions into FILE as an SVG picture.
+        #[arg(long, value_name = "FILE")]
+        svg: Option<String>,
         #[command(flatten)]
         common: Common,
     },
@@ -339,8 +353,9 @@ fn main() -> ExitCode {
             to,
             euler,
             text,
+            svg,
             common,
-        } => commands::line(&from, &to, euler, text.as_deref(), &common),
+        } => commands::line(&from, &to, euler, text.as_deref(), &common, svg.as_deref()),
         Command::Program {
             file,
             dialect,
@@ -349,6 +364,7 @@ fn main() -> ExitCode {
             machine,
             current,
             json,
+            svg,
             decimals,
         } => commands::program(
             &commands::ProgramArgs {
@@ -359,6 +375,7 @@ fn main() -> ExitCode {
                 current: current.as_deref(),
                 json,
                 decimals,
+                svg: svg.as_deref(),
             },
             &machine.args(),
         ),
@@ -368,6 +385,7 @@ fn main() -> ExitCode {
             to,
             toward,
             order,
+            svg,
             json,
             decimals,
         } => commands::probe(
@@ -377,6 +395,7 @@ fn main() -> ExitCode {
             (!order).then_some(toward.as_str()),
             json,
             decimals,
+            svg.as_deref(),
         ),
         Command::Cycle600 {
             call,
@@ -423,6 +442,7 @@ fn main() -> ExitCode {
             all,
             forward,
             values,
+            svg,
             common,
         } => commands::axes(
             &machine.args(),
@@ -432,6 +452,7 @@ fn main() -> ExitCode {
                 rule: &rule,
                 all,
                 forward,
+                svg: svg.as_deref(),
             },
             &values,
             &common,

@@ -988,3 +988,240 @@ fn path_json() {
         r.stdout
     );
 }
+
+/// An SVG picture as written: its XML root checked, its projection read off the root.
+struct Picture {
+    text: String,
+    scale: f64,
+    u0: f64,
+    v0: f64,
+}
+
+impl Picture {
+    fn read(path: &std::path::Path) -> Picture {
+        let text = std::fs::read_to_string(path).expect("the picture is written");
+        let p = {
+            let doc = roxmltree::Document::parse(&text).expect("well-formed XML");
+            let root = doc.root_element();
+            assert_eq!(root.tag_name().name(), "svg");
+            assert_eq!(
+                root.tag_name().namespace(),
+                Some("http://www.w3.org/2000/svg")
+            );
+            assert_eq!(root.attribute("data-projection"), Some("isometric"));
+            let f = |a: &str| root.attribute(a).unwrap().parse::<f64>().unwrap();
+            (f("data-scale"), f("data-u0"), f("data-v0"))
+        };
+        Picture {
+            scale: p.0,
+            u0: p.1,
+            v0: p.2,
+            text,
+        }
+    }
+
+    /// Where the documented projection puts a model point (mm) on the page.
+    fn at(&self, p: [f64; 3]) -> (f64, f64) {
+        let c = 3f64.sqrt() / 2.0;
+        let u = (p[0] + p[1]) * c;
+        let w = p[2] + (p[1] - p[0]) * 0.5;
+        (self.u0 + self.scale * u, self.v0 - self.scale * w)
+    }
+
+    /// An attribute of the element with this id.
+    fn attr(&self, id: &str, name: &str) -> Option<String> {
+        let doc = roxmltree::Document::parse(&self.text).unwrap();
+        let node = doc.descendants().find(|n| n.attribute("id") == Some(id))?;
+        node.attribute(name).map(str::to_string)
+    }
+
+    fn num(&self, id: &str, name: &str) -> f64 {
+        self.attr(id, name)
+            .unwrap_or_else(|| panic!("{id} has {name}"))
+            .parse()
+            .unwrap()
+    }
+
+    /// A line's two ends on the page.
+    fn line(&self, id: &str) -> [(f64, f64); 2] {
+        [
+            (self.num(id, "x1"), self.num(id, "y1")),
+            (self.num(id, "x2"), self.num(id, "y2")),
+        ]
+    }
+
+    fn texts(&self) -> Vec<String> {
+        let doc = roxmltree::Document::parse(&self.text).unwrap();
+        doc.descendants()
+            .filter(|n| n.has_tag_name("text"))
+            .map(|n| n.text().unwrap_or("").to_string())
+            .collect()
+    }
+}
+
+fn near(a: (f64, f64), b: (f64, f64)) {
+    assert!(
+        (a.0 - b.0).abs() < 1e-5 && (a.1 - b.1).abs() < 1e-5,
+        "{a:?} vs {b:?}"
+    );
+}
+
+fn mm(o: [f64; 3], d: [f64; 3], k: f64) -> [f64; 3] {
+    [o[0] + k * d[0], o[1] + k * d[1], o[2] + k * d[2]]
+}
+
+/// The pictures show the numbers: every drawn coordinate is the documented projection of
+/// the frame the text reports, a plane upside down says so, the points carry their
+/// deviations.
+#[test]
+fn svg_pictures_show_the_numbers() {
+    let dir = std::env::temp_dir().join(format!("cncrot-svg-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = |name: &str| dir.join(name);
+
+    // PLANE SPATIAL SPA+30: Z' = (0, -sin 30°, cos 30°), X' = X, at the datum.
+    let l = file("line.svg");
+    ok(&[
+        "line",
+        "--from",
+        "heidenhain",
+        "--to",
+        "fanuc",
+        "--svg",
+        l.to_str().unwrap(),
+        "PLANE SPATIAL SPA+30 SPB+0 SPC+0",
+    ]);
+    let p = Picture::read(&l);
+    let z = [0.0, -0.5, 3f64.sqrt() / 2.0];
+    let size = p.num("plane", "data-size");
+    let [a, b] = p.line("z-prime");
+    near(a, p.at([0.0; 3]));
+    near(b, p.at(mm([0.0; 3], z, 0.8 * size)));
+    let [_, b] = p.line("x-prime");
+    near(b, p.at([0.8 * size, 0.0, 0.0]));
+    let [a, b] = p.line("machine-Z");
+    near(a, p.at([0.0; 3]));
+    assert!(
+        (a.0 - b.0).abs() < 1e-9 && b.1 < a.1,
+        "Z is drawn straight up"
+    );
+    // The patch's corners: ±size along X' and Y'.
+    let y = [0.0, 3f64.sqrt() / 2.0, 0.5];
+    let corners: Vec<f64> = p
+        .attr("plane", "points")
+        .unwrap()
+        .split([' ', ','])
+        .map(|t| t.parse().unwrap())
+        .collect();
+    for (k, (sx, sy)) in [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)]
+        .into_iter()
+        .enumerate()
+    {
+        let c = mm(mm([0.0; 3], [1.0, 0.0, 0.0], sx * size), y, sy * size);
+        near((corners[2 * k], corners[2 * k + 1]), p.at(c));
+    }
+    assert_eq!(p.attr("plane", "class").as_deref(), Some("upper-face"));
+    assert!(!p.texts().iter().any(|t| t.contains("upside down")));
+
+    // Four corners probed clockwise, the order kept: Z' points down, said in red, the
+    // underside seen. The plane z = -x/10 through the centroid (50, 25, -5); one corner
+    // 0.02 mm low.
+    let s = file("probe.svg");
+    let pts = ["0,0,0", "0,50,0", "100,50,-10.02", "100,0,-10"];
+    let mut args = vec!["probe", "--order", "--svg", s.to_str().unwrap(), "--json"];
+    args.extend(pts);
+    let json = ok(&args);
+    let p = Picture::read(&s);
+    assert_eq!(p.attr("plane", "class").as_deref(), Some("underside"));
+    assert!(p.texts().iter().any(|t| t.contains("upside down")));
+    let field = |name: &str| {
+        let at = json.find(&format!("\"{name}\":")).unwrap();
+        let rest = &json[at + name.len() + 3..];
+        numbers(&rest[..rest.find(']').unwrap()].replace('[', " "))
+    };
+    let n = field("normal");
+    let o = field("origin");
+    assert!(n[2] < -0.99, "{n:?}");
+    let size = p.num("plane", "data-size");
+    let [a, b] = p.line("z-prime");
+    let (o, n) = ([o[0], o[1], o[2]], [n[0], n[1], n[2]]);
+    near(a, p.at(o));
+    near(b, p.at(mm(o, n, 0.8 * size)));
+    let [_, t] = p.line("tool");
+    near(t, p.at(mm(o, n, 1.6 * size)));
+    for (k, q) in pts.iter().enumerate() {
+        let q: Vec<f64> = numbers(q);
+        let id = format!("P{}", k + 1);
+        let want: f64 = (0..3).map(|i| (q[i] - o[i]) * n[i]).sum();
+        let dev = p.num(&id, "data-deviation");
+        assert!((dev - want).abs() < 1e-6, "{id}: {dev} vs {want}");
+        // The corners' deviations are a quarter of the 0.02 mm, along the normal.
+        assert!((dev.abs() - 0.005 * n[2].abs()).abs() < 1e-5, "{id}: {dev}");
+        assert!(size >= (0..3).map(|i| (q[i] - o[i]).powi(2)).sum::<f64>().sqrt());
+        // Drawn enlarged along the normal from its foot on the plane.
+        let foot = mm([q[0], q[1], q[2]], n, -dev);
+        let (fx, fy) = p.at(foot);
+        let (dx, dy) = (p.num(&id, "cx") - fx, p.num(&id, "cy") - fy);
+        let (nx, ny) = {
+            let (a, b) = (p.at(mm(foot, n, 1.0)), p.at(foot));
+            (a.0 - b.0, a.1 - b.1)
+        };
+        assert!((dx * ny - dy * nx).abs() < 1e-6, "{id} off the normal");
+        assert!((dx * nx + dy * ny) * dev > 0.0, "{id} on its side");
+    }
+
+    // The machine's positions, and a program's tilts each drawn and labelled.
+    let a = file("axes.svg");
+    ok(&[
+        "axes",
+        "--axis",
+        "work:1,0,0",
+        "--axis",
+        "work:0,0,1",
+        "--svg",
+        a.to_str().unwrap(),
+        "0",
+        "30",
+        "0",
+    ]);
+    let p = Picture::read(&a);
+    assert!(p
+        .texts()
+        .iter()
+        .any(|t| t.contains("axis 1 = 30.0000, axis 2 = 90.0000")));
+    let [_, b] = p.line("z-prime");
+    let size = p.num("plane", "data-size");
+    near(
+        b,
+        p.at([0.8 * size * 0.5, 0.0, 0.8 * size * 3f64.sqrt() / 2.0]),
+    );
+    let prog = file("part.h");
+    std::fs::write(
+        &prog,
+        "BEGIN PGM P MM\nPLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY\nL X0 Y0\n\
+         PLANE SPATIAL SPA+0 SPB+45 SPC+0 STAY\nPLANE RESET STAY\nEND PGM P MM\n",
+    )
+    .unwrap();
+    let g = file("program.svg");
+    ok(&[
+        "program",
+        prog.to_str().unwrap(),
+        "--dialect",
+        "heidenhain",
+        "--svg",
+        g.to_str().unwrap(),
+    ]);
+    let p = Picture::read(&g);
+    assert!(p.attr("plane", "points").is_some() && p.attr("plane-1", "points").is_some());
+    assert!(
+        p.attr("plane-2", "points").is_none(),
+        "the cancel draws no plane"
+    );
+    let texts = p.texts();
+    assert!(texts.contains(&"line 2".to_string()) && texts.contains(&"line 4".to_string()));
+    let [_, b] = p.line("z-prime-1");
+    let size = p.num("plane-1", "data-size");
+    let h = 0.8 * size / 2f64.sqrt();
+    near(b, p.at([h, 0.0, h]));
+    let _ = std::fs::remove_dir_all(&dir);
+}
