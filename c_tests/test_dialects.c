@@ -210,7 +210,7 @@ static void errors_leave_outputs_untouched(void) {
   CHECK_STATUS(cncrot_form_frame(CNCROT_FORM_PLANE_VECTOR, 0, ok6, 6, f), CNCROT_STATUS_DEGENERATE);
   CHECK(is_sentinel(f, 16), "frame written on error");
   CHECK_STATUS(cncrot_form_values(CNCROT_FORM_SINUMERIK_ROTS, 0, idf, w, 2), CNCROT_STATUS_BAD_ARGUMENT);
-  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_PLANE_SPATIAL, 0, moved, w, 3), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_PLANE_SPATIAL, 0, moved, w, 3), CNCROT_STATUS_HAS_ORIGIN);
   CHECK_STATUS(cncrot_form_values(CNCROT_FORM_CYCLE800, 192, idf, w, 9), CNCROT_STATUS_NOT_AVAILABLE);
   CHECK_STATUS(cncrot_form_values(CNCROT_FORM_G158, 1157, idf, w, 9), CNCROT_STATUS_BAD_ARGUMENT);
   double zero16[16] = {0};

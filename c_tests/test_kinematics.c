@@ -260,6 +260,15 @@ static void cycle600_and_refusals(void) {
   CHECK_STATUS(cncrot_machine_from_carr(&m, HEAD_T, strlen(HEAD_T), 2), CNCROT_STATUS_UNKNOWN_HEAD);
   const char *only2 = "$TC_CARR12[1]=1\n";
   CHECK_STATUS(cncrot_machine_from_carr(&m, only2, strlen(only2), 1), CNCROT_STATUS_BAD_ARGUMENT);
+  /* A data set that makes no machine: the line that assigned the parameter at fault (the
+   * kinematics type on line 3, the second axis on line 1); none for a missing data set. */
+  const char *kind = "$TC_CARR7[1]=1\n$TC_CARR9[2]=1\n$TC_CARR23[1]=\"X\"\n";
+  CHECK_STATUS(cncrot_machine_carr_error_line(kind, strlen(kind), 1, &line), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK(line == 3, "line %d", line);
+  CHECK_STATUS(cncrot_machine_carr_error_line(only2, strlen(only2), 1, &line), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK(line == 1, "line %d", line);
+  CHECK_STATUS(cncrot_machine_carr_error_line(kind, strlen(kind), 3, &line), CNCROT_STATUS_UNKNOWN_HEAD);
+  CHECK(line == 0, "line %d", line);
 
   /* Description errors, pointers, numbers. */
   double ax[3] = {0, 0, 0}, f[16];

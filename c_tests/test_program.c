@@ -420,7 +420,7 @@ static void long_lines_and_points(void) {
   /* PLANE POINTS needs no origin: a frame with one is refused as for every form without
    * origin words, and the rotation alone is written with P1 at the datum. */
   CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", f, -1, big, sizeof big),
-               CNCROT_STATUS_BAD_ARGUMENT);
+               CNCROT_STATUS_HAS_ORIGIN);
   /* A tilt of 90° about Z: P2 one along Y', P3 one along -X. */
   double rz[16] = {0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", rz, -1, big, sizeof big), CNCROT_STATUS_OK);
@@ -495,7 +495,7 @@ static void writer_buffers(void) {
   CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_FANUC, "G68.2", f, -1, out, n + 1), CNCROT_STATUS_SINGULAR);
   CHECK(strcmp(out, want) == 0 && out[n + 1] == 'x', "%s", out);
   CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", f, -1, out, sizeof out),
-               CNCROT_STATUS_BAD_ARGUMENT);
+               CNCROT_STATUS_HAS_ORIGIN);
   CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_FANUC, "PLANE SPATIAL", f, -1, out, sizeof out),
                CNCROT_STATUS_BAD_ARGUMENT);
   CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_FANUC, "G68.2", f, 18, out, sizeof out), CNCROT_STATUS_BAD_ARGUMENT);

@@ -384,6 +384,11 @@ enum cncrot_status
    */
   CNCROT_STATUS_OUT_OF_TRAVEL = -25,
   /**
+   * A frame with an origin for a form without origin words: shift the datum first,
+   * then write the rotation alone.
+   */
+  CNCROT_STATUS_HAS_ORIGIN = -26,
+  /**
    * Internal failure (a caught panic): a bug in cncrot, please report it.
    */
   CNCROT_STATUS_INTERNAL = -100,
@@ -913,11 +918,12 @@ int32_t cncrot_form_frame(int32_t form,
  * dialect's rule puts it and the status is `CNCROT_STATUS_SINGULAR`.
  *
  * Refused, with `words` untouched: `CNCROT_STATUS_NULL_POINTER`;
- * `CNCROT_STATUS_NOT_FINITE`; `CNCROT_STATUS_BAD_ARGUMENT` for an unknown form, a wrong
- * `count`, `ROTS` (not every plane is a projection), a frame with an origin and a form
- * without origin words (SINUMERIK `ROT`, `PLANE SPATIAL/EULER/VECTOR/POINTS/PROJECTED`,
- * TwinCAT `ROT`: pass the rotation alone and the datum in the dialect's own command), an
- * incremental or mode-0 `G158` `P`, a selector the form does not have;
+ * `CNCROT_STATUS_NOT_FINITE`; `CNCROT_STATUS_HAS_ORIGIN` for a frame with an origin and a
+ * form without origin words (SINUMERIK `ROT`, `PLANE SPATIAL/EULER/VECTOR/POINTS/PROJECTED`,
+ * TwinCAT `ROT`: pass the rotation alone and the datum in the dialect's own command);
+ * `CNCROT_STATUS_BAD_ARGUMENT` for an unknown form, a wrong `count`, `ROTS` (not every
+ * plane is a projection), an incremental or mode-0 `G158` `P`, a selector the form does
+ * not have;
  * `CNCROT_STATUS_BAD_SEQUENCE` for a bad order code in `_MODE`, `P` or `Q`;
  * `CNCROT_STATUS_INCOMPLETE_SEQUENCE` for an axis-by-axis `_MODE` or `G158` order of fewer
  * than three rotations (`_MODE` 0..3: it cannot express every frame);
@@ -1114,8 +1120,10 @@ int32_t cncrot_machine_from_carr(struct cncrot_machine *machine,
 
 /**
  * The line at which `cncrot_machine_from_carr` refuses the same text: its status, and the
- * 1-based line in `*line` (0 when the text was read, or for an error of the whole data
- * set such as `CNCROT_STATUS_UNKNOWN_HEAD`).
+ * 1-based line in `*line`: the line that could not be read, or for a data set that does
+ * not make a machine (a type other than T/P/M, parallel axes, a negative Hirth increment)
+ * the line that last assigned the parameter at fault; 0 when the text was read, for
+ * `CNCROT_STATUS_UNKNOWN_HEAD` (no parameter of the data set) and for `data_set` < 1.
  *
  * Returns the status `cncrot_machine_from_carr` returns for the text (with `*line`
  * written): 0, `CNCROT_STATUS_PARSE`, `CNCROT_STATUS_UNKNOWN_WORD`,
@@ -1731,10 +1739,11 @@ int32_t cncrot_program_frame(const struct cncrot_program *program, double *frame
  * (at most `CNCROT_PROGRAM_LINE_MAX` + 1 bytes).
  *
  * Returns 0 or `CNCROT_STATUS_SINGULAR`, or a negative status with `out` untouched:
- * `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_BAD_ARGUMENT`
- * (unknown dialect or form, a form name longer than 64 bytes, `decimals` > 17, a frame with
- * an origin for a form without origin words — every `PLANE` form, `ROT` —, an incremental
- * or mode-0 `G158 P`), `CNCROT_STATUS_BAD_SEQUENCE` (an axis order in `CYCLE800 <_MODE>`,
+ * `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_HAS_ORIGIN` (a
+ * frame with an origin for a form without origin words — every `PLANE` form, `ROT` —: the
+ * datum goes in the dialect's own command), `CNCROT_STATUS_BAD_ARGUMENT` (unknown dialect
+ * or form, a form name longer than 64 bytes, `decimals` > 17, an incremental or mode-0
+ * `G158 P`), `CNCROT_STATUS_BAD_SEQUENCE` (an axis order in `CYCLE800 <_MODE>`,
  * `G158 P<p>`, `G268 Q<q>` that is none, `"G268 Q0"`), `CNCROT_STATUS_INCOMPLETE_SEQUENCE`
  * (an axis-by-axis order of fewer than three rotations, `"CYCLE800 7"`: it cannot express
  * every frame), `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_AVAILABLE` (direct

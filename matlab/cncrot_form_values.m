@@ -4,7 +4,7 @@
 %   is 4-by-4 or 4-by-4-by-N; words is N-by-count in the order cncrot_forms lists; status is
 %   0, or 1 where the middle angle is singular (the free angle where that dialect puts it).
 %   Forms without origin words (SINUMERIK ROT, PLANE SPATIAL/EULER/VECTOR, TwinCAT ROT) need
-%   a frame without translation; ROTS cannot be written (cncrot:badArgument); a projection
+%   a frame without translation (else cncrot:hasOrigin); ROTS cannot be written (cncrot:badArgument); a projection
 %   mode that cannot express the frame raises cncrot:outOfRange. Errors name the argument
 %   (and in a batch the frame).
 %

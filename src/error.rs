@@ -68,6 +68,10 @@ pub enum Error {
     Unreachable,
     /// The orientation is reachable, but only outside the rotary axes' travel limits.
     OutOfTravel,
+    /// A frame with an origin for a form that has no words for one (`PLANE SPATIAL`,
+    /// `ROT`, `PLANE POINTS`): write the datum shift in that dialect's own command first,
+    /// then the rotation alone.
+    HasOrigin,
 }
 
 impl fmt::Display for Error {
@@ -86,7 +90,7 @@ macro_rules! statuses {
         others { $($ocode:literal, $oname:literal, $otext:literal;)* }
     ) => {
         impl Error {
-            /// Every error, in the order of their C values (-2 down to -25).
+            /// Every error, in the order of their C values (-2 down to -26).
             pub const ALL: &'static [Error] = &[$(Error::$variant,)*];
 
             /// A short English description: the text `cncrot_status_str` gives after the
@@ -180,6 +184,8 @@ statuses! {
             "no rotary-axis positions of the machine give that orientation";
         OutOfTravel = -25, "CNCROT_STATUS_OUT_OF_TRAVEL",
             "the orientation is reachable only outside the travel limits";
+        HasOrigin = -26, "CNCROT_STATUS_HAS_ORIGIN",
+            "the frame has an origin and the form has no words for one: shift the datum first, then write the rotation alone";
     }
     others {
         0, "CNCROT_STATUS_OK", "success";

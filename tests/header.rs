@@ -157,7 +157,7 @@ fn the_status_table_is_the_c_enum() {
         );
         assert!(cncrot::STATUSES.contains(&(e.code(), table[&e.code()], e.message())));
     }
-    assert_eq!(cncrot::Error::ALL.len(), 24);
+    assert_eq!(cncrot::Error::ALL.len(), 25);
 }
 
 /// `NotARotation` → `NOT_A_ROTATION`.

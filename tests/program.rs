@@ -288,7 +288,8 @@ fn syntec_the_manuals_examples() {
         e,
         LineError {
             error: Error::NotAvailable,
-            column: 1
+            column: 1,
+            expected: None,
         }
     );
     // Syntec's G68.2 mode reads Fanuc's words; G158 alone and G69 cancel.
@@ -494,7 +495,7 @@ fn refusals_name_their_column() {
         } else {
             line.find(at).unwrap() + 1
         };
-        assert_eq!(e, LineError { error, column }, "{line}");
+        assert_eq!((e.error, e.column), (error, column), "{line}");
         assert_eq!(p, before);
     }
     // Too long for the controller: SINUMERIK's 512 bytes, the others' 256 (Heidenhain 254).
@@ -508,7 +509,8 @@ fn refusals_name_their_column() {
         Program::default().line(Dialect::Sinumerik, longer.as_bytes()),
         Err(LineError {
             error: Error::LineTooLong,
-            column: 513
+            column: 513,
+            expected: None,
         })
     );
     // Non-ASCII and control bytes are words no dialect has.
@@ -519,7 +521,8 @@ fn refusals_name_their_column() {
         e,
         LineError {
             error: Error::UnknownWord,
-            column: 11
+            column: 11,
+            expected: None,
         }
     );
 }
@@ -703,7 +706,7 @@ fn writers_refuse() {
         |d, form: &str, f: &Frame, dec, buf: &mut [u8]| write_line(d, form.as_bytes(), f, dec, buf);
     assert_eq!(
         w(Dialect::Heidenhain, "PLANE SPATIAL", &moved, -1, &mut buf),
-        Err(Error::BadArgument)
+        Err(Error::HasOrigin)
     );
     assert_eq!(
         w(Dialect::Heidenhain, "G68.2", &id, -1, &mut buf),
@@ -1044,4 +1047,73 @@ fn cancels_are_written_as_cancels() {
     let nearly = Frame::from_rotation(r(Axis::X, 1e-9));
     let (n, _) = write_line(Dialect::Fanuc, b"G68.2", &nearly, -1, &mut buf).unwrap();
     assert!(buf[..n].starts_with(b"G68.2 "));
+}
+
+/// A missing word is named: the first word of the command that is not there, or what
+/// kind of text should stand at the column.
+#[test]
+fn missing_words_are_named() {
+    let cases = [
+        (Dialect::Heidenhain, "PLANE SPATIAL SPA+10 SPB+0", "SPC"),
+        (Dialect::Heidenhain, "PLANE SPATIAL SPB+0 SPC+0 STAY", "SPA"),
+        (
+            Dialect::Heidenhain,
+            "PLANE EULER EULPR+10 EULROT+0",
+            "EULNU",
+        ),
+        (
+            Dialect::Heidenhain,
+            "PLANE VECTOR BX1 BY0 BZ0 NX0 NY0",
+            "NZ",
+        ),
+        (
+            Dialect::Heidenhain,
+            "PLANE SPATIAL SPA+10 SPB+0 SPC+0 TABLE",
+            "ROT",
+        ),
+        (
+            Dialect::Heidenhain,
+            "PLANE SPATIAL SPA+10 SPB+0 SPC+0 SEQ",
+            "'+' or '-'",
+        ),
+        (Dialect::Heidenhain, "PLANE RELATIV +10", "SPA, SPB or SPC"),
+        (
+            Dialect::Heidenhain,
+            "PLANE SPATIAL SPA+10 SPB+0 SPC",
+            "a number",
+        ),
+        (Dialect::Haas, "G268 X0 I0 J30 K0", "Q"),
+        (Dialect::Syntec, "G158 X0 A30", "P"),
+        (Dialect::Twincat, "AROT", "X, Y or Z"),
+        (Dialect::Sinumerik, "AROT", "X, Y or Z"),
+        (Dialect::Sinumerik, "CYCLE800", "'('"),
+        (Dialect::Sinumerik, "CYCLE800(0,\"TC1\",0", "',' or ')'"),
+        (
+            Dialect::Sinumerik,
+            "CYCLE800(0,\"TC1\",0)",
+            "CYCLE800's parameters up to _MODE (4)",
+        ),
+        (
+            Dialect::Sinumerik,
+            "CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60)",
+            "CYCLE600's parameters up to _BIN_OUT (15)",
+        ),
+        (Dialect::Fanuc, "G68.2 X", "a number"),
+    ];
+    for (d, line, want) in cases {
+        let e = Program::default().line(d, line.as_bytes()).expect_err(line);
+        assert_eq!(
+            (e.error, e.expected),
+            (Error::MissingWord, Some(want)),
+            "{line}"
+        );
+    }
+    // Other refusals name no expected word: the word at the column is the one to show.
+    let e = Program::default()
+        .line(Dialect::Heidenhain, b"PLANE SPATIAL SPX+10 SPB+0 SPC+0")
+        .unwrap_err();
+    assert_eq!(
+        (e.error, e.column, e.expected),
+        (Error::UnknownWord, 15, None)
+    );
 }

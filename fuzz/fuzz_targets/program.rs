@@ -277,7 +277,7 @@ fn round_trips(dialect: i32, f: &[f64; 16]) {
 }
 
 /// A writer's refusal must be one its documentation names for this frame: an origin for a
-/// form without origin words (`BAD_ARGUMENT`); a frame the form cannot express, near a
+/// form without origin words (`HAS_ORIGIN`); a frame the form cannot express, near a
 /// projection's singularity (`OUT_OF_RANGE` from the form's own words too); numbers of 1e100
 /// or more, or below 1e-100, or so long that the line exceeds the dialect's (`OUT_OF_RANGE`).
 /// A frame of ordinary numbers that a form can express must be written.
@@ -290,7 +290,7 @@ fn refused_as_documented(
     s: i32,
 ) {
     let origin = g[3] != 0.0 || g[7] != 0.0 || g[11] != 0.0;
-    if s == cncrot_status::BadArgument as i32 {
+    if s == cncrot_status::HasOrigin as i32 {
         assert!(!has_origin && origin, "{form:?} refused a frame it writes");
         return;
     }

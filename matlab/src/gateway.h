@@ -78,6 +78,7 @@ static const char *status_id(int32_t s) {
     case CNCROT_STATUS_NO_ROOM: return "cncrot:noRoom";
     case CNCROT_STATUS_UNREACHABLE: return "cncrot:unreachable";
     case CNCROT_STATUS_OUT_OF_TRAVEL: return "cncrot:outOfTravel";
+    case CNCROT_STATUS_HAS_ORIGIN: return "cncrot:hasOrigin";
     default: return "cncrot:internal";
   }
 }

@@ -341,6 +341,7 @@ function test_cncrot(cases_file)
   expect_message('cncrot:badArgument', @() cncrot_form_frame('g68.9', 0, [1 2 3]), 'unknown form', 'cncrot_form_frame', ...
                  'argument 1 (form) must be a form', '''g68_2''', 'got ''g68.9''');
   expect_message('cncrot:badArgument', @() cncrot_form_values(99, 0, eye(4)), 'form 99', 'cncrot_form_values', 'argument 1 (form)', 'got 99');
+  expect_message('cncrot:hasOrigin', @() cncrot_form_values('plane_spatial', 0, [eye(3) [10; 0; 0]; 0 0 0 1]), 'origin for PLANE SPATIAL', 'cncrot_form_values', 'shift the datum first');
   expect_message('cncrot:badArgument', @() cncrot_form_frame('plane_spatial', 5, [0 0 0]), 'selector 5', 'cncrot_form_frame', 'argument 2 (selector)');
   expect_message('cncrot:badArgument', @() cncrot_form_frame('plane_spatial', 0.5, [0 0 0]), 'selector 0.5', 'cncrot_form_frame', 'argument 2 (selector)', 'got 0.5');
   expect_message('cncrot:notFinite', @() cncrot_matrix('intrinsic', 'XYZ', [1 2 3; 4 NaN 6]), 'row named', 'cncrot_matrix', 'argument 3 (angles), row 2:');

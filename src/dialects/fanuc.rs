@@ -142,6 +142,7 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
         return Some(Err(LineError {
             error: Error::NotAvailable,
             column,
+            expected: None,
         }));
     } else {
         return None;
@@ -153,6 +154,7 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
             return Err(LineError {
                 error: Error::BadArgument,
                 column: w.column(6),
+                expected: None,
             });
         }
         if form != 0 || w.given[7] || w.given[8] {
@@ -225,6 +227,7 @@ pub(crate) fn iso_block(
                 return Err(LineError {
                     error: Error::UnknownWord,
                     column: t.column,
+                    expected: None,
                 })
             }
             (b'G', Some(code)) if ISO_NOT_FOLLOWED.contains(&code) || more.contains(&code) => {

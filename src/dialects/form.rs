@@ -31,7 +31,7 @@ pub fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Err
 /// `words[..count]`; returns whether the decomposition was singular (the free angle in the
 /// slot the dialect's rule names). Refused: `ROTS` ([`Error::BadArgument`]: not every frame
 /// is a projection), a frame with an origin for a form without origin words
-/// ([`Error::BadArgument`]; give the rotation alone, and the datum in that dialect's own
+/// ([`Error::HasOrigin`]; give the rotation alone, and the datum in that dialect's own
 /// command), a selector whose mode cannot express frames (direct modes:
 /// [`Error::NotAvailable`]; G158 mode 0: [`Error::BadArgument`]), and what the form cannot
 /// express (projection modes: [`Error::OutOfRange`]). `words` is untouched on an error.
@@ -47,7 +47,7 @@ pub fn form_values(
     }
     crate::check_rotation(&frame.rotation)?;
     if !info.origin && frame.translation != [0.0; 3] {
-        return Err(Error::BadArgument);
+        return Err(Error::HasOrigin);
     }
     let mut out = [0.0; MAX_VALUES];
     let singular = owner.form_values(form, selector, frame, &mut out)?;
@@ -180,7 +180,7 @@ mod tests {
         let moved = Frame::with_translations([1e60; 3], crate::IDENTITY, [0.0; 3]);
         assert_eq!(
             form_values(Form::PlanePoints, 0, &moved, &mut w),
-            Err(Error::BadArgument)
+            Err(Error::HasOrigin)
         );
         assert_eq!(w, [7.0; 9]);
         form_values(Form::PlanePoints, 0, &Frame::IDENTITY, &mut w).unwrap();
@@ -338,7 +338,7 @@ mod tests {
         let moved = Frame::with_translations([1.0, 0.0, 0.0], crate::IDENTITY, [0.0; 3]);
         assert_eq!(
             form_values(Form::PlaneSpatial, 0, &moved, &mut w[..3]),
-            Err(Error::BadArgument)
+            Err(Error::HasOrigin)
         );
         assert_eq!(
             form_values(Form::G158, 10200, &id, &mut w),

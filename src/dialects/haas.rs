@@ -98,7 +98,7 @@ impl Family for Haas {
             let w = address_words(&mut c, *b"XYZIJKQ", SYNTAX, false, (true, true))?;
             let [x, y, z, i, j, k, q] = w.values;
             if !w.given[6] {
-                return Err(c.error(Error::MissingWord));
+                return Err(c.missing("Q"));
             }
             // A bad Q is reported at its value, not at the command.
             let q = whole(q, w.column(6))?;

@@ -147,7 +147,10 @@ const SYNTAX: Syntax = Syntax {
 };
 
 /// The words of one `PLANE` form, each required, in any order.
-fn plane_words<const N: usize>(c: &mut Cursor, names: [&[u8]; N]) -> Result<[f64; N], LineError> {
+fn plane_words<const N: usize>(
+    c: &mut Cursor,
+    names: [&'static [u8]; N],
+) -> Result<[f64; N], LineError> {
     let mut values = [0.0; N];
     let mut given = [false; N];
     loop {
@@ -161,6 +164,7 @@ fn plane_words<const N: usize>(c: &mut Cursor, names: [&[u8]; N]) -> Result<[f64
             return Err(LineError {
                 error: Error::UnknownWord,
                 column,
+                expected: None,
             });
         }
         c.spaces();
@@ -174,11 +178,12 @@ fn plane_words<const N: usize>(c: &mut Cursor, names: [&[u8]; N]) -> Result<[f64
         // A word is missing if what follows is the line's end or the positioning options;
         // anything else standing there is a word the command does not have (`SPX+10`).
         let missing = options(&mut c.clone()).is_ok();
-        return Err(c.error(if missing {
-            Error::MissingWord
-        } else {
-            Error::UnknownWord
-        }));
+        if !missing {
+            return Err(c.error(Error::UnknownWord));
+        }
+        let first = given.iter().position(|g| !g).and_then(|k| names.get(k));
+        let name = first.and_then(|n| core::str::from_utf8(n).ok());
+        return Err(c.missing(name.unwrap_or("a word of the plane")));
     }
     Ok(values)
 }
@@ -198,14 +203,14 @@ fn options(c: &mut Cursor) -> Result<(), LineError> {
         if c.keyword(b"TABLE") || c.keyword(b"COORD") {
             c.spaces();
             if !c.keyword(b"ROT") {
-                return Err(c.error(Error::MissingWord));
+                return Err(c.missing("ROT"));
             }
             continue;
         }
         if c.word(b"SEQ") || c.word(b"SYM") {
             match c.peek() {
                 Some(b'+' | b'-') => c.bump(),
-                _ => return Err(c.error(Error::MissingWord)),
+                _ => return Err(c.missing("'+' or '-'")),
             }
             continue;
         }
@@ -354,7 +359,7 @@ impl Family for Heidenhain {
             } else if c.word(b"SPC") {
                 Axis::Z
             } else {
-                return Err(c.error(Error::MissingWord));
+                return Err(c.missing("SPA, SPB or SPC"));
             };
             c.spaces();
             let angle = c.number(SYNTAX)?;
@@ -365,6 +370,7 @@ impl Family for Heidenhain {
             return Err(LineError {
                 error: Error::NotAvailable,
                 column,
+                expected: None,
             });
         } else {
             return Err(c.error(Error::UnknownWord));

@@ -74,6 +74,7 @@ impl Program {
             return Err(LineError {
                 error: Error::BadArgument,
                 column: 1,
+                expected: None,
             });
         }
         // The line end is not part of the block.
@@ -85,6 +86,7 @@ impl Program {
             return Err(LineError {
                 error: Error::LineTooLong,
                 column: dialect.max_line() + 1,
+                expected: None,
             });
         }
         let next = match dialect.read_line(&self.modal(), text)? {
@@ -97,6 +99,7 @@ impl Program {
             return Err(LineError {
                 error: Error::OutOfRange,
                 column: 1,
+                expected: None,
             });
         }
         Ok((
@@ -190,7 +193,7 @@ impl Program {
 /// | Haas | `G268` (`Q123`), `G268 Q<q>` |
 ///
 /// Refused: an unknown form ([`Error::BadArgument`]), a frame with an origin for a form
-/// without origin words ([`Error::BadArgument`]), a frame the form cannot express
+/// without origin words ([`Error::HasOrigin`]), a frame the form cannot express
 /// ([`Error::OutOfRange`]), numbers outside what can be written, or a line longer than the
 /// dialect reads ([`Error::OutOfRange`], whatever the buffer), a buffer shorter than the
 /// line that [`Dialect::max_line`] would hold ([`Error::NoRoom`]).
@@ -295,7 +298,8 @@ mod tests {
             p.line(Dialect::Fanuc, &long).unwrap_err(),
             LineError {
                 error: Error::LineTooLong,
-                column: 257
+                column: 257,
+                expected: None,
             }
         );
     }

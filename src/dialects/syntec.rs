@@ -174,7 +174,7 @@ impl Family for Syntec {
             let w = address_words(&mut c, *b"LPXYZABCUVW", SYNTAX, false, (true, true))?;
             let [_, pw, x, y, z, a, b, cc, u, v, ww] = w.values;
             if !w.given[1] {
-                return Err(c.error(Error::MissingWord));
+                return Err(c.missing("P"));
             }
             // A bad P is reported at its value, not at the command.
             let at = w.column(1);

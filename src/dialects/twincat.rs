@@ -107,6 +107,7 @@ fn other_block(text: &[u8]) -> Result<Block, LineError> {
             return Err(LineError {
                 error: Error::UnknownWord,
                 column: t.column,
+                expected: None,
             });
         }
         let offset = matches!(
@@ -160,7 +161,7 @@ impl Family for Twincat {
         let xyz = w.values;
         let angles = if additive {
             if !w.given.contains(&true) {
-                return Err(c.error(Error::MissingWord));
+                return Err(c.missing("X, Y or Z"));
             }
             Rotation { angles: m.angles }.arot(xyz).angles
         } else {
@@ -170,6 +171,7 @@ impl Family for Twincat {
             return Err(LineError {
                 error: Error::OutOfRange,
                 column,
+                expected: None,
             });
         }
         Ok(Block::Frame(Modal {

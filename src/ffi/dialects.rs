@@ -139,11 +139,12 @@ pub unsafe extern "C" fn cncrot_form_frame(
 /// dialect's rule puts it and the status is `CNCROT_STATUS_SINGULAR`.
 ///
 /// Refused, with `words` untouched: `CNCROT_STATUS_NULL_POINTER`;
-/// `CNCROT_STATUS_NOT_FINITE`; `CNCROT_STATUS_BAD_ARGUMENT` for an unknown form, a wrong
-/// `count`, `ROTS` (not every plane is a projection), a frame with an origin and a form
-/// without origin words (SINUMERIK `ROT`, `PLANE SPATIAL/EULER/VECTOR/POINTS/PROJECTED`,
-/// TwinCAT `ROT`: pass the rotation alone and the datum in the dialect's own command), an
-/// incremental or mode-0 `G158` `P`, a selector the form does not have;
+/// `CNCROT_STATUS_NOT_FINITE`; `CNCROT_STATUS_HAS_ORIGIN` for a frame with an origin and a
+/// form without origin words (SINUMERIK `ROT`, `PLANE SPATIAL/EULER/VECTOR/POINTS/PROJECTED`,
+/// TwinCAT `ROT`: pass the rotation alone and the datum in the dialect's own command);
+/// `CNCROT_STATUS_BAD_ARGUMENT` for an unknown form, a wrong `count`, `ROTS` (not every
+/// plane is a projection), an incremental or mode-0 `G158` `P`, a selector the form does
+/// not have;
 /// `CNCROT_STATUS_BAD_SEQUENCE` for a bad order code in `_MODE`, `P` or `Q`;
 /// `CNCROT_STATUS_INCOMPLETE_SEQUENCE` for an axis-by-axis `_MODE` or `G158` order of fewer
 /// than three rotations (`_MODE` 0..3: it cannot express every frame);

@@ -332,8 +332,10 @@ pub unsafe extern "C" fn cncrot_machine_from_carr(
 }
 
 /// The line at which `cncrot_machine_from_carr` refuses the same text: its status, and the
-/// 1-based line in `*line` (0 when the text was read, or for an error of the whole data
-/// set such as `CNCROT_STATUS_UNKNOWN_HEAD`).
+/// 1-based line in `*line`: the line that could not be read, or for a data set that does
+/// not make a machine (a type other than T/P/M, parallel axes, a negative Hirth increment)
+/// the line that last assigned the parameter at fault; 0 when the text was read, for
+/// `CNCROT_STATUS_UNKNOWN_HEAD` (no parameter of the data set) and for `data_set` < 1.
 ///
 /// Returns the status `cncrot_machine_from_carr` returns for the text (with `*line`
 /// written): 0, `CNCROT_STATUS_PARSE`, `CNCROT_STATUS_UNKNOWN_WORD`,

@@ -117,6 +117,9 @@ pub enum cncrot_status {
     Unreachable = -24,
     /// The orientation is reachable only outside the rotary axes' travel limits.
     OutOfTravel = -25,
+    /// A frame with an origin for a form without origin words: shift the datum first,
+    /// then write the rotation alone.
+    HasOrigin = -26,
     /// Internal failure (a caught panic): a bug in cncrot, please report it.
     Internal = -100,
 }
@@ -153,6 +156,7 @@ impl From<Error> for cncrot_status {
             Error::NoRoom => cncrot_status::NoRoom,
             Error::Unreachable => cncrot_status::Unreachable,
             Error::OutOfTravel => cncrot_status::OutOfTravel,
+            Error::HasOrigin => cncrot_status::HasOrigin,
         }
     }
 }
@@ -343,6 +347,7 @@ mod tests {
             S::NoRoom,
             S::Unreachable,
             S::OutOfTravel,
+            S::HasOrigin,
             S::Internal,
         ];
         for s in all {

@@ -429,10 +429,11 @@ pub unsafe extern "C" fn cncrot_program_frame(
 /// (at most `CNCROT_PROGRAM_LINE_MAX` + 1 bytes).
 ///
 /// Returns 0 or `CNCROT_STATUS_SINGULAR`, or a negative status with `out` untouched:
-/// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_BAD_ARGUMENT`
-/// (unknown dialect or form, a form name longer than 64 bytes, `decimals` > 17, a frame with
-/// an origin for a form without origin words — every `PLANE` form, `ROT` —, an incremental
-/// or mode-0 `G158 P`), `CNCROT_STATUS_BAD_SEQUENCE` (an axis order in `CYCLE800 <_MODE>`,
+/// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_HAS_ORIGIN` (a
+/// frame with an origin for a form without origin words — every `PLANE` form, `ROT` —: the
+/// datum goes in the dialect's own command), `CNCROT_STATUS_BAD_ARGUMENT` (unknown dialect
+/// or form, a form name longer than 64 bytes, `decimals` > 17, an incremental or mode-0
+/// `G158 P`), `CNCROT_STATUS_BAD_SEQUENCE` (an axis order in `CYCLE800 <_MODE>`,
 /// `G158 P<p>`, `G268 Q<q>` that is none, `"G268 Q0"`), `CNCROT_STATUS_INCOMPLETE_SEQUENCE`
 /// (an axis-by-axis order of fewer than three rotations, `"CYCLE800 7"`: it cannot express
 /// every frame), `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_NOT_AVAILABLE` (direct

@@ -13,12 +13,22 @@ pub struct LineError {
     pub error: Error,
     /// 1-based byte column.
     pub column: usize,
+    /// What the reader expected at `column`, in the dialect's own words: for
+    /// [`Error::MissingWord`] the word that is missing (`SPC`, `Q`, `ROT`, `a number`,
+    /// `'+' or '-'`); for a value a cycle refuses, the values its parameter takes
+    /// (`_MIHEAD: empty, or …`); `None` where the reader names none. A message can then
+    /// say which word is missing or what may stand there, not only that something is wrong.
+    pub expected: Option<&'static str>,
 }
 
 impl LineError {
     /// `result`, its error reported at `column`.
     pub fn at<T>(column: usize, result: Result<T, Error>) -> Result<T, LineError> {
-        result.map_err(|error| LineError { error, column })
+        result.map_err(|error| LineError {
+            error,
+            column,
+            expected: None,
+        })
     }
 }
 
@@ -71,11 +81,22 @@ impl<'a> Cursor<'a> {
         self.pos + 1
     }
 
+    /// A missing word at the current position: `what` (the word, or what kind of text)
+    /// was expected there.
+    pub fn missing(&self, what: &'static str) -> LineError {
+        LineError {
+            error: Error::MissingWord,
+            column: self.column(),
+            expected: Some(what),
+        }
+    }
+
     /// An error at the current position.
     pub fn error(&self, error: Error) -> LineError {
         LineError {
             error,
             column: self.column(),
+            expected: None,
         }
     }
 
@@ -252,7 +273,7 @@ impl<'a> Cursor<'a> {
                 Some(b) if b.is_ascii_alphabetic() || b"#$_[(".contains(&b) => {
                     self.error(Error::NotANumber)
                 }
-                _ => self.error(Error::MissingWord),
+                _ => self.missing("a number"),
             });
         }
         let mut exp = 0i32;
@@ -287,6 +308,7 @@ impl<'a> Cursor<'a> {
                 return Err(LineError {
                     error: Error::Parse,
                     column: exp_start + 1,
+                    expected: None,
                 });
             }
             exp = exp.saturating_mul(sign);
@@ -303,6 +325,7 @@ impl<'a> Cursor<'a> {
         number::parse_scanned(negative, digits, &scanned, exp).map_err(|error| LineError {
             error,
             column: start + 1,
+            expected: None,
         })
     }
 
@@ -398,6 +421,7 @@ pub fn address_words<const N: usize>(
             return Err(LineError {
                 error: Error::UnknownWord,
                 column,
+                expected: None,
             });
         }
         if equals && c.peek() == Some(b'=') {
@@ -590,6 +614,7 @@ pub fn whole(v: f64, column: usize) -> Result<i32, LineError> {
         Err(LineError {
             error: Error::BadArgument,
             column,
+            expected: None,
         })
     }
 }
@@ -617,7 +642,8 @@ mod tests {
             read(b"30+5").unwrap_err(),
             LineError {
                 error: Error::NotANumber,
-                column: 3
+                column: 3,
+                expected: None,
             }
         );
         assert_eq!(read(b"3.0.1").unwrap_err().error, Error::Parse);

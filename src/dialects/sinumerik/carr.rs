@@ -29,7 +29,6 @@
 //! is the axis' positive direction (a C table turning clockwise seen from above for C+ is
 //! entered as `0, 0, −1`).
 
-use super::head_def::ParseError;
 use crate::kinematics::{Hirth, Machine, RotaryAxis, Side, MACHINE_NAME_MAX};
 use crate::text::scan::{Cursor, Exponent, Syntax};
 use crate::{Error, Vector};
@@ -39,9 +38,28 @@ const NUMBER: Syntax = Syntax {
     ends: b";",
 };
 
+/// Why and where swivel data could not be read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CarrError {
+    /// Why (the errors of [`machine_from_carr`]).
+    pub error: Error,
+    /// 1-based line: where the text could not be read, or for a data set that does not
+    /// make a machine, the line that last assigned the parameter at fault; 0 when no line
+    /// is (no parameter of the data set, a data set number below 1).
+    pub line: usize,
+    /// The `$TC_CARR` parameter at fault: the one a line could not read; 23 for a
+    /// kinematics type other than T, P, M; one of the axis' vector (7..9, 10..12, the last
+    /// assigned) for a second axis without a first or parallel to it, and for an axis whose
+    /// offset, limits or Hirth grid are out of bounds; 28 or 29 for a negative Hirth
+    /// increment; 0 when none is.
+    pub parameter: usize,
+}
+
 /// The parameters of one data set as read.
 struct Data {
     values: [f64; 66],
+    /// The line of each parameter's last assignment (0: none).
+    lines: [usize; 66],
     kind: u8,
     name: [u8; MACHINE_NAME_MAX],
     name_len: usize,
@@ -51,12 +69,13 @@ struct Data {
 /// Reads the swivel data set `data_set` (1-based) from `$TC_CARR…` assignments and builds
 /// its machine; assignments to other data sets and other tool data (`$TC_DP…`, `$TC_TP…`,
 /// the rest of a TOA archive) are skipped, as are `CHANDATA(…)` and comments; `M17`, `M30`,
-/// `M2` end the text. Errors name the 1-based line: [`Error::Parse`] (malformed),
+/// `M2` end the text. Errors name the 1-based line and the parameter ([`CarrError`]):
+/// [`Error::Parse`] (malformed),
 /// [`Error::UnknownWord`] (a parameter that does not exist, the chain-based
 /// `$TC_CARR_KIN_…`, anything else), [`Error::NameTooLong`], [`Error::UnknownHead`] (line 0:
-/// no parameter of that data set), [`Error::BadArgument`] (line 0: a kinematics type other
-/// than T, P, M; v2 without v1; two parallel axes; limits or Hirth increments that do not
-/// make sense).
+/// no parameter of that data set), [`Error::BadArgument`] (at the parameter's line: a
+/// kinematics type other than T, P, M; v2 without v1; two parallel axes; limits or Hirth
+/// increments that do not make sense).
 ///
 /// ```
 /// use cncrot::dialects::carr::machine_from_carr;
@@ -70,14 +89,24 @@ struct Data {
 /// assert_eq!(m.axes()[1].point, [0.0, 0.0, 150.0]); // p2 = -l1 - l2
 /// assert_eq!(m.name(), b"HEAD_BC");
 /// assert_eq!(machine_from_carr(b"$TC_CARR50[1]=0", 1).unwrap_err().line, 1);
+/// // A type that is not T, P or M: its parameter and line.
+/// let e = machine_from_carr(b"$TC_CARR7[1]=1\n$TC_CARR23[1]=\"X\"", 1).unwrap_err();
+/// assert_eq!((e.error, e.line, e.parameter), (cncrot::Error::BadArgument, 2, 23));
 /// ```
-pub fn machine_from_carr(text: &[u8], data_set: i32) -> Result<Machine, ParseError> {
-    let at = |line: usize| move |error: Error| ParseError { error, line };
+pub fn machine_from_carr(text: &[u8], data_set: i32) -> Result<Machine, CarrError> {
+    let at = |line: usize, parameter: usize| {
+        move |error: Error| CarrError {
+            error,
+            line,
+            parameter,
+        }
+    };
     if data_set < 1 {
-        return Err(at(0)(Error::BadArgument));
+        return Err(at(0, 0)(Error::BadArgument));
     }
     let mut data = Data {
         values: [0.0; 66],
+        lines: [0; 66],
         kind: b'T',
         name: [0; MACHINE_NAME_MAX],
         name_len: 0,
@@ -86,20 +115,31 @@ pub fn machine_from_carr(text: &[u8], data_set: i32) -> Result<Machine, ParseErr
     let text = text.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(text);
     for (index, raw) in text.split(|&b| b == b'\n').enumerate() {
         let line = raw.strip_suffix(b"\r").unwrap_or(raw);
-        match read_line(line, data_set, &mut data) {
+        match read_line(line, index + 1, data_set, &mut data) {
             Ok(true) => {}
             Ok(false) => break,
-            Err(e) => return Err(at(index + 1)(e)),
+            Err((e, parameter)) => return Err(at(index + 1, parameter)(e)),
         }
     }
     if !data.found {
-        return Err(at(0)(Error::UnknownHead));
+        return Err(at(0, 0)(Error::UnknownHead));
     }
-    build(&data).map_err(at(0))
+    build(&data).map_err(|(error, parameter)| CarrError {
+        error,
+        line: data.lines.get(parameter).copied().unwrap_or(0),
+        parameter,
+    })
 }
 
-/// One line; `Ok(false)` at the end of the program.
-fn read_line(line: &[u8], data_set: i32, data: &mut Data) -> Result<bool, Error> {
+/// One line (number `at`); `Ok(false)` at the end of the program. An error comes with the
+/// parameter it concerns (0: none).
+fn read_line(
+    line: &[u8],
+    at: usize,
+    data_set: i32,
+    data: &mut Data,
+) -> Result<bool, (Error, usize)> {
+    let plain = |e: Error| (e, 0);
     let mut c = Cursor::new(line);
     c.block_number(b'N');
     c.label();
@@ -122,25 +162,28 @@ fn read_line(line: &[u8], data_set: i32, data: &mut Data) -> Result<bool, Error>
                         // Other tool data of the same archive (tool edges, magazines).
                         return Ok(true);
                     }
-                    return Err(Error::UnknownWord);
+                    return Err(plain(Error::UnknownWord));
                 };
                 if digits.is_empty() || !digits.iter().all(u8::is_ascii_digit) {
-                    return Err(Error::UnknownWord);
+                    return Err(plain(Error::UnknownWord));
                 }
-                let n = small(digits).ok_or(Error::UnknownWord)?;
-                assign(&mut c, n, data_set, data)?;
+                let n = small(digits).ok_or(plain(Error::UnknownWord))?;
+                let mine = assign(&mut c, n, data_set, data).map_err(|e| (e, n))?;
+                if let (true, Some(l)) = (mine, data.lines.get_mut(n)) {
+                    *l = at;
+                }
             }
             Some(_) => {
                 let word = c.name();
                 if word.eq_ignore_ascii_case(b"CHANDATA") {
-                    c.until(b')').ok_or(Error::Parse)?;
+                    c.until(b')').ok_or(plain(Error::Parse))?;
                 } else if [&b"M17"[..], b"M30", b"M2", b"M02", b"RET"]
                     .iter()
                     .any(|w| w.eq_ignore_ascii_case(word))
                 {
                     return Ok(false);
                 } else {
-                    return Err(Error::UnknownWord);
+                    return Err(plain(Error::UnknownWord));
                 }
             }
         }
@@ -159,8 +202,8 @@ fn small(digits: &[u8]) -> Option<usize> {
     )
 }
 
-/// `[index]=value` of parameter `n`.
-fn assign(c: &mut Cursor, n: usize, data_set: i32, data: &mut Data) -> Result<(), Error> {
+/// `[index]=value` of parameter `n`; whether it was the data set's own.
+fn assign(c: &mut Cursor, n: usize, data_set: i32, data: &mut Data) -> Result<bool, Error> {
     let exists = matches!(n, 1..=46 | 55..=60 | 64 | 65);
     if !exists {
         return Err(Error::UnknownWord);
@@ -183,7 +226,7 @@ fn assign(c: &mut Cursor, n: usize, data_set: i32, data: &mut Data) -> Result<()
         23 | 34 | 35 | 36 => {
             let text = string(c)?;
             if !mine {
-                return Ok(());
+                return Ok(false);
             }
             if n == 23 {
                 data.kind = match text {
@@ -226,7 +269,7 @@ fn assign(c: &mut Cursor, n: usize, data_set: i32, data: &mut Data) -> Result<()
     }
     // The next assignment, a comment or the end must follow.
     match c.peek() {
-        None | Some(b' ' | b'\t' | b';') => Ok(()),
+        None | Some(b' ' | b'\t' | b';') => Ok(mine),
         Some(_) => Err(Error::Parse),
     }
 }
@@ -246,7 +289,16 @@ fn string<'a>(c: &mut Cursor<'a>) -> Result<&'a [u8], Error> {
     c.until(b'"').ok_or(Error::Parse)
 }
 
-fn build(d: &Data) -> Result<Machine, Error> {
+/// The parameter of an axis' vector (`first` = 7 or 10) that was assigned last, so that an
+/// error about the axis points to a line that gives it.
+fn vector_parameter(d: &Data, first: usize) -> usize {
+    (first..first + 3)
+        .max_by_key(|&k| (d.lines.get(k).copied().unwrap_or(0), usize::MAX - k))
+        .unwrap_or(first)
+}
+
+/// The machine of a data set; an error comes with the parameter at fault.
+fn build(d: &Data) -> Result<Machine, (Error, usize)> {
     let v = |k: usize| d.values.get(k).copied().unwrap_or(0.0);
     // A basic parameter plus its fine offset (parameter + 40).
     let with_fine = |k: usize| v(k) + v(k + 40);
@@ -260,13 +312,13 @@ fn build(d: &Data) -> Result<Machine, Error> {
         b'T' => ([Side::Tool, Side::Tool], neg(l1), neg(add(l1, l2))),
         b'P' => ([Side::Work, Side::Work], l2, add(l2, l3)),
         b'M' => ([Side::Tool, Side::Work], l2, l3),
-        _ => return Err(Error::BadArgument),
+        _ => return Err((Error::BadArgument, 23)),
     };
     let present = |a: Vector| a.iter().any(|&x| x != 0.0);
     if present(v2) && !present(v1) {
-        return Err(Error::BadArgument);
+        return Err((Error::BadArgument, vector_parameter(d, 10)));
     }
-    let mut m = Machine::new([0.0, 0.0, 1.0])?;
+    let mut m = Machine::new([0.0, 0.0, 1.0]).map_err(|e| (e, 0))?;
     for (k, (dir, p)) in [(v1, p1), (v2, p2)].into_iter().enumerate() {
         if !present(dir) {
             continue;
@@ -275,7 +327,7 @@ fn build(d: &Data) -> Result<Machine, Error> {
         let (lo, hi) = (v(30 + k), v(32 + k));
         let step = v(28 + k);
         if step < 0.0 {
-            return Err(Error::BadArgument);
+            return Err((Error::BadArgument, 28 + k));
         }
         let axis = RotaryAxis {
             offset: with_fine(24 + k),
@@ -286,8 +338,10 @@ fn build(d: &Data) -> Result<Machine, Error> {
             }),
             ..RotaryAxis::new(side, dir, p)
         };
-        m.push_axis(axis)?;
+        m.push_axis(axis)
+            .map_err(|e| (e, vector_parameter(d, 7 + 3 * k)))?;
     }
-    m.set_name(d.name.get(..d.name_len).unwrap_or(&[]))?;
+    m.set_name(d.name.get(..d.name_len).unwrap_or(&[]))
+        .map_err(|e| (e, 34))?;
     Ok(m)
 }

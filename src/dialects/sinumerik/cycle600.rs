@@ -132,6 +132,58 @@ pub(crate) fn check_name(mihead: &[u8]) -> Result<(), Error> {
     }
 }
 
+/// The first parameter of `call` that the cycle refuses on its own, whatever the others
+/// (a flag other than 0 or 1, a `_MIHEAD` that names nothing, a code that is no sequence):
+/// its index in the call (0 `_INEXIN` … 17 `_RETR_Z`, as the paper numbers them from 1),
+/// the error, and what the parameter may be, so that a message can name it. `None` when
+/// each is well-formed (the call can still be refused as a whole: an unknown accessory).
+///
+/// ```
+/// use cncrot::dialects::cycle600::{first_fault, Call};
+/// let call = Call { inexin: 0, mihead: b"UFK 600", sw_rec: 1, bin_in: 57, pos: [0.0; 3],
+///     ang: [30.0, 45.0, 60.0], pos_r: [0.0; 3], inexout: 1, bin_out: 39, rot_ad: 0,
+///     rot_inv: 0, retr_z: 0 };
+/// let (k, e, _) = first_fault(&call).unwrap();
+/// assert_eq!((k, e), (1, cncrot::Error::BadArgument)); // _MIHEAD with a space
+/// ```
+pub fn first_fault(call: &Call) -> Option<(usize, Error, &'static str)> {
+    let flag = |f: i32| Kind::from_flag(f).map(drop);
+    let checks: [(usize, Result<(), Error>, &'static str); 9] = [
+        (
+            0,
+            flag(call.inexin),
+            "_INEXIN: 0 (extrinsic) or 1 (intrinsic)",
+        ),
+        (
+            1,
+            check_name(call.mihead),
+            "_MIHEAD: empty, or at most 31 printable characters without spaces or quotes",
+        ),
+        (2, flag(call.sw_rec), "_SW_REC: 0 or 1"),
+        (
+            3,
+            AxisCode::new(call.bin_in).map(drop),
+            "_BIN_IN: an axis-sequence code (57: X, Y, Z)",
+        ),
+        (
+            13,
+            flag(call.inexout),
+            "_INEXOUT: 0 (extrinsic) or 1 (intrinsic)",
+        ),
+        (
+            14,
+            Convention::from_c(call.inexout, call.bin_out).map(drop),
+            "_BIN_OUT: a code of three rotations (57: X, Y, Z)",
+        ),
+        (15, flag(call.rot_ad), "_ROT_AD: 0 or 1"),
+        (16, flag(call.rot_inv), "_ROT_INV: 0 or 1"),
+        (17, flag(call.retr_z), "_RETR_Z: 0 or 1"),
+    ];
+    checks
+        .into_iter()
+        .find_map(|(k, check, allowed)| check.err().map(|e| (k, e, allowed)))
+}
+
 /// [`cycle600`] with the accessories looked up through any [`HeadLookup`].
 pub fn cycle600_in(
     state: &State,

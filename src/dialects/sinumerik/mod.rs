@@ -408,7 +408,7 @@ impl<'a, const N: usize> Args<'a, N> {
         };
         c.spaces();
         if c.peek() != Some(b'(') {
-            return Err(c.error(Error::MissingWord));
+            return Err(c.missing("'('"));
         }
         c.bump();
         c.spaces();
@@ -434,6 +434,7 @@ impl<'a, const N: usize> Args<'a, N> {
                     let s = c.until(b'"').ok_or(LineError {
                         error: Error::Parse,
                         column,
+                        expected: None,
                     })?;
                     *t = true;
                     if k == text_at {
@@ -450,7 +451,7 @@ impl<'a, const N: usize> Args<'a, N> {
                     c.bump();
                     return Ok(a);
                 }
-                None => return Err(c.error(Error::MissingWord)),
+                None => return Err(c.missing("',' or ')'")),
                 Some(_) => return Err(c.error(Error::UnknownWord)),
             }
         }
@@ -486,7 +487,20 @@ impl<'a, const N: usize> Args<'a, N> {
 }
 
 fn at(column: usize) -> impl Fn(Error) -> LineError {
-    move |error| LineError { error, column }
+    move |error| LineError {
+        error,
+        column,
+        expected: None,
+    }
+}
+
+/// A refused value at `column`, with what the parameter may be.
+fn refused(column: usize, allowed: &'static str) -> impl Fn(Error) -> LineError {
+    move |error| LineError {
+        error,
+        column,
+        expected: Some(allowed),
+    }
 }
 
 /// `CYCLE800(_FR, _TC, _ST, _MODE, _X0, _Y0, _Z0, _A, _B, _C, _X1, _Y1, _Z1, _DIR, _FR_I,
@@ -503,7 +517,7 @@ fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
         return Ok(m.with_frame(Frame::IDENTITY));
     }
     if args.n < 4 {
-        return Err(c.error(Error::MissingWord));
+        return Err(c.missing("CYCLE800's parameters up to _MODE (4)"));
     }
     args.int(0)?;
     let tc = args.name(1)?;
@@ -520,9 +534,11 @@ fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
         return Ok(m.with_frame(Frame::IDENTITY));
     }
     if st < 0 || st % 10 > 1 {
-        return Err(at(args.column(2))(Error::BadArgument));
+        let allowed = "_ST: units digit 0 (a new plane) or 1 (additive)";
+        return Err(refused(args.column(2), allowed)(Error::BadArgument));
     }
-    let call = LineError::at(args.column(3), cycle800_words(mode, &w))?;
+    let allowed = "_MODE: a swivel mode (57 axis by axis X, Y, Z; 27 Z, Y, X; …)";
+    let call = cycle800_words(mode, &w).map_err(refused(args.column(3), allowed))?;
     Ok(m.with_frame(cycle800_apply(&m.frame, st % 10 == 1, &call)))
 }
 
@@ -534,7 +550,7 @@ fn cycle600_line(m: &Modal, c: &mut Cursor, column: usize) -> Result<Modal, Line
     let args = Args::<18>::read(c, 1)?;
     c.end(true, false)?;
     if args.n < 15 {
-        return Err(c.error(Error::MissingWord));
+        return Err(c.missing("CYCLE600's parameters up to _BIN_OUT (15)"));
     }
     let v3 = |k: usize| -> Result<[f64; 3], LineError> {
         Ok([args.real(k)?, args.real(k + 1)?, args.real(k + 2)?])
@@ -555,22 +571,8 @@ fn cycle600_line(m: &Modal, c: &mut Cursor, column: usize) -> Result<Modal, Line
     };
     // The cycle checks its arguments as a whole; here each is checked first where it
     // stands, so that a bad one is reported at its own column.
-    let checks: [(usize, Result<(), Error>); 9] = [
-        (0, crate::Kind::from_flag(call.inexin).map(drop)),
-        (1, cycle600::check_name(call.mihead)),
-        (2, crate::Kind::from_flag(call.sw_rec).map(drop)),
-        (3, crate::AxisCode::new(call.bin_in).map(drop)),
-        (13, crate::Kind::from_flag(call.inexout).map(drop)),
-        (
-            14,
-            crate::Convention::from_c(call.inexout, call.bin_out).map(drop),
-        ),
-        (15, crate::Kind::from_flag(call.rot_ad).map(drop)),
-        (16, crate::Kind::from_flag(call.rot_inv).map(drop)),
-        (17, crate::Kind::from_flag(call.retr_z).map(drop)),
-    ];
-    for (k, check) in checks {
-        check.map_err(at(args.column(k).max(column)))?;
+    if let Some((k, error, allowed)) = cycle600::first_fault(&call) {
+        return Err(refused(args.column(k).max(column), allowed)(error));
     }
     let state = cycle600::State {
         frame: m.frame,
@@ -652,6 +654,7 @@ fn other_block(rest: &[u8], offset: usize) -> Result<Block, LineError> {
             return Err(LineError {
                 error: Error::UnknownWord,
                 column: offset + t.column,
+                expected: None,
             });
         }
         let v = t.value;
@@ -752,7 +755,7 @@ impl Family for Sinumerik {
         let count = given.iter().filter(|&&g| g).count();
         if count == 0 {
             return if additive {
-                Err(c.error(Error::MissingWord))
+                Err(c.missing("X, Y or Z"))
             } else {
                 Ok(Block::Frame(m.with_frame(Frame::IDENTITY)))
             };
