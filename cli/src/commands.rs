@@ -157,7 +157,7 @@ fn write_targets(frame: &Frame, targets: &[Target], decimals: i32) -> Vec<Writte
         .iter()
         .map(|t| {
             let result = match write(t, frame) {
-                Err(Error::BadArgument) if frame.translation != [0.0; 3] => {
+                Err(Error::HasOrigin) => {
                     write(t, &Frame::from_rotation(frame.rotation)).map(|s| (s, true))
                 }
                 other => other.map(|s| (s, false)),
@@ -253,7 +253,7 @@ pub fn line(
     let ok = run(common, text.map(str::to_string), |line| {
         let (next, remark) = program
             .line(dialect, line.as_bytes())
-            .map_err(|e| Failure::at(e.column, e.error.message()))?;
+            .map_err(|e| Failure::at(e.column, input::block_message(line, &e)))?;
         program = next;
         let note = match remark {
             Remark::Applied => None,
@@ -477,14 +477,38 @@ fn column(m: &Matrix, k: usize) -> [f64; 3] {
 
 /// The parameters of a CYCLE600 call with their columns: `CYCLE600(a, b, …)` (after an
 /// optional block number, with an optional `;` comment after it), or the bare list.
+/// The parameters of a bare list (`0 "UFK 600" 1 57 …` or with commas) with their
+/// 1-based columns: separated by spaces, tabs, commas or semicolons, a quoted text one
+/// parameter whatever it holds.
+fn list_tokens(text: &str) -> Vec<(usize, String)> {
+    let mut out = Vec::new();
+    let mut chars = text.char_indices().peekable();
+    while let Some(&(i, c)) = chars.peek() {
+        if c.is_whitespace() || c == ',' || c == ';' {
+            chars.next();
+            continue;
+        }
+        let mut end = i;
+        let mut quoted = false;
+        for (j, d) in chars.by_ref() {
+            end = j + d.len_utf8();
+            if d == '"' {
+                quoted = !quoted;
+            } else if !quoted && (d.is_whitespace() || d == ',' || d == ';') {
+                end = j;
+                break;
+            }
+        }
+        out.push((i + 1, text[i..end].to_string()));
+    }
+    out
+}
+
 fn call_parameters(text: &str) -> Result<Vec<(usize, String)>, Failure> {
     let trimmed = text.trim_start();
     let lead = text.len() - trimmed.len();
     let Some(open) = text.find('(') else {
-        return Ok(input::tokens(text)
-            .into_iter()
-            .map(|(c, t)| (c, t.to_string()))
-            .collect());
+        return Ok(list_tokens(text));
     };
     let head = text[..open].trim();
     let head = match head.split_once(char::is_whitespace) {
@@ -590,8 +614,63 @@ fn carr_machine(source: &str, set: i32) -> Result<Machine, Failure> {
         } else {
             String::new()
         };
-        Failure::new(format!("{source}{place}: {}", e.error.message()))
+        Failure::new(format!("{source}{place}: {}", carr_message(&e, set)))
     })
+}
+
+/// What was wrong with swivel data, naming the parameter (`$TC_CARR23`) and what it may be.
+fn carr_message(e: &cncrot::dialects::carr::CarrError, set: i32) -> String {
+    let p = e.parameter;
+    let name = format!("$TC_CARR{p}");
+    let axis = |p: usize| if p >= 10 { 2 } else { 1 };
+    match (e.error, p) {
+        (Error::UnknownHead, _) => format!(
+            "data set {set} is not in the file (no $TC_CARRn[{set}] is assigned; --set names \
+             the data set)"
+        ),
+        (Error::BadArgument, 0) if set < 1 => {
+            format!("data set {set}: --set counts from 1")
+        }
+        (Error::BadArgument, 23) | (Error::Parse, 23) => {
+            format!(
+                "{name}, the kinematics type, must be \"T\" (tool), \"P\" (part) or \"M\" (mixed)"
+            )
+        }
+        (Error::BadArgument, 7..=12) => format!(
+            "{name}: axis 2 ($TC_CARR10..12) needs axis 1 ($TC_CARR7..9) and must not be \
+             parallel to it (axis {} at fault)",
+            axis(p)
+        ),
+        (Error::BadArgument, 28 | 29) => {
+            format!("{name}, a Hirth increment, must be 0 (no grid) or positive")
+        }
+        (Error::Parse, 34) => format!("{name}, the name, must be printable ASCII"),
+        (Error::NameTooLong, _) => format!(
+            "{name}, the name, is longer than {} characters",
+            cncrot::kinematics::MACHINE_NAME_MAX
+        ),
+        (Error::UnknownWord, n) if n > 0 => {
+            format!("$TC_CARR{n} is no swivel-data parameter (1..46, 55..60, 64, 65)")
+        }
+        (Error::UnknownWord, _) => {
+            "not an assignment of swivel data ($TC_CARRn[set]=value)".to_string()
+        }
+        (Error::Parse, n) if n > 0 => format!(
+            "{name}: malformed assignment ($TC_CARR{n}[set]=value with a number as \
+             SINUMERIK writes it: 12.5, -3, 1.5EX3; a text in quotes)"
+        ),
+        (Error::NotANumber, n) if n > 0 => {
+            format!("{name}: a variable or expression where a number must stand")
+        }
+        (Error::MissingWord, n) if n > 0 => format!("{name}: no number after '='"),
+        (error, 7..=12) => format!(
+            "axis {} ({name} and the axis' offset, limits, Hirth grid): {}",
+            axis(p),
+            error.message()
+        ),
+        (error, n) if n > 0 => format!("{name}: {}", error.message()),
+        (error, _) => error.message().to_string(),
+    }
 }
 
 fn machine(a: &MachineArgs) -> Result<Machine, Failure> {
@@ -718,7 +797,23 @@ pub fn cycle600(
             rot_inv: ints[6],
             retr_z: ints[7],
         };
-        let next = cycle600::cycle600(&state, table.as_ref(), &c)?;
+        if let Some((k, error, allowed)) = cycle600::first_fault(&c) {
+            let column = params.get(k).map_or(1, |p| p.0);
+            return Err(Failure::at(
+                column,
+                format!("{}: {} ({allowed})", params[k].1, error.message()),
+            ));
+        }
+        let next = cycle600::cycle600(&state, table.as_ref(), &c).map_err(|e| match e {
+            Error::UnknownHead => Failure::at(
+                params[1].0,
+                format!(
+                    "{}: _MIHEAD is not an accessory of the --heads table",
+                    params[1].1
+                ),
+            ),
+            e => Failure::from(e),
+        })?;
         let Some(r) = next.results else {
             return Err(Failure::new("the cycle stored no results"));
         };
@@ -1004,21 +1099,18 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
             Err(e) => {
                 refused += 1;
                 ok = false;
-                let why = format!("line {line}, column {}: {}", e.column, e.error.message());
+                let message = input::block_message(block, &e);
+                let why = format!("line {line}, column {}: {message}", e.column);
                 eprintln!("cncrot: {why}");
                 let row = match (&target, a.json) {
                     (Some(_), _) => block.to_string(),
                     (None, true) => Json::Obj(vec![
                         ("line", Json::Int(line as i64)),
-                        ("error", Json::str(e.error.message())),
+                        ("error", Json::str(message)),
                         ("column", Json::Int(e.column as i64)),
                     ])
                     .text(),
-                    (None, false) => format!(
-                        "line {line}: error: column {}: {}",
-                        e.column,
-                        e.error.message()
-                    ),
+                    (None, false) => format!("line {line}: error: column {}: {message}", e.column),
                 };
                 if !put(row) {
                     return Ok(ok);

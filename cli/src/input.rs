@@ -34,6 +34,71 @@ impl From<cncrot::Error> for Failure {
     }
 }
 
+/// The word that starts at a 1-based column of a block: up to the next space, at most 24
+/// characters (then `…`).
+fn word_at(text: &str, column: usize) -> Option<String> {
+    let rest = text.get(column.checked_sub(1)?..)?;
+    // A quoted text is one word, spaces and all.
+    let word: String = match rest.strip_prefix('"') {
+        Some(inner) => match inner.find('"') {
+            Some(end) => format!("\"{}\"", &inner[..end]),
+            None => rest.to_string(),
+        },
+        None => rest.chars().take_while(|c| !c.is_whitespace()).collect(),
+    };
+    if word.is_empty() {
+        return None;
+    }
+    Some(if word.chars().count() > 24 {
+        word.chars().take(24).collect::<String>() + "…"
+    } else {
+        word
+    })
+}
+
+/// Why a block was refused, naming what was wrong: the word the reader expected
+/// (`missing: SPC`), the word it could not use (`'SPX+10': unknown, repeated or misplaced
+/// word`), the variable where a number must stand, the malformed number, the controller's
+/// longest line; other refusals (a frame the mathematics refuses) with the word they were
+/// found at.
+pub fn block_message(text: &str, e: &cncrot::dialects::program::LineError) -> String {
+    use cncrot::Error;
+    // A quoted text shows its own quotes; another word is put in single quotes.
+    let word = word_at(text, e.column).map(|w| {
+        if w.starts_with('"') {
+            w
+        } else {
+            format!("'{w}'")
+        }
+    });
+    match (e.error, e.expected, word) {
+        (Error::MissingWord, Some(what), _) => format!("missing: {what}"),
+        (Error::MissingWord, None, _) => e.error.message().to_string(),
+        (Error::UnknownWord, _, Some(w)) => {
+            format!("{w}: unknown, repeated or misplaced word (not one this command takes here)")
+        }
+        (Error::NotANumber, _, Some(w)) => format!(
+            "{w}: a variable or an expression where a number must stand (cncrot reads \
+             numbers only)"
+        ),
+        (Error::Parse, _, Some(w)) if w.starts_with("'(") => {
+            format!("{w}: a comment that is not closed")
+        }
+        (Error::Parse, _, Some(w)) => {
+            format!("{w}: malformed (not a number as the control writes it)")
+        }
+        (Error::LineTooLong, _, _) => format!(
+            "the line is longer than the controller reads ({} characters at most)",
+            e.column.saturating_sub(1)
+        ),
+        (other, Some(allowed), Some(w)) => {
+            format!("{w}: {} ({allowed})", other.message())
+        }
+        (other, _, Some(w)) if e.column > 1 => format!("{w}: {}", other.message()),
+        (other, _, _) => other.message().to_string(),
+    }
+}
+
 /// The numbers of a text, separated by spaces, tabs, commas or semicolons, each with the
 /// column it starts at. A token that is not a finite number is refused at its column.
 pub fn numbers(text: &str) -> Result<Vec<f64>, Failure> {

@@ -492,7 +492,10 @@ fn cycle600_refusals() {
         "",
     );
     assert!(
-        r.code == 1 && r.stderr.contains("accessory or data set not found"),
+        r.code == 1
+            && r.stderr.contains(
+                "column 12: \"UFK700\": _MIHEAD is not an accessory of the --heads table"
+            ),
         "{}",
         r.stderr
     );
@@ -1223,5 +1226,131 @@ fn svg_pictures_show_the_numbers() {
     let size = p.num("plane-1", "data-size");
     let h = 0.8 * size / 2f64.sqrt();
     near(b, p.at([h, 0.0, h]));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Every refusal names what was wrong: the word that is missing or not understood, the
+/// parameter and what it may be, the line of a file, the data set asked for.
+#[test]
+fn refusals_name_what_was_wrong() {
+    let dir = std::env::temp_dir().join(format!("cncrot-msg-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let carr = |name: &str, text: &str| {
+        let p = dir.join(name);
+        std::fs::write(&p, text).unwrap();
+        p.to_str().unwrap().to_string()
+    };
+    let kind_x = carr("x.carr", "$TC_CARR7[1]=1\n$TC_CARR23[1]=\"X\"\n");
+    let parallel = carr(
+        "par.carr",
+        "$TC_CARR8[1]=1\n$TC_CARR10[1]=0 $TC_CARR11[1]=2 $TC_CARR12[1]=0\n",
+    );
+    let no_first = carr("nofirst.carr", "$TC_CARR23[1]=\"P\"\n$TC_CARR12[1]=1\n");
+    let hirth = carr("hirth.carr", "$TC_CARR7[1]=1\n$TC_CARR28[1]=-1\n");
+    let unknown = carr("p50.carr", "$TC_CARR7[1]=1\n$TC_CARR50[1]=1\n");
+    let variable = carr("r1.carr", "$TC_CARR7[1]=R1\n");
+    let exponent = carr("e.carr", "$TC_CARR7[1]=1\n$TC_CARR24[1]=1e6\n");
+    let missing_svg = dir.join("no-such-dir").join("p.svg");
+    let cases: Vec<(Vec<&str>, &str)> =
+        vec![
+        (
+            vec!["line", "--from", "heidenhain", "PLANE SPATIAL SPA+10 SPB+0"],
+            "column 27: missing: SPC",
+        ),
+        (
+            vec!["line", "--from", "heidenhain", "PLANE SPATIAL SPA+10 SPB+0 SPC+0 SEQ"],
+            "missing: '+' or '-'",
+        ),
+        (
+            vec!["line", "--from", "haas", "G268 X0 I0 J30 K0"],
+            "missing: Q",
+        ),
+        (
+            vec!["line", "--from", "heidenhain", "PLANE SPATIAL SPX+10 SPB+0 SPC+0"],
+            "column 15: 'SPX+10': unknown, repeated or misplaced word",
+        ),
+        (
+            vec!["line", "--from", "twincat", "ROT Z=R1"],
+            "column 7: 'R1': a variable or an expression where a number must stand",
+        ),
+        (
+            vec!["line", "--from", "fanuc", "G68.2 X1 (note"],
+            "'(note': a comment that is not closed",
+        ),
+        (
+            vec![
+                "line",
+                "--from",
+                "sinumerik",
+                "CYCLE600(0,\"UFK 600\",1,57,0,0,0,30,45,60,0,0,0,1,39)",
+            ],
+            "column 12: \"UFK 600\": parameter outside its allowed values (_MIHEAD: empty, or \
+             at most 31 printable characters without spaces or quotes)",
+        ),
+        (
+            vec!["cycle600", "0,\"UFK 600\",1,57,0,0,0,30,45,60,0,0,0,1,39"],
+            "column 3: \"UFK 600\": parameter outside its allowed values (_MIHEAD:",
+        ),
+        (
+            vec!["cycle600", "0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,3,39"],
+            "3: a flag is neither 0 nor 1 (_INEXOUT: 0 (extrinsic) or 1 (intrinsic))",
+        ),
+        (
+            vec!["axes", "--carr", &kind_x, "0", "0", "0"],
+            "x.carr, line 2: $TC_CARR23, the kinematics type, must be \"T\" (tool), \"P\" \
+             (part) or \"M\" (mixed)",
+        ),
+        (
+            vec!["axes", "--carr", &kind_x, "--set", "2", "0", "0", "0"],
+            "x.carr: data set 2 is not in the file",
+        ),
+        (
+            vec!["axes", "--carr", &parallel, "0", "0", "0"],
+            "par.carr, line 2: $TC_CARR10: axis 2 ($TC_CARR10..12) needs axis 1",
+        ),
+        (
+            vec!["axes", "--carr", &no_first, "0", "0", "0"],
+            "nofirst.carr, line 2: $TC_CARR12: axis 2",
+        ),
+        (
+            vec!["axes", "--carr", &hirth, "0", "0", "0"],
+            "hirth.carr, line 2: $TC_CARR28, a Hirth increment, must be 0 (no grid) or positive",
+        ),
+        (
+            vec!["axes", "--carr", &unknown, "0", "0", "0"],
+            "p50.carr, line 2: $TC_CARR50 is no swivel-data parameter",
+        ),
+        (
+            vec!["axes", "--carr", &variable, "0", "0", "0"],
+            "r1.carr, line 1: $TC_CARR7: a variable or expression where a number must stand",
+        ),
+        (
+            vec!["axes", "--carr", &exponent, "0", "0", "0"],
+            "e.carr, line 2: $TC_CARR24: malformed assignment",
+        ),
+        (
+            vec![
+                "probe",
+                "0,0,0",
+                "1,0,0",
+                "0,1,0",
+                "--svg",
+                missing_svg.to_str().unwrap(),
+            ],
+            "--svg ",
+        ),
+    ];
+    for (args, want) in cases {
+        let r = cncrot(&args, "");
+        assert!(r.code != 0, "{args:?} succeeded");
+        assert!(
+            r.stderr.contains(want),
+            "{args:?}:\n{}\nwanted: {want}",
+            r.stderr
+        );
+    }
+    // The option the help names is the option that works.
+    let help = ok(&["help", "probe"]);
+    assert!(help.contains("--points-file <FILE>"), "{help}");
     let _ = std::fs::remove_dir_all(&dir);
 }
