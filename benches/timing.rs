@@ -476,6 +476,23 @@ fn programs(b: &mut Bench, i: &Inputs) {
                 )
             },
         );
+        let mut what = [0u8; CNCROT_PROGRAM_EXPECTED_SIZE];
+        let missing = b"PLANE SPATIAL SPA+30 SPB+0".to_vec();
+        b.time(
+            "cncrot_program_expected",
+            "missing word",
+            &[missing],
+            &mut |l| unsafe {
+                cncrot_program_expected(
+                    &p,
+                    CNCROT_DIALECT_HEIDENHAIN,
+                    l.as_ptr().cast(),
+                    l.len(),
+                    what.as_mut_ptr().cast(),
+                    what.len(),
+                )
+            },
+        );
         b.time("cncrot_program_frame", "active", &[p], &mut |q| unsafe {
             cncrot_program_frame(q, f.as_mut_ptr())
         });

@@ -178,6 +178,12 @@ static void program_column(void) {
   sink += cncrot_program_column(&prog, CNCROT_DIALECT_HEIDENHAIN, PLANE, sizeof PLANE - 1, &col) +
           cncrot_program_column(&prog, CNCROT_DIALECT_HEIDENHAIN, "PLANE RELATIV SPA+1.5e", 22, &col);
 }
+static void program_expected(void) {
+  static char what[CNCROT_PROGRAM_EXPECTED_SIZE];
+  static const char spaced[] = "CYCLE600(0,\"A B\",1,57,0,0,0,30,45,60,0,0,0,1,39)";
+  sink += cncrot_program_expected(&prog, CNCROT_DIALECT_HEIDENHAIN, PLANE, sizeof PLANE - 1, what, sizeof what) +
+          cncrot_program_expected(&prog, CNCROT_DIALECT_SINUMERIK, spaced, sizeof spaced - 1, what, sizeof what);
+}
 static void program_frame(void) { sink += cncrot_program_frame(&prog, f); }
 static void program_init(void) { sink += cncrot_program_init(&prog, CNCROT_PROGRAM_SINUMERIK_EULER); }
 static void program_write(void) {
@@ -282,7 +288,7 @@ static const struct entry ENTRIES[] = {
     E(form_word_count, 0),   E(probe_flange, 0),       E(probe_plane, 0),
     E(probe_plane_toward, 0),
     E(probe_edge, 0),        E(program_line, 1),       E(program_column, 1),
-    E(program_frame, 0),     E(program_write, 1),      E(program_init, 0),
+    E(program_expected, 1),  E(program_frame, 0),     E(program_write, 1),      E(program_init, 0),
     E(machine_from_carr, 1), E(machine_carr_error_line, 1), E(machine_from_head, 1),
     E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
     E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),

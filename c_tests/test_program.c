@@ -238,6 +238,43 @@ static void whole_programs(void) {
                  cases[k].status);
     CHECK(column == 0, "%s: column %zu", cases[k].line, column);
   }
+  /* What a refused block should have had: the missing word, a cycle parameter's values;
+   * nothing where the reader names nothing or the block is read. */
+  struct {
+    int32_t dialect;
+    const char *line;
+    int32_t status;
+    const char *what;
+  } expected[] = {
+      {CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+10 SPB+0", CNCROT_STATUS_MISSING_WORD, "SPC"},
+      {CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+10 SPB+0 SPC+0 TABLE", CNCROT_STATUS_MISSING_WORD, "ROT"},
+      {CNCROT_DIALECT_HAAS, "G268 X0 I0 J30 K0", CNCROT_STATUS_MISSING_WORD, "Q"},
+      {CNCROT_DIALECT_FANUC, "G68.2 X", CNCROT_STATUS_MISSING_WORD, "a number"},
+      {CNCROT_DIALECT_SINUMERIK, "CYCLE600(0,\"A B\",1,57,0,0,0,30,45,60,0,0,0,1,39)", CNCROT_STATUS_BAD_ARGUMENT,
+       "_MIHEAD: empty, or at most 31 printable characters without spaces or quotes"},
+      {CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPX+10", CNCROT_STATUS_UNKNOWN_WORD, ""},
+      {CNCROT_DIALECT_HEIDENHAIN, "PLANE RESET STAY", CNCROT_STATUS_OK, ""},
+  };
+  for (size_t k = 0; k < sizeof expected / sizeof expected[0]; k++) {
+    cncrot_program p0;
+    memset(&p0, 0, sizeof p0);
+    char what[CNCROT_PROGRAM_EXPECTED_SIZE];
+    memset(what, 'x', sizeof what);
+    CHECK_STATUS(cncrot_program_expected(&p0, expected[k].dialect, expected[k].line, strlen(expected[k].line), what,
+                                         sizeof what),
+                 expected[k].status);
+    CHECK(strcmp(what, expected[k].what) == 0, "%s: \"%s\"", expected[k].line, what);
+  }
+  {
+    cncrot_program p0;
+    memset(&p0, 0, sizeof p0);
+    char small[CNCROT_PROGRAM_EXPECTED_SIZE - 1];
+    memset(small, 'x', sizeof small);
+    CHECK_STATUS(cncrot_program_expected(&p0, CNCROT_DIALECT_HAAS, "G268", 4, small, sizeof small),
+                 CNCROT_STATUS_NO_ROOM);
+    CHECK(small[0] == 'x', "written without room");
+    CHECK_STATUS(cncrot_program_expected(&p0, CNCROT_DIALECT_HAAS, "G268", 4, NULL, 96), CNCROT_STATUS_NULL_POINTER);
+  }
   /* A passed block on a fresh state leaves it all zero: not even the dialect is recorded. */
   cncrot_program fresh, zero;
   memset(&fresh, 0, sizeof fresh);

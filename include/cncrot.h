@@ -235,6 +235,11 @@
 #define CNCROT_PROGRAM_FORMAT 1347569457
 
 /**
+ * The room `cncrot_program_expected` needs: the longest text it writes and its NUL.
+ */
+#define CNCROT_PROGRAM_EXPECTED_SIZE 96
+
+/**
  * Status of every `cncrot_` function: 0 success, positive success with a remark, negative
  * an error (outputs untouched).
  */
@@ -1667,6 +1672,35 @@ int32_t cncrot_program_column(const struct cncrot_program *program,
                               const char *line,
                               size_t len,
                               size_t *column);
+
+/**
+ * What `cncrot_program_line` would return for this block (the same statuses, listed there),
+ * without changing anything, and in `expected` what the reader expected where it refused
+ * the block, NUL-terminated: for `CNCROT_STATUS_MISSING_WORD` the word that is missing
+ * (`SPC`, `Q`, `ROT`, `a number`, `'+' or '-'`), for a cycle parameter it refuses the
+ * values that parameter takes (`_MIHEAD: empty, or …`); the empty text on success and
+ * where the reader names nothing (the word not understood is the one at the column of
+ * `cncrot_program_column`). `expected` is written for every status but those below.
+ *
+ * Refused with nothing written: `CNCROT_STATUS_NULL_POINTER`; `CNCROT_STATUS_NO_ROOM` when
+ * `size` is below `CNCROT_PROGRAM_EXPECTED_SIZE`.
+ *
+ * # Safety
+ * `program` points to a readable `cncrot_program`, `line` to `len` readable bytes,
+ * `expected` to `size` writable bytes.
+ *
+ * ```c
+ * char what[CNCROT_PROGRAM_EXPECTED_SIZE];
+ * cncrot_program_expected(&p, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+10 SPB+0", 26,
+ *                         what, sizeof what);   // -21, "SPC"
+ * ```
+ */
+int32_t cncrot_program_expected(const struct cncrot_program *program,
+                                int32_t dialect,
+                                const char *line,
+                                size_t len,
+                                char *expected,
+                                size_t size);
 
 /**
  * The rotary-axis positions the active tilt of `program` moves `machine` to, seen from the

@@ -16,9 +16,10 @@
 %   mirroring, scaling: the state unchanged, and it may no longer be the control's).
 %   A line the controller could not execute raises the status's error (cncrot:unknownWord,
 %   cncrot:notANumber for a variable, cncrot:missingWord, cncrot:parse, cncrot:lineTooLong,
-%   or the error of the command's mathematics) whose message names the line and the column
-%   of the first offending character ("cncrot_program_lines: argument 2 (lines), line 2,
-%   column 19: ...").
+%   or the error of the command's mathematics) whose message names the line, the column
+%   of the first offending character and what was wrong there: the word the reader wanted,
+%   a cycle parameter's allowed values, or the word it could not use
+%   ("cncrot_program_lines: argument 2 (lines), line 1, column 27 (missing: SPC): ...").
 %
 %   Example (the TwinCAT manual: ROT Z30 then AROT Z15 is 45 degrees about Z):
 %     F = cncrot_program_lines('twincat', {'N65 ROT Z30', 'N90 AROT Z15'})

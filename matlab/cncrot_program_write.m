@@ -10,7 +10,9 @@
 %   F is 4-by-4 or 4-by-4-by-N; line is a char row (a cell column for N ~= 1). decimals < 0
 %   (the default) writes the shortest numbers that read back exactly, otherwise numbers are
 %   rounded to that many decimals (at most 17). status is 0, or 1 where the middle angle is
-%   singular (the free angle sits where that dialect's rule puts it).
+%   singular (the free angle sits where that dialect's rule puts it). A frame with an
+%   origin for a form without origin words (the PLANE forms, ROT) raises cncrot:hasOrigin:
+%   write the datum shift first, then the rotation alone.
 %   cncrot_program_lines reads the line back as the same frame.
 %
 %   Example (a measured plane as a Heidenhain and a Fanuc line):

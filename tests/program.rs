@@ -1049,6 +1049,48 @@ fn cancels_are_written_as_cancels() {
     assert!(buf[..n].starts_with(b"G68.2 "));
 }
 
+/// Every text a reader names as expected fits the room C gives it
+/// (`CNCROT_PROGRAM_EXPECTED_SIZE` with its NUL): the literals of the readers' sources.
+#[test]
+fn expected_texts_fit_their_room() {
+    let sources = [
+        include_str!("../src/dialects/heidenhain.rs"),
+        include_str!("../src/dialects/haas.rs"),
+        include_str!("../src/dialects/syntec.rs"),
+        include_str!("../src/dialects/twincat.rs"),
+        include_str!("../src/dialects/fanuc.rs"),
+        include_str!("../src/dialects/sinumerik/mod.rs"),
+        include_str!("../src/dialects/sinumerik/cycle600.rs"),
+        include_str!("../src/text/scan.rs"),
+    ];
+    let mut seen = 0;
+    for src in sources {
+        for (k, _) in src.match_indices(".missing(\"") {
+            let rest = &src[k + 10..];
+            let text = &rest[..rest.find("\")").unwrap()];
+            assert!(
+                text.len() < cncrot::ffi::CNCROT_PROGRAM_EXPECTED_SIZE,
+                "{text}"
+            );
+            seen += 1;
+        }
+        for line in src.lines() {
+            let t = line.trim();
+            if let Some(rest) = t.strip_prefix('"').filter(|r| r.starts_with('_')) {
+                let text = &rest[..rest.find('"').unwrap()];
+                assert!(
+                    text.len() < cncrot::ffi::CNCROT_PROGRAM_EXPECTED_SIZE,
+                    "{text}"
+                );
+                seen += 1;
+            }
+        }
+    }
+    // Heidenhain's four, Haas, Syntec, TwinCAT, SINUMERIK's five, the number; CYCLE600's
+    // parameters written on a line of their own, CYCLE800's _ST and _MODE.
+    assert!(seen >= 13, "{seen}");
+}
+
 /// A missing word is named: the first word of the command that is not there, or what
 /// kind of text should stand at the column.
 #[test]

@@ -323,6 +323,19 @@ fn census(calls: usize) -> BTreeMap<&'static str, BTreeSet<i32>> {
                     g.ptr_mut(&mut col as *mut usize),
                 ),
             );
+            let mut what = [0u8; CNCROT_PROGRAM_EXPECTED_SIZE + 1];
+            let room = g.pick(&[0, 1, CNCROT_PROGRAM_EXPECTED_SIZE - 1, what.len()]);
+            record(
+                "cncrot_program_expected",
+                cncrot_program_expected(
+                    pp,
+                    d,
+                    pl.cast(),
+                    line.len(),
+                    g.ptr_mut(what.as_mut_ptr()).cast(),
+                    room,
+                ),
+            );
             record(
                 "cncrot_program_line",
                 cncrot_program_line(pp, d, pl.cast(), line.len()),

@@ -1,7 +1,8 @@
 //! Program lines of arbitrary text in any dialect, one block after another on one state:
 //! no crash, no hang, no read past `len`; a refused block leaves the state byte-identical and
 //! `cncrot_program_column` reports the same status with a column inside the line (or one
-//! past it); an accepted one leaves a finite frame whose every writable form writes a line
+//! past it), `cncrot_program_expected` the same status with a NUL-terminated text that
+//! fits (what a missing word should be: never empty for one); an accepted one leaves a finite frame whose every writable form writes a line
 //! that its dialect reads back as the same frame, and a sealed state of which single-bit
 //! flips are refused. Frames close to the forms' singularities (tilts of 90° − 10^-k) go
 //! through every writer too: a refusal must be one the documentation names for that frame.
@@ -114,6 +115,28 @@ fuzz_target!(|data: &[u8]| {
             )
         };
         assert_eq!(c, s, "the column function disagrees");
+        let mut what = [0x5Au8; CNCROT_PROGRAM_EXPECTED_SIZE + 1];
+        // SAFETY: as above; `what` holds more than the room given.
+        let e = unsafe {
+            cncrot_program_expected(
+                &again,
+                dialect,
+                line.as_ptr().cast(),
+                line.len(),
+                what.as_mut_ptr().cast(),
+                CNCROT_PROGRAM_EXPECTED_SIZE,
+            )
+        };
+        assert_eq!(e, s, "the expected-word function disagrees");
+        let nul = what.iter().position(|&b| b == 0).expect("NUL-terminated");
+        assert!(nul < CNCROT_PROGRAM_EXPECTED_SIZE && what[CNCROT_PROGRAM_EXPECTED_SIZE] == 0x5A);
+        assert!(what[..nul].iter().all(|b| (0x20..0x7f).contains(b)));
+        if s == -21 {
+            assert!(nul > 0, "a missing word that is not named");
+        }
+        if s >= 0 {
+            assert_eq!(nul, 0);
+        }
         if s < 0 {
             assert_eq!(as_bytes(&p), before, "status {s} changed the program");
             assert!(

@@ -50,12 +50,23 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     size_t column = 0;
     s = cncrot_program_line(&p, dialect, buf, len);
     if (s < 0) {
+      char what[CNCROT_PROGRAM_EXPECTED_SIZE];
       cncrot_program_column(&p, dialect, buf, len, &column);
+      cncrot_program_expected(&p, dialect, buf, len, what, sizeof what);
       mxDestroyArray(frames);
       mxDestroyArray(remarks);
-      char where[96];
+      char where[96 + CNCROT_PROGRAM_EXPECTED_SIZE + 48];
       if (column > 0) {
-        snprintf(where, sizeof where, "%s, line %d, column %d", label(2, "lines"), (int)(k + 1), (int)column);
+        int at = snprintf(where, sizeof where, "%s, line %d, column %d", label(2, "lines"), (int)(k + 1), (int)column);
+        /* The word the reader wanted, or the word it could not use. */
+        if (what[0] && at > 0 && (size_t)at < sizeof where) {
+          snprintf(where + at, sizeof where - (size_t)at, " (%s%s)", s == CNCROT_STATUS_MISSING_WORD ? "missing: " : "",
+                   what);
+        } else if (column <= len && at > 0 && (size_t)at < sizeof where) {
+          size_t end = column - 1;
+          while (end < len && end < column - 1 + 24 && buf[end] != ' ' && buf[end] != '\t') end++;
+          snprintf(where + at, sizeof where - (size_t)at, " ('%.*s')", (int)(end - (column - 1)), buf + column - 1);
+        }
         raise_at(s, where, NULL, -1, 0);
       }
       raise_at(s, label(2, "lines"), "line", (long)k, n);

@@ -324,9 +324,13 @@ function test_cncrot(cases_file)
   expect_message('cncrot:badArgument', @() cncrot_program_write("siemens", 'ROT', eye(4)), 'unknown dialect, write', 'cncrot_program_write', 'argument 1 (dialect)', '''siemens''');
   expect_message('cncrot:badArgument', @() cncrot_program_write('fanuc', 'PLANE SPATIAL', eye(4)), 'form of another dialect', 'cncrot_program_write', 'argument 2 (form)');
   expect_message('cncrot:badArgument', @() cncrot_program_write('fanuc', 'G68.2', eye(4), 18), 'decimals 18', 'cncrot_program_write', 'argument 4 (decimals)', 'got 18');
-  expect_message('cncrot:badArgument', @() cncrot_program_write('heidenhain', 'PLANE SPATIAL', [eye(3) [1; 2; 3]; 0 0 0 1]), 'origin for SPATIAL', 'cncrot_program_write', 'argument 3 (F)');
+  expect_message('cncrot:hasOrigin', @() cncrot_program_write('heidenhain', 'PLANE SPATIAL', [eye(3) [1; 2; 3]; 0 0 0 1]), 'origin for SPATIAL', 'cncrot_program_write', 'argument 3 (F)');
   expect_message('cncrot:notANumber', @() cncrot_program_lines('heidenhain', {'PLANE RESET', 'PLANE SPATIAL SPA+Q120 SPB+0 SPC+0'}), 'line and column', ...
-                 'cncrot_program_lines', 'argument 2 (lines), line 2, column 19');
+                 'cncrot_program_lines', 'argument 2 (lines), line 2, column 19 (''Q120'')');
+  expect_message('cncrot:missingWord', @() cncrot_program_lines('heidenhain', 'PLANE SPATIAL SPA+10 SPB+0'), 'missing word named', ...
+                 'cncrot_program_lines', 'line 1, column 27 (missing: SPC)');
+  expect_message('cncrot:badArgument', @() cncrot_program_lines('sinumerik', 'CYCLE600(0,"A B",1,57,0,0,0,30,45,60,0,0,0,1,39)'), ...
+                 'parameter named', 'cncrot_program_lines', 'column 12 (_MIHEAD: empty, or at most 31');
   expect_message('cncrot:badClass', @() cncrot_program_lines('fanuc', 42), 'numeric line', 'cncrot_program_lines', 'argument 2 (lines)');
   expect_message('cncrot:badState', @() cncrot_program_lines('fanuc', 'G69', struct('active', 2)), 'bad state', 'cncrot_program_lines', 'argument 3 (state)');
   expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 'sideways'), 'unknown rule', 'cncrot_machine_choose', ...
@@ -380,7 +384,7 @@ function test_cncrot(cases_file)
   expect_error('cncrot:notAvailable', @() cncrot_form_frame(fm.CYCLE800, 192, zeros(1, 9)), 'direct mode');
   expect_error('cncrot:coincident', @() cncrot_form_frame(fm.PLANE_POINTS, 0, zeros(1, 9)), 'coincident points');
   expect_error('cncrot:badArgument', @() cncrot_form_values(fm.SINUMERIK_ROTS, 0, eye(4)), 'ROTS not writable');
-  expect_error('cncrot:badArgument', @() cncrot_form_values(fm.PLANE_SPATIAL, 0, [eye(3) [1; 0; 0]; 0 0 0 1]), 'origin for SPATIAL');
+  expect_error('cncrot:hasOrigin', @() cncrot_form_values(fm.PLANE_SPATIAL, 0, [eye(3) [1; 0; 0]; 0 0 0 1]), 'origin for SPATIAL');
   expect_error('cncrot:notARotation', @() cncrot_form_values(fm.G68_2, 0, 2 * eye(4)), 'not a frame');
   expect_error('cncrot:badSize', @() cncrot_form_values(fm.G68_2, 0, eye(3)), 'F size');
 

@@ -201,7 +201,7 @@ unsafe fn read(
     line: *const c_char,
     len: usize,
     write: bool,
-) -> Result<cncrot_status, (cncrot_status, usize)> {
+) -> Result<cncrot_status, (cncrot_status, usize, Option<&'static str>)> {
     // The caller's struct is read in place when aligned (as C aligns it), copied if not.
     let copy;
     let c = if program.is_aligned() {
@@ -210,14 +210,16 @@ unsafe fn read(
         copy = program.read_unaligned();
         &copy
     };
-    let p = load(c).map_err(|e| (e.into(), 0))?;
-    let d = Dialect::from_code(dialect).map_err(|e| (e.into(), 0))?;
+    let p = load(c).map_err(|e| (e.into(), 0, None))?;
+    let d = Dialect::from_code(dialect).map_err(|e| (e.into(), 0, None))?;
     // Beyond the longest block and its line end nothing is read.
     if len > d.max_line() + 2 {
-        return Err((cncrot_status::LineTooLong, d.max_line() + 1));
+        return Err((cncrot_status::LineTooLong, d.max_line() + 1, None));
     }
     let text = core::slice::from_raw_parts(line.cast::<u8>(), len);
-    let (next, remark) = p.line(d, text).map_err(|e| (e.error.into(), e.column))?;
+    let (next, remark) = p
+        .line(d, text)
+        .map_err(|e| (e.error.into(), e.column, e.expected))?;
     Ok(match remark {
         Remark::Applied => {
             // Written here, once: a state carried out in the result took stack.
@@ -287,7 +289,7 @@ pub unsafe extern "C" fn cncrot_program_line(
 ) -> i32 {
     guard(|| {
         non_null(&[program.is_null(), line.is_null()])?;
-        read(program, dialect, line, len, true).map_err(|(s, _)| s)
+        read(program, dialect, line, len, true).map_err(|(s, _, _)| s)
     })
 }
 
@@ -323,11 +325,66 @@ pub unsafe extern "C" fn cncrot_program_column(
                 column.write_unaligned(0);
                 Ok(status)
             }
-            Err((s, c)) => {
+            Err((s, c, _)) => {
                 column.write_unaligned(c);
                 Err(s)
             }
         }
+    })
+}
+
+/// The room `cncrot_program_expected` needs: the longest text it writes and its NUL.
+pub const CNCROT_PROGRAM_EXPECTED_SIZE: usize = 96;
+
+/// What `cncrot_program_line` would return for this block (the same statuses, listed there),
+/// without changing anything, and in `expected` what the reader expected where it refused
+/// the block, NUL-terminated: for `CNCROT_STATUS_MISSING_WORD` the word that is missing
+/// (`SPC`, `Q`, `ROT`, `a number`, `'+' or '-'`), for a cycle parameter it refuses the
+/// values that parameter takes (`_MIHEAD: empty, or …`); the empty text on success and
+/// where the reader names nothing (the word not understood is the one at the column of
+/// `cncrot_program_column`). `expected` is written for every status but those below.
+///
+/// Refused with nothing written: `CNCROT_STATUS_NULL_POINTER`; `CNCROT_STATUS_NO_ROOM` when
+/// `size` is below `CNCROT_PROGRAM_EXPECTED_SIZE`.
+///
+/// # Safety
+/// `program` points to a readable `cncrot_program`, `line` to `len` readable bytes,
+/// `expected` to `size` writable bytes.
+///
+/// ```c
+/// char what[CNCROT_PROGRAM_EXPECTED_SIZE];
+/// cncrot_program_expected(&p, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+10 SPB+0", 26,
+///                         what, sizeof what);   // -21, "SPC"
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_program_expected(
+    program: *const cncrot_program,
+    dialect: i32,
+    line: *const c_char,
+    len: usize,
+    expected: *mut c_char,
+    size: usize,
+) -> i32 {
+    guard(|| {
+        non_null(&[program.is_null(), line.is_null(), expected.is_null()])?;
+        if size < CNCROT_PROGRAM_EXPECTED_SIZE {
+            return Err(cncrot_status::NoRoom);
+        }
+        // Never written: `program` is only read (`write` false).
+        let (status, text) = match read(program.cast_mut(), dialect, line, len, false) {
+            Ok(status) => (Ok(status), ""),
+            Err((s, _, what)) => (Err(s), what.unwrap_or("")),
+        };
+        // Every text the readers name is shorter than the room (a test holds them to it);
+        // cut, never overrun, if one were not.
+        let n = text.len().min(CNCROT_PROGRAM_EXPECTED_SIZE - 1);
+        let out = expected.cast::<u8>();
+        for (k, &b) in text.as_bytes().iter().take(n).enumerate() {
+            out.add(k).write(b);
+        }
+        out.add(n).write(0);
+        status
     })
 }
 

@@ -737,6 +737,42 @@ fn programs() -> Vec<Call> {
                 null_mut(),
             ));
         }),
+        ("cncrot_program_expected", |t| unsafe {
+            let p = cncrot_program::default();
+            let mut what = [0x5Au8; CNCROT_PROGRAM_EXPECTED_SIZE];
+            for l in [
+                &b"PLANE SPATIAL SPA+10 SPB+0"[..],
+                b"PLANE SPATIAL SPX+10",
+                b"PLANE SPATIAL SPA+10 SPB+0 SPC+0 SEQ",
+                b"PLANE RESET STAY",
+            ] {
+                t.status(cncrot_program_expected(
+                    &p,
+                    CNCROT_DIALECT_HEIDENHAIN,
+                    l.as_ptr().cast(),
+                    l.len(),
+                    what.as_mut_ptr().cast(),
+                    what.len(),
+                ));
+                t.bytes(&what);
+            }
+            t.status(cncrot_program_expected(
+                &p,
+                CNCROT_DIALECT_HEIDENHAIN,
+                b"PLANE".as_ptr().cast(),
+                5,
+                what.as_mut_ptr().cast(),
+                what.len() - 1,
+            ));
+            t.status(cncrot_program_expected(
+                &p,
+                3,
+                b"G69".as_ptr().cast(),
+                3,
+                null_mut(),
+                what.len(),
+            ));
+        }),
         ("cncrot_program_axes", |t| unsafe {
             let m = head();
             let mut p = cncrot_program::default();

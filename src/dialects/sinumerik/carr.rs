@@ -58,8 +58,9 @@ pub struct CarrError {
 /// The parameters of one data set as read.
 struct Data {
     values: [f64; 66],
-    /// The line of each parameter's last assignment (0: none).
-    lines: [usize; 66],
+    /// The line of each parameter's last assignment (0: none; u32 to keep the reader's
+    /// frame within the setup stack bound).
+    lines: [u32; 66],
     kind: u8,
     name: [u8; MACHINE_NAME_MAX],
     name_len: usize,
@@ -126,7 +127,7 @@ pub fn machine_from_carr(text: &[u8], data_set: i32) -> Result<Machine, CarrErro
     }
     build(&data).map_err(|(error, parameter)| CarrError {
         error,
-        line: data.lines.get(parameter).copied().unwrap_or(0),
+        line: data.lines.get(parameter).map_or(0, |&l| l as usize),
         parameter,
     })
 }
@@ -170,7 +171,7 @@ fn read_line(
                 let n = small(digits).ok_or(plain(Error::UnknownWord))?;
                 let mine = assign(&mut c, n, data_set, data).map_err(|e| (e, n))?;
                 if let (true, Some(l)) = (mine, data.lines.get_mut(n)) {
-                    *l = at;
+                    *l = u32::try_from(at).unwrap_or(u32::MAX);
                 }
             }
             Some(_) => {
