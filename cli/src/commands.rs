@@ -759,7 +759,25 @@ pub fn cycle600(
         .map(|source| {
             let text = input::read_source(source)?;
             HeadTable::parse(text.as_bytes()).map_err(|e| {
-                Failure::new(format!("{source}, line {}: {}", e.line, e.error.message()))
+                // The line itself, so that the reader sees which assignment it is.
+                let shown = text
+                    .lines()
+                    .nth(e.line.saturating_sub(1))
+                    .filter(|_| e.line > 0)
+                    .map(|l| {
+                        let l = l.trim();
+                        let cut: String = l.chars().take(60).collect();
+                        let more = if l.chars().count() > 60 { "…" } else { "" };
+                        format!(" ({cut}{more})")
+                    })
+                    .unwrap_or_default();
+                let why = match e.error {
+                    Error::Parse => "not a HEAD_DEF assignment (_NAME=value, the numbers as \
+                                     SINUMERIK writes them, texts in quotes)"
+                        .to_string(),
+                    other => other.message().to_string(),
+                };
+                Failure::new(format!("{source}, line {}{shown}: {why}", e.line))
             })
         })
         .transpose()

@@ -1251,6 +1251,7 @@ fn refusals_name_what_was_wrong() {
     let variable = carr("r1.carr", "$TC_CARR7[1]=R1\n");
     let exponent = carr("e.carr", "$TC_CARR7[1]=1\n$TC_CARR24[1]=1e6\n");
     let missing_svg = dir.join("no-such-dir").join("p.svg");
+    let heads = carr("heads.spf", "_HEAD_NAME=\"UFK600\"\n_DELTA_L1=1.2.3\n");
     let cases: Vec<(Vec<&str>, &str)> =
         vec![
         (
@@ -1327,6 +1328,15 @@ fn refusals_name_what_was_wrong() {
         (
             vec!["axes", "--carr", &exponent, "0", "0", "0"],
             "e.carr, line 2: $TC_CARR24: malformed assignment",
+        ),
+        (
+            vec![
+                "cycle600",
+                "--heads",
+                &heads,
+                "0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1,39",
+            ],
+            "heads.spf, line 2 (_DELTA_L1=1.2.3): not a HEAD_DEF assignment",
         ),
         (
             vec![
