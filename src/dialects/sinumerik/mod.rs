@@ -537,7 +537,7 @@ fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
         let allowed = "_ST: units digit 0 (a new plane) or 1 (additive)";
         return Err(refused(args.column(2), allowed)(Error::BadArgument));
     }
-    let allowed = "_MODE: a swivel mode (57 axis by axis X, Y, Z; 27 Z, Y, X; …)";
+    let allowed = "_MODE: a swivel mode (57: axis by axis X, Y, Z; 27: Z, Y, X; ...)";
     let call = cycle800_words(mode, &w).map_err(refused(args.column(3), allowed))?;
     Ok(m.with_frame(cycle800_apply(&m.frame, st % 10 == 1, &call)))
 }
