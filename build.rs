@@ -1,5 +1,5 @@
 //! Gives the shared library its soname, so that programs linked against it find the
-//! installed library by its ABI version (`libcncrot.so.0.1` for 0.1.z, `libcncrot.so.N` for
+//! installed library by its ABI version (`libcncrot.so.0.2` for 0.2.z, `libcncrot.so.N` for
 //! N.y.z: Cargo's semver-compatibility rule, the one cargo-c follows).
 //!
 //! The C header is not generated here: `tests/header.rs` generates it with cbindgen and

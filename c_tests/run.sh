@@ -13,7 +13,7 @@ cargo build --release --quiet
 cargo build --profile rt --no-default-features --lib --quiet
 lib=target/release
 rt=target/rt
-# The shared library carries its soname (libcncrot.so.0.1): a program linked against it
+# The shared library carries its soname (libcncrot.so.0.2): a program linked against it
 # asks for that file, which cargo leaves in the build tree only as libcncrot.so.
 for d in "$lib" "$rt"; do
   so=$(objdump -p "$d/libcncrot.so" | awk '$1 == "SONAME" {print $2}')

@@ -215,7 +215,8 @@ static void whole_programs(void) {
   } cases[] = {
       {CNCROT_DIALECT_HEIDENHAIN, "1 TOOL CALL 5 Z S8000", CNCROT_STATUS_PASSED},
       {CNCROT_DIALECT_HEIDENHAIN, "2 L X+10 Y+0 FMAX M3", CNCROT_STATUS_PASSED},
-      {CNCROT_DIALECT_HEIDENHAIN, "3 CYCL DEF 7.0 DATUM SHIFT", CNCROT_STATUS_NOT_FOLLOWED},
+      {CNCROT_DIALECT_HEIDENHAIN, "3 CYCL DEF 7.0 DATUM SHIFT", CNCROT_STATUS_PASSED},
+      {CNCROT_DIALECT_HEIDENHAIN, "3 CYCL DEF 7.1 #4", CNCROT_STATUS_NOT_FOLLOWED},
       {CNCROT_DIALECT_HEIDENHAIN, "", CNCROT_STATUS_PASSED},
       {CNCROT_DIALECT_FANUC, "N10 G0 G90 X0 Y0 M3 S5000", CNCROT_STATUS_PASSED},
       {CNCROT_DIALECT_FANUC, "N20 G54.1 P2", CNCROT_STATUS_NOT_FOLLOWED},
@@ -275,6 +276,34 @@ static void whole_programs(void) {
     CHECK(small[0] == 'x', "written without room");
     CHECK_STATUS(cncrot_program_expected(&p0, CNCROT_DIALECT_HAAS, "G268", 4, NULL, 96), CNCROT_STATUS_NULL_POINTER);
   }
+  /* A datum shift and a tilt with its choice word: the state keeps both, the plane tilts
+   * about the shifted datum, PLANE RESET keeps the shift, and the fork head's SEQ- puts
+   * its master axis (B, nearest the tool) at -30, the closest choice at +30. */
+  {
+    static const char *prog[] = {"CYCL DEF 7.0 DATUM SHIFT", "CYCL DEF 7.1 X+10", "CYCL DEF 7.2 Y+20",
+                                 "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN SEQ-"};
+    cncrot_program q;
+    memset(&q, 0, sizeof q);
+    for (size_t k = 0; k < 4; k++) CHECK(cncrot_program_line(&q, CNCROT_DIALECT_HEIDENHAIN, prog[k], strlen(prog[k])) >= 0, "%s", prog[k]);
+    CHECK(q.shift[0] == 10 && q.shift[1] == 20 && q.shift[2] == 0, "shift %g %g %g", q.shift[0], q.shift[1], q.shift[2]);
+    CHECK(q.origin[0] == 10 && q.origin[1] == 20 && q.origin[2] == 0, "origin");
+    CHECK(q.choice == CNCROT_CHOOSE_MINUS && q.reference_axis == 0, "choice %d %d", q.choice, q.reference_axis);
+    cncrot_machine head;
+    static const char carr[] = "$TC_CARR9[1]=1 $TC_CARR11[1]=1 $TC_CARR23[1]=\"T\"\n";
+    CHECK_STATUS(cncrot_machine_from_carr(&head, carr, sizeof carr - 1, 1), CNCROT_STATUS_OK);
+    double cur[3] = {0, 0, 0}, ax[3];
+    CHECK(cncrot_program_axes(&q, &head, cur, ax) >= 0 && fabs(ax[1] + 30) < 1e-9, "SEQ-: B %g", ax[1]);
+    CHECK_STATUS(cncrot_program_line(&q, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN", 37),
+                 CNCROT_STATUS_OK);
+    CHECK(q.choice == CNCROT_CHOOSE_CLOSEST, "choice kept by a plane without words");
+    CHECK(cncrot_program_axes(&q, &head, cur, ax) >= 0 && fabs(ax[1] - 30) < 1e-9, "closest: B %g", ax[1]);
+    CHECK_STATUS(cncrot_program_line(&q, CNCROT_DIALECT_HEIDENHAIN, "PLANE RESET STAY", 16), CNCROT_STATUS_OK);
+    CHECK(q.active == 1 && q.origin[0] == 10 && q.rotation[0] == 1, "reset kept the shift");
+    /* A choice the library did not write: refused. */
+    cncrot_program edited = q;
+    edited.choice = 7;
+    CHECK_STATUS(cncrot_program_line(&edited, CNCROT_DIALECT_HEIDENHAIN, "PLANE RESET", 11), CNCROT_STATUS_BAD_STATE);
+  }
   /* A passed block on a fresh state leaves it all zero: not even the dialect is recorded. */
   cncrot_program fresh, zero;
   memset(&fresh, 0, sizeof fresh);
@@ -299,7 +328,7 @@ static void program_axes(void) {
   double cur[3] = {730, 0, 0}, ax[3], want[3];
   CHECK_STATUS(cncrot_program_axes(&p, &m, cur, ax), CNCROT_STATUS_FREE_AXIS);
   CHECK(ax[0] == 730 && ax[1] == 0 && ax[2] == 0, "nothing active: %g %g %g", ax[0], ax[1], ax[2]);
-  const char *l = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-";
+  const char *l = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX";
   CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_HEIDENHAIN, l, strlen(l)), CNCROT_STATUS_OK);
   CHECK_STATUS(cncrot_program_axes(&p, &m, cur, ax), CNCROT_STATUS_OK);
   CHECK(fabs(ax[0] - 720) < 1e-9 && fabs(ax[1] - 30) < 1e-9 && ax[2] == 0, "Ry(30): %g %g %g", ax[0], ax[1], ax[2]);
@@ -307,6 +336,14 @@ static void program_axes(void) {
   cncrot_program_frame(&p, f);
   CHECK_STATUS(cncrot_machine_choose(&m, f, cur, CNCROT_CHOOSE_CLOSEST, 0, want, res, rem), CNCROT_STATUS_OK);
   CHECK(memcmp(ax, want, sizeof ax) == 0, "not the closest choice");
+  /* SEQ-: the master axis (B, the one nearest the tool) at its lower position, as
+   * cncrot_machine_choose with minus on axis 2: C 900 (the half turn nearest 730), B -30. */
+  const char *seq = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-";
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_HEIDENHAIN, seq, strlen(seq)), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_program_axes(&p, &m, cur, ax), CNCROT_STATUS_OK);
+  CHECK(fabs(ax[0] - 900) < 1e-9 && fabs(ax[1] + 30) < 1e-9 && ax[2] == 0, "SEQ-: %g %g %g", ax[0], ax[1], ax[2]);
+  CHECK_STATUS(cncrot_machine_choose(&m, f, cur, CNCROT_CHOOSE_MINUS, 2, want, res, rem), CNCROT_STATUS_OK);
+  CHECK(memcmp(ax, want, sizeof ax) == 0, "not the minus choice on axis 2");
   /* Refusals leave the output untouched. */
   double keep[3] = {1, 2, 3}, out[3] = {1, 2, 3}, nan_cur[3] = {NAN, 0, 0};
   CHECK_STATUS(cncrot_program_axes(&p, &m, nan_cur, out), CNCROT_STATUS_NOT_FINITE);

@@ -10,9 +10,9 @@
 
 /** The version of the library this header belongs to (docs/abi.md). */
 #define CNCROT_VERSION_MAJOR 0
-#define CNCROT_VERSION_MINOR 1
+#define CNCROT_VERSION_MINOR 2
 #define CNCROT_VERSION_PATCH 0
-#define CNCROT_VERSION "0.1.0"
+#define CNCROT_VERSION "0.2.0"
 
 /**
  * The tolerance of the rotation check: the largest element of `MᵀM − I` accepted.
@@ -232,7 +232,7 @@
  * Mixed into the seal of every `cncrot_program` this version writes: a state of a version
  * with another meaning of the same bytes gets another constant, and is refused.
  */
-#define CNCROT_PROGRAM_FORMAT 1347569457
+#define CNCROT_PROGRAM_FORMAT 1347569458
 
 /**
  * The room `cncrot_program_expected` needs: the longest text it writes and its NUL.
@@ -620,10 +620,11 @@ typedef struct cncrot_machine {
  * hand, a bit flipped in storage, a state of another version — is refused with
  * `CNCROT_STATUS_BAD_STATE`.
  *
- * Layout (136 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
- * `angles` 96, `active` 120, `dialect` 124, `options` 128, `reserved` 132. Accepted on
- * entry: all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes
- * 0..132 exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
+ * Layout (168 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
+ * `angles` 96, `shift` 120, `active` 144, `dialect` 148, `options` 152, `choice` 156,
+ * `reference_axis` 160, `reserved` 164. Accepted on entry: all zero bytes, or `reserved` =
+ * the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..164 exclusive-or
+ * `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
  */
 typedef struct cncrot_program {
   /**
@@ -631,13 +632,20 @@ typedef struct cncrot_program {
    */
   double rotation[9];
   /**
-   * The active origin (all zero while `active` is 0).
+   * The active origin: the datum shift and the tilt's origin together (all zero while
+   * `active` is 0).
    */
   double origin[3];
   /**
    * TwinCAT's programmed angles `X Y Z` (its `AROT` adds angles); zero in other dialects.
    */
   double angles[3];
+  /**
+   * The datum shift the program made active (Heidenhain `CYCL DEF 7`, `TRANS DATUM`;
+   * Fanuc-style `G52`), in the workpiece axes before the tilt: part of `origin`, kept
+   * when the tilt is cancelled.
+   */
+  double shift[3];
   /**
    * 1 while a frame is active, 0 when none is (the identity).
    */
@@ -650,6 +658,19 @@ typedef struct cncrot_program {
    * `CNCROT_PROGRAM_*` settings of the machine, given to `cncrot_program_init`.
    */
   uint32_t options;
+  /**
+   * The solution the active tilt's own words choose for the rotary axes
+   * (`CNCROT_CHOOSE_CLOSEST` when they choose none, `CNCROT_CHOOSE_MINUS` for `SEQ-`,
+   * `_DIR = -1`, `CNCROT_CHOOSE_PLUS` for `SEQ+`, `_DIR = +1`); `cncrot_program_axes`
+   * follows it.
+   */
+  int32_t choice;
+  /**
+   * The axis the choice refers to: 1..3 in chain order, or 0 for the machine's master
+   * axis (for a head the axis nearest the tool, else the one nearest the machine base);
+   * 0 with `CNCROT_CHOOSE_CLOSEST`.
+   */
+  int32_t reference_axis;
   /**
    * The seal: 0 in the all-zero initial state, else the checksum described above (the
    * field keeps the name it had when it was reserved, so that the layout is unchanged).
@@ -1704,12 +1725,14 @@ int32_t cncrot_program_expected(const struct cncrot_program *program,
 
 /**
  * The rotary-axis positions the active tilt of `program` moves `machine` to, seen from the
- * current positions `current` (degrees): the solution closest to them, whole turns
- * unwound toward them, within the travel limits and on the Hirth grids — what
- * `cncrot_machine_choose` gives with `CNCROT_CHOOSE_CLOSEST`, the choice SINUMERIK makes
- * for a frame and Heidenhain makes without `SEQ` (the block's own choice words, `_DIR`,
- * `SEQ±`, `G53.1 P`, are not kept in the state yet). No tilt active: the positions of the
- * identity frame. Axes the machine lacks are 0 in `axes` (and must be 0 in `current`).
+ * current positions `current` (degrees): what `cncrot_machine_choose` gives under the
+ * rule of the tilt's own choice words, kept in `program->choice` — `SEQ-` / `_DIR = -1`
+ * `CNCROT_CHOOSE_MINUS`, `SEQ+` / `_DIR = +1` `CNCROT_CHOOSE_PLUS`, on the master axis (a
+ * head's axis nearest the tool, else the axis nearest the machine base) — and without
+ * them `CNCROT_CHOOSE_CLOSEST`, the choice SINUMERIK makes for a frame and Heidenhain
+ * without `SEQ`: whole turns unwound toward `current`, within the travel limits and on the
+ * Hirth grids. No tilt active: the positions of the identity frame. Axes the machine lacks
+ * are 0 in `axes` (and must be 0 in `current`).
  *
  * Returns 0, `CNCROT_STATUS_FREE_AXIS` (a free axis kept at its current position),
  * `CNCROT_STATUS_SNAPPED` (a Hirth axis snapped to its grid), or with `axes` untouched:

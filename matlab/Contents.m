@@ -1,5 +1,5 @@
 % cncrot: CNC rotation conventions, tilted planes, probing and machine kinematics (MEX).
-% Version 0.1.0
+% Version 0.2.0
 %
 % Conventions
 %   cncrot_matrix          - Rotation matrices from angles (degrees).

@@ -8,7 +8,10 @@
 %   in order. F is the 4-by-4 active frame after the last line (p_old = F * [p_new; 1]),
 %   state the program's modal state to pass to the next call (start from [], or from
 %   struct('options', 1) to read SINUMERIK frame angles in Euler mode; options of any
-%   numeric class), frames the frame after each line (4-by-4-by-N). The state carries a
+%   numeric class), frames the frame after each line (4-by-4-by-N). The state keeps the
+%   datum shift apart from the tilt (state.shift: CYCL DEF 7, TRANS DATUM, G52) and the
+%   tilt's own choice words (state.choice 1 minus, 2 plus for SEQ-/SEQ+ and _DIR, with
+%   state.reference_axis; cncrot_program_axes follows them). The state carries a
 %   seal: a state whose fields were changed is refused (cncrot:badState). Every block of a
 %   program is read: remarks (N-by-1 cell) says for each line 'applied' (a command that
 %   concerns the frame), 'passed' (motion, tool, M words, comments, program structure: the

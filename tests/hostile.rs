@@ -351,6 +351,26 @@ fn valid_state() -> cncrot_cycle600_gud {
     g
 }
 
+/// The program state's documented layout (168 bytes; ABI 0.2).
+#[test]
+fn the_program_states_documented_layout() {
+    use std::mem::offset_of;
+    assert_eq!(size_of::<cncrot_program>(), 168);
+    let offsets = [
+        offset_of!(cncrot_program, rotation),
+        offset_of!(cncrot_program, origin),
+        offset_of!(cncrot_program, angles),
+        offset_of!(cncrot_program, shift),
+        offset_of!(cncrot_program, active),
+        offset_of!(cncrot_program, dialect),
+        offset_of!(cncrot_program, options),
+        offset_of!(cncrot_program, choice),
+        offset_of!(cncrot_program, reference_axis),
+        offset_of!(cncrot_program, reserved),
+    ];
+    assert_eq!(offsets, [0, 72, 96, 120, 144, 148, 152, 156, 160, 164]);
+}
+
 #[test]
 fn the_documented_layout_and_checksum() {
     let g = valid_state();

@@ -5,7 +5,7 @@
 
 mod common;
 
-use cncrot::dialects::program::{write_line, Dialect, LineError, Program, Remark};
+use cncrot::dialects::program::{write_line, AxisChoice, Dialect, LineError, Program, Remark};
 use cncrot::{elementary, mul, Axis, Error, Frame, Matrix};
 use common::Rng;
 
@@ -844,8 +844,8 @@ fn remarks(d: Dialect, program: &[(&str, Remark)]) -> Program {
 /// Every block of a program, as CAM systems and people write them: a block the library
 /// reads is applied, a block that does not concern the frame passed over, a block that
 /// changes the frame in a way the library does not follow (work offsets, presets, datum
-/// shifts and tables, variable writes, mirroring, scaling, tilts through the machine) says
-/// so; none is refused.
+/// tables, variable writes, mirroring, scaling, tilts through the machine) says so; none is
+/// refused. The datum shifts CAM output writes before each plane are applied.
 #[test]
 fn every_block_of_a_program() {
     use Remark::{Applied as A, NotFollowed as N, Passed as P};
@@ -856,10 +856,10 @@ fn every_block_of_a_program() {
             ("1 BLK FORM 0.1 Z X-50 Y-50 Z-40", P),
             ("2 BLK FORM 0.2 X+50 Y+50 Z+0", P),
             ("3 TOOL CALL 5 Z S8000 F2000", P),
-            ("4 CYCL DEF 7.0 DATUM SHIFT", N),
-            ("5 CYCL DEF 7.1 X+10", N),
-            ("6 CYCL DEF 7.2 Y+20", N),
-            ("7 CYCL DEF 7.3 Z+0", N),
+            ("4 CYCL DEF 7.0 DATUM SHIFT", P),
+            ("5 CYCL DEF 7.1 X+10", A),
+            ("6 CYCL DEF 7.2 Y+20", A),
+            ("7 CYCL DEF 7.3 Z+0", A),
             (
                 "8 PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN MB MAX FMAX SEQ-",
                 A,
@@ -870,8 +870,8 @@ fn every_block_of_a_program() {
             ("   Q201=-20 ;DEPTH", P),
             ("11 CYCL CALL", P),
             ("12 L Z+100 R0 FMAX", P),
-            ("13 TRANS DATUM AXIS X+5 Y+0 Z+0", N),
-            ("14 TRANS DATUM RESET", N),
+            ("13 TRANS DATUM AXIS X+5 Y+0 Z+0", A),
+            ("14 TRANS DATUM RESET", A),
             ("15 CYCL DEF 19.0 WORKING PLANE", N),
             ("16 CYCL DEF 19.1 A+0 B+30 C+0", N),
             ("17 CYCL DEF 10.0 ROTATION", N),
@@ -904,7 +904,7 @@ fn every_block_of_a_program() {
             ("N60 G53.1", A),
             ("N70 G43.4 H1 Z50.", P),
             ("N80 G1 X10. F500", P),
-            ("N90 G52 X10. Y5.", N),
+            ("N90 G52 X10. Y5.", A),
             ("N100 G54.1 P3", N),
             ("N110 G10 L2 P1 X0 Y0", N),
             ("N120 #5221=100.", N),
@@ -920,6 +920,8 @@ fn every_block_of_a_program() {
             ("N184 G68.2 X0 Y0 Z0 I0 J30 K0 R10", N),
             ("N185 G53.1 P1", A),
             ("N186 G68.2 P0 X0 Y0 Z0 I0 J30 K0", A),
+            // The local coordinate system cancelled as the manuals write it.
+            ("N187 G52 X0 Y0", A),
             ("N190 M30", P),
         ],
     );
@@ -1159,4 +1161,126 @@ fn missing_words_are_named() {
         (e.error, e.column, e.expected),
         (Error::UnknownWord, 15, None)
     );
+}
+
+/// The datum shifts CAM output writes before a plane: cycle 7's lines set the axes they
+/// name, `IX` adds, a `PLANE` tilts about the shifted datum, `PLANE RESET` keeps the shift
+/// and `TRANS DATUM RESET` clears it; the tilt of a Fanuc-style program is its own.
+#[test]
+fn datum_shifts_compose_with_the_tilt() {
+    let lines = [
+        "1 CYCL DEF 7.0 DATUM SHIFT",
+        "2 CYCL DEF 7.1 X+10",
+        "3 CYCL DEF 7.2 Y+20",
+        "4 CYCL DEF 7.3 Z-5",
+        "5 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX",
+    ];
+    let mut p = Program::default();
+    for l in lines {
+        p = p.line(Dialect::Heidenhain, l.as_bytes()).unwrap().0;
+    }
+    // The frame: the shift, then the tilt about the shifted datum.
+    assert_eq!(p.shift, [10.0, 20.0, -5.0]);
+    assert_eq!(p.frame.translation, [10.0, 20.0, -5.0]);
+    assert!(dist(&p.frame.rotation, &r(Axis::Y, 30.0)) < 1e-15);
+    let q = p
+        .line(Dialect::Heidenhain, b"6 PLANE RESET STAY")
+        .unwrap()
+        .0;
+    assert_eq!(
+        (q.frame.translation, q.shift),
+        ([10.0, 20.0, -5.0], [10.0, 20.0, -5.0])
+    );
+    assert_eq!(q.frame.rotation, cncrot::IDENTITY);
+    let q = q
+        .line(Dialect::Heidenhain, b"7 CYCL DEF 7.1 IX-4")
+        .unwrap()
+        .0;
+    assert_eq!(q.shift, [6.0, 20.0, -5.0]);
+    let q = q
+        .line(Dialect::Heidenhain, b"8 TRANS DATUM RESET")
+        .unwrap()
+        .0;
+    assert_eq!((q.frame, q.shift), (Frame::IDENTITY, [0.0; 3]));
+    let q = q
+        .line(Dialect::Heidenhain, b"9 TRANS DATUM AXIS X+1 Y+2 Z+3")
+        .unwrap()
+        .0;
+    assert_eq!(q.frame.translation, [1.0, 2.0, 3.0]);
+    // A new plane on a shifted datum keeps the shift; the datum table is not followed.
+    let q = q
+        .line(
+            Dialect::Heidenhain,
+            b"10 PLANE SPATIAL SPA+90 SPB+0 SPC+0 STAY",
+        )
+        .unwrap()
+        .0;
+    assert_eq!(q.frame.translation, [1.0, 2.0, 3.0]);
+    let (_, remark) = q.line(Dialect::Heidenhain, b"11 CYCL DEF 7.1 #5").unwrap();
+    assert_eq!(remark, Remark::NotFollowed);
+    let e = q
+        .line(Dialect::Heidenhain, b"12 TRANS DATUM AXIS")
+        .unwrap_err();
+    assert_eq!(
+        (e.error, e.expected),
+        (Error::MissingWord, Some("X, Y or Z"))
+    );
+}
+
+/// The choice words of a tilt are kept in the state and followed on the machine: `SEQ-`
+/// takes the master axis (a head's axis nearest the tool) at a negative angle, `_DIR = +1`
+/// the higher position; a new tilt without words takes the closest again.
+#[test]
+fn choice_words_are_kept_and_followed() {
+    use cncrot::kinematics::{Machine, RotaryAxis, Side};
+    // A head C about Z carrying B about Y: the tool at (sin 30°, 0, cos 30°) is C 0, B 30 or
+    // C ±180, B -30.
+    let head = Machine::new([0.0, 0.0, 1.0])
+        .unwrap()
+        .with_axis(RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]))
+        .unwrap()
+        .with_axis(RotaryAxis::new(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3]))
+        .unwrap();
+    let plane = |words: &str| {
+        let l = format!("PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN {words}");
+        Program::default()
+            .line(Dialect::Heidenhain, l.as_bytes())
+            .unwrap()
+            .0
+    };
+    let b = |p: &Program| p.axes(&head, [0.0; 3]).unwrap().axes[1];
+    assert_eq!(plane("SEQ-").choice, AxisChoice::Minus(0));
+    assert!((b(&plane("SEQ-")) + 30.0).abs() < 1e-9);
+    assert!((b(&plane("SEQ+")) - 30.0).abs() < 1e-9);
+    assert!((b(&plane("")) - 30.0).abs() < 1e-9);
+    // From B = -25 the closest is B -30; SEQ+ still takes B 30.
+    let from = [180.0, -25.0, 0.0];
+    assert!((plane("").axes(&head, from).unwrap().axes[1] + 30.0).abs() < 1e-9);
+    assert!((plane("SEQ+").axes(&head, from).unwrap().axes[1] - 30.0).abs() < 1e-9);
+    // CYCLE800 _DIR (the 14th parameter): -1 minus, +1 plus, 0 none, others refused.
+    let c800 = |dir: &str| {
+        let l = format!("CYCLE800(0,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,{dir})");
+        Program::default().line(Dialect::Sinumerik, l.as_bytes())
+    };
+    assert_eq!(c800("-1").unwrap().0.choice, AxisChoice::Minus(0));
+    assert_eq!(c800("1").unwrap().0.choice, AxisChoice::Plus(0));
+    assert_eq!(c800("0").unwrap().0.choice, AxisChoice::Closest);
+    let e = c800("2").unwrap_err();
+    // Reported at `_DIR` itself, the last parameter.
+    let at = "CYCLE800(0,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,".len() + 1;
+    assert_eq!((e.error, e.column), (Error::BadArgument, at));
+    assert_eq!(
+        e.expected,
+        Some("_DIR: -1 (minus), +1 (plus) or 0 (no choice)")
+    );
+    assert!((b(&c800("-1").unwrap().0) + 30.0).abs() < 1e-9);
+    // A tilt without words clears them.
+    let p = plane("SEQ-")
+        .line(
+            Dialect::Heidenhain,
+            b"PLANE SPATIAL SPA+0 SPB+20 SPC+0 STAY",
+        )
+        .unwrap()
+        .0;
+    assert_eq!(p.choice, AxisChoice::Closest);
 }

@@ -164,7 +164,8 @@ fuzz_target!(|data: &[u8]| {
 
 /// The positions the state's tilt moves a fork head to (C about Z carrying B about Y, B
 /// within ±100°), from a current position made of the line's bytes: the outputs written
-/// only on success and then finite, the same as the machine's own closest choice.
+/// only on success and then finite, the same as the machine's own choice under the rule the
+/// state's choice words name (the closest without them).
 fn axes_of(p: &cncrot_program, line: &[u8]) {
     const CARR: &[u8] = b"$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1
 $TC_CARR10[1]=0 $TC_CARR11[1]=1 $TC_CARR12[1]=0 $TC_CARR6[1]=-150 $TC_CARR23[1]=\"T\"
@@ -183,14 +184,21 @@ $TC_CARR31[1]=-100 $TC_CARR33[1]=100
     input::check_outputs(s, &[&ax]);
     let f = frame(p);
     let (mut res, mut rem) = ([0.0; 3], [0.0; 16]);
+    // The state's own choice words; their default axis on this head is its master axis,
+    // B (axis 2, the one nearest the tool).
+    let reference = match (p.choice, p.reference_axis) {
+        (CNCROT_CHOOSE_CLOSEST, _) => 0,
+        (_, 0) => 2,
+        (_, k) => k,
+    };
     // SAFETY: valid pointers.
     let s2 = unsafe {
         cncrot_machine_choose(
             &m,
             f.as_ptr(),
             current.as_ptr(),
-            CNCROT_CHOOSE_CLOSEST,
-            0,
+            p.choice,
+            reference,
             want.as_mut_ptr(),
             res.as_mut_ptr(),
             rem.as_mut_ptr(),

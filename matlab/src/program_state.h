@@ -1,10 +1,11 @@
-/* The program state as a MATLAB struct (rotation, origin, angles, active, dialect, options,
- * seal) and back: shared by cncrot_program_lines and cncrot_program_axes. */
+/* The program state as a MATLAB struct (rotation, origin, angles, shift, active, dialect,
+ * options, choice, reference_axis, seal) and back: shared by cncrot_program_lines and cncrot_program_axes. */
 #ifndef CNCROT_PROGRAM_STATE_H
 #define CNCROT_PROGRAM_STATE_H
 #include "gateway.h"
 
-static const char *FIELDS[] = {"rotation", "origin", "angles", "active", "dialect", "options", "seal"};
+static const char *FIELDS[] = {"rotation", "origin", "angles", "shift", "active", "dialect",
+                               "options", "choice", "reference_axis", "seal"};
 
 /* A field of the state struct as n doubles (absent: zeros; wrong size: an error). */
 static void field(const mxArray *s, int arg, const char *name, double *out, size_t n) {
@@ -37,6 +38,11 @@ static void from_struct(const mxArray *s, int arg, cncrot_program *p) {
   to_row_major(r, p->rotation);
   field(s, arg, "origin", p->origin, 3);
   field(s, arg, "angles", p->angles, 3);
+  field(s, arg, "shift", p->shift, 3);
+  field(s, arg, "choice", v, 1);
+  p->choice = as_int(v[0]);
+  field(s, arg, "reference_axis", v, 1);
+  p->reference_axis = as_int(v[0]);
   field(s, arg, "active", v, 1);
   p->active = as_int(v[0]);
   field(s, arg, "dialect", v, 1);
@@ -60,7 +66,7 @@ static void from_struct(const mxArray *s, int arg, cncrot_program *p) {
 }
 
 static mxArray *to_struct(const cncrot_program *p) {
-  mxArray *s = mxCreateStructMatrix(1, 1, 7, FIELDS);
+  mxArray *s = mxCreateStructMatrix(1, 1, 10, FIELDS);
   mxArray *r = mxCreateDoubleMatrix(3, 3, mxREAL);
   to_col_major(p->rotation, mxGetDoubles(r));
   mxSetField(s, 0, "rotation", r);
@@ -69,6 +75,11 @@ static mxArray *to_struct(const cncrot_program *p) {
   memcpy(mxGetDoubles(a), p->angles, sizeof p->angles);
   mxSetField(s, 0, "origin", o);
   mxSetField(s, 0, "angles", a);
+  mxArray *sh = mxCreateDoubleMatrix(1, 3, mxREAL);
+  memcpy(mxGetDoubles(sh), p->shift, sizeof p->shift);
+  mxSetField(s, 0, "shift", sh);
+  mxSetField(s, 0, "choice", mxCreateDoubleScalar(p->choice));
+  mxSetField(s, 0, "reference_axis", mxCreateDoubleScalar(p->reference_axis));
   mxSetField(s, 0, "active", mxCreateDoubleScalar(p->active));
   mxSetField(s, 0, "dialect", mxCreateDoubleScalar(p->dialect));
   mxSetField(s, 0, "options", mxCreateDoubleScalar(p->options));

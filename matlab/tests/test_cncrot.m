@@ -226,7 +226,12 @@ function test_cncrot(cases_file)
   prog = {'0 BEGIN PGM T MM', '1 TOOL CALL 1 Z S5000', '2 CYCL DEF 7.0 DATUM SHIFT', ...
           '3 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-', '4 L X+10 FMAX', '5 PLANE RESET STAY', '6 END PGM T MM'};
   [Fp, ~, frp, rp] = cncrot_program_lines('heidenhain', prog);
-  check(isequal(rp, {'passed'; 'passed'; 'not followed'; 'applied'; 'passed'; 'applied'; 'passed'}), 'remarks per block');
+  check(isequal(rp, {'passed'; 'passed'; 'passed'; 'applied'; 'passed'; 'applied'; 'passed'}), 'remarks per block');
+  % The datum shift and the choice word kept in the state; PLANE RESET keeps the shift.
+  [~, st] = cncrot_program_lines('heidenhain', {'CYCL DEF 7.1 X+10', 'PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN SEQ-'});
+  check(isequal(st.shift, [10 0 0]) && st.choice == 1 && st.reference_axis == 0 && isequal(st.origin, [10 0 0]), 'state: shift and choice');
+  [Fr, st2] = cncrot_program_lines('heidenhain', 'PLANE RESET STAY', st);
+  check(isequal(Fr, [eye(3) [10; 0; 0]; 0 0 0 1]) && st2.choice == 0, 'reset keeps the shift');
   check(isequal(Fp, eye(4)) && isequal(frp(:, :, 5), frp(:, :, 4)) && abs(frp(1, 3, 4) - 0.5) < 1e-15, 'a whole program''s frames');
   % The positions a program's tilt moves a head to (C about Z carrying B about Y): Ry(30) is
   % C 0, B 30 or C 180, B -30; from C 730 the first, unwound to 720; as the machine's closest

@@ -19,24 +19,85 @@ use crate::{Error, Frame, Vector};
 pub const MAX_VALUES: usize = 9;
 
 /// What the blocks read so far leave active, in the terms every family shares: the frame,
-/// TwinCAT's programmed angles (its `AROT` adds angles, not matrices) and SINUMERIK's angle
-/// mode (machine data, not a block).
+/// TwinCAT's programmed angles (its `AROT` adds angles, not matrices), SINUMERIK's angle
+/// mode (machine data, not a block), the datum shift a program made active and the
+/// solution the active tilt's own words choose for the rotary axes.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Modal {
-    /// The active frame (identity: nothing active).
+    /// The active frame (identity: nothing active): the datum shift, then the tilt.
     pub frame: Frame,
     /// TwinCAT's programmed angles `X Y Z`.
     pub angles: [f64; 3],
     /// SINUMERIK's frame angles in Euler mode (machine data 10600 = 2) instead of RPY.
     pub euler: bool,
+    /// The datum shift the program made active (`CYCL DEF 7`, `TRANS DATUM`, `G52`), in
+    /// the workpiece axes before the tilt: part of `frame`'s origin, kept when a tilt is
+    /// cancelled.
+    pub shift: Vector,
+    /// The solution the active tilt's own words choose (`SEQ±`, `_DIR`, `G53.1 P`).
+    pub choice: AxisChoice,
+}
+
+/// The solution a block's own words choose for the rotary axes, where a tilt has two:
+/// Heidenhain `SEQ+`/`SEQ-`, SINUMERIK `CYCLE800` `_DIR` +1/−1, Fanuc-style `G53.1 P`.
+///
+/// ```
+/// use cncrot::dialects::program::AxisChoice;
+/// assert_eq!(AxisChoice::default(), AxisChoice::Closest);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum AxisChoice {
+    /// No words: the dialect's default, the solution closest to the current positions.
+    #[default]
+    Closest,
+    /// The lower position of an axis: 1..=3 in chain order, or 0 for the machine's master
+    /// axis (for a head the axis nearest the tool, else the axis nearest the machine base).
+    Minus(u8),
+    /// The higher position of an axis (numbered as for `Minus`).
+    Plus(u8),
 }
 
 impl Modal {
-    /// This state with `frame` active (TwinCAT's angles cleared: they belong to `ROT`).
-    pub fn with_frame(&self, frame: Frame) -> Modal {
+    /// This state with `tilt` active after the datum shift (TwinCAT's angles cleared: they
+    /// belong to `ROT`; the choice words cleared: a tilt states its own).
+    pub fn with_frame(&self, tilt: Frame) -> Modal {
+        let t = tilt.translation;
+        let s = self.shift;
+        Modal {
+            frame: Frame {
+                rotation: tilt.rotation,
+                translation: [s[0] + t[0], s[1] + t[1], s[2] + t[2]],
+            },
+            angles: [0.0; 3],
+            choice: AxisChoice::Closest,
+            ..*self
+        }
+    }
+
+    /// The tilt alone: the frame without the datum shift before it.
+    pub fn tilt(&self) -> Frame {
+        let (t, s) = (self.frame.translation, self.shift);
+        Frame {
+            rotation: self.frame.rotation,
+            translation: [t[0] - s[0], t[1] - s[1], t[2] - s[2]],
+        }
+    }
+
+    /// This state with the datum shift `shift` instead of the one active (the tilt kept).
+    pub fn with_shift(&self, shift: Vector) -> Modal {
+        let tilt = self.tilt();
+        let t = tilt.translation;
+        let frame = if tilt == Frame::IDENTITY && shift == [0.0; 3] {
+            Frame::IDENTITY
+        } else {
+            Frame {
+                rotation: tilt.rotation,
+                translation: [shift[0] + t[0], shift[1] + t[1], shift[2] + t[2]],
+            }
+        };
         Modal {
             frame,
-            angles: [0.0; 3],
+            shift: shift.map(|x| x + 0.0),
             ..*self
         }
     }

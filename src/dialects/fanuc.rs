@@ -137,6 +137,8 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
             whole(w.values[0], w.column(0))?;
             Ok(Block::Frame(*m))
         }));
+    } else if c.keyword(b"G52") {
+        return Some(read_g52(m, c));
     } else if c.keyword(b"G68.3") {
         // The tool direction comes from the machine's position: needs the kinematics.
         return Some(Err(LineError {
@@ -162,11 +164,30 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
         }
         let call = g68_2(v3(&w.values, 0), v3(&w.values, 3));
         Ok(Block::Frame(m.with_frame(if incremental {
-            g68_4(&m.frame, &call)
+            g68_4(&m.tilt(), &call)
         } else {
             call
         })))
     }))
+}
+
+/// `G52 X Y Z` after its code: the local coordinate system, a datum shift along the
+/// workpiece axes before the tilt; the axes it names are set, the others keep their shift
+/// \[choice: as Heidenhain's cycle 7; the manuals cancel with `G52 X0 Y0 Z0`\]; `G52`
+/// alone cancels \[choice\]. A `G68.2` that follows tilts about the shifted datum, its
+/// own origin taken in the local system \[choice\].
+pub(crate) fn read_g52(m: &Modal, c: &mut Cursor) -> Result<Block, LineError> {
+    let w = address_words(c, *b"XYZ", SYNTAX, false, (true, true))?;
+    let mut shift = m.shift;
+    if !w.given.contains(&true) {
+        shift = [0.0; 3];
+    }
+    for ((s, v), given) in shift.iter_mut().zip(w.values).zip(w.given) {
+        if given {
+            *s = v;
+        }
+    }
+    Ok(Block::Frame(m.with_shift(shift)))
 }
 
 /// Skips the modal words a post may write before the tilt on its block (`N50 G90 G68.2 …`):
@@ -187,7 +208,8 @@ pub(crate) fn skip_leading(c: &mut Cursor) -> bool {
 
 /// G-codes (in tenths: `G54.1` is 541) that change the frame in ways the library does not
 /// follow, in every ISO-style dialect: `G10` (offset tables), `G50`/`G51` (scaling),
-/// `G50.1`/`G51.1` (mirroring), `G52` (local coordinate system, not yet followed), `G54`–`G59`,
+/// `G50.1`/`G51.1` (mirroring), `G52` (the local coordinate system, followed where it stands
+/// alone: `read_g52`), `G54`–`G59`,
 /// `G54.1`, `G54.2` (work offsets, fixture offsets), `G68`/`G69.1` (rotation in the plane,
 /// 3-D coordinate conversion), `G92`, `G92.1` (coordinate system setting).
 pub(crate) const ISO_NOT_FOLLOWED: &[u32] = &[

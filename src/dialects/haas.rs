@@ -115,6 +115,9 @@ impl Family for Haas {
                 Err(_) => {}
             }
         }
+        if c.keyword(b"G52") {
+            return fanuc::read_g52(m, &mut c);
+        }
         if c.keyword(b"G253") {
             // Turns the tool to the plane: no frame change.
             return c.end(true, true).map(|()| Block::Frame(*m));

@@ -136,7 +136,7 @@ pub const RESET: Frame = Frame::IDENTITY;
 // Program lines.
 
 use super::family::{
-    no_selector, put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
+    no_selector, put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
 };
 use crate::text::number::{write_word, Out, Style};
 use crate::text::scan::{Comments, Cursor, Exponent, LineError, Syntax, Token, Tokens};
@@ -190,12 +190,17 @@ fn plane_words<const N: usize>(
 
 /// What may follow the plane's words: how to position (`MOVE`, `TURN`, `STAY`, `MB MAX`,
 /// `MB n`, `DIST n`, `FMAX`, `F n`, `F AUTO`) and which solution (`SEQ±`, `SYM±`,
-/// `TABLE ROT`, `COORD ROT`): they choose motion and machine axes, not the plane.
-fn options(c: &mut Cursor) -> Result<(), LineError> {
+/// `TABLE ROT`, `COORD ROT`): they choose motion and machine axes, not the plane. Returns
+/// the solution `SEQ±` chooses: the master axis at a positive (`+`) or negative angle, as
+/// the higher or lower of the pair \[doc\]; `SYM±`, the master axis on that side of its
+/// symmetry point, the same for a symmetry point at 0 \[choice\].
+fn options(c: &mut Cursor) -> Result<AxisChoice, LineError> {
+    let mut choice = AxisChoice::Closest;
     loop {
         c.spaces();
         if c.rest_is_comment(true, false) {
-            return c.end(true, false);
+            c.end(true, false)?;
+            return Ok(choice);
         }
         if c.keyword(b"MOVE") || c.keyword(b"TURN") || c.keyword(b"STAY") || c.keyword(b"FMAX") {
             continue;
@@ -208,10 +213,12 @@ fn options(c: &mut Cursor) -> Result<(), LineError> {
             continue;
         }
         if c.word(b"SEQ") || c.word(b"SYM") {
-            match c.peek() {
-                Some(b'+' | b'-') => c.bump(),
+            choice = match c.peek() {
+                Some(b'+') => AxisChoice::Plus(0),
+                Some(b'-') => AxisChoice::Minus(0),
                 _ => return Err(c.missing("'+' or '-'")),
-            }
+            };
+            c.bump();
             continue;
         }
         if c.word(b"MB") || c.word(b"F") || c.word(b"DIST") {
@@ -239,6 +246,89 @@ fn plane_frame(form: Form, w: &[f64]) -> Result<Frame, Error> {
         Form::PlaneProjected => rot(projected(v3(w, 0))),
         _ => return Err(Error::BadArgument),
     })
+}
+
+/// The datum shifts a program writes before its `PLANE` (CAM output: `CYCL DEF 7.0 DATUM
+/// SHIFT`, `CYCL DEF 7.1 X+10`, `7.2 Y+5`, `7.3 Z-3`; `TRANS DATUM AXIS X+10 Y+5 Z-3`,
+/// `TRANS DATUM RESET`), or `None` for any other block. Cycle 7's first line only names the
+/// cycle (passed over); each further line sets the axes it names (`IX` adds to the shift), the others keep
+/// theirs \[doc: "only the programmed axes are shifted"\]; `TRANS DATUM AXIS` sets the
+/// shift of the axes it names \[choice: the same rule\]. The shift is taken along the
+/// workpiece axes before any tilt, and a `PLANE` tilts about the shifted datum \[doc\].
+/// A datum table row (`#5`, `TRANS DATUM TABLE`) or another axis (`A`, `U`) is not
+/// followed.
+fn datum_shift(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
+    let cycle = if c.keyword(b"CYCL") {
+        c.spaces();
+        if !c.keyword(b"DEF") {
+            return Ok(None);
+        }
+        c.spaces();
+        if c.peek() != Some(b'7') || c.peek_at(1) != Some(b'.') {
+            return Ok(None);
+        }
+        c.bump();
+        c.bump();
+        let first = c.peek() == Some(b'0');
+        while c.peek().is_some_and(|b| b.is_ascii_digit()) {
+            c.bump();
+        }
+        if first {
+            // `7.0 DATUM SHIFT` (in the program's language) only names the cycle.
+            return Ok(Some(Block::Passed));
+        }
+        true
+    } else if c.keyword(b"TRANS") {
+        c.spaces();
+        if !c.keyword(b"DATUM") {
+            return Ok(None);
+        }
+        c.spaces();
+        if c.keyword(b"RESET") {
+            c.end(true, false)?;
+            return Ok(Some(Block::Frame(m.with_shift([0.0; 3]))));
+        }
+        if !c.keyword(b"AXIS") {
+            return Ok(None);
+        }
+        false
+    } else {
+        return Ok(None);
+    };
+    let mut shift = m.shift;
+    let mut any = false;
+    loop {
+        c.spaces();
+        if c.rest_is_comment(true, false) {
+            c.end(true, false)?;
+            break;
+        }
+        let incremental = c.peek() == Some(b'I');
+        if incremental {
+            c.bump();
+        }
+        let axis = match c.peek() {
+            Some(b'X') => 0,
+            Some(b'Y') => 1,
+            Some(b'Z') => 2,
+            // A datum table row, a rotary or parallel axis: not followed.
+            _ if cycle || any => return Ok(Some(Block::NotFollowed)),
+            _ => return Err(c.missing("X, Y or Z")),
+        };
+        c.bump();
+        let v = c.number(SYNTAX)?;
+        if let Some(s) = shift.get_mut(axis) {
+            *s = if incremental { *s + v } else { v };
+        }
+        any = true;
+    }
+    if !any {
+        return Err(c.missing("X, Y or Z"));
+    }
+    if !shift.iter().all(|x| x.is_finite()) {
+        return Err(c.error(Error::OutOfRange));
+    }
+    Ok(Some(Block::Frame(m.with_shift(shift))))
 }
 
 /// A Heidenhain block (from its first word, after the block number) that is not a `PLANE`:
@@ -327,6 +417,9 @@ impl Family for Heidenhain {
             return Ok(Block::Passed);
         }
         let column = c.column();
+        if let Some(block) = datum_shift(m, &mut c.clone())? {
+            return Ok(block);
+        }
         if !c.keyword(b"PLANE") {
             return Ok(other_block(text.get(column - 1..).unwrap_or(&[])));
         }
@@ -363,7 +456,7 @@ impl Family for Heidenhain {
             };
             c.spaces();
             let angle = c.number(SYNTAX)?;
-            relativ(&m.frame, axis, angle)
+            relativ(&m.tilt(), axis, angle)
         } else if c.keyword(b"RESET") {
             RESET
         } else if c.keyword(b"AXIAL") {
@@ -375,8 +468,11 @@ impl Family for Heidenhain {
         } else {
             return Err(c.error(Error::UnknownWord));
         };
-        options(&mut c)?;
-        Ok(Block::Frame(m.with_frame(frame)))
+        let choice = options(&mut c)?;
+        Ok(Block::Frame(Modal {
+            choice,
+            ..m.with_frame(frame)
+        }))
     }
 
     /// `PLANE SPATIAL`, `PLANE EULER`, `PLANE VECTOR`, `PLANE POINTS`, `PLANE PROJECTED`.

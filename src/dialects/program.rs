@@ -9,6 +9,7 @@
 //! this module holds what is the same for all: the state, line ends and lengths, the checks
 //! of a restored state and of a written line.
 
+pub use super::family::AxisChoice;
 use super::family::{Block, Modal, MAX_VALUES};
 use super::form;
 pub use super::registry::Dialect;
@@ -43,6 +44,13 @@ pub struct Program {
     /// SINUMERIK's frame angles in Euler mode (machine data 10600 = 2) instead of RPY: a
     /// setting of the machine that no block changes.
     pub euler: bool,
+    /// The datum shift the program made active (`CYCL DEF 7`, `TRANS DATUM`, `G52`), in the
+    /// workpiece axes before the tilt: part of `frame`'s origin, kept when the tilt is
+    /// cancelled.
+    pub shift: [f64; 3],
+    /// The solution the active tilt's own words choose for the rotary axes (`SEQ±`,
+    /// `_DIR`, `G53.1 P`); [`Program::axes`] follows it.
+    pub choice: AxisChoice,
 }
 
 /// What a block did, beside the state it leaves (`CNCROT_STATUS_PASSED` and
@@ -108,19 +116,24 @@ impl Program {
                 angles: next.angles,
                 dialect: Some(dialect),
                 euler: next.euler,
+                shift: next.shift,
+                choice: next.choice,
             },
             Remark::Applied,
         ))
     }
 
     /// The rotary-axis positions the active tilt moves `machine` to, seen from `current`
-    /// (degrees; axes the machine lacks are 0): the solution closest to the current
-    /// positions, whole turns unwound toward them, within the travel limits and on the Hirth
-    /// grids, as [`Machine::choose`] with [`Rule::Closest`] — what SINUMERIK does for a frame
-    /// \[doc\], Heidenhain without `SEQ` (the shortest way) \[doc\], and the library's
-    /// default for the others (`G53.1` without `P`, `G253`) \[choice\]. No tilt active: the
-    /// positions of the identity frame. The block's own choice words (`_DIR`, `SEQ±`,
-    /// `G53.1 P`) are not kept in the state yet.
+    /// (degrees; axes the machine lacks are 0), as [`Machine::choose`] chooses them under the
+    /// rule of the tilt's own choice words ([`Program::choice`]): `SEQ-`, `_DIR = -1` the
+    /// lower position of the master axis ([`Rule::Minus`]), `SEQ+`, `_DIR = +1` the higher
+    /// \[doc\], the master axis being a head's axis nearest the tool, else the axis nearest
+    /// the machine base \[choice\]; without words the solution closest to the current
+    /// positions ([`Rule::Closest`]) — what SINUMERIK does for a frame \[doc\], Heidenhain
+    /// without `SEQ` (the shortest way) \[doc\], and the library's default for the others
+    /// (`G53.1`, `G253`) \[choice\]. Whole turns are unwound toward `current`, the travel
+    /// limits and Hirth grids respected. No tilt active: the positions of the identity
+    /// frame. A choice naming an axis the machine lacks: [`Error::BadArgument`].
     ///
     /// ```
     /// use cncrot::dialects::program::{Dialect, Program};
@@ -135,7 +148,21 @@ impl Program {
     /// assert!((c.axes[0] - 720.0).abs() < 1e-9 && (c.axes[1] - 30.0).abs() < 1e-9);
     /// ```
     pub fn axes(&self, machine: &Machine, current: [f64; 3]) -> Result<Choice, Error> {
-        machine.choose(&self.frame.rotation, current, Rule::Closest)
+        let axis = |k: u8| -> Result<usize, Error> {
+            let n = machine.axes().len();
+            match usize::from(k) {
+                0 => Ok(master_axis(machine)),
+                k if k <= n => Ok(k - 1),
+                _ => Err(Error::BadArgument),
+            }
+        };
+        let rule = match self.choice {
+            AxisChoice::Closest => Rule::Closest,
+            _ if machine.axes().is_empty() => Rule::Closest,
+            AxisChoice::Minus(k) => Rule::Minus(axis(k)?),
+            AxisChoice::Plus(k) => Rule::Plus(axis(k)?),
+        };
+        machine.choose(&self.frame.rotation, current, rule)
     }
 
     /// What the families read and write.
@@ -144,6 +171,8 @@ impl Program {
             frame: self.frame,
             angles: self.angles,
             euler: self.euler,
+            shift: self.shift,
+            choice: self.choice,
         }
     }
 
@@ -158,7 +187,12 @@ impl Program {
     /// assert!(Program { angles: [0.0, 0.0, 31.0], ..p }.check().is_err());
     /// ```
     pub fn check(&self) -> Result<(), Error> {
-        let numbers = self.frame.translation.iter().chain(&self.angles);
+        let numbers = self
+            .frame
+            .translation
+            .iter()
+            .chain(&self.angles)
+            .chain(&self.shift);
         if !numbers.into_iter().all(|x| x.is_finite()) {
             return Err(Error::NotFinite);
         }
@@ -173,6 +207,18 @@ impl Program {
             Err(Error::BadArgument)
         }
     }
+}
+
+/// The axis a block's choice words refer to when they name none (Heidenhain's master axis,
+/// CYCLE800's direction reference): for a head the rotary axis nearest the tool (the last
+/// that turns the tool), else the axis nearest the machine base (the first) \[choice:
+/// Heidenhain's "first rotary axis from the tool, or from the table"; a machine's own
+/// direction reference is commissioning data the description does not carry\].
+fn master_axis(machine: &Machine) -> usize {
+    let axes = machine.axes();
+    axes.iter()
+        .rposition(|a| a.side == crate::kinematics::Side::Tool)
+        .unwrap_or(0)
 }
 
 /// Writes the block that programs `frame` in `dialect` with the command `form` into `out`

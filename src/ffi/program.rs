@@ -2,9 +2,11 @@
 //! frame, write the block for a frame.
 
 use super::frame::{read_frame, write_frame};
-use super::machine::cncrot_machine;
+use super::machine::{
+    cncrot_machine, CNCROT_CHOOSE_CLOSEST, CNCROT_CHOOSE_MINUS, CNCROT_CHOOSE_PLUS,
+};
 use super::{cncrot_status, guard, non_null, read_finite, write};
-use crate::dialects::program::{self, Dialect, Program, Remark};
+use crate::dialects::program::{self, AxisChoice, Dialect, Program, Remark};
 use crate::{crc32, Error, Frame};
 use core::ffi::c_char;
 
@@ -58,25 +60,40 @@ const FORM_MAX: usize = 64;
 /// hand, a bit flipped in storage, a state of another version — is refused with
 /// `CNCROT_STATUS_BAD_STATE`.
 ///
-/// Layout (136 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
-/// `angles` 96, `active` 120, `dialect` 124, `options` 128, `reserved` 132. Accepted on
-/// entry: all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes
-/// 0..132 exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
+/// Layout (168 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
+/// `angles` 96, `shift` 120, `active` 144, `dialect` 148, `options` 152, `choice` 156,
+/// `reference_axis` 160, `reserved` 164. Accepted on entry: all zero bytes, or `reserved` =
+/// the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..164 exclusive-or
+/// `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct cncrot_program {
     /// The active rotation, row-major (all zero while `active` is 0).
     pub rotation: [f64; 9],
-    /// The active origin (all zero while `active` is 0).
+    /// The active origin: the datum shift and the tilt's origin together (all zero while
+    /// `active` is 0).
     pub origin: [f64; 3],
     /// TwinCAT's programmed angles `X Y Z` (its `AROT` adds angles); zero in other dialects.
     pub angles: [f64; 3],
+    /// The datum shift the program made active (Heidenhain `CYCL DEF 7`, `TRANS DATUM`;
+    /// Fanuc-style `G52`), in the workpiece axes before the tilt: part of `origin`, kept
+    /// when the tilt is cancelled.
+    pub shift: [f64; 3],
     /// 1 while a frame is active, 0 when none is (the identity).
     pub active: i32,
     /// The dialect of the blocks read so far (`CNCROT_DIALECT_*`), 0 before the first.
     pub dialect: i32,
     /// `CNCROT_PROGRAM_*` settings of the machine, given to `cncrot_program_init`.
     pub options: u32,
+    /// The solution the active tilt's own words choose for the rotary axes
+    /// (`CNCROT_CHOOSE_CLOSEST` when they choose none, `CNCROT_CHOOSE_MINUS` for `SEQ-`,
+    /// `_DIR = -1`, `CNCROT_CHOOSE_PLUS` for `SEQ+`, `_DIR = +1`); `cncrot_program_axes`
+    /// follows it.
+    pub choice: i32,
+    /// The axis the choice refers to: 1..3 in chain order, or 0 for the machine's master
+    /// axis (for a head the axis nearest the tool, else the one nearest the machine base);
+    /// 0 with `CNCROT_CHOOSE_CLOSEST`.
+    pub reference_axis: i32,
     /// The seal: 0 in the all-zero initial state, else the checksum described above (the
     /// field keeps the name it had when it was reserved, so that the layout is unchanged).
     pub reserved: u32,
@@ -84,13 +101,13 @@ pub struct cncrot_program {
 
 /// Mixed into the seal of every `cncrot_program` this version writes: a state of a version
 /// with another meaning of the same bytes gets another constant, and is refused.
-pub const CNCROT_PROGRAM_FORMAT: u32 = 0x5052_4731;
+pub const CNCROT_PROGRAM_FORMAT: u32 = 0x5052_4732;
 
 const PROGRAM_SIZE: usize = core::mem::size_of::<cncrot_program>();
 /// The bytes the seal covers: everything before it.
 const SEALED: usize = core::mem::offset_of!(cncrot_program, reserved);
 // No padding (every byte is a field's, so every byte is covered), and the documented layout.
-const _: () = assert!(SEALED == 132 && PROGRAM_SIZE == 136);
+const _: () = assert!(SEALED == 164 && PROGRAM_SIZE == 168);
 
 fn program_bytes(c: &cncrot_program) -> &[u8; PROGRAM_SIZE] {
     // SAFETY: a plain repr(C) struct of integers and doubles without padding (asserted
@@ -119,11 +136,23 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
         return Err(Error::BadState);
     }
     let frame = match c.active {
-        0 if c.rotation == [0.0; 9] && c.origin == [0.0; 3] => Frame::IDENTITY,
+        0 if c.rotation == [0.0; 9] && c.origin == [0.0; 3] && c.shift == [0.0; 3] => {
+            Frame::IDENTITY
+        }
         1 => {
             let r = core::array::from_fn(|i| core::array::from_fn(|j| c.rotation[3 * i + j]));
             Frame::with_translations(c.origin, r, [0.0; 3])
         }
+        _ => return Err(Error::BadState),
+    };
+    let axis = u8::try_from(c.reference_axis)
+        .ok()
+        .filter(|&k| usize::from(k) <= crate::kinematics::MAX_AXES)
+        .ok_or(Error::BadState)?;
+    let choice = match c.choice {
+        CNCROT_CHOOSE_CLOSEST if axis == 0 => AxisChoice::Closest,
+        CNCROT_CHOOSE_MINUS => AxisChoice::Minus(axis),
+        CNCROT_CHOOSE_PLUS => AxisChoice::Plus(axis),
         _ => return Err(Error::BadState),
     };
     let p = Program {
@@ -131,6 +160,8 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
         angles: c.angles,
         dialect,
         euler: c.options & CNCROT_PROGRAM_SINUMERIK_EULER != 0,
+        shift: c.shift,
+        choice,
     };
     p.check().map_err(|_| Error::BadState)?;
     Ok(p)
@@ -148,13 +179,21 @@ fn store(p: &Program, options: u32) -> cncrot_program {
     } else {
         ([0.0; 9], [0.0; 3])
     };
+    let (choice, reference_axis) = match p.choice {
+        AxisChoice::Closest => (CNCROT_CHOOSE_CLOSEST, 0),
+        AxisChoice::Minus(k) => (CNCROT_CHOOSE_MINUS, i32::from(k)),
+        AxisChoice::Plus(k) => (CNCROT_CHOOSE_PLUS, i32::from(k)),
+    };
     let mut c = cncrot_program {
         rotation,
         origin,
         angles: p.angles.map(|x| x + 0.0),
+        shift: p.shift.map(|x| x + 0.0),
         active: i32::from(active),
         dialect: p.dialect.map_or(0, |d| d as i32),
         options,
+        choice,
+        reference_axis,
         reserved: 0,
     };
     c.reserved = seal_of(&c);
@@ -389,12 +428,14 @@ pub unsafe extern "C" fn cncrot_program_expected(
 }
 
 /// The rotary-axis positions the active tilt of `program` moves `machine` to, seen from the
-/// current positions `current` (degrees): the solution closest to them, whole turns
-/// unwound toward them, within the travel limits and on the Hirth grids — what
-/// `cncrot_machine_choose` gives with `CNCROT_CHOOSE_CLOSEST`, the choice SINUMERIK makes
-/// for a frame and Heidenhain makes without `SEQ` (the block's own choice words, `_DIR`,
-/// `SEQ±`, `G53.1 P`, are not kept in the state yet). No tilt active: the positions of the
-/// identity frame. Axes the machine lacks are 0 in `axes` (and must be 0 in `current`).
+/// current positions `current` (degrees): what `cncrot_machine_choose` gives under the
+/// rule of the tilt's own choice words, kept in `program->choice` — `SEQ-` / `_DIR = -1`
+/// `CNCROT_CHOOSE_MINUS`, `SEQ+` / `_DIR = +1` `CNCROT_CHOOSE_PLUS`, on the master axis (a
+/// head's axis nearest the tool, else the axis nearest the machine base) — and without
+/// them `CNCROT_CHOOSE_CLOSEST`, the choice SINUMERIK makes for a frame and Heidenhain
+/// without `SEQ`: whole turns unwound toward `current`, within the travel limits and on the
+/// Hirth grids. No tilt active: the positions of the identity frame. Axes the machine lacks
+/// are 0 in `axes` (and must be 0 in `current`).
 ///
 /// Returns 0, `CNCROT_STATUS_FREE_AXIS` (a free axis kept at its current position),
 /// `CNCROT_STATUS_SNAPPED` (a Hirth axis snapped to its grid), or with `axes` untouched:
@@ -624,7 +665,7 @@ mod tests {
         assert_eq!(load(&hand), Err(Error::BadState));
     }
 
-    /// The seal is what the header documents: the CRC-32 of bytes 0..132 exclusive-or
+    /// The seal is what the header documents: the CRC-32 of bytes 0..164 exclusive-or
     /// `CNCROT_PROGRAM_FORMAT`; a state sealed without the format (another version's) is
     /// refused.
     #[test]
@@ -635,9 +676,9 @@ mod tests {
             .0;
         let c = store(&p, 0);
         let bytes = program_bytes(&c);
-        assert_eq!(c.reserved, crc32(&bytes[..132]) ^ 0x5052_4731);
+        assert_eq!(c.reserved, crc32(&bytes[..164]) ^ 0x5052_4732);
         let mut other = c;
-        other.reserved = crc32(&bytes[..132]);
+        other.reserved = crc32(&bytes[..164]);
         assert_eq!(load(&other), Err(Error::BadState));
     }
 

@@ -370,7 +370,9 @@ pub fn orirpy_angles(v: Vector) -> Result<([f64; 3], bool), Error> {
 
 // Program lines.
 
-use super::family::{put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use super::family::{
+    put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
+};
 use crate::text::number::{write, write_integer, write_word, Out, Style};
 use crate::text::scan::{
     address_words, whole, Comments, Cursor, Exponent, LineError, Syntax, Tokens,
@@ -523,7 +525,17 @@ fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
     let tc = args.name(1)?;
     let st = args.int(2)?;
     let mode = args.int(3)?;
-    for k in 13..16 {
+    // `_DIR`: the solution, by the direction of the direction-reference axis [doc].
+    let choice = match args.int(13)? {
+        -1 => AxisChoice::Minus(0),
+        1 => AxisChoice::Plus(0),
+        0 => AxisChoice::Closest,
+        _ => {
+            let allowed = "_DIR: -1 (minus), +1 (plus) or 0 (no choice)";
+            return Err(refused(args.column(13), allowed)(Error::BadArgument));
+        }
+    };
+    for k in 14..16 {
         args.real(k)?;
     }
     let mut w = [0.0; 9];
@@ -539,7 +551,10 @@ fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
     }
     let allowed = "_MODE: a swivel mode (57: axis by axis X, Y, Z; 27: Z, Y, X; ...)";
     let call = cycle800_words(mode, &w).map_err(refused(args.column(3), allowed))?;
-    Ok(m.with_frame(cycle800_apply(&m.frame, st % 10 == 1, &call)))
+    Ok(Modal {
+        choice,
+        ..m.with_frame(cycle800_apply(&m.frame, st % 10 == 1, &call))
+    })
 }
 
 /// `CYCLE600(_INEXIN, _MIHEAD, _SW_REC, _BIN_IN, _POS_X, _POS_Y, _POS_Z, _ANG_1, _ANG_2,
