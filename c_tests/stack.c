@@ -194,6 +194,17 @@ static void program_write(void) {
           cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", g, -1, out, sizeof out) +
           cncrot_program_write(CNCROT_DIALECT_FANUC, "G68.2", g, 17, out, sizeof out);
 }
+static cncrot_program change_from, change_to;
+static void program_write_change(void) {
+  static char out[CNCROT_PROGRAM_CHANGE_MAX + 1];
+  /* A tilt with an origin into PLANE POINTS: a cancel, cycle 7 and the plane, the numbers
+     in their shortest exact digits. */
+  sink += cncrot_program_write_change(&change_from, &change_to, CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", -1,
+                                      out, sizeof out) +
+          cncrot_program_write_change(&change_to, &change_from, CNCROT_DIALECT_SINUMERIK, "CYCLE800 185", -1, out,
+                                      sizeof out) +
+          cncrot_program_write_change(&change_from, &change_to, CNCROT_DIALECT_FANUC, "G68.2", 17, out, sizeof out);
+}
 static void cycle600(void) {
   memset(&gud, 0, sizeof gud);
   sink += cncrot_cycle600(&gud, &table, 0, "UFK600", 1, 57, 1, 2, 3, 30, 45, 60, 4, 5, 6, 1, 39, 0, 0, 0);
@@ -289,6 +300,7 @@ static const struct entry ENTRIES[] = {
     E(probe_plane_toward, 0),
     E(probe_edge, 0),        E(program_line, 1),       E(program_column, 1),
     E(program_expected, 1),  E(program_frame, 0),     E(program_write, 1),      E(program_init, 0),
+    E(program_write_change, 1),
     E(machine_from_carr, 1), E(machine_carr_error_line, 1), E(machine_from_head, 1),
     E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
     E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),
@@ -305,6 +317,13 @@ int main(int argc, char **argv) {
   long limit_hot = atol(argv[1]), limit_setup = atol(argv[2]);
   (void)NAN_A;
   nan_a[0] = strtod("nan", NULL);
+  {
+    static const char a[] = "G52 X0.1234567890123 Y98765.4321 Z-0.000001";
+    static const char b[] = "G68.2 X1.000000000001 Y2 Z3 I12.345678901 J33.3333333 K-77.7777777";
+    if (cncrot_program_line(&change_from, CNCROT_DIALECT_FANUC, a, sizeof a - 1) != 0) abort();
+    change_to = change_from;
+    if (cncrot_program_line(&change_to, CNCROT_DIALECT_FANUC, b, sizeof b - 1) != 0) abort();
+  }
   size_t base = used_by(none);
   int failed = 0;
   size_t n = sizeof ENTRIES / sizeof ENTRIES[0];

@@ -215,7 +215,7 @@ static void whole_programs(void) {
   } cases[] = {
       {CNCROT_DIALECT_HEIDENHAIN, "1 TOOL CALL 5 Z S8000", CNCROT_STATUS_PASSED},
       {CNCROT_DIALECT_HEIDENHAIN, "2 L X+10 Y+0 FMAX M3", CNCROT_STATUS_PASSED},
-      {CNCROT_DIALECT_HEIDENHAIN, "3 CYCL DEF 7.0 DATUM SHIFT", CNCROT_STATUS_PASSED},
+      {CNCROT_DIALECT_HEIDENHAIN, "3 CYCL DEF 7.0 DATUM SHIFT", CNCROT_STATUS_OK},
       {CNCROT_DIALECT_HEIDENHAIN, "3 CYCL DEF 7.1 #4", CNCROT_STATUS_NOT_FOLLOWED},
       {CNCROT_DIALECT_HEIDENHAIN, "", CNCROT_STATUS_PASSED},
       {CNCROT_DIALECT_FANUC, "N10 G0 G90 X0 Y0 M3 S5000", CNCROT_STATUS_PASSED},
@@ -581,6 +581,79 @@ static void writer_buffers(void) {
   CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_FANUC, NULL, f, -1, out, sizeof out), CNCROT_STATUS_NULL_POINTER);
 }
 
+/* A program translated block by block with cncrot_program_write_change: the target's own
+ * datum-shift blocks and cancels (expected texts hand-derived: SPB+30 is a rotation about Y,
+ * Rz(90) Rx(30) Rz(-90) in G68.2's Z, X', Z''), the choice word carried as _DIR, each text
+ * read back in the target dialect as the source frame; the refusals with `out` untouched. */
+static void translated_programs(void) {
+  const char *src[] = {"CYCL DEF 7.0 DATUM SHIFT", "CYCL DEF 7.1 X+10", "CYCL DEF 7.3 Z-5",
+                       "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX SEQ+", "L Z+100 FMAX", "PLANE RESET STAY"};
+  const char *fanuc[] = {"", "G52 X10. Y0. Z0.", "G52 X10. Y0. Z-5.", "G68.2 X0. Y0. Z0. I90. J30. K-90.", "", "G69"};
+  const char *sinumerik[] = {"", "TRANS X=10 Y=0 Z=0", "TRANS X=10 Y=0 Z=-5",
+                             "CYCLE800(0,\"\",0,57,10,0,-5,0,30,0,0,0,0,1,0,0)", "", "TRANS X=10 Y=0 Z=-5"};
+  cncrot_program before, after, fan, sn;
+  memset(&before, 0, sizeof before);
+  memset(&fan, 0, sizeof fan);
+  memset(&sn, 0, sizeof sn);
+  char out[CNCROT_PROGRAM_CHANGE_MAX + 1];
+  for (int k = 0; k < 6; k++) {
+    after = before;
+    CHECK(cncrot_program_line(&after, CNCROT_DIALECT_HEIDENHAIN, src[k], strlen(src[k])) >= 0, "%s", src[k]);
+    CHECK_STATUS(
+        cncrot_program_write_change(&before, &after, CNCROT_DIALECT_FANUC, "G68.2", 4, out, sizeof out),
+        CNCROT_STATUS_OK);
+    CHECK(strcmp(out, fanuc[k]) == 0, "%d: %s", k, out);
+    if (out[0]) CHECK_STATUS(cncrot_program_line(&fan, CNCROT_DIALECT_FANUC, out, strlen(out)), CNCROT_STATUS_OK);
+    CHECK_STATUS(cncrot_program_write_change(&before, &after, CNCROT_DIALECT_SINUMERIK, "CYCLE800", 4, out,
+                                             sizeof out),
+                 CNCROT_STATUS_OK);
+    CHECK(strcmp(out, sinumerik[k]) == 0, "%d: %s", k, out);
+    if (out[0]) CHECK_STATUS(cncrot_program_line(&sn, CNCROT_DIALECT_SINUMERIK, out, strlen(out)), CNCROT_STATUS_OK);
+    double want[16], a[16], b[16];
+    cncrot_program_frame(&after, want);
+    cncrot_program_frame(&fan, a);
+    cncrot_program_frame(&sn, b);
+    CHECK_NEAR(a, want, 16, 1e-12);
+    CHECK_NEAR(b, want, 16, 1e-12);
+    CHECK(sn.choice == after.choice, "%d: choice %d %d", k, sn.choice, after.choice);
+    before = after;
+  }
+  /* Back from SINUMERIK: _DIR +1 is SEQ+; a G68.2's origin becomes the datum shift of a PLANE. */
+  cncrot_program zero, p;
+  memset(&zero, 0, sizeof zero);
+  p = zero;
+  const char *c800 = "CYCLE800(0,\"T\",0,57,0,0,0,30,0,0,0,0,0,1,0,0)";
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_SINUMERIK, c800, strlen(c800)), CNCROT_STATUS_OK);
+  CHECK_STATUS(
+      cncrot_program_write_change(&zero, &p, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", 4, out, sizeof out),
+      CNCROT_STATUS_OK);
+  CHECK(strcmp(out, "PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY SEQ+") == 0, "%s", out);
+  p = zero;
+  const char *g682 = "G68.2 X10 Y20 I0 J30 K0";
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_FANUC, g682, strlen(g682)), CNCROT_STATUS_OK);
+  CHECK_STATUS(
+      cncrot_program_write_change(&zero, &p, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", 4, out, sizeof out),
+      CNCROT_STATUS_OK);
+  CHECK(strcmp(out, "CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+10\nCYCL DEF 7.2 Y+20\nCYCL DEF 7.3 Z+0\n"
+                    "PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY") == 0,
+        "%s", out);
+  /* Refusals leave `out` as it was. */
+  memset(out, 'x', sizeof out);
+  CHECK_STATUS(cncrot_program_write_change(&zero, &p, CNCROT_DIALECT_SINUMERIK, "ROT", 4, out, sizeof out),
+               CNCROT_STATUS_HAS_ORIGIN);
+  CHECK_STATUS(cncrot_program_write_change(&zero, &p, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", 4, out, 20),
+               CNCROT_STATUS_NO_ROOM);
+  CHECK_STATUS(cncrot_program_write_change(&zero, &p, CNCROT_DIALECT_FANUC, "PLANE SPATIAL", 4, out, sizeof out),
+               CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_program_write_change(&zero, NULL, CNCROT_DIALECT_FANUC, "G68.2", 4, out, sizeof out),
+               CNCROT_STATUS_NULL_POINTER);
+  cncrot_program edited = p;
+  edited.shift[0] = 1;
+  CHECK_STATUS(cncrot_program_write_change(&zero, &edited, CNCROT_DIALECT_FANUC, "G68.2", 4, out, sizeof out),
+               CNCROT_STATUS_BAD_STATE);
+  CHECK(out[0] == 'x' && out[sizeof out - 1] == 'x', "out touched");
+}
+
 int main(void) {
   vendors();
   readback_and_rules();
@@ -592,5 +665,6 @@ int main(void) {
   sealed_states();
   long_lines_and_points();
   near_singularities();
+  translated_programs();
   return finish("test_program");
 }

@@ -240,6 +240,11 @@
 #define CNCROT_PROGRAM_EXPECTED_SIZE 96
 
 /**
+ * The longest text `cncrot_program_write_change` writes, without its NUL.
+ */
+#define CNCROT_PROGRAM_CHANGE_MAX 2048
+
+/**
  * Status of every `cncrot_` function: 0 success, positive success with a remark, negative
  * an error (outputs untouched).
  */
@@ -1825,6 +1830,55 @@ int32_t cncrot_program_write(int32_t dialect,
                              int32_t decimals,
                              char *out,
                              size_t cap);
+
+/**
+ * Writes the blocks that take a program in `dialect` from the state `before` to the state
+ * `after` (states `cncrot_program_line` wrote, read in any dialect: a translator passes
+ * the state before and after each source block), with the tilt command `form` (the names
+ * of `cncrot_program_write`), one block per line separated by `\n`, and a NUL; an empty
+ * text when nothing changes in the target dialect.
+ *
+ * - A changed datum shift is written with the dialect's own command: Heidenhain's cycle 7
+ *   (`CYCL DEF 7.0 DATUM SHIFT`, `CYCL DEF 7.1 X…`, `7.2 Y…`, `7.3 Z…`), Fanuc, Haas and
+ *   Syntec `G52 X… Y… Z…` (an active tilt cancelled first: a shift is programmed untilted),
+ *   SINUMERIK `TRANS X=… Y=… Z=…` (`TRANS` for none) when no rotation is active.
+ * - A form without origin words (every `PLANE`, `ROT`) tilts about the datum: Heidenhain
+ *   writes the tilt's origin as the datum shift; SINUMERIK `ROT` and TwinCAT, which keep no
+ *   shift apart, refuse it with `CNCROT_STATUS_HAS_ORIGIN`.
+ * - A changed tilt, or the same tilt with other choice words, is written as
+ *   `cncrot_program_write` writes it, with the choice words the block has: Heidenhain
+ *   `SEQ-`/`SEQ+`, CYCLE800 `_DIR` -1/+1 (-1 also for no choice: the cycle always names
+ *   one); Fanuc, Syntec, Haas and TwinCAT blocks have none. Nothing active is written as
+ *   the form's cancel.
+ *
+ * Returns 0 or `CNCROT_STATUS_SINGULAR` (as `cncrot_program_write`), or a negative status
+ * with `out` untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a state
+ * this library did not write), `CNCROT_STATUS_BAD_ARGUMENT` (unknown dialect or form, a
+ * form name longer than 64 bytes, `decimals` > 17, an incremental or mode-0 `G158 P`),
+ * `CNCROT_STATUS_BAD_SEQUENCE` and `CNCROT_STATUS_INCOMPLETE_SEQUENCE` (a form's axis order,
+ * as `cncrot_program_write`), `CNCROT_STATUS_HAS_ORIGIN` (above),
+ * `CNCROT_STATUS_NOT_AVAILABLE` (a direct mode; a choice of an axis other than the master
+ * axis, which no block names), `CNCROT_STATUS_OUT_OF_RANGE` (a frame the form cannot
+ * express, numbers the writer cannot write, a block longer than the dialect reads),
+ * `CNCROT_STATUS_NO_ROOM` (`cap` too small for the text).
+ *
+ * # Safety
+ * `before` and `after` point to readable `cncrot_program`s, `form` is a NUL-terminated
+ * string (at most 64 bytes are read), `out` points to `cap` writable bytes (or NULL: error).
+ *
+ * ```c
+ * char text[CNCROT_PROGRAM_CHANGE_MAX + 1];
+ * cncrot_program_write_change(&before, &after, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL",
+ *                             4, text, sizeof text);
+ * ```
+ */
+int32_t cncrot_program_write_change(const struct cncrot_program *before,
+                                    const struct cncrot_program *after,
+                                    int32_t dialect,
+                                    const char *form,
+                                    int32_t decimals,
+                                    char *out,
+                                    size_t cap);
 
 /**
  * The rotation matrix of three angles in a convention.

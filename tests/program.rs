@@ -5,7 +5,9 @@
 
 mod common;
 
-use cncrot::dialects::program::{write_line, AxisChoice, Dialect, LineError, Program, Remark};
+use cncrot::dialects::program::{
+    write_change, write_line, AxisChoice, Dialect, LineError, Program, Remark, MAX_CHANGE,
+};
 use cncrot::{elementary, mul, Axis, Error, Frame, Matrix};
 use common::Rng;
 
@@ -856,7 +858,7 @@ fn every_block_of_a_program() {
             ("1 BLK FORM 0.1 Z X-50 Y-50 Z-40", P),
             ("2 BLK FORM 0.2 X+50 Y+50 Z+0", P),
             ("3 TOOL CALL 5 Z S8000 F2000", P),
-            ("4 CYCL DEF 7.0 DATUM SHIFT", P),
+            ("4 CYCL DEF 7.0 DATUM SHIFT", A),
             ("5 CYCL DEF 7.1 X+10", A),
             ("6 CYCL DEF 7.2 Y+20", A),
             ("7 CYCL DEF 7.3 Z+0", A),
@@ -1283,4 +1285,199 @@ fn choice_words_are_kept_and_followed() {
         .unwrap()
         .0;
     assert_eq!(p.choice, AxisChoice::Closest);
+}
+
+/// A program translated block by block: what `write_change` writes for the state before and
+/// after each source block.
+fn translate(from: Dialect, lines: &[&str], to: Dialect, form: &str) -> Vec<String> {
+    let mut p = Program::default();
+    let mut out = Vec::new();
+    for l in lines {
+        let (q, _) = p.line(from, l.as_bytes()).unwrap();
+        let mut buf = [0u8; MAX_CHANGE];
+        let (n, _) = write_change(to, form.as_bytes(), &p, &q, 4, &mut buf).unwrap();
+        out.push(String::from_utf8(buf[..n].to_vec()).unwrap());
+        p = q;
+    }
+    out
+}
+
+/// Datum shifts are written with the target's own command, the tilt about the shifted
+/// datum, a tilt's origin into the datum shift where the form has no origin words, a shift
+/// under an active tilt after its cancel, and cancels as cancels. The expected lines are
+/// hand-derived: SPB+30 is a rotation about Y by 30°, Rz(90)·Rx(30)·Rz(−90) in G68.2's
+/// Z, X', Z'' angles; SPA+30 is Rx(30), G68.2 I0 J30 K0.
+#[test]
+fn changes_are_written_with_the_targets_own_blocks() {
+    let hyper = [
+        "1 BEGIN PGM P1 MM",
+        "2 CYCL DEF 7.0 DATUM SHIFT",
+        "3 CYCL DEF 7.1 X+10",
+        "4 CYCL DEF 7.2 Y+20",
+        "5 CYCL DEF 7.3 Z-5",
+        "6 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-",
+        "7 L Z+100 R0 FMAX",
+        "8 PLANE RESET STAY",
+        "9 END PGM P1 MM",
+    ];
+    assert_eq!(
+        translate(Dialect::Heidenhain, &hyper, Dialect::Fanuc, "G68.2"),
+        [
+            "",
+            "",
+            "G52 X10. Y0. Z0.",
+            "G52 X10. Y20. Z0.",
+            "G52 X10. Y20. Z-5.",
+            "G68.2 X0. Y0. Z0. I90. J30. K-90.",
+            "",
+            "G69",
+            "",
+        ]
+    );
+    let cycle800 = translate(Dialect::Heidenhain, &hyper, Dialect::Sinumerik, "CYCLE800");
+    assert_eq!(cycle800[4], "TRANS X=10 Y=20 Z=-5");
+    assert_eq!(
+        cycle800[5],
+        "CYCLE800(0,\"\",0,57,10,20,-5,0,30,0,0,0,0,-1,0,0)"
+    );
+    assert_eq!(cycle800[7], "TRANS X=10 Y=20 Z=-5");
+    // The plus direction in SINUMERIK is SEQ+ in Heidenhain, and back.
+    let plus = translate(
+        Dialect::Sinumerik,
+        &["CYCLE800(0,\"T\",0,57,0,0,0,30,0,0,0,0,0,1,0,0)"],
+        Dialect::Heidenhain,
+        "PLANE SPATIAL",
+    );
+    assert_eq!(plus, ["PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY SEQ+"]);
+    let back = translate(
+        Dialect::Heidenhain,
+        &["PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY SEQ+"],
+        Dialect::Sinumerik,
+        "CYCLE800",
+    );
+    assert_eq!(back, ["CYCLE800(0,\"\",0,57,0,0,0,30,0,0,0,0,0,1,0,0)"]);
+    // A G68.2 origin becomes the datum shift of a PLANE; its cancel resets the shift after
+    // cancelling the plane.
+    let fanuc = [
+        "G68.2 X10 Y20 Z0 I0 J30 K0",
+        "G53.1",
+        "G69",
+        "G52 X1 Y2 Z3",
+        "G68.2 I0 J30 K0",
+        "G52 X4 Y2 Z3",
+    ];
+    assert_eq!(
+        translate(Dialect::Fanuc, &fanuc, Dialect::Heidenhain, "PLANE SPATIAL"),
+        [
+            "CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+10\nCYCL DEF 7.2 Y+20\nCYCL DEF 7.3 Z+0\nPLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY",
+            "",
+            "PLANE RESET STAY\nCYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+0\nCYCL DEF 7.2 Y+0\nCYCL DEF 7.3 Z+0",
+            "CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+1\nCYCL DEF 7.2 Y+2\nCYCL DEF 7.3 Z+3",
+            "PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY",
+            "PLANE RESET STAY\nCYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+4\nCYCL DEF 7.2 Y+2\nCYCL DEF 7.3 Z+3\nPLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY",
+        ]
+    );
+    // Into G68.2 the tilt keeps its own origin beside the G52.
+    assert_eq!(
+        translate(Dialect::Fanuc, &fanuc, Dialect::Haas, "G268")[..2],
+        ["G268 X10. Y20. Z0. I30. J0. K0. Q123", ""]
+    );
+    // SINUMERIK's ROT keeps no shift apart: an origin cannot be written with it.
+    let mut buf = [0u8; MAX_CHANGE];
+    let p0 = Program::default();
+    let (p1, _) = p0.line(Dialect::Fanuc, b"G68.2 X10 J30").unwrap();
+    assert_eq!(
+        write_change(Dialect::Sinumerik, b"ROT", &p0, &p1, 4, &mut buf),
+        Err(Error::HasOrigin)
+    );
+    // A choice of another axis than the master axis is not a word of any block.
+    let p2 = Program {
+        choice: AxisChoice::Minus(2),
+        ..p1
+    };
+    assert_eq!(
+        write_change(Dialect::Heidenhain, b"PLANE SPATIAL", &p0, &p2, 4, &mut buf),
+        Err(Error::NotAvailable)
+    );
+    // A buffer shorter than the longest change, too short for this one: NoRoom.
+    assert_eq!(
+        write_change(
+            Dialect::Heidenhain,
+            b"PLANE SPATIAL",
+            &p0,
+            &p1,
+            4,
+            &mut buf[..20]
+        ),
+        Err(Error::NoRoom)
+    );
+}
+
+/// Every translated program reads back, in the target dialect, as the source program's
+/// frames, block by block, for every pair of dialects and forms that can carry the frames.
+#[test]
+fn translated_programs_read_back_as_the_source() {
+    let sources: [(Dialect, &[&str]); 3] = [
+        (
+            Dialect::Heidenhain,
+            &[
+                "CYCL DEF 7.1 X+10",
+                "CYCL DEF 7.3 Z-5",
+                "PLANE SPATIAL SPA+10 SPB+30 SPC-20 STAY SEQ-",
+                "PLANE RESET STAY",
+                "TRANS DATUM RESET",
+                "PLANE EULER EULPR+15 EULNU+40 EULROT+5 TURN",
+                "TRANS DATUM AXIS X+3",
+            ],
+        ),
+        (
+            Dialect::Fanuc,
+            &[
+                "G52 X1 Y2",
+                "G68.2 X10 Y20 Z-3 I30 J40 K50",
+                "G69",
+                "G68.2 I0 J90 K0",
+                "G52",
+            ],
+        ),
+        (
+            Dialect::Sinumerik,
+            &[
+                "TRANS X10 Y5",
+                "CYCLE800(0,\"T\",0,57,1,2,3,10,20,30,0,0,0,1,0,0)",
+                "CYCLE800()",
+                "TRANS",
+            ],
+        ),
+    ];
+    let targets = [
+        (Dialect::Heidenhain, "PLANE SPATIAL"),
+        (Dialect::Heidenhain, "PLANE VECTOR"),
+        (Dialect::Fanuc, "G68.2"),
+        (Dialect::Haas, "G268"),
+        (Dialect::Syntec, "G158"),
+        (Dialect::Syntec, "G68.2"),
+        (Dialect::Sinumerik, "CYCLE800"),
+    ];
+    for (from, lines) in sources {
+        for (to, form) in targets {
+            let (mut p, mut q) = (Program::default(), Program::default());
+            for l in lines {
+                let (next, _) = p.line(from, l.as_bytes()).unwrap();
+                let mut buf = [0u8; MAX_CHANGE];
+                let (n, _) = write_change(to, form.as_bytes(), &p, &next, -1, &mut buf)
+                    .unwrap_or_else(|e| panic!("{from:?} {l} -> {to:?} {form}: {e:?}"));
+                for block in buf[..n].split(|&b| b == b'\n').filter(|b| !b.is_empty()) {
+                    q = q.line(to, block).unwrap().0;
+                }
+                assert!(
+                    frame_dist(&q.frame, &next.frame) < 1e-12,
+                    "{from:?} {l} -> {to:?} {form}: {:?} {:?}",
+                    q.frame,
+                    next.frame
+                );
+                p = next;
+            }
+        }
+    }
 }

@@ -371,6 +371,26 @@ fn census(calls: usize) -> BTreeMap<&'static str, BTreeSet<i32>> {
                     cap,
                 ),
             );
+            let (d2, line2) = g.pick(LINES);
+            let mut after = p;
+            cncrot_program_line(&mut after, d2, line2.as_ptr().cast(), line2.len());
+            if g.chance(0.05) {
+                after.shift[1] += 1.0;
+            }
+            let mut change = [0 as std::ffi::c_char; CNCROT_PROGRAM_CHANGE_MAX + 1];
+            let cap = g.pick(&[change.len(), 16, 0]);
+            record(
+                "cncrot_program_write_change",
+                cncrot_program_write_change(
+                    g.ptr(&p as *const cncrot_program),
+                    g.ptr(&after as *const cncrot_program),
+                    g.pick(&[d, d2, 0, 7]),
+                    g.ptr(fm.as_ptr()),
+                    dec,
+                    g.ptr_mut(change.as_mut_ptr()),
+                    cap,
+                ),
+            );
             // CYCLE600 and its head table.
             let heads = g.pick(&[
                 "_HEAD_NAME=\"UFK600\" _DELTA_L1=540 _DELTA_L2=250\n",

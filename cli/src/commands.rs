@@ -7,7 +7,7 @@ use crate::svg;
 use crate::{run, Common, Report};
 use cncrot::dialects::cycle600::{self, Call, State};
 use cncrot::dialects::head_def::HeadTable;
-use cncrot::dialects::program::{write_line, Dialect, Program, Remark};
+use cncrot::dialects::program::{write_change, write_line, Dialect, Program, Remark, MAX_CHANGE};
 use cncrot::kinematics::{Machine, RotaryAxis, Rule, Side, MAX_AXES};
 use cncrot::{
     angles_from_matrix, closest_of, decompose, matrix_from_angles, probe, second_solution,
@@ -1136,6 +1136,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                 continue;
             }
         };
+        let before = p;
         p = next;
         let row = match remark {
             Remark::Passed => {
@@ -1175,8 +1176,12 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     }
                 }
                 if let Some(t) = &target {
-                    let mut buf = [0u8; 600];
-                    match write_line(t.dialect, t.form.as_bytes(), &f, d, &mut buf) {
+                    let mut buf = [0u8; MAX_CHANGE];
+                    match write_change(t.dialect, t.form.as_bytes(), &before, &p, d, &mut buf) {
+                        Ok((0, _)) if t.dialect == dialect => Some(block.to_string()),
+                        // Nothing changes in the target (cycle 7's first line, `G53.1`, a
+                        // command repeated): nothing to write.
+                        Ok((0, _)) => None,
                         Ok((len, _)) => Some(String::from_utf8_lossy(&buf[..len]).into_owned()),
                         Err(e) => {
                             eprintln!(

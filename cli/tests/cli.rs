@@ -753,9 +753,12 @@ fn line_reads_a_whole_program() {
     assert_eq!(r.code, 0, "{}", r.stderr);
     let lines: Vec<&str> = r.stdout.lines().collect();
     assert_eq!(lines.len(), 7, "{}", r.stdout);
-    for k in [0, 1, 2, 4, 6] {
+    for k in [0, 1, 4, 6] {
         assert_eq!(lines[k], "passed", "{k}");
     }
+    // Cycle 7's first line belongs to the datum shift and leaves nothing active: the line of
+    // that frame is the cancel.
+    assert_eq!(lines[2], "G69");
     // A tilt about Y by 30° is Rz(90)·Rx(30)·Rz(-90) in G68.2's Euler angles.
     assert!(
         lines[3].starts_with("G68.2 X0. Y0. Z0. I90. J30. K-90."),
@@ -771,7 +774,7 @@ fn line_reads_a_whole_program() {
     assert!(r
         .stdout
         .lines()
-        .nth(2)
+        .nth(1)
         .unwrap()
         .contains("\"remark\":\"passed\""));
 }
@@ -825,7 +828,7 @@ fn program_reads_a_whole_program_on_a_machine() {
         "{out}"
     );
     assert!(
-        out.contains("8 blocks: 3 concerning the frame, 5 passed over, 0 not followed, 0 refused"),
+        out.contains("8 blocks: 4 concerning the frame, 4 passed over, 0 not followed, 0 refused"),
         "{out}"
     );
     let r = cncrot(
@@ -834,10 +837,11 @@ fn program_reads_a_whole_program_on_a_machine() {
     );
     assert_eq!(r.code, 0, "{}", r.stderr);
     let lines: Vec<&str> = r.stdout.lines().collect();
-    assert_eq!(lines.len(), 8, "{}", r.stdout);
+    // Cycle 7's first line changes nothing in a Fanuc program: it is left out.
+    assert_eq!(lines.len(), 7, "{}", r.stdout);
     assert_eq!(lines[1], "1 TOOL CALL 1 Z S5000");
-    assert_eq!(lines[3], "G68.2 X0. Y0. Z0. I90. J30. K-90.");
-    assert_eq!(lines[6], "G69");
+    assert_eq!(lines[2], "G68.2 X0. Y0. Z0. I90. J30. K-90.");
+    assert_eq!(lines[5], "G69");
     let r = cncrot(
         &["program", p, "--dialect", "heidenhain", "--current", "0,0"],
         "",
@@ -1355,4 +1359,73 @@ fn refusals_name_what_was_wrong() {
     let help = ok(&["help", "probe"]);
     assert!(help.contains("--points-file <FILE>"), "{help}");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `program --to` on a program as CAM writes it for a TNC (cycle 7 before the plane): the
+/// datum shift in the target's own command, the tilt about the shifted datum (Fanuc) or with
+/// the whole origin (SINUMERIK's CYCLE800, which replaces the frame), the reset keeping the
+/// shift, cycle 7's first line left out (the text of docs/cli.md).
+#[test]
+fn program_to_writes_datum_shifts() {
+    let prog = "0 BEGIN PGM TILT MM\n1 TOOL CALL 1 Z S5000\n2 CYCL DEF 7.0 DATUM SHIFT\n\
+                3 CYCL DEF 7.1 X+10\n4 CYCL DEF 7.2 Y+20\n\
+                5 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-\n6 L X+10 Y+0 FMAX\n\
+                7 PLANE SPATIAL SPA+0 SPB-20 SPC+90 TURN FMAX\n8 PLANE RESET STAY\n9 END PGM TILT MM\n";
+    let r = cncrot(
+        &["program", "-", "--dialect", "heidenhain", "--to", "fanuc"],
+        prog,
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let want = [
+        "0 BEGIN PGM TILT MM",
+        "1 TOOL CALL 1 Z S5000",
+        "G52 X10. Y0. Z0.",
+        "G52 X10. Y20. Z0.",
+        "G68.2 X0. Y0. Z0. I90. J30. K-90.",
+        "6 L X+10 Y+0 FMAX",
+        "G68.2 X0. Y0. Z0. I0. J20. K90.",
+        "G69",
+        "9 END PGM TILT MM",
+    ];
+    assert_eq!(r.stdout.lines().collect::<Vec<_>>(), want);
+    let r = cncrot(
+        &[
+            "program",
+            "-",
+            "--dialect",
+            "heidenhain",
+            "--to",
+            "sinumerik",
+        ],
+        prog,
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(
+        lines[2..5],
+        [
+            "TRANS X=10 Y=0 Z=0",
+            "TRANS X=10 Y=20 Z=0",
+            "CYCLE800(0,\"\",0,57,10,20,0,0,30,0,0,0,0,-1,0,0)"
+        ]
+    );
+    assert_eq!(lines[7], "TRANS X=10 Y=20 Z=0");
+    // Into SINUMERIK's ROT an origin cannot go: the block keeps its line, exit status 1.
+    let r = cncrot(
+        &[
+            "program",
+            "-",
+            "--dialect",
+            "heidenhain",
+            "--to",
+            "sinumerik:ROT",
+        ],
+        prog,
+    );
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("line 6: not carried across"),
+        "{}",
+        r.stderr
+    );
 }

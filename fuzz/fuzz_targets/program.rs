@@ -4,7 +4,8 @@
 //! past it), `cncrot_program_expected` the same status with a NUL-terminated text that
 //! fits (what a missing word should be: never empty for one); an accepted one leaves a finite frame whose every writable form writes a line
 //! that its dialect reads back as the same frame, and a sealed state of which single-bit
-//! flips are refused. Frames close to the forms' singularities (tilts of 90° − 10^-k) go
+//! flips are refused; the program translated block by block into every dialect and form
+//! (`cncrot_program_write_change`) reads back as the same frames. Frames close to the forms' singularities (tilts of 90° − 10^-k) go
 //! through every writer too: a refusal must be one the documentation names for that frame.
 #![no_main]
 
@@ -94,6 +95,13 @@ fuzz_target!(|data: &[u8]| {
     if (1..=6).contains(&dialect) {
         near_singular(dialect, text);
     }
+    let mut translations: Vec<(i32, &CStr, bool, cncrot_program)> = (1..=6)
+        .flat_map(|d| {
+            forms(d)
+                .iter()
+                .map(move |f| (d, f.0, f.3, cncrot_program::default()))
+        })
+        .collect();
     for line in text.split(|&b| b == b'\n') {
         // Each block in a heap buffer of exactly its length: AddressSanitizer sees any
         // over-read.
@@ -157,6 +165,7 @@ fuzz_target!(|data: &[u8]| {
         let f = frame(&p);
         assert!(f.iter().all(|x| x.is_finite()));
         round_trips(dialect, &f);
+        translated(&again, &p, &mut translations);
         flips_are_refused(&p, line.len());
         axes_of(&p, &line);
     }
@@ -258,6 +267,75 @@ fn near_singular(dialect: i32, data: &[u8]) {
     }
     f[15] = 1.0;
     round_trips(dialect, &f);
+}
+
+/// The program translated block by block into every dialect and form: the text
+/// `cncrot_program_write_change` writes for the state before and after the block, read in the
+/// target dialect on its own translated state, gives the source's frame. A refusal is one the
+/// documentation names (an origin for a form without origin words in a dialect that keeps no
+/// shift apart, numbers the writer cannot write, a frame a form cannot express), leaves `out`
+/// untouched and ends that translation.
+fn translated(
+    before: &cncrot_program,
+    after: &cncrot_program,
+    translations: &mut Vec<(i32, &CStr, bool, cncrot_program)>,
+) {
+    let f = frame(after);
+    let scale = f
+        .iter()
+        .chain(&after.shift)
+        .fold(1.0f64, |a, x| a.max(x.abs()));
+    translations.retain_mut(|(dialect, form, has_origin, state)| {
+        let mut out = [0x5Au8; CNCROT_PROGRAM_CHANGE_MAX + 2];
+        // SAFETY: valid pointers, out holds more than cap bytes.
+        let s = unsafe {
+            cncrot_program_write_change(
+                before,
+                after,
+                *dialect,
+                form.as_ptr(),
+                -1,
+                out.as_mut_ptr().cast(),
+                CNCROT_PROGRAM_CHANGE_MAX + 1,
+            )
+        };
+        input::assert_known(s);
+        assert_eq!(out[CNCROT_PROGRAM_CHANGE_MAX + 1], 0x5A);
+        if s < 0 {
+            assert!(out.iter().all(|&b| b == 0x5A), "{form:?}: {s} wrote");
+            let origin = f[3] != 0.0 || f[7] != 0.0 || f[11] != 0.0;
+            let ok = (s == cncrot_status::HasOrigin as i32
+                && !*has_origin
+                && origin
+                && (*dialect == 1 || *dialect == 5))
+                || s == cncrot_status::OutOfRange as i32;
+            assert!(ok, "{form:?} in dialect {dialect}: {s}");
+            return false;
+        }
+        let n = out.iter().position(|&b| b == 0).expect("NUL");
+        if n > 0 {
+            for block in out[..n].split(|&b| b == b'\n') {
+                let text = String::from_utf8_lossy(block);
+                // SAFETY: the block holds its length in bytes; state is valid.
+                let r = unsafe {
+                    cncrot_program_line(state, *dialect, block.as_ptr().cast(), block.len())
+                };
+                assert!(r >= 0, "{form:?}: {text}: {r}");
+            }
+        }
+        let g = frame(state);
+        let d = g
+            .iter()
+            .zip(&f)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        assert!(
+            d <= 1e-11 * scale,
+            "{form:?} in dialect {dialect}: {}: {d:e}",
+            String::from_utf8_lossy(&out[..n])
+        );
+        true
+    });
 }
 
 fn round_trips(dialect: i32, f: &[f64; 16]) {

@@ -1,5 +1,6 @@
 /* The program state as a MATLAB struct (rotation, origin, angles, shift, active, dialect,
- * options, choice, reference_axis, seal) and back: shared by cncrot_program_lines and cncrot_program_axes. */
+ * options, choice, reference_axis, seal) and back, and the reading of program lines: shared by
+ * cncrot_program_lines, cncrot_program_translate and cncrot_program_axes. */
 #ifndef CNCROT_PROGRAM_STATE_H
 #define CNCROT_PROGRAM_STATE_H
 #include "gateway.h"
@@ -85,6 +86,57 @@ static mxArray *to_struct(const cncrot_program *p) {
   mxSetField(s, 0, "options", mxCreateDoubleScalar(p->options));
   mxSetField(s, 0, "seal", mxCreateDoubleScalar(p->reserved));
   return s;
+}
+
+/* Program lines as given: one char row or string, a cell array of them, or a string array
+ * (its elements as a cell array of char, by MATLAB's cellstr). */
+static const mxArray *lines_arg(const mxArray *lines, int pos) {
+  if (mxIsClass(lines, "string") && mxGetNumberOfElements(lines) != 1) {
+    mxArray *cells = NULL, *in = (mxArray *)lines;
+    if (mexCallMATLABWithTrap(1, &cells, 1, &in, "cellstr") != NULL || cells == NULL)
+      fail("cncrot:badClass", "%s: the strings could not be read (a missing string?)", label(pos, "lines"));
+    return cells;
+  }
+  return lines;
+}
+
+/* One line of text as bytes (characters beyond ASCII become a byte every dialect refuses):
+ * a char row vector or a string scalar. */
+static size_t line_bytes(const mxArray *a, int pos, char *out, size_t cap) {
+  size_t n = 0;
+  const mxChar *c = chars_of(a, pos, "lines", &n);
+  if (c == NULL)
+    fail("cncrot:badClass", "%s must be text (char, a string, or a cell array of them); got %s", label(pos, "lines"),
+         described(a));
+  size_t k;
+  /* Longer lines than any dialect reads arrive cut to cap bytes: the library refuses them. */
+  for (k = 0; k < n && k < cap; k++) out[k] = ascii_byte(c[k]);
+  return k;
+}
+
+/* Raises the refusal `s` of line k (of n) of argument `pos`, read on state p: the line, the
+ * column of the first offending character and what was wrong there (the word the reader
+ * wanted, a cycle parameter's allowed values, or the word it could not use). */
+static void raise_line(int32_t s, const cncrot_program *p, int32_t dialect, const char *buf, size_t len, int pos,
+                       size_t k, size_t n) {
+  char what[CNCROT_PROGRAM_EXPECTED_SIZE];
+  size_t column = 0;
+  cncrot_program_column(p, dialect, buf, len, &column);
+  cncrot_program_expected(p, dialect, buf, len, what, sizeof what);
+  char where[96 + CNCROT_PROGRAM_EXPECTED_SIZE + 48];
+  if (column > 0) {
+    int at = snprintf(where, sizeof where, "%s, line %d, column %d", label(pos, "lines"), (int)(k + 1), (int)column);
+    if (what[0] && at > 0 && (size_t)at < sizeof where) {
+      snprintf(where + at, sizeof where - (size_t)at, " (%s%s)", s == CNCROT_STATUS_MISSING_WORD ? "missing: " : "",
+               what);
+    } else if (column <= len && at > 0 && (size_t)at < sizeof where) {
+      size_t end = column - 1;
+      while (end < len && end < column - 1 + 24 && buf[end] != ' ' && buf[end] != '\t') end++;
+      snprintf(where + at, sizeof where - (size_t)at, " ('%.*s')", (int)(end - (column - 1)), buf + column - 1);
+    }
+    raise_at(s, where, NULL, -1, 0);
+  }
+  raise_at(s, label(pos, "lines"), "line", (long)k, n);
 }
 
 #endif

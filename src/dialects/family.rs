@@ -260,13 +260,29 @@ pub(crate) trait Family {
     /// are the family's to skip), or [`Error::BadArgument`].
     fn parse_form(text: &[u8]) -> Result<FormSpec, Error>;
 
-    /// Writes the block of `spec` with its words (`words.len()` is the form's count).
+    /// Writes the block of `spec` with its words (`words.len()` is the form's count) and,
+    /// where the block has words for it, the solution `choice` names ([`Error::NotAvailable`]
+    /// where the block cannot say that choice). A block without such words writes none.
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
+        choice: AxisChoice,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error>;
+
+    /// Whether the family's reader keeps a datum shift apart from the tilt, kept when the
+    /// tilt is cancelled (Heidenhain's cycle 7, Fanuc-style `G52`); `false` where one frame
+    /// holds both and a substituting command replaces it (SINUMERIK's `TRANS` and `ROT`).
+    const KEEPS_SHIFT: bool = false;
+
+    /// Writes the block or blocks (separated by `\n`) that make `shift` the datum shift,
+    /// along the workpiece axes before any tilt, as the family's reader reads them back;
+    /// [`Error::NotAvailable`] for a family without such a command.
+    fn write_shift(shift: Vector, decimals: i32, out: &mut Out) -> Result<(), Error> {
+        let _ = (shift, decimals, out);
+        Err(Error::NotAvailable)
+    }
 
     /// Writes the block that cancels the tilt programmed with `spec` (`G69`, `PLANE RESET
     /// STAY`, `CYCLE800()`), what the writer gives for the identity frame; `false` (nothing

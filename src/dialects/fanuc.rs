@@ -88,7 +88,7 @@ pub const G69: Frame = Frame::IDENTITY;
 // Program lines.
 
 use super::family::{
-    no_selector, put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
+    no_selector, put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
 };
 use crate::text::number::{write_word, Out, Style};
 use crate::text::scan::{address_words, whole, Comments, Cursor, LineError, Syntax, Tokens};
@@ -277,8 +277,19 @@ pub(crate) fn write_g68_2(words: &[f64], decimals: i32, out: &mut Out) -> Result
     Ok(())
 }
 
+/// `G52 X Y Z` with all three axes (the reader sets the axes a `G52` names, so all three
+/// are written; a zero shift is the manuals' own cancel, `G52 X0. Y0. Z0.`).
+pub(crate) fn write_g52(shift: Vector, decimals: i32, out: &mut Out) -> Result<(), Error> {
+    out.text(b"G52");
+    for (name, &v) in [b" X", b" Y", b" Z"].iter().zip(&shift) {
+        write_word(out, *name, v, decimals, STYLE)?;
+    }
+    Ok(())
+}
+
 impl Family for Fanuc {
     const MAX_LINE: usize = 256;
+    const KEEPS_SHIFT: bool = true;
     const FORMS: &'static [FormInfo] = &[
         FormInfo {
             form: Form::G68_2,
@@ -348,13 +359,19 @@ impl Family for Fanuc {
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
+        _: AxisChoice,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {
         match spec.form {
+            // The block has no words for the solution: `G53.1` turns the axes.
             Form::G68_2 => write_g68_2(words, decimals, out),
             _ => Err(Error::BadArgument),
         }
+    }
+
+    fn write_shift(shift: Vector, decimals: i32, out: &mut Out) -> Result<(), Error> {
+        write_g52(shift, decimals, out)
     }
 
     fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error> {

@@ -66,7 +66,9 @@ pub const G269: Frame = Frame::IDENTITY;
 
 // Program lines.
 
-use super::family::{put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use super::family::{
+    put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
+};
 use super::fanuc;
 use crate::text::number::{write_integer, write_word, Out, Style};
 use crate::text::scan::{address_words, whole, Cursor, LineError, Syntax};
@@ -78,6 +80,7 @@ pub(crate) struct Haas;
 
 impl Family for Haas {
     const MAX_LINE: usize = 256;
+    const KEEPS_SHIFT: bool = true;
     const FORMS: &'static [FormInfo] = &[FormInfo {
         form: Form::G268,
         words: 6,
@@ -158,17 +161,18 @@ impl Family for Haas {
         })
     }
 
-    /// `G268 X Y Z I J K Q`, numbers always with a point.
-    #[inline(never)]
     /// `G269`.
     fn write_cancel(_: &FormSpec, out: &mut Out) -> bool {
         out.text(b"G269");
         true
     }
 
+    /// `G268 X Y Z I J K Q`, numbers always with a point.
+    #[inline(never)]
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
+        _: AxisChoice,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {
@@ -186,6 +190,11 @@ impl Family for Haas {
         out.text(b" Q");
         write_integer(out, spec.selector);
         Ok(())
+    }
+
+    /// `G52 X Y Z`, as Fanuc writes it.
+    fn write_shift(shift: Vector, decimals: i32, out: &mut Out) -> Result<(), Error> {
+        fanuc::write_g52(shift, decimals, out)
     }
 
     fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error> {

@@ -251,7 +251,7 @@ fn plane_frame(form: Form, w: &[f64]) -> Result<Frame, Error> {
 /// The datum shifts a program writes before its `PLANE` (CAM output: `CYCL DEF 7.0 DATUM
 /// SHIFT`, `CYCL DEF 7.1 X+10`, `7.2 Y+5`, `7.3 Z-3`; `TRANS DATUM AXIS X+10 Y+5 Z-3`,
 /// `TRANS DATUM RESET`), or `None` for any other block. Cycle 7's first line only names the
-/// cycle (passed over); each further line sets the axes it names (`IX` adds to the shift), the others keep
+/// cycle (applied: the state unchanged); each further line sets the axes it names (`IX` adds to the shift), the others keep
 /// theirs \[doc: "only the programmed axes are shifted"\]; `TRANS DATUM AXIS` sets the
 /// shift of the axes it names \[choice: the same rule\]. The shift is taken along the
 /// workpiece axes before any tilt, and a `PLANE` tilts about the shifted datum \[doc\].
@@ -274,8 +274,9 @@ fn datum_shift(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
             c.bump();
         }
         if first {
-            // `7.0 DATUM SHIFT` (in the program's language) only names the cycle.
-            return Ok(Some(Block::Passed));
+            // `7.0 DATUM SHIFT` (in the program's language) only names the cycle: part of
+            // the datum shift, the state unchanged.
+            return Ok(Some(Block::Frame(*m)));
         }
         true
     } else if c.keyword(b"TRANS") {
@@ -364,6 +365,7 @@ pub(crate) struct Heidenhain;
 
 impl Family for Heidenhain {
     const MAX_LINE: usize = 254;
+    const KEEPS_SHIFT: bool = true;
     const FORMS: &'static [FormInfo] = &[
         FormInfo {
             form: Form::PlaneSpatial,
@@ -500,18 +502,20 @@ impl Family for Heidenhain {
         Ok(FormSpec { form, selector: 0 })
     }
 
-    /// `PLANE <form> <words> STAY`: the words with their signs (`SPA+30`), then `STAY`
-    /// (the control asks for a positioning choice; `STAY` tilts the plane without moving).
-    #[inline(never)]
     /// `PLANE RESET STAY`.
     fn write_cancel(_: &FormSpec, out: &mut Out) -> bool {
         out.text(b"PLANE RESET STAY");
         true
     }
 
+    /// `PLANE <form> <words> STAY`: the words with their signs (`SPA+30`), then `STAY`
+    /// (the control asks for a positioning choice; `STAY` tilts the plane without moving),
+    /// then `SEQ-`/`SEQ+` for a choice of the master axis' sign.
+    #[inline(never)]
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
+        choice: AxisChoice,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {
@@ -540,6 +544,34 @@ impl Family for Heidenhain {
             write_word(out, name, v, decimals, style)?;
         }
         out.text(b" STAY");
+        // `SEQ±` names the master axis' sign; another axis cannot be named on the block.
+        match choice {
+            AxisChoice::Closest => {}
+            AxisChoice::Minus(0) => out.text(b" SEQ-"),
+            AxisChoice::Plus(0) => out.text(b" SEQ+"),
+            _ => return Err(Error::NotAvailable),
+        }
+        Ok(())
+    }
+
+    /// Cycle 7 (`CYCL DEF 7.0 DATUM SHIFT`, then `7.1 X`, `7.2 Y`, `7.3 Z`), which every TNC
+    /// runs and CAM systems write \[choice: `TRANS DATUM AXIS` is the newer single block\];
+    /// all three axes, as the cycle sets only the axes it names. A zero shift is the
+    /// manual's reset: the cycle with `X+0 Y+0 Z+0` \[doc\].
+    fn write_shift(shift: Vector, decimals: i32, out: &mut Out) -> Result<(), Error> {
+        let style = Style {
+            plus: true,
+            point: false,
+        };
+        out.text(b"CYCL DEF 7.0 DATUM SHIFT");
+        let lines: [&[u8]; 3] = [
+            b"\nCYCL DEF 7.1 X",
+            b"\nCYCL DEF 7.2 Y",
+            b"\nCYCL DEF 7.3 Z",
+        ];
+        for (line, &v) in lines.iter().zip(&shift) {
+            write_word(out, line, v, decimals, style)?;
+        }
         Ok(())
     }
 

@@ -10,13 +10,13 @@
 //! of a restored state and of a written line.
 
 pub use super::family::AxisChoice;
-use super::family::{Block, Modal, MAX_VALUES};
+use super::family::{Block, FormSpec, Modal, MAX_VALUES};
 use super::form;
 pub use super::registry::Dialect;
 use crate::kinematics::{Choice, Machine, Rule};
 use crate::text::number::Out;
 pub use crate::text::scan::LineError;
-use crate::{Error, Frame};
+use crate::{Error, Frame, Vector};
 
 /// The modal state of a program: what the blocks read so far have left active. The
 /// default is nothing active.
@@ -266,24 +266,18 @@ pub fn write_line(
     if decimals > crate::text::number::MAX_DECIMALS {
         return Err(Error::BadArgument);
     }
-    let n = spec.form.count();
-    let mut words = [0.0; MAX_VALUES];
-    let singular = form::form_values(
-        spec.form,
-        spec.selector,
-        frame,
-        words.get_mut(..n).ok_or(Error::BadArgument)?,
-    )?;
     // A buffer that holds the dialect's longest line and still overflowed holds a line the
     // dialect cannot read: no buffer would help.
     let room = buf.len();
     let mut out = Out::new(buf);
-    // Nothing active is written as the cancel, as a program cancels a tilt: `PLANE RESET`
-    // becomes `G69`, not a `G68.2` of zeros (which would leave the control in G68.2 mode).
-    let cancelled = *frame == Frame::IDENTITY && dialect.write_cancel(&spec, &mut out);
-    if !cancelled {
-        dialect.write_line(&spec, words.get(..n).unwrap_or(&[]), decimals, &mut out)?;
-    }
+    let singular = tilt_block(
+        dialect,
+        &spec,
+        frame,
+        AxisChoice::Closest,
+        decimals,
+        &mut out,
+    )?;
     let len = match out.finish() {
         Some(len) => len,
         None if room >= dialect.max_line() => return Err(Error::OutOfRange),
@@ -292,8 +286,183 @@ pub fn write_line(
     if len > dialect.max_line() {
         return Err(Error::OutOfRange);
     }
-    // A cancel has no angles whose decomposition could be singular.
-    Ok((len, singular && !cancelled))
+    Ok((len, singular))
+}
+
+/// The block of `spec` for `frame` (its cancel for the identity) with the choice words of
+/// `choice`; whether the decomposition was singular.
+fn tilt_block(
+    dialect: Dialect,
+    spec: &FormSpec,
+    frame: &Frame,
+    choice: AxisChoice,
+    decimals: i32,
+    out: &mut Out,
+) -> Result<bool, Error> {
+    // The words first: a form that cannot be written (a direct mode) is refused even for
+    // the identity.
+    let n = spec.form.count();
+    let mut words = [0.0; MAX_VALUES];
+    let slots = words.get_mut(..n).ok_or(Error::BadArgument)?;
+    let singular = form::form_values(spec.form, spec.selector, frame, slots)?;
+    let words = words.get(..n).ok_or(Error::BadArgument)?;
+    // Nothing active is written as the cancel, as a program cancels a tilt: `PLANE RESET`
+    // becomes `G69`, not a `G68.2` of zeros (which would leave the control in G68.2 mode).
+    if *frame == Frame::IDENTITY && dialect.write_cancel(spec, out) {
+        // A cancel has no angles whose decomposition could be singular.
+        return Ok(false);
+    }
+    dialect.write_line(spec, words, choice, decimals, out)?;
+    Ok(singular)
+}
+
+/// The longest text [`write_change`] writes: a cancel, a datum shift of up to four blocks
+/// and a tilt, each no longer than the dialect reads, with their line ends (a dialect with
+/// one frame writes one block).
+pub const MAX_CHANGE: usize = 2048;
+const _: () = {
+    let mut k = 0;
+    while k < Dialect::ALL.len() {
+        let d = Dialect::ALL[k];
+        let blocks = if d.keeps_shift() { 6 } else { 1 };
+        assert!(blocks * d.max_line() + blocks - 1 <= MAX_CHANGE);
+        k += 1;
+    }
+};
+
+/// How a program in `dialect` written with the tilt command `form` holds a state: the datum
+/// shift it writes with the dialect's own command, and the tilt (about that datum).
+fn split(dialect: Dialect, spec: &FormSpec, p: &Program) -> (Vector, Frame) {
+    let f = p.frame;
+    let rotation_only = Frame::from_rotation(f.rotation);
+    if f.rotation == crate::IDENTITY || (dialect.keeps_shift() && !spec.form.has_origin()) {
+        // The whole origin is a datum shift: a form without origin words tilts about it.
+        (f.translation, rotation_only)
+    } else if dialect.keeps_shift() {
+        (p.shift, p.modal().tilt())
+    } else {
+        // One frame holds everything: the tilt block writes it whole.
+        ([0.0; 3], f)
+    }
+}
+
+/// Writes the blocks that take a program in `dialect` from the state `before` to the state
+/// `after` (both as read by [`Program::line`], in any dialect), with the tilt command `form`
+/// (the names of [`write_line`]), one block per line, separated by `\n`, into `buf`; returns
+/// the length (0: nothing changes) and whether the tilt's decomposition was singular. What
+/// a program translator writes for each block that concerns the frame:
+///
+/// - A changed datum shift is written with the dialect's own command: Heidenhain's cycle 7
+///   (`CYCL DEF 7.0 DATUM SHIFT`, `7.1 X…`, `7.2 Y…`, `7.3 Z…`), Fanuc, Haas and Syntec
+///   `G52 X… Y… Z…`, after cancelling an active tilt (a shift is programmed untilted);
+///   SINUMERIK's `TRANS X=… Y=… Z=…` (`TRANS` alone for none) when no rotation is active.
+/// - A form without origin words (every `PLANE`, `ROT`) tilts about the datum: the tilt's
+///   origin goes into the datum shift (Heidenhain), or the block is refused with
+///   [`Error::HasOrigin`] where the dialect has no shift kept apart (SINUMERIK `ROT`,
+///   TwinCAT).
+/// - A changed tilt, or the same tilt with other choice words, is written as [`write_line`]
+///   writes it, with the choice words the block has: Heidenhain `SEQ-`/`SEQ+`, CYCLE800
+///   `_DIR` −1/+1 (−1 also for no choice: the cycle always names one \[choice\]); the
+///   others have none on the block. A choice of an axis other than the master axis cannot be
+///   written ([`Error::NotAvailable`]). Nothing active is written as the cancel.
+///
+/// Refused as by [`write_line`], and: a state [`Program::check`] refuses
+/// ([`Error::NotFinite`], [`Error::BadArgument`], [`Error::NotARotation`]); [`Error::NoRoom`]
+/// only for a buffer shorter than [`MAX_CHANGE`].
+///
+/// ```
+/// use cncrot::dialects::program::{write_change, Dialect, Program};
+/// let p0 = Program::default();
+/// let (p1, _) = p0.line(Dialect::Fanuc, b"G52 X10 Y20").unwrap();
+/// let (p2, _) = p1.line(Dialect::Fanuc, b"G68.2 X0 Y0 Z0 I0 J30 K0").unwrap();
+/// let mut buf = [0u8; 2048];
+/// let mut heidenhain = |a: &Program, b: &Program| {
+///     let (n, _) = write_change(Dialect::Heidenhain, b"PLANE SPATIAL", a, b, 4, &mut buf).unwrap();
+///     String::from_utf8(buf[..n].to_vec()).unwrap()
+/// };
+/// assert_eq!(
+///     heidenhain(&p0, &p1),
+///     "CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+10\nCYCL DEF 7.2 Y+20\nCYCL DEF 7.3 Z+0"
+/// );
+/// assert_eq!(heidenhain(&p1, &p2), "PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY");
+/// assert_eq!(heidenhain(&p2, &p2), "");
+/// ```
+pub fn write_change(
+    dialect: Dialect,
+    form_text: &[u8],
+    before: &Program,
+    after: &Program,
+    decimals: i32,
+    buf: &mut [u8],
+) -> Result<(usize, bool), Error> {
+    let spec = dialect.parse_form(form_text)?;
+    if decimals > crate::text::number::MAX_DECIMALS {
+        return Err(Error::BadArgument);
+    }
+    before.check()?;
+    after.check()?;
+    let (s0, mut t0) = split(dialect, &spec, before);
+    let (s1, t1) = split(dialect, &spec, after);
+    let room = buf.len();
+    let mut out = Out::new(buf);
+    let mut blocks = 0;
+    let mut next = |out: &mut Out| {
+        if blocks > 0 {
+            out.byte(b'\n');
+        }
+        blocks += 1;
+    };
+    let mut singular = false;
+    if dialect.keeps_shift() {
+        if s0 != s1 {
+            if t0 != Frame::IDENTITY {
+                next(&mut out);
+                tilt_block(
+                    dialect,
+                    &spec,
+                    &Frame::IDENTITY,
+                    AxisChoice::Closest,
+                    decimals,
+                    &mut out,
+                )?;
+                t0 = Frame::IDENTITY;
+            }
+            next(&mut out);
+            dialect.write_shift(s1, decimals, &mut out)?;
+        }
+        if t0 != t1 || (t1 != Frame::IDENTITY && before.choice != after.choice) {
+            next(&mut out);
+            singular = tilt_block(dialect, &spec, &t1, after.choice, decimals, &mut out)?;
+        }
+    } else if (s0, t0) != (s1, t1) || (t1 != Frame::IDENTITY && before.choice != after.choice) {
+        // One frame, which each command replaces whole: a translation alone is the shift
+        // command, anything else the tilt block.
+        next(&mut out);
+        if t1 == Frame::IDENTITY && s1 != [0.0; 3] {
+            match dialect.write_shift(s1, decimals, &mut out) {
+                Err(Error::NotAvailable) => {
+                    let f = Frame::with_translations(s1, crate::IDENTITY, [0.0; 3]);
+                    tilt_block(dialect, &spec, &f, after.choice, decimals, &mut out)?;
+                }
+                r => r?,
+            }
+        } else {
+            singular = tilt_block(dialect, &spec, &t1, after.choice, decimals, &mut out)?;
+        }
+    }
+    let len = match out.finish() {
+        Some(len) => len,
+        None if room >= MAX_CHANGE => return Err(Error::OutOfRange),
+        None => return Err(Error::NoRoom),
+    };
+    let text = buf.get(..len).unwrap_or(&[]);
+    if text
+        .split(|&b| b == b'\n')
+        .any(|l| l.len() > dialect.max_line())
+    {
+        return Err(Error::OutOfRange);
+    }
+    Ok((len, singular))
 }
 
 #[cfg(test)]

@@ -6,11 +6,11 @@
 //! `form_values`, the C boundary's codes) goes through the `match`es generated here: static
 //! dispatch, no function pointers, so the no-panic proof sees every path.
 
-use super::family::{Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use super::family::{AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
 use super::{fanuc, haas, heidenhain, sinumerik, syntec, twincat};
 use crate::text::number::Out;
 use crate::text::scan::LineError;
-use crate::{Error, Frame};
+use crate::{Error, Frame, Vector};
 
 macro_rules! families {
     ($($(#[$doc:meta])* $name:ident = $code:literal => $family:ty,)*) => {
@@ -77,11 +77,29 @@ macro_rules! families {
                 self,
                 spec: &FormSpec,
                 words: &[f64],
+                choice: AxisChoice,
                 decimals: i32,
                 out: &mut Out,
             ) -> Result<(), Error> {
                 match self {
-                    $(Dialect::$name => <$family>::write_line(spec, words, decimals, out),)*
+                    $(Dialect::$name => <$family>::write_line(spec, words, choice, decimals, out),)*
+                }
+            }
+
+            pub(crate) const fn keeps_shift(self) -> bool {
+                match self {
+                    $(Dialect::$name => <$family>::KEEPS_SHIFT,)*
+                }
+            }
+
+            pub(crate) fn write_shift(
+                self,
+                shift: Vector,
+                decimals: i32,
+                out: &mut Out,
+            ) -> Result<(), Error> {
+                match self {
+                    $(Dialect::$name => <$family>::write_shift(shift, decimals, out),)*
                 }
             }
 

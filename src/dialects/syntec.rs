@@ -138,7 +138,9 @@ fn normal(n: Vector) -> Result<Matrix, Error> {
 
 // Program lines.
 
-use super::family::{put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use super::family::{
+    put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
+};
 use super::fanuc;
 use crate::text::number::{write_integer, write_word, Out};
 use crate::text::scan::{address_words, whole, Cursor, LineError, Syntax};
@@ -150,6 +152,7 @@ pub(crate) struct Syntec;
 
 impl Family for Syntec {
     const MAX_LINE: usize = 256;
+    const KEEPS_SHIFT: bool = true;
     const FORMS: &'static [FormInfo] = &[FormInfo {
         form: Form::G158,
         words: 9,
@@ -225,8 +228,6 @@ impl Family for Syntec {
         Ok(spec)
     }
 
-    /// `G158 P X Y Z A B C U V W` or `G68.2 X Y Z I J K`, numbers always with a point.
-    #[inline(never)]
     /// `G158` without words for its own form, `G69` in its G68.2 mode.
     fn write_cancel(spec: &FormSpec, out: &mut Out) -> bool {
         out.text(if spec.form == Form::G158 {
@@ -237,9 +238,12 @@ impl Family for Syntec {
         true
     }
 
+    /// `G158 P X Y Z A B C U V W` or `G68.2 X Y Z I J K`, numbers always with a point.
+    #[inline(never)]
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
+        _: AxisChoice,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {
@@ -258,6 +262,11 @@ impl Family for Syntec {
             }
             _ => Err(Error::BadArgument),
         }
+    }
+
+    /// `G52 X Y Z`, as Fanuc writes it.
+    fn write_shift(shift: Vector, decimals: i32, out: &mut Out) -> Result<(), Error> {
+        fanuc::write_g52(shift, decimals, out)
     }
 
     fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error> {

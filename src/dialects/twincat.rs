@@ -83,7 +83,7 @@ pub fn rot_angles(m: &Matrix) -> Result<([f64; 3], bool), Error> {
 // Program lines.
 
 use super::family::{
-    no_selector, put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
+    no_selector, put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
 };
 use crate::text::number::{write_word, Out, Style};
 use crate::text::scan::{address_words, Comments, Cursor, LineError, Syntax, Tokens};
@@ -203,16 +203,17 @@ impl Family for Twincat {
         })
     }
 
-    /// `ROT X… Y… Z…`.
-    #[inline(never)]
     /// None of its own: `ROT X0 Y0 Z0` is TwinCAT's rotation off.
     fn write_cancel(_: &FormSpec, _: &mut Out) -> bool {
         false
     }
 
+    /// `ROT X… Y… Z…`.
+    #[inline(never)]
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
+        _: AxisChoice,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {

@@ -563,30 +563,125 @@ pub unsafe extern "C" fn cncrot_program_write(
         non_null(&[form.is_null(), frame.is_null(), out.is_null()])?;
         let d = Dialect::from_code(dialect)?;
         let mut name = [0u8; FORM_MAX];
-        let mut n = 0;
-        loop {
-            let slot = name.get_mut(n).ok_or(cncrot_status::BadArgument)?;
-            let b = form.add(n).cast::<u8>().read();
-            if b == 0 {
-                break;
-            }
-            *slot = b;
-            n += 1;
-        }
+        let name = read_form(form, &mut name)?;
         let f = read_frame(frame)?;
         let mut buf = [0u8; CNCROT_PROGRAM_LINE_MAX];
-        let name = name.get(..n).ok_or(cncrot_status::BadArgument)?;
         let (len, singular) = program::write_line(d, name, &f, decimals, &mut buf)?;
-        let text = buf.get(..len).ok_or(cncrot_status::Internal)?;
-        if cap <= len {
-            return Err(cncrot_status::NoRoom);
+        put_text(buf.get(..len).ok_or(cncrot_status::Internal)?, out, cap)?;
+        Ok(super::status_of(singular))
+    })
+}
+
+/// A NUL-terminated form name into `name` (at most `FORM_MAX` bytes are read).
+///
+/// # Safety
+/// `form` is NUL-terminated or has at least `FORM_MAX` readable bytes.
+#[inline(always)]
+unsafe fn read_form<'a>(
+    form: *const c_char,
+    name: &'a mut [u8; FORM_MAX],
+) -> Result<&'a [u8], cncrot_status> {
+    let mut n = 0;
+    loop {
+        let slot = name.get_mut(n).ok_or(cncrot_status::BadArgument)?;
+        let b = form.add(n).cast::<u8>().read();
+        if b == 0 {
+            break;
         }
-        let dst = core::slice::from_raw_parts_mut(out.cast::<u8>(), len + 1);
-        let (body, nul) = dst.split_at_mut(len);
-        body.copy_from_slice(text);
-        if let Some(z) = nul.first_mut() {
-            *z = 0;
-        }
+        *slot = b;
+        n += 1;
+    }
+    name.get(..n).ok_or(cncrot_status::BadArgument)
+}
+
+/// `text` and a NUL into `out`, or `NO_ROOM` with `out` untouched.
+///
+/// # Safety
+/// `out` points to `cap` writable bytes.
+#[inline(always)]
+unsafe fn put_text(text: &[u8], out: *mut c_char, cap: usize) -> Result<(), cncrot_status> {
+    let len = text.len();
+    if cap <= len {
+        return Err(cncrot_status::NoRoom);
+    }
+    let dst = core::slice::from_raw_parts_mut(out.cast::<u8>(), len + 1);
+    let (body, nul) = dst.split_at_mut(len);
+    body.copy_from_slice(text);
+    if let Some(z) = nul.first_mut() {
+        *z = 0;
+    }
+    Ok(())
+}
+
+/// The longest text `cncrot_program_write_change` writes, without its NUL.
+pub const CNCROT_PROGRAM_CHANGE_MAX: usize = 2048;
+const _: () = assert!(CNCROT_PROGRAM_CHANGE_MAX == program::MAX_CHANGE);
+
+/// Writes the blocks that take a program in `dialect` from the state `before` to the state
+/// `after` (states `cncrot_program_line` wrote, read in any dialect: a translator passes
+/// the state before and after each source block), with the tilt command `form` (the names
+/// of `cncrot_program_write`), one block per line separated by `\n`, and a NUL; an empty
+/// text when nothing changes in the target dialect.
+///
+/// - A changed datum shift is written with the dialect's own command: Heidenhain's cycle 7
+///   (`CYCL DEF 7.0 DATUM SHIFT`, `CYCL DEF 7.1 X…`, `7.2 Y…`, `7.3 Z…`), Fanuc, Haas and
+///   Syntec `G52 X… Y… Z…` (an active tilt cancelled first: a shift is programmed untilted),
+///   SINUMERIK `TRANS X=… Y=… Z=…` (`TRANS` for none) when no rotation is active.
+/// - A form without origin words (every `PLANE`, `ROT`) tilts about the datum: Heidenhain
+///   writes the tilt's origin as the datum shift; SINUMERIK `ROT` and TwinCAT, which keep no
+///   shift apart, refuse it with `CNCROT_STATUS_HAS_ORIGIN`.
+/// - A changed tilt, or the same tilt with other choice words, is written as
+///   `cncrot_program_write` writes it, with the choice words the block has: Heidenhain
+///   `SEQ-`/`SEQ+`, CYCLE800 `_DIR` -1/+1 (-1 also for no choice: the cycle always names
+///   one); Fanuc, Syntec, Haas and TwinCAT blocks have none. Nothing active is written as
+///   the form's cancel.
+///
+/// Returns 0 or `CNCROT_STATUS_SINGULAR` (as `cncrot_program_write`), or a negative status
+/// with `out` untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a state
+/// this library did not write), `CNCROT_STATUS_BAD_ARGUMENT` (unknown dialect or form, a
+/// form name longer than 64 bytes, `decimals` > 17, an incremental or mode-0 `G158 P`),
+/// `CNCROT_STATUS_BAD_SEQUENCE` and `CNCROT_STATUS_INCOMPLETE_SEQUENCE` (a form's axis order,
+/// as `cncrot_program_write`), `CNCROT_STATUS_HAS_ORIGIN` (above),
+/// `CNCROT_STATUS_NOT_AVAILABLE` (a direct mode; a choice of an axis other than the master
+/// axis, which no block names), `CNCROT_STATUS_OUT_OF_RANGE` (a frame the form cannot
+/// express, numbers the writer cannot write, a block longer than the dialect reads),
+/// `CNCROT_STATUS_NO_ROOM` (`cap` too small for the text).
+///
+/// # Safety
+/// `before` and `after` point to readable `cncrot_program`s, `form` is a NUL-terminated
+/// string (at most 64 bytes are read), `out` points to `cap` writable bytes (or NULL: error).
+///
+/// ```c
+/// char text[CNCROT_PROGRAM_CHANGE_MAX + 1];
+/// cncrot_program_write_change(&before, &after, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL",
+///                             4, text, sizeof text);
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_program_write_change(
+    before: *const cncrot_program,
+    after: *const cncrot_program,
+    dialect: i32,
+    form: *const c_char,
+    decimals: i32,
+    out: *mut c_char,
+    cap: usize,
+) -> i32 {
+    guard(|| {
+        non_null(&[
+            before.is_null(),
+            after.is_null(),
+            form.is_null(),
+            out.is_null(),
+        ])?;
+        let p0 = load(&before.read_unaligned())?;
+        let p1 = load(&after.read_unaligned())?;
+        let d = Dialect::from_code(dialect)?;
+        let mut name = [0u8; FORM_MAX];
+        let name = read_form(form, &mut name)?;
+        let mut buf = [0u8; CNCROT_PROGRAM_CHANGE_MAX];
+        let (len, singular) = program::write_change(d, name, &p0, &p1, decimals, &mut buf)?;
+        put_text(buf.get(..len).ok_or(cncrot_status::Internal)?, out, cap)?;
         Ok(super::status_of(singular))
     })
 }

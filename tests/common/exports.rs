@@ -933,6 +933,76 @@ fn programs() -> Vec<Call> {
             ));
             t.bytes(&out);
         }),
+        ("cncrot_program_write_change", |t| unsafe {
+            let mut states = [cncrot_program::default(); 3];
+            for (k, l) in [
+                &b"CYCL DEF 7.1 X+10"[..],
+                b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN SEQ-",
+            ]
+            .iter()
+            .enumerate()
+            {
+                states[k + 1] = states[k];
+                t.status(cncrot_program_line(
+                    &mut states[k + 1],
+                    CNCROT_DIALECT_HEIDENHAIN,
+                    l.as_ptr().cast(),
+                    l.len(),
+                ));
+            }
+            let mut out = [0u8; CNCROT_PROGRAM_CHANGE_MAX + 1];
+            for (a, b, d, form, dec) in [
+                (0, 2, CNCROT_DIALECT_FANUC, c"G68.2", -1),
+                (1, 2, CNCROT_DIALECT_SINUMERIK, c"CYCLE800", 4),
+                (2, 0, CNCROT_DIALECT_HEIDENHAIN, c"PLANE EULER", 3),
+                (0, 2, CNCROT_DIALECT_SINUMERIK, c"ROT", 3),
+                (0, 1, CNCROT_DIALECT_TWINCAT, c"ROT", 3),
+                (0, 2, 7, c"G68.2", 3),
+            ] {
+                t.status(cncrot_program_write_change(
+                    &states[a],
+                    &states[b],
+                    d,
+                    form.as_ptr(),
+                    dec,
+                    out.as_mut_ptr().cast(),
+                    out.len(),
+                ));
+            }
+            t.bytes(&out);
+            let bad = cncrot_program {
+                reserved: 1,
+                ..states[1]
+            };
+            t.status(cncrot_program_write_change(
+                &bad,
+                &states[2],
+                CNCROT_DIALECT_FANUC,
+                c"G68.2".as_ptr(),
+                -1,
+                out.as_mut_ptr().cast(),
+                out.len(),
+            ));
+            t.status(cncrot_program_write_change(
+                &states[0],
+                &states[2],
+                CNCROT_DIALECT_HEIDENHAIN,
+                c"PLANE SPATIAL".as_ptr(),
+                -1,
+                out.as_mut_ptr().cast(),
+                20,
+            ));
+            t.status(cncrot_program_write_change(
+                &states[0],
+                null(),
+                CNCROT_DIALECT_FANUC,
+                c"G68.2".as_ptr(),
+                -1,
+                out.as_mut_ptr().cast(),
+                out.len(),
+            ));
+            t.bytes(&out);
+        }),
     ]
 }
 

@@ -830,9 +830,6 @@ impl Family for Sinumerik {
         Ok(spec)
     }
 
-    /// `CYCLE800(0,"",0,_MODE,_X0,_Y0,_Z0,_A,_B,_C,_X1,_Y1,_Z1,-1,0,0)` (`_DIR` −1, "minus"
-    /// \[choice\]) or `ROT X=… Y=… Z=…`.
-    #[inline(never)]
     /// `CYCLE800()` (deselects the swivel data set), `ROT` (no rotation).
     fn write_cancel(spec: &FormSpec, out: &mut Out) -> bool {
         out.text(if spec.form == Form::Cycle800 {
@@ -843,9 +840,13 @@ impl Family for Sinumerik {
         true
     }
 
+    /// `CYCLE800(0,"",0,_MODE,_X0,_Y0,_Z0,_A,_B,_C,_X1,_Y1,_Z1,_DIR,0,0)` (`_DIR` +1 for
+    /// a plus choice, else −1, "minus" \[choice\]) or `ROT X=… Y=… Z=…`.
+    #[inline(never)]
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
+        choice: AxisChoice,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {
@@ -861,7 +862,13 @@ impl Family for Sinumerik {
                     out.byte(b',');
                     write(out, v, decimals, style)?;
                 }
-                out.text(b",-1,0,0)");
+                // `_DIR`: "minus" unless the plus direction is asked for [choice: CYCLE800
+                // always names a direction]; the direction-reference axis is machine data.
+                out.text(match choice {
+                    AxisChoice::Closest | AxisChoice::Minus(0) => b",-1,0,0)",
+                    AxisChoice::Plus(0) => b",1,0,0)",
+                    _ => return Err(Error::NotAvailable),
+                });
             }
             Form::SinumerikRot => {
                 out.text(b"ROT");
@@ -870,6 +877,22 @@ impl Family for Sinumerik {
                 }
             }
             _ => return Err(Error::BadArgument),
+        }
+        Ok(())
+    }
+
+    /// `TRANS X=… Y=… Z=…`, or `TRANS` for no shift. SINUMERIK keeps one programmable
+    /// frame, which `TRANS` replaces (its rotation too).
+    fn write_shift(shift: Vector, decimals: i32, out: &mut Out) -> Result<(), Error> {
+        let style = Style {
+            plus: false,
+            point: false,
+        };
+        out.text(b"TRANS");
+        if shift != [0.0; 3] {
+            for (name, &v) in [&b" X="[..], b" Y=", b" Z="].iter().zip(&shift) {
+                write_word(out, name, v, decimals, style)?;
+            }
         }
         Ok(())
     }

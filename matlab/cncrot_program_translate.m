@@ -1,0 +1,32 @@
+% CNCROT_PROGRAM_TRANSLATE  A part program in another controller's language, block by block.
+%   text = cncrot_program_translate(dialect, lines, to, form)
+%   text = cncrot_program_translate(dialect, lines, to, form, decimals)
+%   [text, remarks, state] = cncrot_program_translate(...)
+%   dialect, to: 'sinumerik', 'heidenhain', 'fanuc', 'syntec', 'twincat' or 'haas' (any
+%   case, char or string), or the code (cncrot_dialects); lines: the program's blocks (a
+%   cell array of char or strings, a string array, or one block); form: the tilt command
+%   to write in (the forms of cncrot_program_write: 'PLANE SPATIAL', 'G68.2', 'CYCLE800',
+%   ...); decimals: 0..17, or negative (the default) for the shortest numbers that read
+%   back exactly. text (N-by-1 cell of char) holds for each block of the program:
+%   - a block that concerns the frame: the blocks that program the same change in the
+%     target language, separated by newline characters (char(10)), or '' when nothing
+%     changes there. A datum shift is written with the target's own command (Heidenhain
+%     CYCL DEF 7, G52, SINUMERIK TRANS), a tilt's origin as a datum shift where the form
+%     has no origin words (PLANE), an active tilt cancelled before a new shift, cancels as
+%     cancels (G69, PLANE RESET STAY, CYCLE800()), and the tilt's choice words where the
+%     block has them (SEQ+/SEQ- <-> CYCLE800 _DIR +1/-1);
+%   - any other block: the block as it stands (remarks says which).
+%   remarks (N-by-1 cell): 'applied', 'passed' or 'not followed' as cncrot_program_lines
+%   says; a 'not followed' block changes the frame in a way the library does not follow
+%   and is not translated. state: the source program's state after the last block.
+%   A block the source controller could not execute raises its error, as in
+%   cncrot_program_lines; a change the target form cannot write raises its status's error
+%   naming the line (cncrot:hasOrigin for an origin with SINUMERIK 'ROT' or TwinCAT).
+%
+%   Example (a hyperMILL-style Heidenhain program for a Fanuc-style control):
+%     prog = {'CYCL DEF 7.0 DATUM SHIFT', 'CYCL DEF 7.1 X+10', ...
+%             'PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX SEQ-', 'L Z+100 FMAX', 'PLANE RESET STAY'};
+%     text = cncrot_program_translate('heidenhain', prog, 'fanuc', 'G68.2', 4)
+%     % {''; 'G52 X10. Y0. Z0.'; 'G68.2 X0. Y0. Z0. I90. J30. K-90.'; 'L Z+100 FMAX'; 'G69'}
+%
+%   See also CNCROT_PROGRAM_LINES, CNCROT_PROGRAM_WRITE, CNCROT_DIALECTS.

@@ -1,0 +1,69 @@
+/* [text, remarks, state] = cncrot_program_translate(dialect, lines, to, form, decimals): see
+ * cncrot_program_translate.m. */
+#include "program_state.h"
+
+void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
+  check_nargs(nrhs, 4, 5, nlhs, 3);
+  int32_t dialect = dialect_arg(prhs[0], 1, "dialect");
+  int32_t to = dialect_arg(prhs[2], 3, "to");
+  char form[65];
+  size_t m = 0;
+  const mxChar *c = chars_of(prhs[3], 4, "form", &m);
+  if (c == NULL)
+    fail("cncrot:badClass", "%s must be text such as 'G68.2' or 'PLANE SPATIAL'; got %s", label(4, "form"),
+         described(prhs[3]));
+  if (m > 64) fail("cncrot:badArgument", "%s is longer than 64 characters", label(4, "form"));
+  for (size_t k = 0; k < m; k++) {
+    if (char_code(c[k]) == 0) fail("cncrot:badArgument", "%s contains a NUL character", label(4, "form"));
+    form[k] = ascii_byte(c[k]);
+  }
+  form[m] = '\0';
+  int32_t decimals = nrhs > 4 ? integer_arg(prhs[4], 5, "decimals") : -1;
+  cncrot_program p;
+  memset(&p, 0, sizeof p);
+  static char out[CNCROT_PROGRAM_CHANGE_MAX + 1];
+  /* The form and the decimals are judged before any line: no change, the same statuses. */
+  int32_t s = cncrot_program_write_change(&p, &p, to, form, decimals, out, sizeof out);
+  if (s < 0) {
+    if (s == CNCROT_STATUS_BAD_ARGUMENT && decimals > 17)
+      fail("cncrot:badArgument", "%s must be 0..17, or negative for the shortest numbers that read back exactly; got %d",
+           label(5, "decimals"), (int)decimals);
+    raise_at(s, label(4, "form"), NULL, -1, 0);
+  }
+  const mxArray *lines = lines_arg(prhs[1], 2);
+  int cell = mxIsCell(lines);
+  size_t n = cell ? mxGetNumberOfElements(lines) : 1;
+  mxArray *text = mxCreateCellMatrix(n, 1);
+  mxArray *remarks = mxCreateCellMatrix(n, 1);
+  for (size_t k = 0; k < n; k++) {
+    const mxArray *a = cell ? mxGetCell(lines, k) : lines;
+    if (!a) a = mxCreateString("");
+    char buf[CNCROT_PROGRAM_LINE_MAX + 3];
+    size_t len = line_bytes(a, 2, buf, sizeof buf);
+    cncrot_program before = p;
+    s = cncrot_program_line(&p, dialect, buf, len);
+    if (s < 0) {
+      mxDestroyArray(text);
+      mxDestroyArray(remarks);
+      raise_line(s, &p, dialect, buf, len, 2, k, n);
+    }
+    if (s == CNCROT_STATUS_PASSED || s == CNCROT_STATUS_NOT_FOLLOWED) {
+      /* Not about the frame, or not followed: the block as it stands. */
+      buf[len] = '\0';
+      mxSetCell(text, k, mxIsChar(a) ? mxDuplicateArray(a) : mxCreateString(buf));
+      mxSetCell(remarks, k, mxCreateString(s == CNCROT_STATUS_PASSED ? "passed" : "not followed"));
+      continue;
+    }
+    int32_t w = cncrot_program_write_change(&before, &p, to, form, decimals, out, sizeof out);
+    if (w < 0) {
+      mxDestroyArray(text);
+      mxDestroyArray(remarks);
+      raise_at(w, label(2, "lines"), "line", (long)k, n);
+    }
+    mxSetCell(text, k, mxCreateString(out));
+    mxSetCell(remarks, k, mxCreateString("applied"));
+  }
+  plhs[0] = text;
+  if (nlhs > 1) plhs[1] = remarks; else mxDestroyArray(remarks);
+  if (nlhs > 2) plhs[2] = to_struct(&p);
+}
