@@ -530,6 +530,55 @@ fn programs(b: &mut Bench, i: &Inputs) {
                 )
             });
         }
+        // A translated block: a tilt with an origin after a datum shift, into PLANE (the
+        // origin as cycle 7, then the plane) and into CYCLE800.
+        let mut shifted = cncrot_program::default();
+        let (g52, g682) = (&b"G52 X10 Y20 Z-5"[..], &b"G68.2 X1 Y2 Z3 I30 J40 K50"[..]);
+        // SAFETY: valid pointers and lengths.
+        unsafe {
+            cncrot_program_line(
+                &mut shifted,
+                CNCROT_DIALECT_FANUC,
+                g52.as_ptr().cast(),
+                g52.len(),
+            )
+        };
+        let mut tilted = shifted;
+        // SAFETY: as above.
+        unsafe {
+            cncrot_program_line(
+                &mut tilted,
+                CNCROT_DIALECT_FANUC,
+                g682.as_ptr().cast(),
+                g682.len(),
+            )
+        };
+        let mut change = [0u8; CNCROT_PROGRAM_CHANGE_MAX + 1];
+        for (class, dialect, form) in [
+            (
+                "into PLANE SPATIAL",
+                CNCROT_DIALECT_HEIDENHAIN,
+                c"PLANE SPATIAL",
+            ),
+            ("into CYCLE800", CNCROT_DIALECT_SINUMERIK, c"CYCLE800"),
+        ] {
+            b.time(
+                "cncrot_program_write_change",
+                class,
+                &[(shifted, tilted)],
+                &mut |(a, z)| unsafe {
+                    cncrot_program_write_change(
+                        a,
+                        z,
+                        dialect,
+                        form.as_ptr(),
+                        4,
+                        change.as_mut_ptr().cast(),
+                        change.len(),
+                    )
+                },
+            );
+        }
     }
 }
 

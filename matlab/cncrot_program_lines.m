@@ -31,4 +31,4 @@
 %     [F, ~, ~, r] = cncrot_program_lines('fanuc', {'N10 G54', 'N20 G68.2 J30', 'N30 G1 X10'})
 %     % r = {'not followed'; 'applied'; 'passed'}
 %
-%   See also CNCROT_PROGRAM_WRITE, CNCROT_DIALECTS, CNCROT_FORM_FRAME.
+%   See also CNCROT_PROGRAM_WRITE, CNCROT_PROGRAM_TRANSLATE, CNCROT_DIALECTS, CNCROT_FORM_FRAME.

@@ -20,4 +20,4 @@
 %     cncrot_program_write('fanuc', 'G68.2', F, 4)
 %     cncrot_program_write(cncrot_dialects().FANUC, 'G68.2', F, 4)   % the same
 %
-%   See also CNCROT_PROGRAM_LINES, CNCROT_DIALECTS, CNCROT_FORM_VALUES.
+%   See also CNCROT_PROGRAM_LINES, CNCROT_PROGRAM_TRANSLATE, CNCROT_DIALECTS, CNCROT_FORM_VALUES.

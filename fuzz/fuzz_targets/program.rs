@@ -96,10 +96,13 @@ fuzz_target!(|data: &[u8]| {
         near_singular(dialect, text);
     }
     let mut translations: Vec<(i32, &CStr, bool, cncrot_program)> = (1..=6)
-        .flat_map(|d| {
-            forms(d)
-                .iter()
-                .map(move |f| (d, f.0, f.3, cncrot_program::default()))
+        .flat_map(|d| forms(d).iter().map(move |f| (d, f.0, f.3)))
+        .map(|(d, form, has_origin)| {
+            let mut q = cncrot_program::default();
+            // SAFETY: q is valid.
+            let init = unsafe { cncrot_program_init(&mut q, u32::from(form == c"ROT EULER")) };
+            assert_eq!(init, 0);
+            (d, form, has_origin, q)
         })
         .collect();
     for line in text.split(|&b| b == b'\n') {

@@ -58,7 +58,10 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     if (w < 0) {
       mxDestroyArray(text);
       mxDestroyArray(remarks);
-      raise_at(w, label(2, "lines"), "line", (long)k, n);
+      /* The target cannot say this change: the line it came from. */
+      char where[80];
+      snprintf(where, sizeof where, "%s, line %d", label(2, "lines"), (int)(k + 1));
+      raise_at(w, where, NULL, -1, 0);
     }
     mxSetCell(text, k, mxCreateString(out));
     mxSetCell(remarks, k, mxCreateString("applied"));

@@ -226,7 +226,21 @@ function test_cncrot(cases_file)
   prog = {'0 BEGIN PGM T MM', '1 TOOL CALL 1 Z S5000', '2 CYCL DEF 7.0 DATUM SHIFT', ...
           '3 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-', '4 L X+10 FMAX', '5 PLANE RESET STAY', '6 END PGM T MM'};
   [Fp, ~, frp, rp] = cncrot_program_lines('heidenhain', prog);
-  check(isequal(rp, {'passed'; 'passed'; 'passed'; 'applied'; 'passed'; 'applied'; 'passed'}), 'remarks per block');
+  check(isequal(rp, {'passed'; 'passed'; 'applied'; 'applied'; 'passed'; 'applied'; 'passed'}), 'remarks per block');
+  % A whole program translated: datum shifts in the target's own blocks, SEQ+ as _DIR +1, cancels as
+  % cancels, other blocks as they stand; the same texts as the C harness (test_program.c).
+  src = {'CYCL DEF 7.0 DATUM SHIFT', 'CYCL DEF 7.1 X+10', 'CYCL DEF 7.3 Z-5', ...
+         'PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX SEQ+', 'L Z+100 FMAX', 'PLANE RESET STAY'};
+  [tf, rf] = cncrot_program_translate('heidenhain', src, 'fanuc', 'G68.2', 4);
+  check(isequal(tf, {''; 'G52 X10. Y0. Z0.'; 'G52 X10. Y0. Z-5.'; 'G68.2 X0. Y0. Z0. I90. J30. K-90.'; 'L Z+100 FMAX'; 'G69'}), 'translate: into Fanuc');
+  check(isequal(rf, {'applied'; 'applied'; 'applied'; 'applied'; 'passed'; 'applied'}), 'translate: remarks');
+  ts = cncrot_program_translate("heidenhain", src, 'SINUMERIK', "CYCLE800", int8(4));
+  check(strcmp(ts{4}, 'CYCLE800(0,"",0,57,10,0,-5,0,30,0,0,0,0,1,0,0)') && strcmp(ts{6}, 'TRANS X=10 Y=0 Z=-5'), 'translate: into SINUMERIK, _DIR +1');
+  th = cncrot_program_translate('fanuc', {'G68.2 X10 Y20 I0 J30 K0'}, 'heidenhain', 'PLANE SPATIAL', 4);
+  check(isequal(th, {sprintf('CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+10\nCYCL DEF 7.2 Y+20\nCYCL DEF 7.3 Z+0\nPLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY')}), 'translate: an origin as cycle 7');
+  expect_message('cncrot:hasOrigin', @() cncrot_program_translate('fanuc', {'G68.2 X10 J30'}, 'sinumerik', 'ROT'), 'translate: origin into ROT', 'cncrot_program_translate', 'line 1');
+  expect_message('cncrot:badArgument', @() cncrot_program_translate('fanuc', {'G69'}, 'fanuc', 'PLANE SPATIAL'), 'translate: form of another dialect', 'cncrot_program_translate', 'argument 4 (form)');
+  expect_message('cncrot:missingWord', @() cncrot_program_translate('heidenhain', {'L X+1', 'PLANE SPATIAL SPA+0 SPB+30'}, 'fanuc', 'G68.2'), 'translate: a refused block', 'cncrot_program_translate', 'line 2');
   % The datum shift and the choice word kept in the state; PLANE RESET keeps the shift.
   [~, st] = cncrot_program_lines('heidenhain', {'CYCL DEF 7.1 X+10', 'PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN SEQ-'});
   check(isequal(st.shift, [10 0 0]) && st.choice == 1 && st.reference_axis == 0 && isequal(st.origin, [10 0 0]), 'state: shift and choice');

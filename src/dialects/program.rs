@@ -290,7 +290,9 @@ pub fn write_line(
 }
 
 /// The block of `spec` for `frame` (its cancel for the identity) with the choice words of
-/// `choice`; whether the decomposition was singular.
+/// `choice`; whether the decomposition was singular. Not inlined: a change writes a datum
+/// shift and a tilt one after the other, and their numbers' frames need not add up.
+#[inline(never)]
 fn tilt_block(
     dialect: Dialect,
     spec: &FormSpec,
@@ -395,6 +397,51 @@ pub fn write_change(
     decimals: i32,
     buf: &mut [u8],
 ) -> Result<(usize, bool), Error> {
+    let room = buf.len();
+    let mut out = Out::new(buf);
+    let singular = change(dialect, form_text, before, after, decimals, &mut out)?;
+    let len = match out.finish() {
+        Some(len) => len,
+        None if room >= MAX_CHANGE => return Err(Error::OutOfRange),
+        None => return Err(Error::NoRoom),
+    };
+    if out.longest_line() > dialect.max_line() {
+        return Err(Error::OutOfRange);
+    }
+    Ok((len, singular))
+}
+
+/// What [`write_change`] would write, measured without a buffer: its length and whether the
+/// decomposition was singular, or its refusal (never [`Error::NoRoom`]). The C boundary
+/// measures first and then writes straight into the caller's buffer, which it leaves
+/// untouched on a refusal.
+pub fn change_length(
+    dialect: Dialect,
+    form_text: &[u8],
+    before: &Program,
+    after: &Program,
+    decimals: i32,
+) -> Result<(usize, bool), Error> {
+    let mut out = Out::counter();
+    let singular = change(dialect, form_text, before, after, decimals, &mut out)?;
+    let len = out.finish().unwrap_or(usize::MAX);
+    if len > MAX_CHANGE || out.longest_line() > dialect.max_line() {
+        return Err(Error::OutOfRange);
+    }
+    Ok((len, singular))
+}
+
+/// The blocks of [`write_change`] into `out`; whether the decomposition was singular. Not
+/// inlined: measured and then written, its frame is on the stack once.
+#[inline(never)]
+fn change(
+    dialect: Dialect,
+    form_text: &[u8],
+    before: &Program,
+    after: &Program,
+    decimals: i32,
+    out: &mut Out,
+) -> Result<bool, Error> {
     let spec = dialect.parse_form(form_text)?;
     if decimals > crate::text::number::MAX_DECIMALS {
         return Err(Error::BadArgument);
@@ -403,8 +450,6 @@ pub fn write_change(
     after.check()?;
     let (s0, mut t0) = split(dialect, &spec, before);
     let (s1, t1) = split(dialect, &spec, after);
-    let room = buf.len();
-    let mut out = Out::new(buf);
     let mut blocks = 0;
     let mut next = |out: &mut Out| {
         if blocks > 0 {
@@ -413,56 +458,38 @@ pub fn write_change(
         blocks += 1;
     };
     let mut singular = false;
+    let closest = AxisChoice::Closest;
     if dialect.keeps_shift() {
         if s0 != s1 {
             if t0 != Frame::IDENTITY {
-                next(&mut out);
-                tilt_block(
-                    dialect,
-                    &spec,
-                    &Frame::IDENTITY,
-                    AxisChoice::Closest,
-                    decimals,
-                    &mut out,
-                )?;
+                next(out);
+                tilt_block(dialect, &spec, &Frame::IDENTITY, closest, decimals, out)?;
                 t0 = Frame::IDENTITY;
             }
-            next(&mut out);
-            dialect.write_shift(s1, decimals, &mut out)?;
+            next(out);
+            dialect.write_shift(s1, decimals, out)?;
         }
         if t0 != t1 || (t1 != Frame::IDENTITY && before.choice != after.choice) {
-            next(&mut out);
-            singular = tilt_block(dialect, &spec, &t1, after.choice, decimals, &mut out)?;
+            next(out);
+            singular = tilt_block(dialect, &spec, &t1, after.choice, decimals, out)?;
         }
     } else if (s0, t0) != (s1, t1) || (t1 != Frame::IDENTITY && before.choice != after.choice) {
         // One frame, which each command replaces whole: a translation alone is the shift
         // command, anything else the tilt block.
-        next(&mut out);
+        next(out);
         if t1 == Frame::IDENTITY && s1 != [0.0; 3] {
-            match dialect.write_shift(s1, decimals, &mut out) {
+            match dialect.write_shift(s1, decimals, out) {
                 Err(Error::NotAvailable) => {
                     let f = Frame::with_translations(s1, crate::IDENTITY, [0.0; 3]);
-                    tilt_block(dialect, &spec, &f, after.choice, decimals, &mut out)?;
+                    tilt_block(dialect, &spec, &f, after.choice, decimals, out)?;
                 }
                 r => r?,
             }
         } else {
-            singular = tilt_block(dialect, &spec, &t1, after.choice, decimals, &mut out)?;
+            singular = tilt_block(dialect, &spec, &t1, after.choice, decimals, out)?;
         }
     }
-    let len = match out.finish() {
-        Some(len) => len,
-        None if room >= MAX_CHANGE => return Err(Error::OutOfRange),
-        None => return Err(Error::NoRoom),
-    };
-    let text = buf.get(..len).unwrap_or(&[]);
-    if text
-        .split(|&b| b == b'\n')
-        .any(|l| l.len() > dialect.max_line())
-    {
-        return Err(Error::OutOfRange);
-    }
-    Ok((len, singular))
+    Ok(singular)
 }
 
 #[cfg(test)]

@@ -167,6 +167,16 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
     Ok(p)
 }
 
+/// [`load`] of a caller's state, its copy in a frame of its own (not inlined: a function
+/// that loads two states keeps only the results).
+///
+/// # Safety
+/// `c` points to a readable `cncrot_program` (any alignment).
+#[inline(never)]
+unsafe fn load_at(c: *const cncrot_program) -> Result<Program, Error> {
+    load(&c.read_unaligned())
+}
+
 #[inline(always)]
 fn store(p: &Program, options: u32) -> cncrot_program {
     let active = p.frame != Frame::IDENTITY;
@@ -577,10 +587,10 @@ pub unsafe extern "C" fn cncrot_program_write(
 /// # Safety
 /// `form` is NUL-terminated or has at least `FORM_MAX` readable bytes.
 #[inline(always)]
-unsafe fn read_form<'a>(
+unsafe fn read_form(
     form: *const c_char,
-    name: &'a mut [u8; FORM_MAX],
-) -> Result<&'a [u8], cncrot_status> {
+    name: &mut [u8; FORM_MAX],
+) -> Result<&[u8], cncrot_status> {
     let mut n = 0;
     loop {
         let slot = name.get_mut(n).ok_or(cncrot_status::BadArgument)?;
@@ -674,14 +684,26 @@ pub unsafe extern "C" fn cncrot_program_write_change(
             form.is_null(),
             out.is_null(),
         ])?;
-        let p0 = load(&before.read_unaligned())?;
-        let p1 = load(&after.read_unaligned())?;
+        let p0 = load_at(before)?;
+        let p1 = load_at(after)?;
         let d = Dialect::from_code(dialect)?;
         let mut name = [0u8; FORM_MAX];
         let name = read_form(form, &mut name)?;
-        let mut buf = [0u8; CNCROT_PROGRAM_CHANGE_MAX];
-        let (len, singular) = program::write_change(d, name, &p0, &p1, decimals, &mut buf)?;
-        put_text(buf.get(..len).ok_or(cncrot_status::Internal)?, out, cap)?;
+        // Measured first, then written straight into `out` (no text buffer on the stack):
+        // a refusal leaves it untouched.
+        let (len, singular) = program::change_length(d, name, &p0, &p1, decimals)?;
+        if cap <= len {
+            return Err(cncrot_status::NoRoom);
+        }
+        let dst = core::slice::from_raw_parts_mut(out.cast::<u8>(), len + 1);
+        let (body, nul) = dst.split_at_mut(len);
+        let (written, again) = program::write_change(d, name, &p0, &p1, decimals, body)?;
+        if (written, again) != (len, singular) {
+            return Err(cncrot_status::Internal);
+        }
+        if let Some(z) = nul.first_mut() {
+            *z = 0;
+        }
         Ok(super::status_of(singular))
     })
 }

@@ -347,11 +347,16 @@ pub struct Style {
     pub point: bool,
 }
 
-/// A caller's text buffer being filled; remembers whether anything did not fit.
+/// A caller's text buffer being filled; remembers whether anything did not fit, and the
+/// longest line.
 pub struct Out<'a> {
     buf: &'a mut [u8],
     len: usize,
     full: bool,
+    /// Counts without storing: the length a text would have.
+    counting: bool,
+    line: usize,
+    longest: usize,
 }
 
 impl<'a> Out<'a> {
@@ -361,11 +366,33 @@ impl<'a> Out<'a> {
             buf,
             len: 0,
             full: false,
+            counting: false,
+            line: 0,
+            longest: 0,
+        }
+    }
+
+    /// A text that is only measured (its length and longest line), without a buffer: a
+    /// writer called twice, to measure and then to write, needs no buffer of its own.
+    pub fn counter() -> Out<'static> {
+        Out {
+            counting: true,
+            ..Out::new(&mut [])
         }
     }
 
     /// Appends one byte (or remembers that it did not fit).
     pub fn byte(&mut self, b: u8) {
+        if b == b'\n' {
+            self.line = 0;
+        } else {
+            self.line += 1;
+            self.longest = self.longest.max(self.line);
+        }
+        if self.counting {
+            self.len = self.len.saturating_add(1);
+            return;
+        }
         match self.buf.get_mut(self.len) {
             Some(slot) => {
                 *slot = b;
@@ -373,6 +400,11 @@ impl<'a> Out<'a> {
             }
             None => self.full = true,
         }
+    }
+
+    /// The longest line appended so far, in bytes without its end.
+    pub fn longest_line(&self) -> usize {
+        self.longest
     }
 
     /// Appends bytes.
