@@ -1481,3 +1481,61 @@ fn translated_programs_read_back_as_the_source() {
         }
     }
 }
+
+/// LinuxCNC's `Q` on `G68.2`'s Euler form: the proper Euler order of `I J K` (digits 1 X,
+/// 2 Y, 3 Z), each about the axis as turned by the ones before; the default 313. Expected
+/// frames by hand: a single rotation is the elementary one about its axis; `G68.4` (as the
+/// remap's demo `g68.4 x50 q232 i45`) composes in the active plane, its origin taken there.
+#[test]
+fn linuxcnc_euler_orders() {
+    let f = |l: &str| read(Dialect::Fanuc, &[l]).frame;
+    assert!(dist(&f("G68.2 Q323 I90 J0 K0").rotation, &r(Axis::Z, 90.0)) < 1e-15);
+    assert!(dist(&f("G68.2 Q121 I0 J90 K0").rotation, &r(Axis::Y, 90.0)) < 1e-15);
+    assert!(dist(&f("G68.2 Q232 I0 J90 K0").rotation, &r(Axis::Z, 90.0)) < 1e-15);
+    assert!(dist(&f("G68.2 Q131 I0 J0 K-30").rotation, &r(Axis::X, -30.0)) < 1e-15);
+    assert_eq!(
+        f("G68.2 P0 Q313 X1 Y2 Z3 I10 J20 K30"),
+        f("G68.2 X1 Y2 Z3 I10 J20 K30")
+    );
+    // Q232 with all three: Ry(I)·Rz(J)·Ry(K).
+    let want = mul(
+        &mul(&r(Axis::Y, 10.0), &r(Axis::Z, 20.0)),
+        &r(Axis::Y, 30.0),
+    );
+    assert!(dist(&f("G68.2 Q232 I10 J20 K30").rotation, &want) < 1e-15);
+    let p = read(
+        Dialect::Fanuc,
+        &["G68.2 X10 I0 J30 K0", "G68.4 X50 Q232 I45 J0 K0"],
+    );
+    let want = mul(&r(Axis::X, 30.0), &r(Axis::Y, 45.0));
+    assert!(dist(&p.frame.rotation, &want) < 1e-15);
+    assert!(
+        frame_dist(
+            &Frame::with_translations(p.frame.translation, cncrot::IDENTITY, [0.0; 3]),
+            &Frame::with_translations([60.0, 0.0, 0.0], cncrot::IDENTITY, [0.0; 3])
+        ) < 1e-13
+    );
+    // Orders that are not proper Euler orders, and a fraction, are refused at the Q.
+    let e = Program::default()
+        .line(Dialect::Fanuc, b"G68.2 Q123 I0 J30 K0")
+        .unwrap_err();
+    assert_eq!(
+        (e.error, e.column, e.expected),
+        (
+            Error::BadSequence,
+            8,
+            Some("Q: 121, 131, 212, 232, 313 or 323")
+        )
+    );
+    let e = Program::default()
+        .line(Dialect::Fanuc, b"G68.2 Q313.5 J30")
+        .unwrap_err();
+    assert_eq!((e.error, e.column), (Error::BadArgument, 8));
+    // The roll-pitch-yaw form and R stay not followed: the sources disagree.
+    for l in ["G68.2 P1 Q123 I0 J30 K0", "G68.2 I0 J30 K0 R15"] {
+        let (_, remark) = Program::default()
+            .line(Dialect::Fanuc, l.as_bytes())
+            .unwrap();
+        assert_eq!(remark, Remark::NotFollowed, "{l}");
+    }
+}

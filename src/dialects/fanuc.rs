@@ -10,9 +10,9 @@ use crate::{
 };
 
 /// `G68.2 X Y Z I J K`: the new origin `X Y Z`, then Euler angles `I, J, K` about Z, the new
-/// X and the new Z (`F = Rz(I)·Rx(J)·Rz(K)`, intrinsic code 55) [3rd, strong: four
-/// independent implementations agree, one commissioned on a real machine]. Omitted words
-/// are 0.
+/// X and the new Z (`F = Rz(I)·Rx(J)·Rz(K)`, intrinsic code 55) \[3rd, strong: four
+/// independent implementations agree, one commissioned on a real machine\]. Omitted words
+/// are 0. [`g68_2_ordered`] takes LinuxCNC's other Euler orders (`Q`).
 ///
 /// ```
 /// use cncrot::dialects::fanuc::g68_2;
@@ -26,6 +26,36 @@ pub fn g68_2(origin: Vector, ijk: [f64; 3]) -> Frame {
         matrix_from_angles(Kind::Intrinsic, Sequence::ZXZ.into(), ijk),
         [0.0; 3],
     )
+}
+
+/// `G68.2 Q<order> X Y Z I J K`, LinuxCNC's Euler form in another proper Euler order: `order`
+/// the axes of the three rotations as digits (1 X, 2 Y, 3 Z) — 121, 131, 212, 232, 313 (the
+/// default, [`g68_2`]) or 323 —, `I, J, K` the angles about them, each about the axis as
+/// turned by the ones before (`F = R_q1(I)·R_q2(J)·R_q3(K)`) \[3rd: LinuxCNC's
+/// tilted-work-plane remap, `twp_calc_euler_rot_matrix`, the one public implementation; Fanuc's
+/// Euler form has no `Q`\]. Another order: [`Error::BadSequence`].
+///
+/// ```
+/// use cncrot::dialects::fanuc::{g68_2, g68_2_ordered};
+/// // Q313 is the default order.
+/// let f = g68_2_ordered([0.0; 3], 313, [10.0, 20.0, 30.0]).unwrap();
+/// assert_eq!(f, g68_2([0.0; 3], [10.0, 20.0, 30.0]));
+/// // Q232: I about Y, J about the new Z, K about the new Y; here 90° about Y alone.
+/// let g = g68_2_ordered([0.0; 3], 232, [90.0, 0.0, 0.0]).unwrap();
+/// assert!((g.rotation[0][2] - 1.0).abs() < 1e-15); // Z' along +X
+/// assert!(g68_2_ordered([0.0; 3], 123, [0.0; 3]).is_err()); // not a proper Euler order
+/// ```
+pub fn g68_2_ordered(origin: Vector, order: i32, ijk: [f64; 3]) -> Result<Frame, Error> {
+    if ![121, 131, 212, 232, 313, 323].contains(&order) {
+        return Err(Error::BadSequence);
+    }
+    let (a, b, c) = (order / 100, order / 10 % 10, order % 10);
+    let code = crate::AxisCode::new(a | b << 2 | c << 4)?;
+    Ok(Frame::with_translations(
+        origin,
+        matrix_from_angles(Kind::Intrinsic, code, ijk),
+        [0.0; 3],
+    ))
 }
 
 /// `I, J, K` of a rotation: J in [0, 180] (as post-processors keep J ≥ 0), I and K in
@@ -111,11 +141,13 @@ pub(crate) struct Fanuc;
 /// `G68.2`, `G68.4`, `G69`, `G53.1`/`G53.6` at the cursor (also Syntec's `G68.2` mode):
 /// `None` when none of them stands there.
 ///
-/// `G68.2 P0` is the Euler form (as `G68.2` without `P`); `P1` (roll, pitch, yaw in the
-/// order `Q`), `P2` (three points), `P3` (two vectors), `P4` (projection angles), LinuxCNC's
-/// `Q` on the Euler form and `R` are Fanuc's and LinuxCNC's other forms, whose words the
-/// library does not read yet: such a block is [`Block::NotFollowed`], never a guessed
-/// frame. `G53.1`/`G53.6` take a `P` (how the rotary axes turn), not kept yet.
+/// `G68.2 P0` is the Euler form (as `G68.2` without `P`), with LinuxCNC's `Q` for another
+/// proper Euler order ([`g68_2_ordered`]; `G68.4` too); `P1` (roll, pitch, yaw in the order
+/// `Q`: LinuxCNC's remap takes `I J K` by their place in `Q`, Mazak's manual by their axis,
+/// and whether the axes turn with the rotations is in no public text), `P2` (three points),
+/// `P3` (two vectors), `P4` (projection angles) and LinuxCNC's `R` are forms whose words the
+/// library does not read: such a block is [`Block::NotFollowed`], never a guessed frame.
+/// `G53.1`/`G53.6` take a `P` (how the rotary axes turn), not kept yet.
 pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineError>> {
     let column = c.column();
     let incremental = if c.keyword(b"G68.2") {
@@ -159,10 +191,19 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
                 expected: None,
             });
         }
-        if form != 0 || w.given[7] || w.given[8] {
+        if form != 0 || w.given[8] {
             return Ok(Block::NotFollowed);
         }
-        let call = g68_2(v3(&w.values, 0), v3(&w.values, 3));
+        let call = if w.given[7] {
+            let order = whole(w.values[7], w.column(7))?;
+            g68_2_ordered(v3(&w.values, 0), order, v3(&w.values, 3)).map_err(|e| LineError {
+                error: e,
+                column: w.column(7),
+                expected: Some("Q: 121, 131, 212, 232, 313 or 323"),
+            })?
+        } else {
+            g68_2(v3(&w.values, 0), v3(&w.values, 3))
+        };
         Ok(Block::Frame(m.with_frame(if incremental {
             g68_4(&m.tilt(), &call)
         } else {
