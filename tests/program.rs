@@ -1539,3 +1539,135 @@ fn linuxcnc_euler_orders() {
         assert_eq!(remark, Remark::NotFollowed, "{l}");
     }
 }
+
+/// Programs as CAM posts write them (a Fusion-style Heidenhain program with cycle 7 in
+/// German, TCPM, labels, Q parameters, arcs and approach blocks; an NX-style SINUMERIK program
+/// with TRAORI and orientation vectors; a Fanuc program with G52, G53.1 and G43.4): every
+/// block read, only the work-offset selections not followed, the frames where the tilts are
+/// (hand-derived: SPB+45 is Ry(45), G68.2 J45 is Rx(45)), and each program translated into
+/// every other dialect reads back as the same frames, block by block.
+#[test]
+fn cam_programs_read_end_to_end() {
+    let heidenhain = [
+        "0 BEGIN PGM 1001 MM",
+        "1 BLK FORM 0.1 Z X-50 Y-50 Z-50",
+        "2 BLK FORM 0.2 X+50 Y+50 Z+0",
+        "3 ; T1 D=10 CR=0 - ZMIN=-5 - flat end mill",
+        "4 TOOL CALL 1 Z S5000",
+        "5 L M3",
+        "6 PLANE RESET STAY",
+        "7 CYCL DEF 7.0 NULLPUNKT",
+        "8 CYCL DEF 7.1 X+0",
+        "9 CYCL DEF 7.2 Y+0",
+        "10 CYCL DEF 7.3 Z+0",
+        "11 PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN MB MAX FMAX SEQ+ TABLE ROT",
+        "12 L X+10 Y+20 FMAX",
+        "13 M129",
+        "14 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS",
+        "15 L X+1 Y+2 Z+3 B+45 C+0 F1000",
+        "16 FUNCTION RESET TCPM",
+        "17 CYCL DEF 32.0 TOLERANCE",
+        "18 CYCL DEF 32.1 T0.01",
+        "19 L Z+100 R0 FMAX M91",
+        "20 * - second op",
+        "21 PLANE RESET STAY",
+        "22 TRANS DATUM AXIS X+5 Y+5",
+        "23 PLANE SPATIAL SPA-30 SPB+0 SPC+0 MOVE DIST50 F1000 SEQ- COORD ROT",
+        "24 LBL 1",
+        "25 CALL LBL 1 REP2",
+        "26 Q1 = 5",
+        "27 FN 0: Q2 = +7",
+        "28 CC X+0 Y+0",
+        "29 C X+10 Y+0 DR+",
+        "30 APPR LCT X+10 Y+0 R5 RL F200",
+        "31 DEP LCT X+20 Y+0 R5",
+        "32 PLANE RESET MOVE FMAX",
+        "33 TRANS DATUM RESET",
+        "34 M30",
+        "35 END PGM 1001 MM",
+    ];
+    let sinumerik = [
+        "N10 G40 G17 G710 G94 G90 G60 G601 FNORM",
+        "N20 CYCLE800(1,\"TC1\",200000,57,0,0,0,0,45,0,0,0,0,-1,100,1)",
+        "N30 TRAORI",
+        "N50 ORIWKS",
+        "N60 CYCLE832(0.01,_ORI_ROUGH,0.1)",
+        "N70 G0 X10 Y20 A3=0 B3=0 C3=1",
+        "N80 CYCLE800()",
+        "N90 TRAFOOF",
+        "N95 TRANS X10 Y5",
+        "N96 AROT Z30",
+        "N97 ROT",
+        "N100 M30",
+    ];
+    let fanuc = [
+        "%",
+        "O1001 (TEST)",
+        "N10 G90 G94 G17 G49 G40 G80",
+        "N25 G52 X5. Y0. Z0.",
+        "N30 G68.2 X0. Y0. Z0. I0. J45. K0.",
+        "N40 G53.1",
+        "N50 G43 Z50. H1",
+        "N60 G0 X10. Y20.",
+        "N70 G69",
+        "N75 G52 X0 Y0 Z0",
+        "N80 G43.4 H1",
+        "N90 G1 X1. Y2. Z3. A45. C0. F1000.",
+        "N100 G49",
+        "N110 M30",
+        "%",
+    ];
+    let programs: [(Dialect, &[&str], usize, Frame); 3] = [
+        (
+            Dialect::Heidenhain,
+            &heidenhain,
+            11,
+            Frame::from_rotation(r(Axis::Y, 45.0)),
+        ),
+        (
+            Dialect::Sinumerik,
+            &sinumerik,
+            1,
+            Frame::from_rotation(r(Axis::Y, 45.0)),
+        ),
+        (
+            Dialect::Fanuc,
+            &fanuc,
+            4,
+            Frame::with_translations([5.0, 0.0, 0.0], r(Axis::X, 45.0), [0.0; 3]),
+        ),
+    ];
+    for (d, lines, tilted_at, tilt) in programs {
+        let mut p = Program::default();
+        for (k, l) in lines.iter().enumerate() {
+            let (q, remark) = p
+                .line(d, l.as_bytes())
+                .unwrap_or_else(|e| panic!("{d:?} {l}: {e:?}"));
+            assert_ne!(remark, Remark::NotFollowed, "{l}");
+            if k == tilted_at {
+                assert!(frame_dist(&q.frame, &tilt) < 1e-14, "{l}: {:?}", q.frame);
+            }
+            p = q;
+        }
+        assert_eq!(p.frame, Frame::IDENTITY, "{d:?}");
+        for (to, form) in [
+            (Dialect::Heidenhain, "PLANE SPATIAL"),
+            (Dialect::Fanuc, "G68.2"),
+            (Dialect::Sinumerik, "CYCLE800"),
+            (Dialect::Haas, "G268"),
+            (Dialect::Syntec, "G158"),
+        ] {
+            let (mut p, mut q) = (Program::default(), Program::default());
+            for l in lines {
+                let (next, _) = p.line(d, l.as_bytes()).unwrap();
+                let mut buf = [0u8; MAX_CHANGE];
+                let (n, _) = write_change(to, form.as_bytes(), &p, &next, 4, &mut buf).unwrap();
+                for block in buf[..n].split(|&b| b == b'\n').filter(|b| !b.is_empty()) {
+                    q = q.line(to, block).unwrap().0;
+                }
+                assert!(frame_dist(&q.frame, &next.frame) < 1e-4, "{l} -> {form}");
+                p = next;
+            }
+        }
+    }
+}
