@@ -583,12 +583,14 @@ static void writer_buffers(void) {
 
 /* A program translated block by block with cncrot_program_write_change: the target's own
  * datum-shift blocks and cancels (expected texts hand-derived: SPB+30 is a rotation about Y,
- * Rz(90) Rx(30) Rz(-90) in G68.2's Z, X', Z''), the choice word carried as _DIR, each text
+ * Rz(90) Rx(30) Rz(-90) in G68.2's Z, X', Z''), the choice word carried as _DIR, TURN as G53.1
+ * (CNCROT_POSITIONING_TURN, and a CYCLE800's swivel), each text
  * read back in the target dialect as the source frame; the refusals with `out` untouched. */
 static void translated_programs(void) {
   const char *src[] = {"CYCL DEF 7.0 DATUM SHIFT", "CYCL DEF 7.1 X+10", "CYCL DEF 7.3 Z-5",
                        "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX SEQ+", "L Z+100 FMAX", "PLANE RESET STAY"};
-  const char *fanuc[] = {"", "G52 X10. Y0. Z0.", "G52 X10. Y0. Z-5.", "G68.2 X0. Y0. Z0. I90. J30. K-90.", "", "G69"};
+  const char *fanuc[] = {"", "G52 X10. Y0. Z0.", "G52 X10. Y0. Z-5.", "G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1", "",
+                         "G69"};
   const char *sinumerik[] = {"", "TRANS X=10 Y=0 Z=0", "TRANS X=10 Y=0 Z=-5",
                              "CYCLE800(0,\"\",0,57,10,0,-5,0,30,0,0,0,0,1,0,0)", "", "TRANS X=10 Y=0 Z=-5"};
   cncrot_program before, after, fan, sn;
@@ -603,7 +605,12 @@ static void translated_programs(void) {
         cncrot_program_write_change(&before, &after, CNCROT_DIALECT_FANUC, "G68.2", 4, out, sizeof out),
         CNCROT_STATUS_OK);
     CHECK(strcmp(out, fanuc[k]) == 0, "%d: %s", k, out);
-    if (out[0]) CHECK_STATUS(cncrot_program_line(&fan, CNCROT_DIALECT_FANUC, out, strlen(out)), CNCROT_STATUS_OK);
+    /* One block per line. */
+    for (char *line = out, *end; *line; line = *end ? end + 1 : end) {
+      end = strchr(line, '\n');
+      if (!end) end = line + strlen(line);
+      CHECK_STATUS(cncrot_program_line(&fan, CNCROT_DIALECT_FANUC, line, (size_t)(end - line)), CNCROT_STATUS_OK);
+    }
     CHECK_STATUS(cncrot_program_write_change(&before, &after, CNCROT_DIALECT_SINUMERIK, "CYCLE800", 4, out,
                                              sizeof out),
                  CNCROT_STATUS_OK);
@@ -616,6 +623,9 @@ static void translated_programs(void) {
     CHECK_NEAR(a, want, 16, 1e-12);
     CHECK_NEAR(b, want, 16, 1e-12);
     CHECK(sn.choice == after.choice, "%d: choice %d %d", k, sn.choice, after.choice);
+    /* TURN is G53.1 in Fanuc and the swivel of CYCLE800. */
+    CHECK(fan.positioning == after.positioning && sn.positioning == after.positioning, "%d: positioning %d %d %d", k,
+          fan.positioning, sn.positioning, after.positioning);
     before = after;
   }
   /* Back from SINUMERIK: _DIR +1 is SEQ+; a G68.2's origin becomes the datum shift of a PLANE. */
@@ -627,7 +637,8 @@ static void translated_programs(void) {
   CHECK_STATUS(
       cncrot_program_write_change(&zero, &p, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", 4, out, sizeof out),
       CNCROT_STATUS_OK);
-  CHECK(strcmp(out, "PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY SEQ+") == 0, "%s", out);
+  CHECK(strcmp(out, "PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN FMAX SEQ+") == 0, "%s", out);
+  CHECK(p.positioning == CNCROT_POSITIONING_TURN, "a CYCLE800 swivels: %d", p.positioning);
   p = zero;
   const char *g682 = "G68.2 X10 Y20 I0 J30 K0";
   CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_FANUC, g682, strlen(g682)), CNCROT_STATUS_OK);

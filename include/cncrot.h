@@ -232,7 +232,24 @@
  * Mixed into the seal of every `cncrot_program` this version writes: a state of a version
  * with another meaning of the same bytes gets another constant, and is refused.
  */
-#define CNCROT_PROGRAM_FORMAT 1347569458
+#define CNCROT_PROGRAM_FORMAT 1347569459
+
+/**
+ * `cncrot_program.positioning`: the tilt command moves no axis (`STAY`, `G68.2` alone).
+ */
+#define CNCROT_POSITIONING_STAY 0
+
+/**
+ * `cncrot_program.positioning`: the rotary axes turn to the plane (`TURN`, `G53.1`,
+ * `G253`, `CYCLE800`).
+ */
+#define CNCROT_POSITIONING_TURN 1
+
+/**
+ * `cncrot_program.positioning`: the rotary axes turn, the tool tip kept in place (`MOVE`,
+ * `G53.6`).
+ */
+#define CNCROT_POSITIONING_MOVE 2
 
 /**
  * The room `cncrot_program_expected` needs: the longest text it writes and its NUL.
@@ -625,11 +642,11 @@ typedef struct cncrot_machine {
  * hand, a bit flipped in storage, a state of another version — is refused with
  * `CNCROT_STATUS_BAD_STATE`.
  *
- * Layout (168 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
+ * Layout (176 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
  * `angles` 96, `shift` 120, `active` 144, `dialect` 148, `options` 152, `choice` 156,
- * `reference_axis` 160, `reserved` 164. Accepted on entry: all zero bytes, or `reserved` =
- * the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..164 exclusive-or
- * `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
+ * `reference_axis` 160, `positioning` 164, `spare` 168, `reserved` 172. Accepted on entry:
+ * all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..172
+ * exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
  */
 typedef struct cncrot_program {
   /**
@@ -676,6 +693,17 @@ typedef struct cncrot_program {
    * 0 with `CNCROT_CHOOSE_CLOSEST`.
    */
   int32_t reference_axis;
+  /**
+   * How the program moves the machine to the active tilt: `CNCROT_POSITIONING_STAY`
+   * (`STAY`, a `G68.2` alone, frames; always while no tilt is active),
+   * `CNCROT_POSITIONING_TURN` (`TURN`, `G53.1`, `G253`, a `CYCLE800`),
+   * `CNCROT_POSITIONING_MOVE` (`MOVE`, `G53.6`: the tool tip kept in place).
+   */
+  int32_t positioning;
+  /**
+   * Zero (room for a later field without a change of size).
+   */
+  uint32_t spare;
   /**
    * The seal: 0 in the all-zero initial state, else the checksum described above (the
    * field keeps the name it had when it was reserved, so that the layout is unchanged).

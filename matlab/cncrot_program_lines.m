@@ -11,7 +11,9 @@
 %   numeric class), frames the frame after each line (4-by-4-by-N). The state keeps the
 %   datum shift apart from the tilt (state.shift: CYCL DEF 7, TRANS DATUM, G52) and the
 %   tilt's own choice words (state.choice 1 minus, 2 plus for SEQ-/SEQ+ and _DIR, with
-%   state.reference_axis; cncrot_program_axes follows them). The state carries a
+%   state.reference_axis; cncrot_program_axes follows them) and how the program moves the
+%   machine to the tilt (state.positioning 0 stay, 1 turn for TURN, G53.1, G253, CYCLE800,
+%   2 move for MOVE, G53.6). The state carries a
 %   seal: a state whose fields were changed is refused (cncrot:badState). Every block of a
 %   program is read: remarks (N-by-1 cell) says for each line 'applied' (a command that
 %   concerns the frame), 'passed' (motion, tool, M words, comments, program structure: the

@@ -13,8 +13,9 @@
 %     changes there. A datum shift is written with the target's own command (Heidenhain
 %     CYCL DEF 7, G52, SINUMERIK TRANS), a tilt's origin as a datum shift where the form
 %     has no origin words (PLANE), an active tilt cancelled before a new shift, cancels as
-%     cancels (G69, PLANE RESET STAY, CYCLE800()), and the tilt's choice words where the
-%     block has them (SEQ+/SEQ- <-> CYCLE800 _DIR +1/-1);
+%     cancels (G69, PLANE RESET STAY, CYCLE800()), the tilt's choice words where the
+%     block has them (SEQ+/SEQ- <-> CYCLE800 _DIR +1/-1) and how the machine moves to the
+%     plane (TURN/MOVE/STAY <-> G53.1/G53.6, G253);
 %   - any other block: the block as it stands (remarks says which).
 %   remarks (N-by-1 cell): 'applied', 'passed' or 'not followed' as cncrot_program_lines
 %   says; a 'not followed' block changes the frame in a way the library does not follow

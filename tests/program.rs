@@ -6,7 +6,8 @@
 mod common;
 
 use cncrot::dialects::program::{
-    write_change, write_line, AxisChoice, Dialect, LineError, Program, Remark, MAX_CHANGE,
+    write_change, write_line, AxisChoice, Dialect, LineError, Positioning, Program, Remark,
+    MAX_CHANGE,
 };
 use cncrot::{elementary, mul, Axis, Error, Frame, Matrix};
 use common::Rng;
@@ -317,11 +318,26 @@ fn fanuc_and_haas() {
     let f = rot(d, &["G68.4 I0 J15 K0", "G68.4 I0 J15 K0"]);
     assert!(dist(&f, &r(Axis::X, 30.0)) < 1e-15);
     assert_eq!(read(d, &["G68.2 J30", "G69"]).frame, Frame::IDENTITY);
-    // G53.1 and G53.6 turn the tool onto the plane: the frame stays; words after them are
-    // not theirs.
+    // G53.1 and G53.6 turn the tool onto the plane (G53.6 keeping the tool tip): the frame
+    // stays, the state says how the machine moves; words after them are not theirs.
     let tilted = read(d, &["G68.2 X5 J30"]);
-    assert_eq!(read(d, &["G68.2 X5 J30", "G53.6"]), tilted);
-    assert_eq!(read(d, &["G68.2 X5 J30", "N20 G53.1 (turn)"]), tilted);
+    assert_eq!(tilted.positioning, Positioning::Stay);
+    let moved = Program {
+        positioning: Positioning::Move,
+        ..tilted
+    };
+    assert_eq!(read(d, &["G68.2 X5 J30", "G53.6"]), moved);
+    let turned = Program {
+        positioning: Positioning::Turn,
+        ..tilted
+    };
+    assert_eq!(read(d, &["G68.2 X5 J30", "N20 G53.1 (turn)"]), turned);
+    // Without a tilt there is nothing to move to; a new tilt states its own way.
+    assert_eq!(read(d, &["G53.1"]).positioning, Positioning::Stay);
+    assert_eq!(
+        read(d, &["G68.2 J30", "G53.1", "G68.2 J40"]).positioning,
+        Positioning::Stay
+    );
     let e = tilted.line(d, b"G53.6 X1").unwrap_err();
     assert_eq!((e.error, e.column), (Error::UnknownWord, 7));
     let e = Program::default().line(d, b"G68.3 R0").unwrap_err();
@@ -1328,7 +1344,8 @@ fn changes_are_written_with_the_targets_own_blocks() {
             "G52 X10. Y0. Z0.",
             "G52 X10. Y20. Z0.",
             "G52 X10. Y20. Z-5.",
-            "G68.2 X0. Y0. Z0. I90. J30. K-90.",
+            // TURN: the axes turn to the plane, as G53.1 says.
+            "G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1",
             "",
             "G69",
             "",
@@ -1348,7 +1365,8 @@ fn changes_are_written_with_the_targets_own_blocks() {
         Dialect::Heidenhain,
         "PLANE SPATIAL",
     );
-    assert_eq!(plus, ["PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY SEQ+"]);
+    // The cycle swivels: TURN.
+    assert_eq!(plus, ["PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN FMAX SEQ+"]);
     let back = translate(
         Dialect::Heidenhain,
         &["PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY SEQ+"],
@@ -1370,7 +1388,8 @@ fn changes_are_written_with_the_targets_own_blocks() {
         translate(Dialect::Fanuc, &fanuc, Dialect::Heidenhain, "PLANE SPATIAL"),
         [
             "CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+10\nCYCL DEF 7.2 Y+20\nCYCL DEF 7.3 Z+0\nPLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY",
-            "",
+            // G53.1 turns the axes: the plane again, with TURN.
+            "PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN FMAX",
             "PLANE RESET STAY\nCYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+0\nCYCL DEF 7.2 Y+0\nCYCL DEF 7.3 Z+0",
             "CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+1\nCYCL DEF 7.2 Y+2\nCYCL DEF 7.3 Z+3",
             "PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY",
@@ -1380,7 +1399,7 @@ fn changes_are_written_with_the_targets_own_blocks() {
     // Into G68.2 the tilt keeps its own origin beside the G52.
     assert_eq!(
         translate(Dialect::Fanuc, &fanuc, Dialect::Haas, "G268")[..2],
-        ["G268 X10. Y20. Z0. I30. J0. K0. Q123", ""]
+        ["G268 X10. Y20. Z0. I30. J0. K0. Q123", "G253"]
     );
     // SINUMERIK's ROT keeps no shift apart: an origin cannot be written with it.
     let mut buf = [0u8; MAX_CHANGE];
@@ -1666,6 +1685,130 @@ fn cam_programs_read_end_to_end() {
                     q = q.line(to, block).unwrap().0;
                 }
                 assert!(frame_dist(&q.frame, &next.frame) < 1e-4, "{l} -> {form}");
+                p = next;
+            }
+        }
+    }
+}
+
+/// How the machine moves to the plane is kept and written in each dialect's own words:
+/// Heidenhain `STAY`/`TURN`/`MOVE` ↔ Fanuc-style `G53.1` (turn) and `G53.6` (turn, tool tip
+/// kept) after the `G68.2` ↔ Haas `G253`; a `CYCLE800` swivels (turn); a reset leaves
+/// nothing to move to.
+#[test]
+fn positioning_words_are_kept_and_written() {
+    use Positioning::{Move, Stay, Turn};
+    let h = |l: &str| read(Dialect::Heidenhain, &[l]).positioning;
+    assert_eq!(h("PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY"), Stay);
+    assert_eq!(
+        h("PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-"),
+        Turn
+    );
+    assert_eq!(
+        h("PLANE SPATIAL SPA+0 SPB+30 SPC+0 MOVE DIST50 F1000"),
+        Move
+    );
+    assert_eq!(h("PLANE SPATIAL SPA+0 SPB+30 SPC+0"), Stay);
+    assert_eq!(h("PLANE RESET TURN FMAX"), Stay);
+    assert_eq!(
+        read(Dialect::Haas, &["G268 J30 Q123", "G253"]).positioning,
+        Turn
+    );
+    assert_eq!(
+        read(
+            Dialect::Sinumerik,
+            &["CYCLE800(1,\"TC1\",200000,57,0,0,0,0,45,0,0,0,0,-1,100,1)"]
+        )
+        .positioning,
+        Turn
+    );
+    let cases: [(&str, &[&str], &[&str]); 3] = [
+        (
+            "MOVE",
+            &["G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.6"],
+            &["PLANE SPATIAL SPA+0 SPB+30 SPC+0 MOVE FMAX"],
+        ),
+        (
+            "TURN",
+            &["G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1"],
+            &["PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX"],
+        ),
+        (
+            "STAY",
+            &["G68.2 X0. Y0. Z0. I90. J30. K-90."],
+            &["PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY"],
+        ),
+    ];
+    for (word, fanuc, heidenhain) in cases {
+        let line = format!("PLANE SPATIAL SPA+0 SPB+30 SPC+0 {word}");
+        let src = [line.as_str()];
+        assert_eq!(
+            translate(Dialect::Heidenhain, &src, Dialect::Fanuc, "G68.2"),
+            fanuc
+        );
+        assert_eq!(
+            translate(
+                Dialect::Heidenhain,
+                &src,
+                Dialect::Heidenhain,
+                "PLANE SPATIAL"
+            ),
+            heidenhain
+        );
+    }
+    // Fanuc's two blocks become one PLANE, then the same PLANE with the way to move.
+    assert_eq!(
+        translate(
+            Dialect::Fanuc,
+            &["G68.2 I90 J30 K-90", "G53.6", "G69"],
+            Dialect::Heidenhain,
+            "PLANE SPATIAL"
+        ),
+        [
+            "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY",
+            "PLANE SPATIAL SPA+0 SPB+30 SPC+0 MOVE FMAX",
+            "PLANE RESET STAY"
+        ]
+    );
+    // Haas has one code for turning; Syntec's G68.2 mode has Fanuc's two.
+    assert_eq!(
+        translate(
+            Dialect::Fanuc,
+            &["G68.2 J30", "G53.6"],
+            Dialect::Haas,
+            "G268"
+        ),
+        ["G268 X0. Y0. Z0. I30. J0. K0. Q123", "G253"]
+    );
+    assert_eq!(
+        translate(
+            Dialect::Fanuc,
+            &["G68.2 J30", "G53.6"],
+            Dialect::Syntec,
+            "G68.2"
+        ),
+        ["G68.2 X0. Y0. Z0. I0. J30. K0.", "G53.6"]
+    );
+    // Every translation reads back with the same way of moving where the target says it.
+    for (to, form) in [
+        (Dialect::Heidenhain, "PLANE EULER"),
+        (Dialect::Fanuc, "G68.2"),
+        (Dialect::Syntec, "G68.2"),
+    ] {
+        for src in [
+            &["G68.2 J30", "G53.1", "G68.2 J40", "G53.6", "G69"][..],
+            &["G52 X5", "G68.2 J30", "G53.6", "G52 X6", "G69"],
+        ] {
+            let (mut p, mut q) = (Program::default(), Program::default());
+            for l in src {
+                let (next, _) = p.line(Dialect::Fanuc, l.as_bytes()).unwrap();
+                let mut buf = [0u8; MAX_CHANGE];
+                let (n, _) = write_change(to, form.as_bytes(), &p, &next, -1, &mut buf).unwrap();
+                for block in buf[..n].split(|&b| b == b'\n').filter(|b| !b.is_empty()) {
+                    q = q.line(to, block).unwrap().0;
+                }
+                assert_eq!(q.positioning, next.positioning, "{l} -> {form}");
+                assert!(frame_dist(&q.frame, &next.frame) < 1e-12, "{l} -> {form}");
                 p = next;
             }
         }

@@ -837,11 +837,13 @@ fn program_reads_a_whole_program_on_a_machine() {
     );
     assert_eq!(r.code, 0, "{}", r.stderr);
     let lines: Vec<&str> = r.stdout.lines().collect();
-    // Cycle 7's first line changes nothing in a Fanuc program: it is left out.
-    assert_eq!(lines.len(), 7, "{}", r.stdout);
+    // Cycle 7's first line changes nothing in a Fanuc program: it is left out; TURN is
+    // G53.1 after the G68.2.
+    assert_eq!(lines.len(), 9, "{}", r.stdout);
     assert_eq!(lines[1], "1 TOOL CALL 1 Z S5000");
     assert_eq!(lines[2], "G68.2 X0. Y0. Z0. I90. J30. K-90.");
-    assert_eq!(lines[5], "G69");
+    assert_eq!(lines[3], "G53.1");
+    assert_eq!(lines[7], "G69");
     let r = cncrot(
         &["program", p, "--dialect", "heidenhain", "--current", "0,0"],
         "",
@@ -1382,8 +1384,10 @@ fn program_to_writes_datum_shifts() {
         "G52 X10. Y0. Z0.",
         "G52 X10. Y20. Z0.",
         "G68.2 X0. Y0. Z0. I90. J30. K-90.",
+        "G53.1",
         "6 L X+10 Y+0 FMAX",
         "G68.2 X0. Y0. Z0. I0. J20. K90.",
+        "G53.1",
         "G69",
         "9 END PGM TILT MM",
     ];

@@ -274,7 +274,8 @@ fn near_singular(dialect: i32, data: &[u8]) {
 
 /// The program translated block by block into every dialect and form: the text
 /// `cncrot_program_write_change` writes for the state before and after the block, read in the
-/// target dialect on its own translated state, gives the source's frame. A refusal is one the
+/// target dialect on its own translated state, gives the source's frame (and its way of
+/// moving to a rotated plane where the target says it). A refusal is one the
 /// documentation names (an origin for a form without origin words in a dialect that keeps no
 /// shift apart, numbers the writer cannot write, a frame a form cannot express), leaves `out`
 /// untouched and ends that translation.
@@ -327,6 +328,17 @@ fn translated(
             }
         }
         let g = frame(state);
+        // Where the target says how to move (Heidenhain's PLANE, G68.2's G53.1 and G53.6),
+        // the way of moving to a rotated plane reads back.
+        let says = *dialect == 2 || (*form == c"G68.2" && (*dialect == 3 || *dialect == 4));
+        let rotated = (0..3)
+            .any(|i| (0..3).any(|j| after.rotation[3 * i + j] != f64::from(u8::from(i == j))));
+        if says && after.active == 1 && rotated {
+            assert_eq!(
+                state.positioning, after.positioning,
+                "{form:?} in dialect {dialect}"
+            );
+        }
         let d = g
             .iter()
             .zip(&f)

@@ -1,12 +1,12 @@
 /* The program state as a MATLAB struct (rotation, origin, angles, shift, active, dialect,
- * options, choice, reference_axis, seal) and back, and the reading of program lines: shared by
+ * options, choice, reference_axis, positioning, seal) and back, and the reading of program lines: shared by
  * cncrot_program_lines, cncrot_program_translate and cncrot_program_axes. */
 #ifndef CNCROT_PROGRAM_STATE_H
 #define CNCROT_PROGRAM_STATE_H
 #include "gateway.h"
 
 static const char *FIELDS[] = {"rotation", "origin", "angles", "shift", "active", "dialect",
-                               "options", "choice", "reference_axis", "seal"};
+                               "options", "choice", "reference_axis", "positioning", "seal"};
 
 /* A field of the state struct as n doubles (absent: zeros; wrong size: an error). */
 static void field(const mxArray *s, int arg, const char *name, double *out, size_t n) {
@@ -44,6 +44,8 @@ static void from_struct(const mxArray *s, int arg, cncrot_program *p) {
   p->choice = as_int(v[0]);
   field(s, arg, "reference_axis", v, 1);
   p->reference_axis = as_int(v[0]);
+  field(s, arg, "positioning", v, 1);
+  p->positioning = as_int(v[0]);
   field(s, arg, "active", v, 1);
   p->active = as_int(v[0]);
   field(s, arg, "dialect", v, 1);
@@ -67,7 +69,7 @@ static void from_struct(const mxArray *s, int arg, cncrot_program *p) {
 }
 
 static mxArray *to_struct(const cncrot_program *p) {
-  mxArray *s = mxCreateStructMatrix(1, 1, 10, FIELDS);
+  mxArray *s = mxCreateStructMatrix(1, 1, 11, FIELDS);
   mxArray *r = mxCreateDoubleMatrix(3, 3, mxREAL);
   to_col_major(p->rotation, mxGetDoubles(r));
   mxSetField(s, 0, "rotation", r);
@@ -81,6 +83,7 @@ static mxArray *to_struct(const cncrot_program *p) {
   mxSetField(s, 0, "shift", sh);
   mxSetField(s, 0, "choice", mxCreateDoubleScalar(p->choice));
   mxSetField(s, 0, "reference_axis", mxCreateDoubleScalar(p->reference_axis));
+  mxSetField(s, 0, "positioning", mxCreateDoubleScalar(p->positioning));
   mxSetField(s, 0, "active", mxCreateDoubleScalar(p->active));
   mxSetField(s, 0, "dialect", mxCreateDoubleScalar(p->dialect));
   mxSetField(s, 0, "options", mxCreateDoubleScalar(p->options));

@@ -232,7 +232,7 @@ function test_cncrot(cases_file)
   src = {'CYCL DEF 7.0 DATUM SHIFT', 'CYCL DEF 7.1 X+10', 'CYCL DEF 7.3 Z-5', ...
          'PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX SEQ+', 'L Z+100 FMAX', 'PLANE RESET STAY'};
   [tf, rf] = cncrot_program_translate('heidenhain', src, 'fanuc', 'G68.2', 4);
-  check(isequal(tf, {''; 'G52 X10. Y0. Z0.'; 'G52 X10. Y0. Z-5.'; 'G68.2 X0. Y0. Z0. I90. J30. K-90.'; 'L Z+100 FMAX'; 'G69'}), 'translate: into Fanuc');
+  check(isequal(tf, {''; 'G52 X10. Y0. Z0.'; 'G52 X10. Y0. Z-5.'; sprintf('G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1'); 'L Z+100 FMAX'; 'G69'}), 'translate: into Fanuc');
   check(isequal(rf, {'applied'; 'applied'; 'applied'; 'applied'; 'passed'; 'applied'}), 'translate: remarks');
   ts = cncrot_program_translate("heidenhain", src, 'SINUMERIK', "CYCLE800", int8(4));
   check(strcmp(ts{4}, 'CYCLE800(0,"",0,57,10,0,-5,0,30,0,0,0,0,1,0,0)') && strcmp(ts{6}, 'TRANS X=10 Y=0 Z=-5'), 'translate: into SINUMERIK, _DIR +1');
@@ -243,7 +243,7 @@ function test_cncrot(cases_file)
   expect_message('cncrot:missingWord', @() cncrot_program_translate('heidenhain', {'L X+1', 'PLANE SPATIAL SPA+0 SPB+30'}, 'fanuc', 'G68.2'), 'translate: a refused block', 'cncrot_program_translate', 'line 2');
   % The datum shift and the choice word kept in the state; PLANE RESET keeps the shift.
   [~, st] = cncrot_program_lines('heidenhain', {'CYCL DEF 7.1 X+10', 'PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN SEQ-'});
-  check(isequal(st.shift, [10 0 0]) && st.choice == 1 && st.reference_axis == 0 && isequal(st.origin, [10 0 0]), 'state: shift and choice');
+  check(isequal(st.shift, [10 0 0]) && st.choice == 1 && st.reference_axis == 0 && isequal(st.origin, [10 0 0]) && st.positioning == 1, 'state: shift, choice and positioning (TURN)');
   [Fr, st2] = cncrot_program_lines('heidenhain', 'PLANE RESET STAY', st);
   check(isequal(Fr, [eye(3) [10; 0; 0]; 0 0 0 1]) && st2.choice == 0, 'reset keeps the shift');
   check(isequal(Fp, eye(4)) && isequal(frp(:, :, 5), frp(:, :, 4)) && abs(frp(1, 3, 4) - 0.5) < 1e-15, 'a whole program''s frames');

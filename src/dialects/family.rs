@@ -36,6 +36,29 @@ pub struct Modal {
     pub shift: Vector,
     /// The solution the active tilt's own words choose (`SEQ±`, `_DIR`, `G53.1 P`).
     pub choice: AxisChoice,
+    /// How the program moves the machine to the active tilt (`TURN`, `G53.1`, …).
+    pub positioning: Positioning,
+}
+
+/// How a program moves the machine to its tilted plane, as its blocks say: Heidenhain's
+/// `STAY`, `TURN`, `MOVE`; Fanuc-style `G53.1` and `G53.6` after a `G68.2`; Haas `G253`.
+///
+/// ```
+/// use cncrot::dialects::program::Positioning;
+/// assert_eq!(Positioning::default(), Positioning::Stay);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Positioning {
+    /// The tilt command moves no axis (`STAY`; a `G68.2`, `G268` without `G53.1`, `G253`;
+    /// frames): the rotary axes are positioned by later blocks.
+    #[default]
+    Stay,
+    /// The rotary axes turn to the plane, the linear axes stay (`TURN`, `G53.1`, `G253`;
+    /// `CYCLE800`, which swivels).
+    Turn,
+    /// The rotary axes turn and the linear axes follow so that the tool tip keeps its place
+    /// (`MOVE`, `G53.6`).
+    Move,
 }
 
 /// The solution a block's own words choose for the rotary axes, where a tilt has two:
@@ -59,7 +82,7 @@ pub enum AxisChoice {
 
 impl Modal {
     /// This state with `tilt` active after the datum shift (TwinCAT's angles cleared: they
-    /// belong to `ROT`; the choice words cleared: a tilt states its own).
+    /// belong to `ROT`; the choice and positioning words cleared: a tilt states its own).
     pub fn with_frame(&self, tilt: Frame) -> Modal {
         let t = tilt.translation;
         let s = self.shift;
@@ -70,6 +93,7 @@ impl Modal {
             },
             angles: [0.0; 3],
             choice: AxisChoice::Closest,
+            positioning: Positioning::Stay,
             ..*self
         }
     }
@@ -261,15 +285,29 @@ pub(crate) trait Family {
     fn parse_form(text: &[u8]) -> Result<FormSpec, Error>;
 
     /// Writes the block of `spec` with its words (`words.len()` is the form's count) and,
-    /// where the block has words for it, the solution `choice` names ([`Error::NotAvailable`]
-    /// where the block cannot say that choice). A block without such words writes none.
+    /// where the block has words for them, the solution `choice` names
+    /// ([`Error::NotAvailable`] where the block cannot say that choice) and the
+    /// `positioning` (where [`Family::POSITIONING_IN_BLOCK`]). A block without such words
+    /// writes none.
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
-        choice: AxisChoice,
+        how: Motion,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error>;
+
+    /// Whether the tilt block itself says how the machine moves to the plane (Heidenhain's
+    /// `MOVE`/`TURN`/`STAY`).
+    const POSITIONING_IN_BLOCK: bool = false;
+
+    /// The block after a tilt of `spec` that moves the machine to it as `positioning` says
+    /// (`G53.1`, `G53.6`, `G253`), where the family has one; `None` where the tilt block says
+    /// it or nothing can.
+    fn positioning_block(spec: &FormSpec, positioning: Positioning) -> Option<&'static [u8]> {
+        let _ = (spec, positioning);
+        None
+    }
 
     /// Whether the family's reader keeps a datum shift apart from the tilt, kept when the
     /// tilt is cancelled (Heidenhain's cycle 7, Fanuc-style `G52`); `false` where one frame
@@ -300,6 +338,15 @@ pub(crate) trait Family {
         frame: &Frame,
         out: &mut [f64; MAX_VALUES],
     ) -> Result<bool, Error>;
+}
+
+/// What a tilt block's words say beside the plane: the solution and how to move there.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Motion {
+    /// The solution of the rotary axes.
+    pub choice: AxisChoice,
+    /// How the machine moves to the plane.
+    pub positioning: Positioning,
 }
 
 /// A form without a selector: anything but 0 is [`Error::BadArgument`].

@@ -118,7 +118,8 @@ pub const G69: Frame = Frame::IDENTITY;
 // Program lines.
 
 use super::family::{
-    no_selector, put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
+    no_selector, put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, Motion, Positioning,
+    MAX_VALUES,
 };
 use crate::text::number::{write_word, Out, Style};
 use crate::text::scan::{address_words, whole, Comments, Cursor, LineError, Syntax, Tokens};
@@ -162,12 +163,12 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
             Err(e) if e.error == Error::Parse => Some(Err(e)),
             Err(_) => None,
         };
-    } else if c.keyword(b"G53.1") || c.keyword(b"G53.6") {
+    } else if let Some(positioning) = turn_code(c) {
         // Turns the tool to the plane: no frame change.
         let p = address_words(c, *b"P", SYNTAX, false, (true, true));
         return Some(p.and_then(|w| {
             whole(w.values[0], w.column(0))?;
-            Ok(Block::Frame(*m))
+            Ok(Block::Frame(Modal { positioning, ..*m }))
         }));
     } else if c.keyword(b"G52") {
         return Some(read_g52(m, c));
@@ -210,6 +211,27 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
             call
         })))
     }))
+}
+
+/// `G53.1` (the rotary axes turn the tool to the plane) or `G53.6` (the same, the tool tip
+/// kept in place \[doc: Fanuc's tool center point retention\]) at the cursor.
+fn turn_code(c: &mut Cursor) -> Option<Positioning> {
+    if c.keyword(b"G53.1") {
+        Some(Positioning::Turn)
+    } else if c.keyword(b"G53.6") {
+        Some(Positioning::Move)
+    } else {
+        None
+    }
+}
+
+/// `G53.1` or `G53.6` after a tilt, as `positioning` says (nothing for [`Positioning::Stay`]).
+pub(crate) fn g53(positioning: Positioning) -> Option<&'static [u8]> {
+    match positioning {
+        Positioning::Stay => None,
+        Positioning::Turn => Some(b"G53.1"),
+        Positioning::Move => Some(b"G53.6"),
+    }
 }
 
 /// `G52 X Y Z` after its code: the local coordinate system, a datum shift along the
@@ -400,7 +422,7 @@ impl Family for Fanuc {
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
-        _: AxisChoice,
+        _: Motion,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {
@@ -413,6 +435,10 @@ impl Family for Fanuc {
 
     fn write_shift(shift: Vector, decimals: i32, out: &mut Out) -> Result<(), Error> {
         write_g52(shift, decimals, out)
+    }
+
+    fn positioning_block(_: &FormSpec, positioning: Positioning) -> Option<&'static [u8]> {
+        g53(positioning)
     }
 
     fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error> {

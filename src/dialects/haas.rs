@@ -67,7 +67,7 @@ pub const G269: Frame = Frame::IDENTITY;
 // Program lines.
 
 use super::family::{
-    put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
+    put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, Motion, Positioning, MAX_VALUES,
 };
 use super::fanuc;
 use crate::text::number::{write_integer, write_word, Out, Style};
@@ -123,7 +123,12 @@ impl Family for Haas {
         }
         if c.keyword(b"G253") {
             // Turns the tool to the plane: no frame change.
-            return c.end(true, true).map(|()| Block::Frame(*m));
+            return c.end(true, true).map(|()| {
+                Block::Frame(Modal {
+                    positioning: Positioning::Turn,
+                    ..*m
+                })
+            });
         }
         // Haas adds `G154` (work offsets P1–P99), `G100`/`G101` (mirroring), `G254`/`G255`
         // (dynamic work offsets) to the ISO codes the library does not follow.
@@ -172,7 +177,7 @@ impl Family for Haas {
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
-        _: AxisChoice,
+        _: Motion,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {
@@ -195,6 +200,15 @@ impl Family for Haas {
     /// `G52 X Y Z`, as Fanuc writes it.
     fn write_shift(shift: Vector, decimals: i32, out: &mut Out) -> Result<(), Error> {
         fanuc::write_g52(shift, decimals, out)
+    }
+
+    /// `G253` (the spindle turned normal to the plane) for either way of turning: Haas has no
+    /// code that keeps the tool tip \[choice\].
+    fn positioning_block(_: &FormSpec, positioning: Positioning) -> Option<&'static [u8]> {
+        match positioning {
+            Positioning::Stay => None,
+            Positioning::Turn | Positioning::Move => Some(b"G253"),
+        }
     }
 
     fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error> {

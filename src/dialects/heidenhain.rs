@@ -136,7 +136,8 @@ pub const RESET: Frame = Frame::IDENTITY;
 // Program lines.
 
 use super::family::{
-    no_selector, put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
+    no_selector, put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, Motion,
+    Positioning, MAX_VALUES,
 };
 use crate::text::number::{write_word, Out, Style};
 use crate::text::scan::{Comments, Cursor, Exponent, LineError, Syntax, Token, Tokens};
@@ -191,18 +192,28 @@ fn plane_words<const N: usize>(
 /// What may follow the plane's words: how to position (`MOVE`, `TURN`, `STAY`, `MB MAX`,
 /// `MB n`, `DIST n`, `FMAX`, `F n`, `F AUTO`) and which solution (`SEQ±`, `SYM±`,
 /// `TABLE ROT`, `COORD ROT`): they choose motion and machine axes, not the plane. Returns
+/// the positioning (`STAY` when none is written \[choice: the control asks for one\]) and
 /// the solution `SEQ±` chooses: the master axis at a positive (`+`) or negative angle, as
 /// the higher or lower of the pair \[doc\]; `SYM±`, the master axis on that side of its
 /// symmetry point, the same for a symmetry point at 0 \[choice\].
-fn options(c: &mut Cursor) -> Result<AxisChoice, LineError> {
-    let mut choice = AxisChoice::Closest;
+fn options(c: &mut Cursor) -> Result<Motion, LineError> {
+    let mut how = Motion::default();
     loop {
         c.spaces();
         if c.rest_is_comment(true, false) {
             c.end(true, false)?;
-            return Ok(choice);
+            return Ok(how);
         }
-        if c.keyword(b"MOVE") || c.keyword(b"TURN") || c.keyword(b"STAY") || c.keyword(b"FMAX") {
+        let positioning = [
+            (&b"MOVE"[..], Positioning::Move),
+            (b"TURN", Positioning::Turn),
+            (b"STAY", Positioning::Stay),
+        ];
+        if let Some(&(_, p)) = positioning.iter().find(|(k, _)| c.keyword(k)) {
+            how.positioning = p;
+            continue;
+        }
+        if c.keyword(b"FMAX") {
             continue;
         }
         if c.keyword(b"TABLE") || c.keyword(b"COORD") {
@@ -213,7 +224,7 @@ fn options(c: &mut Cursor) -> Result<AxisChoice, LineError> {
             continue;
         }
         if c.word(b"SEQ") || c.word(b"SYM") {
-            choice = match c.peek() {
+            how.choice = match c.peek() {
                 Some(b'+') => AxisChoice::Plus(0),
                 Some(b'-') => AxisChoice::Minus(0),
                 _ => return Err(c.missing("'+' or '-'")),
@@ -366,6 +377,7 @@ pub(crate) struct Heidenhain;
 impl Family for Heidenhain {
     const MAX_LINE: usize = 254;
     const KEEPS_SHIFT: bool = true;
+    const POSITIONING_IN_BLOCK: bool = true;
     const FORMS: &'static [FormInfo] = &[
         FormInfo {
             form: Form::PlaneSpatial,
@@ -470,9 +482,16 @@ impl Family for Heidenhain {
         } else {
             return Err(c.error(Error::UnknownWord));
         };
-        let choice = options(&mut c)?;
+        let how = options(&mut c)?;
+        // A reset moves the axes back, or not, but leaves no tilt to move to.
+        let positioning = if frame == RESET {
+            Positioning::Stay
+        } else {
+            how.positioning
+        };
         Ok(Block::Frame(Modal {
-            choice,
+            choice: how.choice,
+            positioning,
             ..m.with_frame(frame)
         }))
     }
@@ -508,14 +527,15 @@ impl Family for Heidenhain {
         true
     }
 
-    /// `PLANE <form> <words> STAY`: the words with their signs (`SPA+30`), then `STAY`
-    /// (the control asks for a positioning choice; `STAY` tilts the plane without moving),
-    /// then `SEQ-`/`SEQ+` for a choice of the master axis' sign.
+    /// `PLANE <form> <words> STAY`: the words with their signs (`SPA+30`), then the
+    /// positioning (`STAY` tilts the plane without moving; `TURN FMAX`, `MOVE FMAX` turn the
+    /// rotary axes at rapid, `MOVE` keeping the tool tip), then `SEQ-`/`SEQ+` for a choice of
+    /// the master axis' sign.
     #[inline(never)]
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
-        choice: AxisChoice,
+        how: Motion,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {
@@ -543,9 +563,13 @@ impl Family for Heidenhain {
         for (name, &v) in names.iter().zip(words) {
             write_word(out, name, v, decimals, style)?;
         }
-        out.text(b" STAY");
+        out.text(match how.positioning {
+            Positioning::Stay => &b" STAY"[..],
+            Positioning::Turn => b" TURN FMAX",
+            Positioning::Move => b" MOVE FMAX",
+        });
         // `SEQ±` names the master axis' sign; another axis cannot be named on the block.
-        match choice {
+        match how.choice {
             AxisChoice::Closest => {}
             AxisChoice::Minus(0) => out.text(b" SEQ-"),
             AxisChoice::Plus(0) => out.text(b" SEQ+"),

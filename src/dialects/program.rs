@@ -9,8 +9,8 @@
 //! this module holds what is the same for all: the state, line ends and lengths, the checks
 //! of a restored state and of a written line.
 
-pub use super::family::AxisChoice;
-use super::family::{Block, FormSpec, Modal, MAX_VALUES};
+pub use super::family::{AxisChoice, Positioning};
+use super::family::{Block, FormSpec, Modal, Motion, MAX_VALUES};
 use super::form;
 pub use super::registry::Dialect;
 use crate::kinematics::{Choice, Machine, Rule};
@@ -51,6 +51,9 @@ pub struct Program {
     /// The solution the active tilt's own words choose for the rotary axes (`SEQ±`,
     /// `_DIR`, `G53.1 P`); [`Program::axes`] follows it.
     pub choice: AxisChoice,
+    /// How the program moves the machine to the active tilt (`STAY`, `TURN`, `MOVE`,
+    /// `G53.1`, `G53.6`, `G253`; a `CYCLE800` swivels); stay when no tilt is active.
+    pub positioning: Positioning,
 }
 
 /// What a block did, beside the state it leaves (`CNCROT_STATUS_PASSED` and
@@ -118,6 +121,12 @@ impl Program {
                 euler: next.euler,
                 shift: next.shift,
                 choice: next.choice,
+                // Nothing active: nothing to move to (a `G53.1` without a tilt).
+                positioning: if next.frame == Frame::IDENTITY {
+                    Positioning::Stay
+                } else {
+                    next.positioning
+                },
             },
             Remark::Applied,
         ))
@@ -173,6 +182,7 @@ impl Program {
             euler: self.euler,
             shift: self.shift,
             choice: self.choice,
+            positioning: self.positioning,
         }
     }
 
@@ -200,7 +210,8 @@ impl Program {
         let consistent = match self.dialect {
             Some(d) => d.consistent(&self.modal()),
             None => self.angles == [0.0; 3],
-        };
+        } && (self.frame != Frame::IDENTITY
+            || self.positioning == Positioning::Stay);
         if consistent {
             Ok(())
         } else {
@@ -270,14 +281,7 @@ pub fn write_line(
     // dialect cannot read: no buffer would help.
     let room = buf.len();
     let mut out = Out::new(buf);
-    let singular = tilt_block(
-        dialect,
-        &spec,
-        frame,
-        AxisChoice::Closest,
-        decimals,
-        &mut out,
-    )?;
+    let singular = tilt_block(dialect, &spec, frame, Motion::default(), decimals, &mut out)?;
     let len = match out.finish() {
         Some(len) => len,
         None if room >= dialect.max_line() => return Err(Error::OutOfRange),
@@ -289,15 +293,15 @@ pub fn write_line(
     Ok((len, singular))
 }
 
-/// The block of `spec` for `frame` (its cancel for the identity) with the choice words of
-/// `choice`; whether the decomposition was singular. Not inlined: a change writes a datum
+/// The block of `spec` for `frame` (its cancel for the identity) with the words of `how`
+/// the block has; whether the decomposition was singular. Not inlined: a change writes a datum
 /// shift and a tilt one after the other, and their numbers' frames need not add up.
 #[inline(never)]
 fn tilt_block(
     dialect: Dialect,
     spec: &FormSpec,
     frame: &Frame,
-    choice: AxisChoice,
+    how: Motion,
     decimals: i32,
     out: &mut Out,
 ) -> Result<bool, Error> {
@@ -314,7 +318,7 @@ fn tilt_block(
         // A cancel has no angles whose decomposition could be singular.
         return Ok(false);
     }
-    dialect.write_line(spec, words, choice, decimals, out)?;
+    dialect.write_line(spec, words, how, decimals, out)?;
     Ok(singular)
 }
 
@@ -458,22 +462,33 @@ fn change(
         blocks += 1;
     };
     let mut singular = false;
-    let closest = AxisChoice::Closest;
+    let stay = Motion::default();
+    let how = Motion {
+        choice: after.choice,
+        positioning: after.positioning,
+    };
+    let active = t1 != Frame::IDENTITY;
+    let words_changed = before.choice != after.choice;
+    let moved = before.positioning != after.positioning;
+    // Where the tilt block says how to move, a new way of moving is a new tilt block.
+    let rewrite = active && (words_changed || (moved && dialect.positioning_in_block()));
+    let mut tilt_written = false;
     if dialect.keeps_shift() {
         if s0 != s1 {
             if t0 != Frame::IDENTITY {
                 next(out);
-                tilt_block(dialect, &spec, &Frame::IDENTITY, closest, decimals, out)?;
+                tilt_block(dialect, &spec, &Frame::IDENTITY, stay, decimals, out)?;
                 t0 = Frame::IDENTITY;
             }
             next(out);
             dialect.write_shift(s1, decimals, out)?;
         }
-        if t0 != t1 || (t1 != Frame::IDENTITY && before.choice != after.choice) {
+        if t0 != t1 || rewrite {
             next(out);
-            singular = tilt_block(dialect, &spec, &t1, after.choice, decimals, out)?;
+            singular = tilt_block(dialect, &spec, &t1, how, decimals, out)?;
+            tilt_written = true;
         }
-    } else if (s0, t0) != (s1, t1) || (t1 != Frame::IDENTITY && before.choice != after.choice) {
+    } else if (s0, t0) != (s1, t1) || rewrite {
         // One frame, which each command replaces whole: a translation alone is the shift
         // command, anything else the tilt block.
         next(out);
@@ -481,12 +496,20 @@ fn change(
             match dialect.write_shift(s1, decimals, out) {
                 Err(Error::NotAvailable) => {
                     let f = Frame::with_translations(s1, crate::IDENTITY, [0.0; 3]);
-                    tilt_block(dialect, &spec, &f, after.choice, decimals, out)?;
+                    tilt_block(dialect, &spec, &f, how, decimals, out)?;
                 }
                 r => r?,
             }
         } else {
-            singular = tilt_block(dialect, &spec, &t1, after.choice, decimals, out)?;
+            singular = tilt_block(dialect, &spec, &t1, how, decimals, out)?;
+            tilt_written = true;
+        }
+    }
+    // Where a block of its own moves the machine (`G53.1`): after a new tilt, or alone.
+    if active && (tilt_written || moved) {
+        if let Some(text) = dialect.positioning_block(&spec, after.positioning) {
+            next(out);
+            out.text(text);
         }
     }
     Ok(singular)

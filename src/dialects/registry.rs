@@ -6,7 +6,9 @@
 //! `form_values`, the C boundary's codes) goes through the `match`es generated here: static
 //! dispatch, no function pointers, so the no-panic proof sees every path.
 
-use super::family::{AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES};
+use super::family::{
+    Block, Family, Form, FormInfo, FormSpec, Modal, Motion, Positioning, MAX_VALUES,
+};
 use super::{fanuc, haas, heidenhain, sinumerik, syntec, twincat};
 use crate::text::number::Out;
 use crate::text::scan::LineError;
@@ -77,12 +79,28 @@ macro_rules! families {
                 self,
                 spec: &FormSpec,
                 words: &[f64],
-                choice: AxisChoice,
+                how: Motion,
                 decimals: i32,
                 out: &mut Out,
             ) -> Result<(), Error> {
                 match self {
-                    $(Dialect::$name => <$family>::write_line(spec, words, choice, decimals, out),)*
+                    $(Dialect::$name => <$family>::write_line(spec, words, how, decimals, out),)*
+                }
+            }
+
+            pub(crate) const fn positioning_in_block(self) -> bool {
+                match self {
+                    $(Dialect::$name => <$family>::POSITIONING_IN_BLOCK,)*
+                }
+            }
+
+            pub(crate) fn positioning_block(
+                self,
+                spec: &FormSpec,
+                positioning: Positioning,
+            ) -> Option<&'static [u8]> {
+                match self {
+                    $(Dialect::$name => <$family>::positioning_block(spec, positioning),)*
                 }
             }
 

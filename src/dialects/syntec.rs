@@ -139,7 +139,7 @@ fn normal(n: Vector) -> Result<Matrix, Error> {
 // Program lines.
 
 use super::family::{
-    put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
+    put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, Motion, Positioning, MAX_VALUES,
 };
 use super::fanuc;
 use crate::text::number::{write_integer, write_word, Out};
@@ -243,7 +243,7 @@ impl Family for Syntec {
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
-        _: AxisChoice,
+        _: Motion,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {
@@ -267,6 +267,14 @@ impl Family for Syntec {
     /// `G52 X Y Z`, as Fanuc writes it.
     fn write_shift(shift: Vector, decimals: i32, out: &mut Out) -> Result<(), Error> {
         fanuc::write_g52(shift, decimals, out)
+    }
+
+    /// `G53.1`/`G53.6` in the `G68.2` mode; `G158` has none in any public text.
+    fn positioning_block(spec: &FormSpec, positioning: Positioning) -> Option<&'static [u8]> {
+        match spec.form {
+            Form::G68_2 => fanuc::g53(positioning),
+            _ => None,
+        }
     }
 
     fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error> {

@@ -83,7 +83,7 @@ pub fn rot_angles(m: &Matrix) -> Result<([f64; 3], bool), Error> {
 // Program lines.
 
 use super::family::{
-    no_selector, put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
+    no_selector, put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, Motion, MAX_VALUES,
 };
 use crate::text::number::{write_word, Out, Style};
 use crate::text::scan::{address_words, Comments, Cursor, LineError, Syntax, Tokens};
@@ -213,7 +213,7 @@ impl Family for Twincat {
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
-        _: AxisChoice,
+        _: Motion,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {

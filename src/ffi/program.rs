@@ -6,7 +6,7 @@ use super::machine::{
     cncrot_machine, CNCROT_CHOOSE_CLOSEST, CNCROT_CHOOSE_MINUS, CNCROT_CHOOSE_PLUS,
 };
 use super::{cncrot_status, guard, non_null, read_finite, write};
-use crate::dialects::program::{self, AxisChoice, Dialect, Program, Remark};
+use crate::dialects::program::{self, AxisChoice, Dialect, Positioning, Program, Remark};
 use crate::{crc32, Error, Frame};
 use core::ffi::c_char;
 
@@ -60,11 +60,11 @@ const FORM_MAX: usize = 64;
 /// hand, a bit flipped in storage, a state of another version — is refused with
 /// `CNCROT_STATUS_BAD_STATE`.
 ///
-/// Layout (168 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
+/// Layout (176 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
 /// `angles` 96, `shift` 120, `active` 144, `dialect` 148, `options` 152, `choice` 156,
-/// `reference_axis` 160, `reserved` 164. Accepted on entry: all zero bytes, or `reserved` =
-/// the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..164 exclusive-or
-/// `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
+/// `reference_axis` 160, `positioning` 164, `spare` 168, `reserved` 172. Accepted on entry:
+/// all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..172
+/// exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct cncrot_program {
@@ -94,6 +94,13 @@ pub struct cncrot_program {
     /// axis (for a head the axis nearest the tool, else the one nearest the machine base);
     /// 0 with `CNCROT_CHOOSE_CLOSEST`.
     pub reference_axis: i32,
+    /// How the program moves the machine to the active tilt: `CNCROT_POSITIONING_STAY`
+    /// (`STAY`, a `G68.2` alone, frames; always while no tilt is active),
+    /// `CNCROT_POSITIONING_TURN` (`TURN`, `G53.1`, `G253`, a `CYCLE800`),
+    /// `CNCROT_POSITIONING_MOVE` (`MOVE`, `G53.6`: the tool tip kept in place).
+    pub positioning: i32,
+    /// Zero (room for a later field without a change of size).
+    pub spare: u32,
     /// The seal: 0 in the all-zero initial state, else the checksum described above (the
     /// field keeps the name it had when it was reserved, so that the layout is unchanged).
     pub reserved: u32,
@@ -101,13 +108,22 @@ pub struct cncrot_program {
 
 /// Mixed into the seal of every `cncrot_program` this version writes: a state of a version
 /// with another meaning of the same bytes gets another constant, and is refused.
-pub const CNCROT_PROGRAM_FORMAT: u32 = 0x5052_4732;
+pub const CNCROT_PROGRAM_FORMAT: u32 = 0x5052_4733;
+
+/// `cncrot_program.positioning`: the tilt command moves no axis (`STAY`, `G68.2` alone).
+pub const CNCROT_POSITIONING_STAY: i32 = 0;
+/// `cncrot_program.positioning`: the rotary axes turn to the plane (`TURN`, `G53.1`,
+/// `G253`, `CYCLE800`).
+pub const CNCROT_POSITIONING_TURN: i32 = 1;
+/// `cncrot_program.positioning`: the rotary axes turn, the tool tip kept in place (`MOVE`,
+/// `G53.6`).
+pub const CNCROT_POSITIONING_MOVE: i32 = 2;
 
 const PROGRAM_SIZE: usize = core::mem::size_of::<cncrot_program>();
 /// The bytes the seal covers: everything before it.
 const SEALED: usize = core::mem::offset_of!(cncrot_program, reserved);
 // No padding (every byte is a field's, so every byte is covered), and the documented layout.
-const _: () = assert!(SEALED == 164 && PROGRAM_SIZE == 168);
+const _: () = assert!(SEALED == 172 && PROGRAM_SIZE == 176);
 
 fn program_bytes(c: &cncrot_program) -> &[u8; PROGRAM_SIZE] {
     // SAFETY: a plain repr(C) struct of integers and doubles without padding (asserted
@@ -155,6 +171,15 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
         CNCROT_CHOOSE_PLUS => AxisChoice::Plus(axis),
         _ => return Err(Error::BadState),
     };
+    let positioning = match c.positioning {
+        CNCROT_POSITIONING_STAY => Positioning::Stay,
+        CNCROT_POSITIONING_TURN if c.active == 1 => Positioning::Turn,
+        CNCROT_POSITIONING_MOVE if c.active == 1 => Positioning::Move,
+        _ => return Err(Error::BadState),
+    };
+    if c.spare != 0 {
+        return Err(Error::BadState);
+    }
     let p = Program {
         frame,
         angles: c.angles,
@@ -162,6 +187,7 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
         euler: c.options & CNCROT_PROGRAM_SINUMERIK_EULER != 0,
         shift: c.shift,
         choice,
+        positioning,
     };
     p.check().map_err(|_| Error::BadState)?;
     Ok(p)
@@ -194,6 +220,11 @@ fn store(p: &Program, options: u32) -> cncrot_program {
         AxisChoice::Minus(k) => (CNCROT_CHOOSE_MINUS, i32::from(k)),
         AxisChoice::Plus(k) => (CNCROT_CHOOSE_PLUS, i32::from(k)),
     };
+    let positioning = match p.positioning {
+        Positioning::Stay => CNCROT_POSITIONING_STAY,
+        Positioning::Turn => CNCROT_POSITIONING_TURN,
+        Positioning::Move => CNCROT_POSITIONING_MOVE,
+    };
     let mut c = cncrot_program {
         rotation,
         origin,
@@ -204,6 +235,8 @@ fn store(p: &Program, options: u32) -> cncrot_program {
         options,
         choice,
         reference_axis,
+        positioning,
+        spare: 0,
         reserved: 0,
     };
     c.reserved = seal_of(&c);
@@ -782,7 +815,7 @@ mod tests {
         assert_eq!(load(&hand), Err(Error::BadState));
     }
 
-    /// The seal is what the header documents: the CRC-32 of bytes 0..164 exclusive-or
+    /// The seal is what the header documents: the CRC-32 of bytes 0..172 exclusive-or
     /// `CNCROT_PROGRAM_FORMAT`; a state sealed without the format (another version's) is
     /// refused.
     #[test]
@@ -793,9 +826,9 @@ mod tests {
             .0;
         let c = store(&p, 0);
         let bytes = program_bytes(&c);
-        assert_eq!(c.reserved, crc32(&bytes[..164]) ^ 0x5052_4732);
+        assert_eq!(c.reserved, crc32(&bytes[..172]) ^ 0x5052_4733);
         let mut other = c;
-        other.reserved = crc32(&bytes[..164]);
+        other.reserved = crc32(&bytes[..172]);
         assert_eq!(load(&other), Err(Error::BadState));
     }
 

@@ -371,7 +371,8 @@ pub fn orirpy_angles(v: Vector) -> Result<([f64; 3], bool), Error> {
 // Program lines.
 
 use super::family::{
-    put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, MAX_VALUES,
+    put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, Motion, Positioning,
+    MAX_VALUES,
 };
 use crate::text::number::{write, write_integer, write_word, Out, Style};
 use crate::text::scan::{
@@ -551,8 +552,11 @@ fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
     }
     let allowed = "_MODE: a swivel mode (57: axis by axis X, Y, Z; 27: Z, Y, X; ...)";
     let call = cycle800_words(mode, &w).map_err(refused(args.column(3), allowed))?;
+    // The cycle swivels the machine to the plane [choice: `_ST`'s higher digits, which may
+    // say "swivel: no", are not public].
     Ok(Modal {
         choice,
+        positioning: Positioning::Turn,
         ..m.with_frame(cycle800_apply(&m.frame, st % 10 == 1, &call))
     })
 }
@@ -846,7 +850,7 @@ impl Family for Sinumerik {
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
-        choice: AxisChoice,
+        how: Motion,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {
@@ -864,7 +868,7 @@ impl Family for Sinumerik {
                 }
                 // `_DIR`: "minus" unless the plus direction is asked for [choice: CYCLE800
                 // always names a direction]; the direction-reference axis is machine data.
-                out.text(match choice {
+                out.text(match how.choice {
                     AxisChoice::Closest | AxisChoice::Minus(0) => b",-1,0,0)",
                     AxisChoice::Plus(0) => b",1,0,0)",
                     _ => return Err(Error::NotAvailable),
