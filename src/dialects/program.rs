@@ -371,6 +371,11 @@ fn split(dialect: Dialect, spec: &FormSpec, p: &Program) -> (Vector, Frame) {
 ///   `_DIR` −1/+1 (−1 also for no choice: the cycle always names one \[choice\]); the
 ///   others have none on the block. A choice of an axis other than the master axis cannot be
 ///   written ([`Error::NotAvailable`]). Nothing active is written as the cancel.
+/// - How the machine moves to the plane ([`Program::positioning`]) goes where the dialect
+///   says it: Heidenhain's `STAY`, `TURN FMAX`, `MOVE FMAX` in the `PLANE` (a new way of
+///   moving to the same plane is the `PLANE` again); Fanuc-style `G53.1`/`G53.6` and Haas
+///   `G253` as a block after the tilt, or alone when only the way of moving changed.
+///   CYCLE800 always swivels; `ROT`, TwinCAT and `G158` say nothing.
 ///
 /// Refused as by [`write_line`], and: a state [`Program::check`] refuses
 /// ([`Error::NotFinite`], [`Error::BadArgument`], [`Error::NotARotation`]); [`Error::NoRoom`]
@@ -419,6 +424,18 @@ pub fn write_change(
 /// decomposition was singular, or its refusal (never [`Error::NoRoom`]). The C boundary
 /// measures first and then writes straight into the caller's buffer, which it leaves
 /// untouched on a refusal.
+///
+/// ```
+/// use cncrot::dialects::program::{change_length, write_change, Dialect, Program};
+/// let p0 = Program::default();
+/// let (p1, _) = p0.line(Dialect::Heidenhain, b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN").unwrap();
+/// // `G68.2 X0. Y0. Z0. I90. J30. K-90.`, then `G53.1` for TURN.
+/// let (n, _) = change_length(Dialect::Fanuc, b"G68.2", &p0, &p1, 4).unwrap();
+/// assert_eq!(n, 39);
+/// let mut buf = [0u8; 2048];
+/// assert_eq!(write_change(Dialect::Fanuc, b"G68.2", &p0, &p1, 4, &mut buf), Ok((n, false)));
+/// assert_eq!(&buf[..n], b"G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1");
+/// ```
 pub fn change_length(
     dialect: Dialect,
     form_text: &[u8],

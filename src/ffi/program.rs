@@ -678,6 +678,10 @@ const _: () = assert!(CNCROT_PROGRAM_CHANGE_MAX == program::MAX_CHANGE);
 ///   `SEQ-`/`SEQ+`, CYCLE800 `_DIR` -1/+1 (-1 also for no choice: the cycle always names
 ///   one); Fanuc, Syntec, Haas and TwinCAT blocks have none. Nothing active is written as
 ///   the form's cancel.
+/// - How the machine moves to the plane (`positioning`) goes where the dialect says it:
+///   Heidenhain `STAY`, `TURN FMAX`, `MOVE FMAX` in the `PLANE`; Fanuc-style `G53.1` /
+///   `G53.6` and Haas `G253` as a block after the tilt, or alone when only the way of moving
+///   changed. CYCLE800 always swivels; `ROT`, TwinCAT and `G158` say nothing.
 ///
 /// Returns 0 or `CNCROT_STATUS_SINGULAR` (as `cncrot_program_write`), or a negative status
 /// with `out` untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a state
