@@ -598,7 +598,11 @@ fn cycle600_line(m: &Modal, c: &mut Cursor, column: usize) -> Result<Modal, Line
         ..Default::default()
     };
     let next = cycle600::cycle600_in(&state, None, &call).map_err(at(column))?;
-    Ok(m.with_frame(next.frame))
+    // It swivels as the CYCLE800 it calls does.
+    Ok(Modal {
+        positioning: Positioning::Turn,
+        ..m.with_frame(next.frame)
+    })
 }
 
 /// The frame of `CYCLE800`'s words `_X0 _Y0 _Z0 _A _B _C _X1 _Y1 _Z1` in `_MODE`.
