@@ -1,7 +1,8 @@
 /* Writes the parity cases for the MATLAB/Octave suite: fixed inputs and the C library's
  * outputs, every double as its 64-bit pattern in hex, so the MEX results can be compared
  * bit for bit. Cases: all 24 conventions (random, near-singular and singular rotations),
- * conversions, CYCLE600 calls. Usage: parity > cases.txt */
+ * conversions, CYCLE600 calls, forms, program lines and translated programs, probing and
+ * kinematics. Usage: parity > cases.txt */
 #include <inttypes.h>
 #include "cncrot.h"
 #include "harness.h"
@@ -129,6 +130,47 @@ int main(void) {
       hexes(g, 16);
       printf("\n");
     }
+  /* Whole programs translated block by block (cncrot_program_write_change): a datum shift, a
+   * tilt with its origin, a way of moving to it, its cancel; the program's lines and each
+   * line's text in the target ("-" for none) in hex. */
+  static const struct {
+    int32_t dialect;
+    const char *form;
+  } TARGETS[] = {{CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL"},
+                 {CNCROT_DIALECT_FANUC, "G68.2"},
+                 {CNCROT_DIALECT_SINUMERIK, "CYCLE800"},
+                 {CNCROT_DIALECT_HAAS, "G268"}};
+  for (int v = 0; v < 4; v++) {
+    char l[4][200];
+    snprintf(l[0], sizeof l[0], "G52 X%.6f Y%.6f", rnd(-100, 100), rnd(-100, 100));
+    snprintf(l[1], sizeof l[1], "G68.2 X%.6f Y0 Z%.6f I%.6f J%.6f K%.6f", rnd(-50, 50), rnd(-50, 50),
+             rnd(-170, 170), rnd(1, 89), rnd(-170, 170));
+    snprintf(l[2], sizeof l[2], "%s", v % 2 ? "G53.6" : "G53.1");
+    snprintf(l[3], sizeof l[3], "G69");
+    for (int k = 0; k < (int)(sizeof TARGETS / sizeof TARGETS[0]); k++) {
+      int decimals = v == 3 ? 4 : -1;
+      printf("T %d %d %d", CNCROT_DIALECT_FANUC, TARGETS[k].dialect, decimals);
+      text_hex(TARGETS[k].form);
+      printf(" 4");
+      for (int j = 0; j < 4; j++) text_hex(l[j]);
+      cncrot_program before, after;
+      memset(&before, 0, sizeof before);
+      for (int j = 0; j < 4; j++) {
+        static char text[CNCROT_PROGRAM_CHANGE_MAX + 1];
+        after = before;
+        if (cncrot_program_line(&after, CNCROT_DIALECT_FANUC, l[j], strlen(l[j])) < 0 ||
+            cncrot_program_write_change(&before, &after, TARGETS[k].dialect, TARGETS[k].form, decimals, text,
+                                        sizeof text) < 0)
+          return 1;
+        if (text[0])
+          text_hex(text);
+        else
+          printf(" -");
+        before = after;
+      }
+      printf("\n");
+    }
+  }
   /* Probing: flanges, planes of five points, edges. */
   for (int k = 0; k < 12; k++) {
     double a1[3] = {rnd(-100, 100), rnd(-100, 100), rnd(-10, 10)}, a2[3], b1[3], b2[3], ang[3], f[16];

@@ -553,6 +553,15 @@ function test_cncrot(cases_file)
       case 'W'
         [l, st] = cncrot_program_write(str2double(t{2}), unhex(t{4}), reshape(hv(5, 16), 4, 4).', str2double(t{3}));
         check(strcmp(l, unhex(t{21})) && st == str2double(t{22}), ['parity ' line]);
+      case 'T'
+        cnt = str2double(t{6});
+        src = cellfun(unhex, t(7:6 + cnt), 'UniformOutput', false);
+        want = t(7 + cnt:6 + 2 * cnt);
+        for k = 1:cnt
+          if strcmp(want{k}, '-'), want{k} = ''; else, want{k} = unhex(want{k}); end
+        end
+        got = cncrot_program_translate(str2double(t{2}), src, str2double(t{3}), unhex(t{5}), str2double(t{4}));
+        check(isequal(got(:).', want), ['parity ' line]);
       case 'L'
         F = cncrot_program_lines(str2double(t{2}), unhex(t{3}));
         check(same(reshape(F.', 1, 16), 4), ['parity ' line]);
