@@ -949,14 +949,54 @@ fn every_block_of_a_program() {
     // A cancel on a block that also changes the work offset: not followed, state kept.
     assert_eq!(p.line(Dialect::Fanuc, b"G69 G54").unwrap(), (p, N));
     // A tilt the library reads, written where it does not read it, is never passed over.
-    for line in [
-        "G0 G68.2 X0 I0 J30 K0",
-        "G68.2X0.I0.J30.K0.",
-        "M3 G68.4 J10",
-    ] {
+    for line in ["G0 G68.2 X0 I0 J30 K0", "M3 G68.4 J10"] {
         let e = p.line(Dialect::Fanuc, line.as_bytes()).unwrap_err();
         assert_eq!(e.error, Error::UnknownWord, "{line}");
     }
+    // ISO programs may leave out the spaces: the next word's letter ends a number, and a
+    // letter may follow a code. The same frames as with spaces (hand-derived: J30 is Rx(30),
+    // G52 X5. a shift of 5 along X).
+    let spaced = read(
+        Dialect::Fanuc,
+        &[
+            "N10 G90 G17",
+            "N20 G52 X5. Y0.",
+            "N30 G68.2 X1. Y2. Z3. I0. J30. K0.",
+            "N40 G53.1",
+        ],
+    );
+    let packed = read(
+        Dialect::Fanuc,
+        &[
+            "N10G90G17",
+            "N20G52X5.Y0.",
+            "N30G68.2X1.Y2.Z3.I0.J30.K0.",
+            "N40G53.1",
+        ],
+    );
+    assert_eq!(packed, spaced);
+    assert_eq!(packed.frame.translation, [6.0, 2.0, 3.0]);
+    assert!(dist(&packed.frame.rotation, &r(Axis::X, 30.0)) < 1e-15);
+    assert_eq!(packed.positioning, Positioning::Turn);
+    assert_eq!(
+        read(Dialect::Haas, &["G268X0.Y0.Z0.I0.J45.K0.Q123", "G253"]),
+        read(
+            Dialect::Haas,
+            &["G268 X0. Y0. Z0. I0. J45. K0. Q123", "G253"]
+        )
+    );
+    assert_eq!(
+        read(Dialect::Syntec, &["G158P10157X1.A20.B20.C-30."]),
+        read(Dialect::Syntec, &["G158 P10157 X1. A20. B20. C-30."])
+    );
+    // A code that goes on is another code (G69.1: not followed; G68.25: none the library
+    // knows, passed over); an expression stays refused.
+    assert_eq!(p.line(Dialect::Fanuc, b"G69.1X0").unwrap().1, N);
+    assert_eq!(p.line(Dialect::Fanuc, b"G68.25X0").unwrap().1, P);
+    assert_eq!(
+        p.line(Dialect::Fanuc, b"G68.2X10+5J30").unwrap_err().error,
+        Error::NotANumber
+    );
 
     let p = remarks(
         Dialect::Sinumerik,

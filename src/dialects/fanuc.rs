@@ -124,7 +124,7 @@ use super::family::{
 use crate::text::number::{write_word, Out, Style};
 use crate::text::scan::{address_words, whole, Comments, Cursor, LineError, Syntax, Tokens};
 
-const SYNTAX: Syntax = crate::text::scan::G_WORDS;
+const SYNTAX: Syntax = crate::text::scan::ISO_WORDS;
 
 /// The vertical axis of the `G68.3` form.
 const VERTICAL: Vector = [0.0, 0.0, 1.0];
@@ -151,11 +151,11 @@ pub(crate) struct Fanuc;
 /// `G53.1`/`G53.6` take a `P` (how the rotary axes turn), not kept yet.
 pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineError>> {
     let column = c.column();
-    let incremental = if c.keyword(b"G68.2") {
+    let incremental = if c.code(b"G68.2") {
         false
-    } else if c.keyword(b"G68.4") {
+    } else if c.code(b"G68.4") {
         true
-    } else if c.keyword(b"G69") {
+    } else if c.code(b"G69") {
         // With other words on the block, the cancel is found among them (`iso_block`); an
         // unclosed comment is malformed text.
         return match c.end(true, true) {
@@ -170,9 +170,9 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
             whole(w.values[0], w.column(0))?;
             Ok(Block::Frame(Modal { positioning, ..*m }))
         }));
-    } else if c.keyword(b"G52") {
+    } else if c.code(b"G52") {
         return Some(read_g52(m, c));
-    } else if c.keyword(b"G68.3") {
+    } else if c.code(b"G68.3") {
         // The tool direction comes from the machine's position: needs the kinematics.
         return Some(Err(LineError {
             error: Error::NotAvailable,
@@ -216,9 +216,9 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
 /// `G53.1` (the rotary axes turn the tool to the plane) or `G53.6` (the same, the tool tip
 /// kept in place \[doc: Fanuc's tool center point retention\]) at the cursor.
 fn turn_code(c: &mut Cursor) -> Option<Positioning> {
-    if c.keyword(b"G53.1") {
+    if c.code(b"G53.1") {
         Some(Positioning::Turn)
-    } else if c.keyword(b"G53.6") {
+    } else if c.code(b"G53.6") {
         Some(Positioning::Move)
     } else {
         None
@@ -262,7 +262,7 @@ pub(crate) fn skip_leading(c: &mut Cursor) -> bool {
         b"G17", b"G90", b"G40", b"G49", b"G80", b"G94", b"G20", b"G21", b"G15",
     ];
     let mut any = false;
-    while LEADING.iter().any(|k| c.keyword(k)) {
+    while LEADING.iter().any(|k| c.code(k)) {
         c.spaces();
         any = true;
     }

@@ -73,7 +73,7 @@ use super::fanuc;
 use crate::text::number::{write_integer, write_word, Out, Style};
 use crate::text::scan::{address_words, whole, Cursor, LineError, Syntax};
 
-const SYNTAX: Syntax = crate::text::scan::G_WORDS;
+const SYNTAX: Syntax = crate::text::scan::ISO_WORDS;
 
 /// The Haas family: `G268`, `G269`.
 pub(crate) struct Haas;
@@ -97,7 +97,7 @@ impl Family for Haas {
         let mut c = Cursor::new(text);
         c.block_number(b'N');
         let column = c.column();
-        if c.keyword(b"G268") {
+        if c.code(b"G268") {
             let w = address_words(&mut c, *b"XYZIJKQ", SYNTAX, false, (true, true))?;
             let [x, y, z, i, j, k, q] = w.values;
             if !w.given[6] {
@@ -109,7 +109,7 @@ impl Family for Haas {
             let frame = LineError::at(column, g268([x, y, z], [i, j, k], q))?;
             return Ok(Block::Frame(m.with_frame(frame)));
         }
-        if c.keyword(b"G269") {
+        if c.code(b"G269") {
             // With other words on the block, the cancel is found among them (`iso_block`);
             // an unclosed comment is malformed text.
             match c.end(true, true) {
@@ -118,10 +118,10 @@ impl Family for Haas {
                 Err(_) => {}
             }
         }
-        if c.keyword(b"G52") {
+        if c.code(b"G52") {
             return fanuc::read_g52(m, &mut c);
         }
-        if c.keyword(b"G253") {
+        if c.code(b"G253") {
             // Turns the tool to the plane: no frame change.
             return c.end(true, true).map(|()| {
                 Block::Frame(Modal {

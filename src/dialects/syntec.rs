@@ -145,7 +145,7 @@ use super::fanuc;
 use crate::text::number::{write_integer, write_word, Out};
 use crate::text::scan::{address_words, whole, Cursor, LineError, Syntax};
 
-const SYNTAX: Syntax = crate::text::scan::G_WORDS;
+const SYNTAX: Syntax = crate::text::scan::ISO_WORDS;
 
 /// The Syntec family: `G158`, and the Fanuc-style `G68.2` of its G68.2 mode.
 pub(crate) struct Syntec;
@@ -169,7 +169,7 @@ impl Family for Syntec {
         let mut c = Cursor::new(text);
         c.block_number(b'N');
         let column = c.column();
-        if c.keyword(b"G158") {
+        if c.code(b"G158") {
             if c.rest_is_comment(true, true) {
                 c.end(true, true)?;
                 return Ok(Block::Frame(m.with_frame(Frame::IDENTITY)));

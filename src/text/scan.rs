@@ -59,6 +59,13 @@ pub const G_WORDS: Syntax = Syntax {
     ends: b"(;",
 };
 
+/// Numbers of the ISO dialects whose words may stand without spaces (Fanuc, Syntec, Haas:
+/// `X0.Y0.J45.`): no exponent, ended by a comment or the next word's letter.
+pub const ISO_WORDS: Syntax = Syntax {
+    exponent: Exponent::None,
+    ends: b"(;ABCDEFGHIJKLMNOPQRSTUVWXYZ",
+};
+
 /// A position in a line, with the scanning the dialects share. Columns are 1-based bytes.
 #[derive(Clone)]
 pub struct Cursor<'a> {
@@ -139,6 +146,25 @@ impl<'a> Cursor<'a> {
             .text
             .get(self.pos + n)
             .is_some_and(|&b| is_name(b) || b == b'.');
+        if matches && whole {
+            self.pos += n;
+        }
+        matches && whole
+    }
+
+    /// Consumes the code `kw` (case-insensitive; a G-code such as `G68.2`) when no digit or
+    /// point follows it. ISO programs may write their words without spaces (`G68.2X0.J45.`):
+    /// a letter after a code starts the next word.
+    pub fn code(&mut self, kw: &[u8]) -> bool {
+        let n = kw.len();
+        let matches = self
+            .text
+            .get(self.pos..self.pos + n)
+            .is_some_and(|h| h.eq_ignore_ascii_case(kw));
+        let whole = !self
+            .text
+            .get(self.pos + n)
+            .is_some_and(|&b| b.is_ascii_digit() || b == b'.');
         if matches && whole {
             self.pos += n;
         }
