@@ -136,39 +136,32 @@ impl<'a> Cursor<'a> {
         self.text.get(self.pos..).unwrap_or(&[])
     }
 
-    /// Consumes `kw` (case-insensitive) when it stands here as a whole name.
-    pub fn keyword(&mut self, kw: &[u8]) -> bool {
+    /// Consumes `kw` (case-insensitive) when it stands here and the character after it (if
+    /// any) is not one that would continue it.
+    fn take(&mut self, kw: &[u8], continues: impl Fn(u8) -> bool) -> bool {
         let n = kw.len();
-        let here = self.text.get(self.pos..self.pos + n);
-        let matches = here.is_some_and(|h| h.eq_ignore_ascii_case(kw));
-        // "ROT" must not match "ROTS"; "G68.2" must not match "G68.25".
-        let whole = !self
+        let matches = self
             .text
-            .get(self.pos + n)
-            .is_some_and(|&b| is_name(b) || b == b'.');
+            .get(self.pos..self.pos + n)
+            .is_some_and(|h| h.eq_ignore_ascii_case(kw));
+        let whole = !self.text.get(self.pos + n).is_some_and(|&b| continues(b));
         if matches && whole {
             self.pos += n;
         }
         matches && whole
     }
 
+    /// Consumes `kw` (case-insensitive) when it stands here as a whole name: "ROT" does not
+    /// match "ROTS", "G68.2" not "G68.25".
+    pub fn keyword(&mut self, kw: &[u8]) -> bool {
+        self.take(kw, |b| is_name(b) || b == b'.')
+    }
+
     /// Consumes the code `kw` (case-insensitive; a G-code such as `G68.2`) when no digit or
     /// point follows it. ISO programs may write their words without spaces (`G68.2X0.J45.`):
     /// a letter after a code starts the next word.
     pub fn code(&mut self, kw: &[u8]) -> bool {
-        let n = kw.len();
-        let matches = self
-            .text
-            .get(self.pos..self.pos + n)
-            .is_some_and(|h| h.eq_ignore_ascii_case(kw));
-        let whole = !self
-            .text
-            .get(self.pos + n)
-            .is_some_and(|&b| b.is_ascii_digit() || b == b'.');
-        if matches && whole {
-            self.pos += n;
-        }
-        matches && whole
+        self.take(kw, |b| b.is_ascii_digit() || b == b'.')
     }
 
     /// Consumes the address letter `l` (case-insensitive) when the next character is not a
@@ -195,19 +188,7 @@ impl<'a> Cursor<'a> {
     /// Consumes the word name `w` (case-insensitive) when no letter follows it (`SPA` in
     /// `SPA+27` and `SPA27`, not in `SPAN`).
     pub fn word(&mut self, w: &[u8]) -> bool {
-        let n = w.len();
-        let matches = self
-            .text
-            .get(self.pos..self.pos + n)
-            .is_some_and(|h| h.eq_ignore_ascii_case(w));
-        let letter = self
-            .text
-            .get(self.pos + n)
-            .is_some_and(|b| b.is_ascii_alphabetic() || *b == b'_');
-        if matches && !letter {
-            self.pos += n;
-        }
-        matches && !letter
+        self.take(w, |b| b.is_ascii_alphabetic() || b == b'_')
     }
 
     /// The text up to the next `close` (consumed), or `None` when there is none.
