@@ -1179,7 +1179,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     let mut buf = [0u8; MAX_CHANGE];
                     match write_change(t.dialect, t.form.as_bytes(), &before, &p, d, &mut buf) {
                         Ok((0, _)) if t.dialect == dialect => Some(block.to_string()),
-                        // Nothing changes in the target (cycle 7's first line, `G53.1`, a
+                        // Nothing changes in the target (cycle 7's first line, a
                         // command repeated): nothing to write.
                         Ok((0, _)) => None,
                         Ok((len, _)) => Some(String::from_utf8_lossy(&buf[..len]).into_owned()),

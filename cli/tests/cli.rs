@@ -1366,7 +1366,9 @@ fn refusals_name_what_was_wrong() {
 /// `program --to` on a program as CAM writes it for a TNC (cycle 7 before the plane): the
 /// datum shift in the target's own command, the tilt about the shifted datum (Fanuc) or with
 /// the whole origin (SINUMERIK's CYCLE800, which replaces the frame), the reset keeping the
-/// shift, cycle 7's first line left out (the text of docs/cli.md).
+/// shift, cycle 7's first line left out, TURN as G53.1 (the text of docs/cli.md). By hand:
+/// SPB+30 is Ry(30) = Rz(90)·Rx(30)·Rz(−90) (I90 J30 K−90); SPB−20 SPC+90 is
+/// Rz(90)·Ry(−20) = Rx(20)·Rz(90) (I0 J20 K90; CYCLE800 57: A20 B0 C90).
 #[test]
 fn program_to_writes_datum_shifts() {
     let prog = "0 BEGIN PGM TILT MM\n1 TOOL CALL 1 Z S5000\n2 CYCL DEF 7.0 DATUM SHIFT\n\

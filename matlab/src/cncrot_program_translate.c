@@ -7,17 +7,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   int32_t dialect = dialect_arg(prhs[0], 1, "dialect");
   int32_t to = dialect_arg(prhs[2], 3, "to");
   char form[65];
-  size_t m = 0;
-  const mxChar *c = chars_of(prhs[3], 4, "form", &m);
-  if (c == NULL)
-    fail("cncrot:badClass", "%s must be text such as 'G68.2' or 'PLANE SPATIAL'; got %s", label(4, "form"),
-         described(prhs[3]));
-  if (m > 64) fail("cncrot:badArgument", "%s is longer than 64 characters", label(4, "form"));
-  for (size_t k = 0; k < m; k++) {
-    if (char_code(c[k]) == 0) fail("cncrot:badArgument", "%s contains a NUL character", label(4, "form"));
-    form[k] = ascii_byte(c[k]);
-  }
-  form[m] = '\0';
+  form_name_arg(prhs[3], 4, form);
   int32_t decimals = nrhs > 4 ? integer_arg(prhs[4], 5, "decimals") : -1;
   cncrot_program p;
   memset(&p, 0, sizeof p);

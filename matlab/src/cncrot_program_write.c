@@ -30,15 +30,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   check_nargs(nrhs, 3, 4, nlhs, 2);
   int32_t dialect = dialect_arg(prhs[0], 1, "dialect");
   char form[65];
-  size_t m = 0;
-  const mxChar *c = chars_of(prhs[1], 2, "form", &m);
-  if (c == NULL) fail("cncrot:badClass", "%s must be text such as 'G68.2' or 'PLANE SPATIAL'; got %s", label(2, "form"), described(prhs[1]));
-  if (m > 64) fail("cncrot:badArgument", "%s is longer than 64 characters", label(2, "form"));
-  for (size_t k = 0; k < m; k++) {
-    if (char_code(c[k]) == 0) fail("cncrot:badArgument", "%s contains a NUL character", label(2, "form"));
-    form[k] = ascii_byte(c[k]);
-  }
-  form[m] = '\0';
+  form_name_arg(prhs[1], 2, form);
   size_t n = squares_arg(prhs[2], 3, "F", 4);
   const double *fd = real_data(prhs[2], 3, "F");
   int32_t decimals = nrhs > 3 ? integer_arg(prhs[3], 4, "decimals") : -1;

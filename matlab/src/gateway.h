@@ -551,6 +551,22 @@ static int32_t form_arg(const mxArray *a, int pos, const char *name) {
 }
 
 /* The number of words of a form (the library's table). */
+/* A writer's form name ('G68.2', "PLANE SPATIAL"): text of at most 64 characters without
+ * NUL, as the library reads it (characters beyond ASCII become a byte it refuses). */
+static void form_name_arg(const mxArray *a, int pos, char out[65]) {
+  size_t m = 0;
+  const mxChar *c = chars_of(a, pos, "form", &m);
+  if (c == NULL)
+    fail("cncrot:badClass", "%s must be text such as 'G68.2' or 'PLANE SPATIAL'; got %s", label(pos, "form"),
+         described(a));
+  if (m > 64) fail("cncrot:badArgument", "%s is longer than 64 characters", label(pos, "form"));
+  for (size_t k = 0; k < m; k++) {
+    if (char_code(c[k]) == 0) fail("cncrot:badArgument", "%s contains a NUL character", label(pos, "form"));
+    out[k] = ascii_byte(c[k]);
+  }
+  out[m] = '\0';
+}
+
 static size_t form_words(int32_t form, int pos) {
   size_t count = 0;
   int32_t s = cncrot_form_word_count(form, &count);

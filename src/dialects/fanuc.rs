@@ -214,7 +214,8 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
 }
 
 /// `G53.1` (the rotary axes turn the tool to the plane) or `G53.6` (the same, the tool tip
-/// kept in place \[doc: Fanuc's tool center point retention\]) at the cursor.
+/// kept in place \[3rd: LinuxCNC's remap, "with TCP"; Fanuc's tool center point
+/// retention\]) at the cursor.
 fn turn_code(c: &mut Cursor) -> Option<Positioning> {
     if c.code(b"G53.1") {
         Some(Positioning::Turn)

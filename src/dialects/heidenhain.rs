@@ -262,10 +262,11 @@ fn plane_frame(form: Form, w: &[f64]) -> Result<Frame, Error> {
 /// The datum shifts a program writes before its `PLANE` (CAM output: `CYCL DEF 7.0 DATUM
 /// SHIFT`, `CYCL DEF 7.1 X+10`, `7.2 Y+5`, `7.3 Z-3`; `TRANS DATUM AXIS X+10 Y+5 Z-3`,
 /// `TRANS DATUM RESET`), or `None` for any other block. Cycle 7's first line only names the
-/// cycle (applied: the state unchanged); each further line sets the axes it names (`IX` adds to the shift), the others keep
-/// theirs \[doc: "only the programmed axes are shifted"\]; `TRANS DATUM AXIS` sets the
-/// shift of the axes it names \[choice: the same rule\]. The shift is taken along the
-/// workpiece axes before any tilt, and a `PLANE` tilts about the shifted datum \[doc\].
+/// cycle (applied: the state unchanged); each further line sets the axes it names (`IX`
+/// adds to the shift), the others keep theirs \[doc: "only the programmed axes are
+/// shifted"\]; `TRANS DATUM AXIS` sets the shift of the axes it names \[choice: the same
+/// rule\]. The shift is taken along the workpiece axes before any tilt, and a `PLANE` tilts
+/// about the shifted datum \[doc\].
 /// A datum table row (`#5`, `TRANS DATUM TABLE`) or another axis (`A`, `U`) is not
 /// followed.
 fn datum_shift(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
