@@ -161,7 +161,8 @@ static void probe_edge(void) {
   static double a;
   sink += cncrot_probe_edge(IDF, e1, e2, &a, f) + cncrot_probe_edge(IDF, e1, e1, &a, f);
 }
-static cncrot_program prog;
+static cncrot_program prog, axial;
+static const char AXIAL[] = "PLANE AXIAL B+30 C+45 TURN FMAX";
 static const char C800[] = "N10 CYCLE800(1,\"TC1\",0,57,10,0,0,30,45,60,0,0,0,-1,100,1)";
 static const char C600[] = "N20 CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1,39,1,0,0) ; paper";
 static const char PLANE[] = "5 PLANE POINTS P1X+10 P1Y+0 P1Z+0 P2X+10.123456789012345 P2Y+5 P2Z+0 P3X+0 P3Y+0 P3Z+0 STAY";
@@ -172,6 +173,8 @@ static void program_line(void) {
   memset(&prog, 0, sizeof prog);
   sink += cncrot_program_line(&prog, CNCROT_DIALECT_HEIDENHAIN, PLANE, sizeof PLANE - 1) +
           cncrot_program_line(&prog, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+Q1", 20);
+  memset(&axial, 0, sizeof axial);
+  sink += cncrot_program_line(&axial, CNCROT_DIALECT_HEIDENHAIN, AXIAL, sizeof AXIAL - 1);
 }
 static void program_column(void) {
   static size_t col;
@@ -254,7 +257,11 @@ static void machine_choose(void) {
 static void program_axes(void) {
   static const double cur[3] = {750, 10, -20};
   static double ax[3];
-  sink += cncrot_program_axes(&prog, &head3, cur, ax) + cncrot_program_axes(&prog, &mach, cur, ax);
+  sink += cncrot_program_axes(&prog, &head3, cur, ax) + cncrot_program_axes(&prog, &mach, cur, ax) +
+          cncrot_program_axes(&axial, &head3, cur, ax);
+}
+static void program_frame_on(void) {
+  sink += cncrot_program_frame_on(&axial, &head3, f) + cncrot_program_frame_on(&prog, &mach, f);
 }
 static void machine_follow(void) {
   static const double from[3] = {0, 0, 0}, to[3] = {30, 40, 50}, lin[3] = {1, 2, 3};
@@ -304,7 +311,7 @@ static const struct entry ENTRIES[] = {
     E(machine_from_carr, 1), E(machine_carr_error_line, 1), E(machine_from_head, 1),
     E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
     E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),
-    E(program_axes, 1),      E(machine_tcp_forward, 0), E(machine_tcp_inverse, 1),
+    E(program_axes, 1),      E(program_frame_on, 1),   E(machine_tcp_forward, 0), E(machine_tcp_inverse, 1),
     E(machine_tcp_inverse_rule, 1),
     E(matrices_from_angles, 0), E(angles_from_matrices, 0), E(convert_many, 0),
 };

@@ -357,6 +357,79 @@ static void program_axes(void) {
 }
 
 /* Refused lines: the status, the column of the first bad character, the state untouched. */
+/* Direct modes keep the rotary-axis positions; the machine gives the frame. On the fork
+ * head (C about Z carrying B about Y, a head: the tool frame is Rz(C)·Ry(B)), PLANE AXIAL
+ * B+30 C+45 and a CYCLE800 direct with _A = 45 (axis 1, C), _B = 30 (axis 2, B) are both
+ * Rz(45)·Ry(30), written out by hand below. */
+static void direct_modes(void) {
+  static const char carr[] =
+      "$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1 $TC_CARR10[1]=0 $TC_CARR11[1]=1 $TC_CARR12[1]=0\n"
+      "$TC_CARR6[1]=-150 $TC_CARR23[1]=\"T\" $TC_CARR31[1]=-100 $TC_CARR33[1]=100\n";
+  cncrot_machine m;
+  memset(&m, 0, sizeof m);
+  CHECK_STATUS(cncrot_machine_from_carr(&m, carr, strlen(carr), 1), CNCROT_STATUS_OK);
+  const double c = sqrt(0.5), cb = sqrt(3) / 2, sb = 0.5;
+  /* Rz(45)·Ry(30), row-major. */
+  const double want[9] = {c * cb, -c, c * sb, c * cb, c, c * sb, -sb, 0, cb};
+  static const struct {
+    int32_t dialect;
+    const char *line;
+    int32_t active;
+    double angles[3], origin[3];
+    uint32_t given;
+  } cases[] = {
+      {CNCROT_DIALECT_HEIDENHAIN, "PLANE AXIAL B+30 C+45 TURN FMAX", 2, {0, 30, 45}, {0, 0, 0}, 6},
+      {CNCROT_DIALECT_SINUMERIK, "CYCLE800(0,\"TC1\",0,192,5,0,0,45,30,0,0,0,0,-1)", 3, {45, 30, 0}, {5, 0, 0}, 3},
+      {CNCROT_DIALECT_SYNTEC, "G158 P10200 X0 Y0 Z10 A0 B30 C45", 2, {0, 30, 45}, {0, 0, 10}, 7},
+  };
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    cncrot_program p;
+    memset(&p, 0, sizeof p);
+    const char *l = cases[k].line;
+    CHECK_STATUS(cncrot_program_line(&p, cases[k].dialect, l, strlen(l)), CNCROT_STATUS_OK);
+    CHECK(p.active == cases[k].active && p.direct_given == cases[k].given, "%s: active %d", l, p.active);
+    CHECK(memcmp(p.angles, cases[k].angles, sizeof p.angles) == 0, "%s: angles", l);
+    CHECK(p.positioning == CNCROT_POSITIONING_TURN, "%s: positioning", l);
+    double f[16], keep[16];
+    for (int i = 0; i < 16; i++) f[i] = keep[i] = -7;
+    CHECK_STATUS(cncrot_program_frame(&p, f), CNCROT_STATUS_NOT_AVAILABLE);
+    CHECK(memcmp(f, keep, sizeof f) == 0, "%s: a refusal wrote the frame", l);
+    CHECK_STATUS(cncrot_program_frame_on(&p, &m, f), CNCROT_STATUS_OK);
+    for (int i = 0; i < 3; i++) {
+      CHECK_NEAR(&f[4 * i], &want[3 * i], 3, 1e-15);
+      CHECK(f[4 * i + 3] == cases[k].origin[i], "%s: origin", l);
+    }
+    /* The modulo C's turn nearest 730; B as stated. */
+    double cur[3] = {730, 0, 0}, ax[3];
+    CHECK_STATUS(cncrot_program_axes(&p, &m, cur, ax), CNCROT_STATUS_OK);
+    CHECK(ax[0] == 765 && ax[1] == 30 && ax[2] == 0, "%s: %g %g %g", l, ax[0], ax[1], ax[2]);
+  }
+  /* An A on a machine without one; B beyond its travel: refused, outputs untouched. */
+  cncrot_program p;
+  memset(&p, 0, sizeof p);
+  const char *a = "PLANE AXIAL A+10 B+30";
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_HEIDENHAIN, a, strlen(a)), CNCROT_STATUS_OK);
+  double f[16] = {0}, cur[3] = {0, 0, 0}, ax[3] = {1, 2, 3};
+  CHECK_STATUS(cncrot_program_frame_on(&p, &m, f), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_program_axes(&p, &m, cur, ax), CNCROT_STATUS_BAD_ARGUMENT);
+  const char *far = "PLANE AXIAL B+120";
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_HEIDENHAIN, far, strlen(far)), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_program_axes(&p, &m, cur, ax), CNCROT_STATUS_OUT_OF_TRAVEL);
+  CHECK(ax[0] == 1 && ax[1] == 2 && ax[2] == 3 && f[0] == 0, "a refusal wrote");
+  /* Translated into the direct mode of a dialect that names the axes by letter. */
+  cncrot_program before, after;
+  memset(&before, 0, sizeof before);
+  memset(&after, 0, sizeof after);
+  const char *l = cases[0].line;
+  CHECK_STATUS(cncrot_program_line(&after, CNCROT_DIALECT_HEIDENHAIN, l, strlen(l)), CNCROT_STATUS_OK);
+  char out[CNCROT_PROGRAM_CHANGE_MAX + 1];
+  CHECK_STATUS(cncrot_program_write_change(&before, &after, CNCROT_DIALECT_SYNTEC, "G158", 4, out, sizeof out),
+               CNCROT_STATUS_OK);
+  CHECK(strcmp(out, "G158 P10200 X0. Y0. Z0. A0. B30. C45. U0. V0. W0.") == 0, "%s", out);
+  CHECK_STATUS(cncrot_program_write_change(&before, &after, CNCROT_DIALECT_FANUC, "G68.2", 4, out, sizeof out),
+               CNCROT_STATUS_NOT_AVAILABLE);
+}
+
 static void refusals(void) {
   static const struct {
     int32_t dialect;
@@ -367,11 +440,13 @@ static void refusals(void) {
       {CNCROT_DIALECT_SINUMERIK, "ROT X=R1", CNCROT_STATUS_NOT_A_NUMBER, 7},
       {CNCROT_DIALECT_SINUMERIK, "N10 ROT X10 X20", CNCROT_STATUS_UNKNOWN_WORD, 13},
       {CNCROT_DIALECT_SINUMERIK, "ROT X10 B5", CNCROT_STATUS_UNKNOWN_WORD, 9},
-      {CNCROT_DIALECT_SINUMERIK, "CYCLE800(0,\"TC1\",0,192,0,0,0,0,30,0,0,0,0,-1)", CNCROT_STATUS_NOT_AVAILABLE, 20},
+      /* Direct mode with a _C: a swivel data set has two axes. */
+      {CNCROT_DIALECT_SINUMERIK, "CYCLE800(0,\"TC1\",0,192,0,0,0,0,30,5,0,0,0,-1)", CNCROT_STATUS_NOT_AVAILABLE, 35},
       {CNCROT_DIALECT_SINUMERIK, "CYCLE800(0,\"TC1\",0", CNCROT_STATUS_MISSING_WORD, 19},
       {CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+Q120 SPB+0 SPC+0", CNCROT_STATUS_NOT_A_NUMBER, 19},
       {CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+0 SPB+0", CNCROT_STATUS_MISSING_WORD, 26},
-      {CNCROT_DIALECT_HEIDENHAIN, "PLANE AXIAL B+30", CNCROT_STATUS_NOT_AVAILABLE, 1},
+      {CNCROT_DIALECT_HEIDENHAIN, "PLANE AXIAL", CNCROT_STATUS_MISSING_WORD, 12},
+      {CNCROT_DIALECT_HEIDENHAIN, "PLANE AXIAL B+30 B+40", CNCROT_STATUS_UNKNOWN_WORD, 18},
       {CNCROT_DIALECT_FANUC, "G68.2 X0 Y0 Z0 I0 J#100 K0", CNCROT_STATUS_NOT_A_NUMBER, 20},
       {CNCROT_DIALECT_FANUC, "G68.2 J1.2.3", CNCROT_STATUS_PARSE, 11},
       {CNCROT_DIALECT_HAAS, "G268 X0 I0 J30 K0", CNCROT_STATUS_MISSING_WORD, 18},
@@ -671,6 +746,7 @@ int main(void) {
   every_pair_converts();
   whole_programs();
   program_axes();
+  direct_modes();
   refusals();
   writer_buffers();
   sealed_states();

@@ -644,7 +644,7 @@ typedef struct cncrot_machine {
  *
  * Layout (176 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
  * `angles` 96, `shift` 120, `active` 144, `dialect` 148, `options` 152, `choice` 156,
- * `reference_axis` 160, `positioning` 164, `spare` 168, `reserved` 172. Accepted on entry:
+ * `reference_axis` 160, `positioning` 164, `direct_given` 168, `reserved` 172. Accepted on entry:
  * all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..172
  * exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
  */
@@ -659,7 +659,8 @@ typedef struct cncrot_program {
    */
   double origin[3];
   /**
-   * TwinCAT's programmed angles `X Y Z` (its `AROT` adds angles); zero in other dialects.
+   * TwinCAT's programmed angles `X Y Z` (its `AROT` adds angles); a direct mode's
+   * rotary-axis positions (degrees); zero otherwise.
    */
   double angles[3];
   /**
@@ -669,7 +670,11 @@ typedef struct cncrot_program {
    */
   double shift[3];
   /**
-   * 1 while a frame is active, 0 when none is (the identity).
+   * 1 while a frame is active, 0 when none is (the identity); 2 or 3 while a direct mode
+   * is (`PLANE AXIAL`, `G158` mode 2: 2, the positions of the axes named A, B, C;
+   * `CYCLE800` direct: 3, the positions of the machine's rotary axes 1, 2, 3): then
+   * `angles` holds the positions, `origin` the origin, `rotation` is all zero (the
+   * machine's kinematics gives it: `cncrot_program_frame_on`).
    */
   int32_t active;
   /**
@@ -701,9 +706,10 @@ typedef struct cncrot_program {
    */
   int32_t positioning;
   /**
-   * Zero (room for a later field without a change of size).
+   * Which rotary-axis positions an active direct mode gave: bit k for `angles[k]`
+   * (1..7 while `active` is 2 or 3; 0 otherwise).
    */
-  uint32_t spare;
+  uint32_t direct_given;
   /**
    * The seal: 0 in the all-zero initial state, else the checksum described above (the
    * field keeps the name it had when it was reserved, so that the layout is unchanged).
@@ -1764,15 +1770,20 @@ int32_t cncrot_program_expected(const struct cncrot_program *program,
  * head's axis nearest the tool, else the axis nearest the machine base) — and without
  * them `CNCROT_CHOOSE_CLOSEST`, the choice SINUMERIK makes for a frame and Heidenhain
  * without `SEQ`: whole turns unwound toward `current`, within the travel limits and on the
- * Hirth grids. No tilt active: the positions of the identity frame. Axes the machine lacks
- * are 0 in `axes` (and must be 0 in `current`).
+ * Hirth grids. No tilt active: the positions of the identity frame. A direct mode
+ * (`active` 2 or 3): the positions it states, mapped onto the machine's axes (by place, or
+ * by letter: each axis takes the position of the letter its direction is nearest, A for X,
+ * B for Y, C for Z), as stated on an axis with travel limits, the turn nearest `current`
+ * on a modulo axis. Axes the machine lacks are 0 in `axes` (and must be 0 in `current`).
  *
  * Returns 0, `CNCROT_STATUS_FREE_AXIS` (a free axis kept at its current position),
  * `CNCROT_STATUS_SNAPPED` (a Hirth axis snapped to its grid), or with `axes` untouched:
  * `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a program state this library did
  * not write), `CNCROT_STATUS_UNREACHABLE`, `CNCROT_STATUS_OUT_OF_TRAVEL`,
- * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE` (a current position), and the
- * statuses of a description that is not a machine (see `cncrot_machine`).
+ * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE` (a current position, a direct
+ * position of magnitude `CNCROT_MACHINE_ANGLE_MAX_DEG` or more), `CNCROT_STATUS_BAD_ARGUMENT`
+ * (a direct position for an axis the machine lacks), and the statuses of a description
+ * that is not a machine (see `cncrot_machine`).
  *
  * # Safety
  * `program` points to a readable `cncrot_program`, `machine` to a `cncrot_machine`,
@@ -1791,8 +1802,10 @@ int32_t cncrot_program_axes(const struct cncrot_program *program,
 /**
  * The active frame of a program (4x4, row-major; the identity when none is active).
  *
- * Returns 0, or with `frame` untouched `CNCROT_STATUS_NULL_POINTER` or
- * `CNCROT_STATUS_BAD_STATE` (a state this library did not write).
+ * Returns 0, or with `frame` untouched `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_BAD_STATE` (a state this library did not write) or
+ * `CNCROT_STATUS_NOT_AVAILABLE` (a direct mode is active, whose rotation follows from the
+ * machine: `cncrot_program_frame_on`).
  *
  * # Safety
  * `program` points to a readable `cncrot_program`, `frame` to 16 writable doubles (or NULL:
@@ -1804,6 +1817,32 @@ int32_t cncrot_program_axes(const struct cncrot_program *program,
  * ```
  */
 int32_t cncrot_program_frame(const struct cncrot_program *program, double *frame);
+
+/**
+ * The active frame of a program on `machine` (4x4, row-major): the state's frame, or for a
+ * direct mode (`PLANE AXIAL`, `CYCLE800` direct, `G158` mode 2) the rotation the machine's
+ * kinematics gives with its rotary axes at the stated positions (the rotation of
+ * `cncrot_machine_forward`; the axes mapped as in `cncrot_program_axes`) about the
+ * block's origin.
+ *
+ * Returns 0, or with `frame` untouched `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_BAD_STATE` (a state this library did not write),
+ * `CNCROT_STATUS_BAD_ARGUMENT` (a direct position for an axis the machine lacks),
+ * `CNCROT_STATUS_OUT_OF_RANGE` (a result that overflows), and the statuses of a
+ * description that is not a machine (see `cncrot_machine`).
+ *
+ * # Safety
+ * `program` points to a readable `cncrot_program`, `machine` to a `cncrot_machine`,
+ * `frame` to 16 writable doubles (or NULL: error).
+ *
+ * ```c
+ * double f[16];
+ * cncrot_program_frame_on(&p, &m, f);   // after PLANE AXIAL B+30 C+45
+ * ```
+ */
+int32_t cncrot_program_frame_on(const struct cncrot_program *program,
+                                const struct cncrot_machine *machine,
+                                double *frame);
 
 /**
  * Writes the block that programs `frame` (4x4, row-major) in `dialect` with the command

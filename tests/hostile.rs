@@ -367,7 +367,7 @@ fn the_program_states_documented_layout() {
         offset_of!(cncrot_program, choice),
         offset_of!(cncrot_program, reference_axis),
         offset_of!(cncrot_program, positioning),
-        offset_of!(cncrot_program, spare),
+        offset_of!(cncrot_program, direct_given),
         offset_of!(cncrot_program, reserved),
     ];
     assert_eq!(

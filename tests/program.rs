@@ -6,8 +6,8 @@
 mod common;
 
 use cncrot::dialects::program::{
-    write_change, write_line, AxisChoice, Dialect, LineError, Positioning, Program, Remark,
-    MAX_CHANGE,
+    write_change, write_line, AxisChoice, Dialect, Direct, DirectAxes, LineError, Positioning,
+    Program, Remark, MAX_CHANGE,
 };
 use cncrot::{elementary, mul, Axis, Error, Frame, Matrix};
 use common::Rng;
@@ -284,17 +284,26 @@ fn syntec_the_manuals_examples() {
         &r(Axis::Z, 15.0),
     );
     assert!(dist(&f, &want) < 1e-15);
-    let e = Program::default()
+    // Mode 2: the positions of the axes A, B, C, which the machine turns to, about the
+    // origin X Y Z; the frame needs the machine.
+    let (p, _) = Program::default()
         .line(d, b"G158 L3 P10200 X0 Y0 Z10 A0 B20 C45 U0 V0 W0")
-        .unwrap_err();
+        .unwrap();
+    let direct = Direct {
+        by: DirectAxes::Letters,
+        given: 0b111,
+    };
+    assert_eq!((p.direct, p.angles), (Some(direct), [0.0, 20.0, 45.0]));
     assert_eq!(
-        e,
-        LineError {
-            error: Error::NotAvailable,
-            column: 1,
-            expected: None,
-        }
+        p.frame,
+        Frame::with_translations([0.0, 0.0, 10.0], cncrot::IDENTITY, [0.0; 3])
     );
+    assert_eq!(p.positioning, Positioning::Turn);
+    // Incremental, or with U V W after a rotation only the machine knows: not read.
+    for line in ["G158 P01200 A0 B20 C45", "G158 P10200 A0 B20 C45 U0 V5 W0"] {
+        let e = Program::default().line(d, line.as_bytes()).unwrap_err();
+        assert_eq!((e.error, e.column), (Error::NotAvailable, 1), "{line}");
+    }
     // Syntec's G68.2 mode reads Fanuc's words; G158 alone and G69 cancel.
     assert!(dist(&rot(d, &["G68.2 X0 Y0 Z0 I0 J30 K0"]), &r(Axis::X, 30.0)) < 1e-15);
     assert_eq!(read(d, &["G68.2 J30", "G69"]).frame, Frame::IDENTITY);
@@ -366,7 +375,7 @@ fn fanuc_and_haas() {
 #[test]
 fn refusals_name_their_column() {
     let active = read(Dialect::Sinumerik, &["ROT Z30"]);
-    let cases: [(Dialect, &str, Error, &str); 33] = [
+    let cases: [(Dialect, &str, Error, &str); 37] = [
         (Dialect::Sinumerik, "ROT X=R1", Error::NotANumber, "R1"),
         (Dialect::Sinumerik, "ROT X10 A5", Error::UnknownWord, "A5"),
         (Dialect::Sinumerik, "ROT X10 X20", Error::UnknownWord, "X20"),
@@ -380,11 +389,31 @@ fn refusals_name_their_column() {
             "ROT",
         ),
         (Dialect::Sinumerik, "AROT", Error::MissingWord, ""),
+        // Direct mode with a `_C` (a swivel data set has two axes) or a `_X1`.
         (
             Dialect::Sinumerik,
-            "CYCLE800(0,\"TC1\",0,192,0,0,0,0,30,0,0,0,0,-1)",
+            "CYCLE800(0,\"TC1\",0,192,0,0,0,0,30,5,0,0,0,-1)",
             Error::NotAvailable,
-            "192",
+            "5,",
+        ),
+        (
+            Dialect::Sinumerik,
+            "CYCLE800(0,\"TC1\",0,192,0,0,0,0,30,0,7,0,0,-1)",
+            Error::NotAvailable,
+            "7,",
+        ),
+        (Dialect::Heidenhain, "PLANE AXIAL", Error::MissingWord, ""),
+        (
+            Dialect::Heidenhain,
+            "PLANE AXIAL B+30 B+40",
+            Error::UnknownWord,
+            "B+40",
+        ),
+        (
+            Dialect::Heidenhain,
+            "PLANE AXIAL B+30 X+40",
+            Error::UnknownWord,
+            "X+40",
         ),
         (
             Dialect::Sinumerik,
@@ -1829,6 +1858,34 @@ fn positioning_words_are_kept_and_written() {
         ),
         ["G68.2 X0. Y0. Z0. I0. J30. K0.", "G53.6"]
     );
+    // The same tilt commanded again after a G53.1 stays where it is: no block takes a
+    // G53.1 or G253 back, so the tilt block is written again without it.
+    assert_eq!(
+        translate(
+            Dialect::Fanuc,
+            &["G68.2 J30", "G53.1", "G68.2 J30"],
+            Dialect::Haas,
+            "G268"
+        ),
+        [
+            "G268 X0. Y0. Z0. I30. J0. K0. Q123",
+            "G253",
+            "G268 X0. Y0. Z0. I30. J0. K0. Q123"
+        ]
+    );
+    assert_eq!(
+        translate(
+            Dialect::Fanuc,
+            &["G68.2 J30", "G53.1", "G68.2 J30"],
+            Dialect::Heidenhain,
+            "PLANE SPATIAL"
+        ),
+        [
+            "PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY",
+            "PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN FMAX",
+            "PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY"
+        ]
+    );
     // Every translation reads back with the same way of moving where the target says it.
     for (to, form) in [
         (Dialect::Heidenhain, "PLANE EULER"),
@@ -1838,6 +1895,14 @@ fn positioning_words_are_kept_and_written() {
         for src in [
             &["G68.2 J30", "G53.1", "G68.2 J40", "G53.6", "G69"][..],
             &["G52 X5", "G68.2 J30", "G53.6", "G52 X6", "G69"],
+            &[
+                "G68.2 J30",
+                "G53.1",
+                "G68.2 J30",
+                "G53.6",
+                "G68.2 J30",
+                "G69",
+            ],
         ] {
             let (mut p, mut q) = (Program::default(), Program::default());
             for l in src {
@@ -1852,5 +1917,175 @@ fn positioning_words_are_kept_and_written() {
                 p = next;
             }
         }
+    }
+}
+
+/// The direct modes (`PLANE AXIAL`, `G158` mode 2, a `CYCLE800` with `_MODE` 192) keep the
+/// rotary-axis positions; the machine gives the frame. Hand derivation: on a table whose B
+/// (about Y) carries C (about Z), the workpiece turns by `W = Ry(B)·Rz(C)`, so the tilted
+/// frame in workpiece coordinates is `W⁻¹ = Rz(−C)·Ry(−B)`.
+#[test]
+fn direct_modes_keep_the_positions_and_the_machine_gives_the_frame() {
+    use cncrot::kinematics::{Machine, RotaryAxis, Side};
+    let axis = |d: [f64; 3]| RotaryAxis::new(Side::Work, d, [0.0; 3]);
+    let mut b = axis([0.0, 1.0, 0.0]);
+    b.limits = Some([-10.0, 100.0]);
+    let m = Machine::new([0.0, 0.0, 1.0])
+        .unwrap()
+        .with_axis(b)
+        .unwrap()
+        .with_axis(axis([0.0, 0.0, 1.0]))
+        .unwrap();
+    let want = |bb: f64, c: f64| mul(&r(Axis::Z, -c), &r(Axis::Y, -bb));
+    let cases = [
+        (
+            Dialect::Heidenhain,
+            "PLANE AXIAL B+30 C+45 TURN FMAX",
+            [0.0; 3],
+        ),
+        (
+            Dialect::Syntec,
+            "G158 P10200 X0 Y0 Z10 A0 B30 C45 U0 V0 W0",
+            [0.0, 0.0, 10.0],
+        ),
+        (
+            Dialect::Sinumerik,
+            "CYCLE800(0,\"TC1\",0,192,5,0,0,30,45,0,0,0,0,-1)",
+            [5.0, 0.0, 0.0],
+        ),
+    ];
+    for (d, line, origin) in cases {
+        let p = read(d, &[line]);
+        assert!(p.direct.is_some() && p.is_active(), "{line}");
+        assert_eq!(p.positioning, Positioning::Turn, "{line}");
+        let f = p.frame_on(&m).unwrap();
+        assert!(dist(&f.rotation, &want(30.0, 45.0)) < 1e-15, "{line}");
+        assert_eq!(f.translation, origin, "{line}");
+        let c = p.axes(&m, [0.0; 3]).unwrap();
+        assert_eq!(c.axes, [30.0, 45.0, 0.0], "{line}");
+        assert!(!c.free && c.residual == [0.0; 3]);
+    }
+    // By letter: A on a machine without an A axis only at 0; B beyond its travel refused;
+    // the modulo C's turn nearest the current position.
+    let p = read(Dialect::Heidenhain, &["PLANE AXIAL A+10 B+30"]);
+    assert_eq!(p.axes(&m, [0.0; 3]), Err(Error::BadArgument));
+    assert_eq!(p.frame_on(&m), Err(Error::BadArgument));
+    let p = read(Dialect::Heidenhain, &["PLANE AXIAL A+0 B+30"]);
+    assert_eq!(p.axes(&m, [0.0; 3]).unwrap().axes, [30.0, 0.0, 0.0]);
+    let p = read(Dialect::Heidenhain, &["PLANE AXIAL B+120"]);
+    assert_eq!(p.axes(&m, [0.0; 3]), Err(Error::OutOfTravel));
+    let p = read(Dialect::Heidenhain, &["PLANE AXIAL C+370 B+30"]);
+    assert_eq!(p.axes(&m, [0.0, 0.0, 0.0]).unwrap().axes, [30.0, 10.0, 0.0]);
+    assert_eq!(
+        p.axes(&m, [0.0, 700.0, 0.0]).unwrap().axes,
+        [30.0, 730.0, 0.0]
+    );
+    // The same plane: 370° and 10° differ by a whole turn.
+    let f = p.frame_on(&m).unwrap();
+    assert!(dist(&f.rotation, &want(30.0, 10.0)) < 1e-13);
+    // Incremental commands need the rotation: refused. A datum shift keeps the positions;
+    // a cancel ends them.
+    let p = read(Dialect::Heidenhain, &["PLANE AXIAL B+30"]);
+    let e = p
+        .line(Dialect::Heidenhain, b"PLANE RELATIV SPA+10")
+        .unwrap_err();
+    assert_eq!(e.error, Error::NotAvailable);
+    let q = read(
+        Dialect::Heidenhain,
+        &["PLANE AXIAL B+30", "TRANS DATUM AXIS X+5"],
+    );
+    assert_eq!((q.direct, q.shift), (p.direct, [5.0, 0.0, 0.0]));
+    assert_eq!(q.frame_on(&m).unwrap().translation, [5.0, 0.0, 0.0]);
+    let q = read(
+        Dialect::Heidenhain,
+        &["PLANE AXIAL B+30", "PLANE RESET STAY"],
+    );
+    assert!(!q.is_active() && q.direct.is_none());
+    let s = read(Dialect::Sinumerik, &[cases[2].1]);
+    for additive in [
+        "AROT Z10",
+        "ATRANS X1",
+        "CYCLE800(0,\"TC1\",1,57,0,0,0,0,0,10)",
+    ] {
+        let e = s.line(Dialect::Sinumerik, additive.as_bytes()).unwrap_err();
+        assert_eq!(e.error, Error::NotAvailable, "{additive}");
+    }
+    let e = read(Dialect::Syntec, &[cases[1].1])
+        .line(Dialect::Syntec, b"G68.4 I0 J10 K0")
+        .unwrap_err();
+    assert_eq!(e.error, Error::NotAvailable);
+    // Without the machine the frame is not known: the C boundary says so (test_program.c).
+}
+
+/// A direct mode is translated into the target's direct mode where it names the axes the
+/// same way (letters: Heidenhain and Syntec; places: SINUMERIK), and reads back as the same
+/// positions; elsewhere it cannot be written without the machine.
+#[test]
+fn direct_modes_are_translated_where_the_target_has_one() {
+    // Source dialect and blocks, target dialect and form, the blocks written.
+    type Case<'a> = (Dialect, &'a [&'a str], Dialect, &'a str, &'a [&'a str]);
+    let cases: [Case; 4] = [
+        (
+            Dialect::Heidenhain,
+            &["PLANE AXIAL B+30 C+45 TURN FMAX"],
+            Dialect::Syntec,
+            "G68.2",
+            &["G158 P10200 X0. Y0. Z0. A0. B30. C45. U0. V0. W0."],
+        ),
+        // Syntec's origin becomes the datum shift of a PLANE, which has no origin words;
+        // the positions not given by a PLANE AXIAL are those G158 gave as 0.
+        (
+            Dialect::Syntec,
+            &["G158 P10200 X0 Y0 Z10 A0 B20 C45", "G158"],
+            Dialect::Heidenhain,
+            "PLANE SPATIAL",
+            &[
+                "CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+0\nCYCL DEF 7.2 Y+0\nCYCL DEF 7.3 Z+10\nPLANE AXIAL A+0 B+20 C+45 TURN FMAX",
+                "PLANE RESET STAY\nCYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+0\nCYCL DEF 7.2 Y+0\nCYCL DEF 7.3 Z+0",
+            ],
+        ),
+        (
+            Dialect::Sinumerik,
+            &["CYCLE800(0,\"TC1\",0,192,5,0,0,30,45,0,0,0,0,-1)", "CYCLE800()"],
+            Dialect::Sinumerik,
+            "ROT",
+            &["CYCLE800(0,\"\",0,192,5,0,0,30,45,0,0,0,0,0,0,0)", "ROT"],
+        ),
+        (
+            Dialect::Heidenhain,
+            &["PLANE AXIAL B+30 STAY", "PLANE AXIAL B+30 MOVE"],
+            Dialect::Heidenhain,
+            "PLANE EULER",
+            &["PLANE AXIAL B+30 STAY", "PLANE AXIAL B+30 MOVE FMAX"],
+        ),
+    ];
+    for (from, src, to, form, want) in cases {
+        assert_eq!(translate(from, src, to, form), want, "{from:?} -> {form}");
+        // Read back in the target: the same positions and origin.
+        let (mut p, mut q) = (Program::default(), Program::default());
+        for l in src {
+            let next = p.line(from, l.as_bytes()).unwrap().0;
+            let mut buf = [0u8; MAX_CHANGE];
+            let (n, _) = write_change(to, form.as_bytes(), &p, &next, -1, &mut buf).unwrap();
+            for block in buf[..n].split(|&b| b == b'\n').filter(|b| !b.is_empty()) {
+                q = q.line(to, block).unwrap().0;
+            }
+            assert_eq!(q.direct.map(|d| d.by), next.direct.map(|d| d.by));
+            assert_eq!(q.angles, next.angles, "{l}");
+            assert_eq!(q.frame, next.frame, "{l}");
+            p = next;
+        }
+    }
+    // Letters cannot become places, nor either a frame, without the machine.
+    let p = read(Dialect::Heidenhain, &["PLANE AXIAL B+30"]);
+    let mut buf = [0u8; MAX_CHANGE];
+    for (to, form) in [
+        (Dialect::Sinumerik, "CYCLE800"),
+        (Dialect::Fanuc, "G68.2"),
+        (Dialect::Haas, "G268"),
+        (Dialect::Twincat, "ROT"),
+    ] {
+        let r = write_change(to, form.as_bytes(), &Program::default(), &p, 4, &mut buf);
+        assert_eq!(r, Err(Error::NotAvailable), "{form}");
     }
 }

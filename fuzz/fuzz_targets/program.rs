@@ -165,20 +165,23 @@ fuzz_target!(|data: &[u8]| {
         if s == 4 || s == 5 {
             assert_eq!(as_bytes(&p), before, "status {s} changed the program");
         }
-        let f = frame(&p);
-        assert!(f.iter().all(|x| x.is_finite()));
-        round_trips(dialect, &f);
+        if p.active >= 2 {
+            // A direct mode: the frame needs the machine.
+            direct_on_machine(&p, &line);
+        } else {
+            let f = frame(&p);
+            assert!(f.iter().all(|x| x.is_finite()));
+            round_trips(dialect, &f);
+            axes_of(&p, &line);
+        }
         translated(&again, &p, &mut translations);
         flips_are_refused(&p, line.len());
-        axes_of(&p, &line);
     }
 });
 
-/// The positions the state's tilt moves a fork head to (C about Z carrying B about Y, B
-/// within ±100°), from a current position made of the line's bytes: the outputs written
-/// only on success and then finite, the same as the machine's own choice under the rule the
-/// state's choice words name (the closest without them).
-fn axes_of(p: &cncrot_program, line: &[u8]) {
+/// The fork head of the checks: C about Z carrying B about Y, B within ±100°, the pivot
+/// 150 mm above the tool adapter.
+fn fork_head() -> cncrot_machine {
     const CARR: &[u8] = b"$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1
 $TC_CARR10[1]=0 $TC_CARR11[1]=1 $TC_CARR12[1]=0 $TC_CARR6[1]=-150 $TC_CARR23[1]=\"T\"
 $TC_CARR31[1]=-100 $TC_CARR33[1]=100
@@ -188,6 +191,81 @@ $TC_CARR31[1]=-100 $TC_CARR33[1]=100
     // SAFETY: valid pointers and lengths.
     let s = unsafe { cncrot_machine_from_carr(&mut m, CARR.as_ptr().cast(), CARR.len(), 1) };
     assert_eq!(s, 0);
+    m
+}
+
+/// A direct mode's state: `cncrot_program_frame` refuses it with the output untouched;
+/// on the fork head, `cncrot_program_frame_on` gives the rotation `cncrot_machine_forward`
+/// gives at the stated positions (by letter: C is axis 1, B axis 2, an A other than 0
+/// refused; by place: axes 1 and 2), about the state's origin, and `cncrot_program_axes`
+/// positions that give the same rotation.
+fn direct_on_machine(p: &cncrot_program, line: &[u8]) {
+    let mut f = [input::SENTINEL; 16];
+    // SAFETY: valid pointers.
+    let s = unsafe { cncrot_program_frame(p, f.as_mut_ptr()) };
+    assert_eq!(s, cncrot_status::NotAvailable as i32);
+    assert!(f.iter().all(|x| x.to_bits() == input::SENTINEL.to_bits()));
+    let m = fork_head();
+    let a = p.angles;
+    let (positions, lacking) = if p.active == 2 {
+        ([a[2], a[1], 0.0], a[0] != 0.0)
+    } else {
+        (a, a[2] != 0.0)
+    };
+    // SAFETY: valid pointers.
+    let s = unsafe { cncrot_program_frame_on(p, &m, f.as_mut_ptr()) };
+    input::check_outputs(s, &[&f]);
+    let mut want = [0.0; 16];
+    // SAFETY: valid pointers.
+    let w = unsafe { cncrot_machine_forward(&m, positions.as_ptr(), want.as_mut_ptr()) };
+    if lacking {
+        assert_eq!(s, cncrot_status::BadArgument as i32);
+    } else {
+        assert_eq!(s, w);
+    }
+    if s == 0 {
+        for (i, row) in [0usize, 4, 8].into_iter().enumerate() {
+            assert_eq!(f[row..row + 3], want[row..row + 3]);
+            assert_eq!(f[row + 3].to_bits(), (p.origin[i] + 0.0).to_bits());
+        }
+    }
+    let current = [
+        line.first().map_or(0.0, |&b| f64::from(b as i8) * 10.0),
+        0.0,
+        0.0,
+    ];
+    let mut ax = [input::SENTINEL; 3];
+    // SAFETY: valid pointers.
+    let s = unsafe { cncrot_program_axes(p, &m, current.as_ptr(), ax.as_mut_ptr()) };
+    input::check_outputs(s, &[&ax]);
+    if s >= 0 {
+        let mut at = [0.0; 16];
+        // SAFETY: valid pointers.
+        assert_eq!(
+            unsafe { cncrot_machine_forward(&m, ax.as_ptr(), at.as_mut_ptr()) },
+            0
+        );
+        let scale = positions
+            .iter()
+            .chain(&ax)
+            .fold(1.0f64, |a, x| a.max(x.abs()));
+        for k in [0, 1, 2, 4, 5, 6, 8, 9, 10] {
+            assert!(
+                (at[k] - want[k]).abs() <= 1e-12 * scale,
+                "{:?} {:?}",
+                ax,
+                positions
+            );
+        }
+    }
+}
+
+/// The positions the state's tilt moves a fork head to (C about Z carrying B about Y, B
+/// within ±100°), from a current position made of the line's bytes: the outputs written
+/// only on success and then finite, the same as the machine's own choice under the rule the
+/// state's choice words name (the closest without them).
+fn axes_of(p: &cncrot_program, line: &[u8]) {
+    let m = fork_head();
     let c = line.first().map_or(0.0, |&b| f64::from(b as i8) * 10.0);
     let current = [c, 0.0, 0.0];
     let (mut ax, mut want) = ([input::SENTINEL; 3], [0.0; 3]);
@@ -284,6 +362,12 @@ fn translated(
     after: &cncrot_program,
     translations: &mut Vec<(i32, &CStr, bool, cncrot_program)>,
 ) {
+    if after.active >= 2 {
+        translations.retain_mut(|(dialect, form, _, state)| {
+            direct_translated(before, after, *dialect, form, state)
+        });
+        return;
+    }
     let f = frame(after);
     let scale = f
         .iter()
@@ -329,14 +413,21 @@ fn translated(
         }
         let g = frame(state);
         // Where the target says how to move (Heidenhain's PLANE, G68.2's G53.1 and G53.6),
-        // the way of moving to a rotated plane reads back.
+        // the way of moving to a rotated plane reads back. A tilt so small that the form's
+        // angles round it to none (1e-22° about X is `EULNU+0`: cos of it is 1 in a double)
+        // reads back unrotated (no tilt active), whose way of moving is Stay by definition.
         let says = *dialect == 2 || (*form == c"G68.2" && (*dialect == 3 || *dialect == 4));
-        let rotated = (0..3)
-            .any(|i| (0..3).any(|j| after.rotation[3 * i + j] != f64::from(u8::from(i == j))));
-        if says && after.active == 1 && rotated {
+        let rotated = |p: &cncrot_program| {
+            p.active == 1
+                && (0..3)
+                    .any(|i| (0..3).any(|j| p.rotation[3 * i + j] != f64::from(u8::from(i == j))))
+        };
+        if says && rotated(after) && rotated(state) {
             assert_eq!(
-                state.positioning, after.positioning,
-                "{form:?} in dialect {dialect}"
+                state.positioning,
+                after.positioning,
+                "{form:?} in dialect {dialect}: {}",
+                String::from_utf8_lossy(&out[..n])
             );
         }
         let d = g
@@ -351,6 +442,63 @@ fn translated(
         );
         true
     });
+}
+
+/// A direct mode translated: written in the target's direct mode where it names the axes
+/// the same way (else `CNCROT_STATUS_NOT_AVAILABLE`, or numbers it cannot write:
+/// `OUT_OF_RANGE`, with `out` untouched), it reads back as the same positions, exactly
+/// (the shortest numbers), about the same origin.
+fn direct_translated(
+    before: &cncrot_program,
+    after: &cncrot_program,
+    dialect: i32,
+    form: &CStr,
+    state: &mut cncrot_program,
+) -> bool {
+    let mut out = [0x5Au8; CNCROT_PROGRAM_CHANGE_MAX + 2];
+    // SAFETY: valid pointers, out holds more than cap bytes.
+    let s = unsafe {
+        cncrot_program_write_change(
+            before,
+            after,
+            dialect,
+            form.as_ptr(),
+            -1,
+            out.as_mut_ptr().cast(),
+            CNCROT_PROGRAM_CHANGE_MAX + 1,
+        )
+    };
+    input::assert_known(s);
+    if s < 0 {
+        assert!(out.iter().all(|&b| b == 0x5A), "{form:?}: {s} wrote");
+        assert!(
+            s == cncrot_status::NotAvailable as i32 || s == cncrot_status::OutOfRange as i32,
+            "{form:?} in dialect {dialect}: {s}"
+        );
+        return false;
+    }
+    let n = out.iter().position(|&b| b == 0).expect("NUL");
+    for block in out[..n].split(|&b| b == b'\n') {
+        let text = String::from_utf8_lossy(block);
+        // SAFETY: the block holds its length in bytes; state is valid.
+        let r = unsafe { cncrot_program_line(state, dialect, block.as_ptr().cast(), block.len()) };
+        assert!(r >= 0, "{form:?}: {text}: {r}");
+    }
+    let text = String::from_utf8_lossy(&out[..n]);
+    assert_eq!(state.active, after.active, "{form:?}: {text}");
+    assert_eq!(
+        state.angles.map(f64::to_bits),
+        after.angles.map(f64::to_bits),
+        "{form:?}: {text}"
+    );
+    let scale = after.origin.iter().fold(1.0f64, |a, x| a.max(x.abs()));
+    for k in 0..3 {
+        assert!(
+            (state.origin[k] - after.origin[k]).abs() <= 1e-11 * scale,
+            "{form:?}: {text}"
+        );
+    }
+    true
 }
 
 fn round_trips(dialect: i32, f: &[f64; 16]) {

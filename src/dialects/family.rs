@@ -26,7 +26,7 @@ pub const MAX_VALUES: usize = 9;
 pub struct Modal {
     /// The active frame (identity: nothing active): the datum shift, then the tilt.
     pub frame: Frame,
-    /// TwinCAT's programmed angles `X Y Z`.
+    /// TwinCAT's programmed angles `X Y Z`; a direct mode's rotary-axis positions.
     pub angles: [f64; 3],
     /// SINUMERIK's frame angles in Euler mode (machine data 10600 = 2) instead of RPY.
     pub euler: bool,
@@ -38,6 +38,44 @@ pub struct Modal {
     pub choice: AxisChoice,
     /// How the program moves the machine to the active tilt (`TURN`, `G53.1`, …).
     pub positioning: Positioning,
+    /// An active direct mode (`PLANE AXIAL`, `CYCLE800` direct, `G158` mode 2), its
+    /// positions in `angles`: the rotation follows from the machine, so `frame` holds only
+    /// the origin (its rotation the identity).
+    pub direct: Option<Direct>,
+}
+
+/// A direct mode: a block that states rotary-axis positions (`PLANE AXIAL B+30 C+45`, a
+/// `CYCLE800` with `_MODE` 192, `G158 P10200 … A B C`), kept in the state's `angles`
+/// (degrees; 0 where not given): the plane is where the machine's kinematics puts it with
+/// its rotary axes there, so the frame needs the machine
+/// ([`crate::dialects::program::Program::frame_on`]). The positions live beside it, not in
+/// it, as in the C state (and a state is copied often while a block is read: stack bound).
+///
+/// ```
+/// use cncrot::dialects::program::{Dialect, Direct, DirectAxes, Program};
+/// let (p, _) = Program::default().line(Dialect::Heidenhain, b"PLANE AXIAL B+30 C+45 TURN").unwrap();
+/// assert_eq!(p.direct, Some(Direct { by: DirectAxes::Letters, given: 0b110 }));
+/// assert_eq!(p.angles, [0.0, 30.0, 45.0]);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Direct {
+    /// How the positions name their axes.
+    pub by: DirectAxes,
+    /// Which positions the block gave: bit k for `angles[k]`.
+    pub given: u8,
+}
+
+/// How a direct mode names the rotary axes it positions.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DirectAxes {
+    /// By address letter: A about X, B about Y, C about Z (Heidenhain `PLANE AXIAL`,
+    /// Syntec `G158` mode 2). On a machine, an axis takes the letter of the machine axis
+    /// its direction is nearest \[choice: the machine's axis names are not part of its
+    /// description\].
+    Letters,
+    /// By place in the machine's kinematics: rotary axis 1, 2, 3 (a `CYCLE800` direct:
+    /// `_A` the swivel data set's first axis, `_B` its second).
+    Numbered,
 }
 
 /// How a program moves the machine to its tilted plane, as its blocks say: Heidenhain's
@@ -94,7 +132,29 @@ impl Modal {
             angles: [0.0; 3],
             choice: AxisChoice::Closest,
             positioning: Positioning::Stay,
+            direct: None,
             ..*self
+        }
+    }
+
+    /// This state with the direct mode `direct` active at `positions`, its origin `origin`
+    /// after the datum shift (the choice and positioning words cleared, as by
+    /// [`Modal::with_frame`]).
+    pub fn with_direct(&self, origin: Vector, direct: Direct, positions: [f64; 3]) -> Modal {
+        Modal {
+            direct: Some(direct),
+            angles: positions.map(|x| x + 0.0),
+            ..self.with_frame(Frame::with_translations(origin, crate::IDENTITY, [0.0; 3]))
+        }
+    }
+
+    /// The active tilt as the base of an incremental command (`PLANE RELATIV`, `G68.4`,
+    /// `AROT`, an additive `CYCLE800`): [`Error::NotAvailable`] while a direct mode is
+    /// active, whose rotation only the machine knows.
+    pub fn tilt_base(&self) -> Result<Frame, Error> {
+        match self.direct {
+            Some(_) => Err(Error::NotAvailable),
+            None => Ok(self.tilt()),
         }
     }
 
@@ -277,7 +337,7 @@ pub(crate) trait Family {
     /// Whether `m`, restored from elsewhere, is a state this family's reader can leave
     /// (the rotation itself is checked by the caller). Most families keep no angles.
     fn consistent(m: &Modal) -> bool {
-        m.angles == [0.0; 3]
+        m.angles == [0.0; 3] || m.direct.is_some()
     }
 
     /// The form the writer is asked for by name (`text` trimmed of nothing: spaces around
@@ -319,6 +379,28 @@ pub(crate) trait Family {
     /// [`Error::NotAvailable`] for a family without such a command.
     fn write_shift(shift: Vector, decimals: i32, out: &mut Out) -> Result<(), Error> {
         let _ = (shift, decimals, out);
+        Err(Error::NotAvailable)
+    }
+
+    /// Whether the family's direct-mode block has origin words (`G158`'s `X Y Z`,
+    /// `CYCLE800`'s `_X0 _Y0 _Z0`; `PLANE AXIAL` has none).
+    const DIRECT_HAS_ORIGIN: bool = false;
+
+    /// Writes the direct-mode block that positions the rotary axes as `direct` says
+    /// (`PLANE AXIAL`, `G158 P10200`, `CYCLE800` direct), with its origin `origin` (zero for
+    /// a block without origin words) and the positioning of `how` where the block says it,
+    /// whatever form `spec` names for frames; [`Error::NotAvailable`] where the family has
+    /// no direct mode or names the axes otherwise (letters, or places in the kinematics:
+    /// one cannot become the other without the machine).
+    fn write_direct(
+        spec: &FormSpec,
+        origin: Vector,
+        direct: (Direct, [f64; 3]),
+        how: Motion,
+        decimals: i32,
+        out: &mut Out,
+    ) -> Result<(), Error> {
+        let _ = (spec, origin, direct, how, decimals, out);
         Err(Error::NotAvailable)
     }
 

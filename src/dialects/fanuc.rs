@@ -206,7 +206,7 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
             g68_2(v3(&w.values, 0), v3(&w.values, 3))
         };
         Ok(Block::Frame(m.with_frame(if incremental {
-            g68_4(&m.tilt(), &call)
+            g68_4(&LineError::at(column, m.tilt_base())?, &call)
         } else {
             call
         })))

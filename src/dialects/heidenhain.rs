@@ -136,8 +136,8 @@ pub const RESET: Frame = Frame::IDENTITY;
 // Program lines.
 
 use super::family::{
-    no_selector, put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, Motion,
-    Positioning, MAX_VALUES,
+    no_selector, put, v3, AxisChoice, Block, Direct, DirectAxes, Family, Form, FormInfo, FormSpec,
+    Modal, Motion, Positioning, MAX_VALUES,
 };
 use crate::text::number::{write_word, Out, Style};
 use crate::text::scan::{Comments, Cursor, Exponent, LineError, Syntax, Token, Tokens};
@@ -187,6 +187,67 @@ fn plane_words<const N: usize>(
         return Err(c.missing(name.unwrap_or("a word of the plane")));
     }
     Ok(values)
+}
+
+/// How a `PLANE` moves the machine: `STAY` tilts the plane without moving; `TURN FMAX`,
+/// `MOVE FMAX` turn the rotary axes at rapid, `MOVE` keeping the tool tip.
+fn write_positioning(p: Positioning, out: &mut Out) {
+    out.text(match p {
+        Positioning::Stay => &b" STAY"[..],
+        Positioning::Turn => b" TURN FMAX",
+        Positioning::Move => b" MOVE FMAX",
+    });
+}
+
+/// The rest of a `PLANE AXIAL` block. Not inlined: its state stays out of the reader's
+/// frame (stack bound).
+#[inline(never)]
+fn axial(m: &Modal, c: &mut Cursor) -> Result<Block, LineError> {
+    let (direct, positions) = axial_words(c)?;
+    let how = options(c)?;
+    // The positions are the solution: `SEQ` has nothing to choose.
+    Ok(Block::Frame(Modal {
+        positioning: how.positioning,
+        ..m.with_direct([0.0; 3], direct, positions)
+    }))
+}
+
+/// `PLANE AXIAL`'s words: the positions of the rotary axes `A`, `B`, `C`, in any order, at
+/// least one, each once \[doc\]; the axes not named stay at 0 \[choice: the control may
+/// keep them where they are\].
+fn axial_words(c: &mut Cursor) -> Result<(Direct, [f64; 3]), LineError> {
+    let mut d = Direct {
+        by: DirectAxes::Letters,
+        given: 0,
+    };
+    let mut positions = [0.0; 3];
+    loop {
+        c.spaces();
+        let column = c.column();
+        let Some(k) = [b"A", b"B", b"C"].iter().position(|n| c.word(*n)) else {
+            break;
+        };
+        if d.given & (1 << k) != 0 {
+            return Err(LineError {
+                error: Error::UnknownWord,
+                column,
+                expected: None,
+            });
+        }
+        c.spaces();
+        let v = c.number(SYNTAX)?;
+        if let Some(slot) = positions.get_mut(k) {
+            *slot = v;
+        }
+        d.given |= 1 << k;
+    }
+    if d.given == 0 {
+        if options(&mut c.clone()).is_err() {
+            return Err(c.error(Error::UnknownWord));
+        }
+        return Err(c.missing("A, B or C"));
+    }
+    Ok((d, positions))
 }
 
 /// What may follow the plane's words: how to position (`MOVE`, `TURN`, `STAY`, `MB MAX`,
@@ -417,8 +478,8 @@ impl Family for Heidenhain {
     /// `PLANE VECTOR BX BY BZ NX NY NZ`, `PLANE POINTS P1X … P3Z` (every word required, in any
     /// order), `PLANE RELATIV SPA|SPB|SPC` (on the active plane), `PLANE RESET`, each with the
     /// positioning and solution options, after a line number, with `;` comments; every other
-    /// block is passed over or not followed (`other_block`); `PLANE AXIAL` needs the kinematics
-    /// ([`Error::NotAvailable`]). A `PLANE` replaces the active one; the datum is not part of
+    /// block is passed over or not followed (`other_block`); `PLANE AXIAL A B C` keeps the
+    /// rotary-axis positions (a [`Direct`] mode: the machine gives the frame). A `PLANE` replaces the active one; the datum is not part of
     /// the plane (`POINTS` too: P1 is a point of the plane, the datum stays) \[doc\].
     #[inline(never)]
     fn read_line(m: &Modal, text: &[u8]) -> Result<Block, LineError> {
@@ -471,15 +532,11 @@ impl Family for Heidenhain {
             };
             c.spaces();
             let angle = c.number(SYNTAX)?;
-            relativ(&m.tilt(), axis, angle)
+            relativ(&LineError::at(at, m.tilt_base())?, axis, angle)
         } else if c.keyword(b"RESET") {
             RESET
         } else if c.keyword(b"AXIAL") {
-            return Err(LineError {
-                error: Error::NotAvailable,
-                column,
-                expected: None,
-            });
+            return axial(m, &mut c);
         } else {
             return Err(c.error(Error::UnknownWord));
         };
@@ -564,11 +621,7 @@ impl Family for Heidenhain {
         for (name, &v) in names.iter().zip(words) {
             write_word(out, name, v, decimals, style)?;
         }
-        out.text(match how.positioning {
-            Positioning::Stay => &b" STAY"[..],
-            Positioning::Turn => b" TURN FMAX",
-            Positioning::Move => b" MOVE FMAX",
-        });
+        write_positioning(how.positioning, out);
         // `SEQ±` names the master axis' sign; another axis cannot be named on the block.
         match how.choice {
             AxisChoice::Closest => {}
@@ -576,6 +629,37 @@ impl Family for Heidenhain {
             AxisChoice::Plus(0) => out.text(b" SEQ+"),
             _ => return Err(Error::NotAvailable),
         }
+        Ok(())
+    }
+
+    /// `PLANE AXIAL` with the positions given (`A`, `B`, `C`), then the positioning: the
+    /// axes named by letter; the origin is the datum shift's (the block has none).
+    fn write_direct(
+        _: &FormSpec,
+        origin: Vector,
+        (direct, positions): (Direct, [f64; 3]),
+        how: Motion,
+        decimals: i32,
+        out: &mut Out,
+    ) -> Result<(), Error> {
+        if direct.by != DirectAxes::Letters {
+            return Err(Error::NotAvailable);
+        }
+        if origin != [0.0; 3] {
+            return Err(Error::HasOrigin);
+        }
+        let style = Style {
+            plus: true,
+            point: false,
+        };
+        out.text(b"PLANE AXIAL");
+        for (k, name) in [b" A", b" B", b" C"].iter().enumerate() {
+            if direct.given & (1 << k) != 0 {
+                let v = positions.get(k).copied().unwrap_or(0.0);
+                write_word(out, *name, v, decimals, style)?;
+            }
+        }
+        write_positioning(how.positioning, out);
         Ok(())
     }
 

@@ -9,7 +9,7 @@
 //! this module holds what is the same for all: the state, line ends and lengths, the checks
 //! of a restored state and of a written line.
 
-pub use super::family::{AxisChoice, Positioning};
+pub use super::family::{AxisChoice, Direct, DirectAxes, Positioning};
 use super::family::{Block, FormSpec, Modal, Motion, MAX_VALUES};
 use super::form;
 pub use super::registry::Dialect;
@@ -37,7 +37,8 @@ use crate::{Error, Frame, Vector};
 pub struct Program {
     /// The active frame (identity: nothing active).
     pub frame: Frame,
-    /// TwinCAT's programmed angles `X Y Z` (its `AROT` adds angles, not matrices).
+    /// TwinCAT's programmed angles `X Y Z` (its `AROT` adds angles, not matrices); a direct
+    /// mode's rotary-axis positions (degrees; see [`Direct`]).
     pub angles: [f64; 3],
     /// The dialect of the lines read so far: a program speaks one.
     pub dialect: Option<Dialect>,
@@ -54,6 +55,11 @@ pub struct Program {
     /// How the program moves the machine to the active tilt (`STAY`, `TURN`, `MOVE`,
     /// `G53.1`, `G53.6`, `G253`; a `CYCLE800` swivels); stay when no tilt is active.
     pub positioning: Positioning,
+    /// An active direct mode (`PLANE AXIAL`, `CYCLE800` direct, `G158` mode 2), its
+    /// rotary-axis positions in `angles`. Its rotation follows from the machine: `frame`
+    /// then holds the origin with the identity rotation, and [`Program::frame_on`] gives
+    /// the frame.
+    pub direct: Option<Direct>,
 }
 
 /// What a block did, beside the state it leaves (`CNCROT_STATUS_PASSED` and
@@ -122,11 +128,12 @@ impl Program {
                 shift: next.shift,
                 choice: next.choice,
                 // Nothing active: nothing to move to (a `G53.1` without a tilt).
-                positioning: if next.frame == Frame::IDENTITY {
+                positioning: if next.frame == Frame::IDENTITY && next.direct.is_none() {
                     Positioning::Stay
                 } else {
                     next.positioning
                 },
+                direct: next.direct,
             },
             Remark::Applied,
         ))
@@ -157,6 +164,9 @@ impl Program {
     /// assert!((c.axes[0] - 720.0).abs() < 1e-9 && (c.axes[1] - 30.0).abs() < 1e-9);
     /// ```
     pub fn axes(&self, machine: &Machine, current: [f64; 3]) -> Result<Choice, Error> {
+        if let Some(d) = self.direct {
+            return machine.commanded(direct_positions(&d, self.angles, machine)?, current);
+        }
         let axis = |k: u8| -> Result<usize, Error> {
             let n = machine.axes().len();
             match usize::from(k) {
@@ -183,7 +193,44 @@ impl Program {
             shift: self.shift,
             choice: self.choice,
             positioning: self.positioning,
+            direct: self.direct,
         }
+    }
+
+    /// Whether a tilt is active: a frame other than the identity, or a direct mode.
+    pub fn is_active(&self) -> bool {
+        self.frame != Frame::IDENTITY || self.direct.is_some()
+    }
+
+    /// The active frame on `machine`: [`Program::frame`], or for a direct mode the frame
+    /// the machine's kinematics gives with its rotary axes at the block's positions
+    /// (the rotation of [`Machine::forward`]) about the block's origin. Errors: those of
+    /// [`Program::check`], and for a direct mode those of [`Program::axes`].
+    ///
+    /// ```
+    /// use cncrot::dialects::program::{Dialect, Program};
+    /// use cncrot::kinematics::{Machine, RotaryAxis, Side};
+    /// // A table: B about Y carrying C about Z.
+    /// let m = Machine::new([0.0, 0.0, 1.0]).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Work, [0.0, 1.0, 0.0], [0.0; 3])).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Work, [0.0, 0.0, 1.0], [0.0; 3])).unwrap();
+    /// let (p, _) = Program::default().line(Dialect::Heidenhain, b"PLANE AXIAL B+30").unwrap();
+    /// // The table tilted by +30° about Y: the tool, fixed along the machine's Z, is along
+    /// // Ry(-30°)·e_z = (-0.5, 0, 0.866) in the workpiece.
+    /// let f = p.frame_on(&m).unwrap();
+    /// assert!((f.rotation[0][2] + 0.5).abs() < 1e-15 && f.translation == [0.0; 3]);
+    /// ```
+    pub fn frame_on(&self, machine: &Machine) -> Result<Frame, Error> {
+        self.check()?;
+        let Some(d) = self.direct else {
+            return Ok(self.frame);
+        };
+        let positions = direct_positions(&d, self.angles, machine)?;
+        let rotation = machine.forward(positions)?.rotation;
+        Ok(Frame {
+            rotation,
+            translation: self.frame.translation,
+        })
     }
 
     /// Whether this state is one that reading lines can leave: finite, its frame a rotation,
@@ -207,17 +254,72 @@ impl Program {
             return Err(Error::NotFinite);
         }
         crate::check_rotation(&self.frame.rotation)?;
-        let consistent = match self.dialect {
-            Some(d) => d.consistent(&self.modal()),
-            None => self.angles == [0.0; 3],
-        } && (self.frame != Frame::IDENTITY
-            || self.positioning == Positioning::Stay);
+        let direct = match self.direct {
+            None => true,
+            Some(d) => {
+                // As a reader leaves it: the rotation the machine's, the positions not
+                // given zero, no choice words (the positions are the choice), in a
+                // dialect whose direct mode names the axes so.
+                let by = match self.dialect {
+                    Some(Dialect::Heidenhain | Dialect::Syntec) => Some(DirectAxes::Letters),
+                    Some(Dialect::Sinumerik) => Some(DirectAxes::Numbered),
+                    _ => None,
+                };
+                self.frame.rotation == crate::IDENTITY
+                    && d.given != 0
+                    && d.given < 8
+                    && (0..3).all(|k| d.given & (1 << k) != 0 || self.angles.get(k) == Some(&0.0))
+                    && self.choice == AxisChoice::Closest
+                    && by == Some(d.by)
+            }
+        };
+        let consistent = direct
+            && match self.dialect {
+                Some(d) => d.consistent(&self.modal()),
+                None => self.angles == [0.0; 3],
+            }
+            && (self.is_active() || self.positioning == Positioning::Stay);
         if consistent {
             Ok(())
         } else {
             Err(Error::BadArgument)
         }
     }
+}
+
+/// The positions of `machine`'s rotary axes that a direct mode states: by place, or by
+/// letter, each machine axis taking the position of the letter its direction is nearest
+/// (A for X, B for Y, C for Z: the largest component, the first of equal ones) \[choice:
+/// a machine description carries no axis names\]. A nonzero position for a letter or a
+/// place the machine lacks: [`Error::BadArgument`].
+fn direct_positions(d: &Direct, stated: [f64; 3], machine: &Machine) -> Result<[f64; 3], Error> {
+    let mut positions = [0.0; 3];
+    let mut taken = 0u8;
+    for (k, axis) in machine.axes().iter().enumerate() {
+        let slot = match d.by {
+            DirectAxes::Numbered => k,
+            DirectAxes::Letters => {
+                let v = axis.direction.map(crate::math::abs);
+                let [x, y, z] = v;
+                if x >= y && x >= z {
+                    0
+                } else if y >= z {
+                    1
+                } else {
+                    2
+                }
+            }
+        };
+        if let (Some(p), Some(v)) = (positions.get_mut(k), stated.get(slot)) {
+            *p = *v;
+        }
+        taken |= 1 << slot;
+    }
+    let lacking = (0..3).any(|k| taken & (1 << k) == 0 && stated.get(k) != Some(&0.0));
+    if lacking {
+        return Err(Error::BadArgument);
+    }
+    Ok(positions)
 }
 
 /// The axis a block's choice words refer to when they name none (Heidenhain's master axis,
@@ -341,7 +443,14 @@ const _: () = {
 fn split(dialect: Dialect, spec: &FormSpec, p: &Program) -> (Vector, Frame) {
     let f = p.frame;
     let rotation_only = Frame::from_rotation(f.rotation);
-    if f.rotation == crate::IDENTITY || (dialect.keeps_shift() && !spec.form.has_origin()) {
+    // A direct mode is written in the dialect's direct block, whatever `spec` is for frames,
+    // with that block's origin words (Syntec's `G158`, `CYCLE800`) or none (`PLANE AXIAL`).
+    let origin_words = match p.direct {
+        Some(_) => dialect.direct_has_origin(),
+        None => spec.form.has_origin(),
+    };
+    let untilted = f.rotation == crate::IDENTITY && p.direct.is_none();
+    if untilted || (dialect.keeps_shift() && !origin_words) {
         // The whole origin is a datum shift: a form without origin words tilts about it.
         (f.translation, rotation_only)
     } else if dialect.keeps_shift() {
@@ -484,32 +593,47 @@ fn change(
         choice: after.choice,
         positioning: after.positioning,
     };
-    let active = t1 != Frame::IDENTITY;
+    // A direct mode's tilt is its positions (its rotation only the machine knows).
+    let (mut d0, d1) = (before.direct, after.direct);
+    let active = t1 != Frame::IDENTITY || d1.is_some();
     let words_changed = before.choice != after.choice;
     let moved = before.positioning != after.positioning;
-    // Where the tilt block says how to move, a new way of moving is a new tilt block.
-    let rewrite = active && (words_changed || (moved && dialect.positioning_in_block()));
+    // Where the tilt block says how to move, a new way of moving is a new tilt block; where a
+    // block of its own moves the machine (`G53.1`), no block takes that back: a tilt that
+    // stays where it is after one that turned is the tilt block again, without it.
+    let unsaid = after.positioning == Positioning::Stay
+        && dialect
+            .positioning_block(&spec, Positioning::Turn)
+            .is_some();
+    let rewrite =
+        active && (words_changed || (moved && (dialect.positioning_in_block() || unsaid)));
     let mut tilt_written = false;
+    let tilt = |out: &mut Out| match d1 {
+        Some(d) => dialect
+            .write_direct(&spec, t1.translation, (d, after.angles), how, decimals, out)
+            .map(|()| false),
+        None => tilt_block(dialect, &spec, &t1, how, decimals, out),
+    };
     if dialect.keeps_shift() {
         if s0 != s1 {
-            if t0 != Frame::IDENTITY {
+            if t0 != Frame::IDENTITY || d0.is_some() {
                 next(out);
                 tilt_block(dialect, &spec, &Frame::IDENTITY, stay, decimals, out)?;
-                t0 = Frame::IDENTITY;
+                (t0, d0) = (Frame::IDENTITY, None);
             }
             next(out);
             dialect.write_shift(s1, decimals, out)?;
         }
-        if t0 != t1 || rewrite {
+        if (t0, d0) != (t1, d1) || rewrite {
             next(out);
-            singular = tilt_block(dialect, &spec, &t1, how, decimals, out)?;
+            singular = tilt(out)?;
             tilt_written = true;
         }
-    } else if (s0, t0) != (s1, t1) || rewrite {
+    } else if (s0, t0, d0) != (s1, t1, d1) || rewrite {
         // One frame, which each command replaces whole: a translation alone is the shift
         // command, anything else the tilt block.
         next(out);
-        if t1 == Frame::IDENTITY && s1 != [0.0; 3] {
+        if t1 == Frame::IDENTITY && d1.is_none() && s1 != [0.0; 3] {
             match dialect.write_shift(s1, decimals, out) {
                 Err(Error::NotAvailable) => {
                     let f = Frame::with_translations(s1, crate::IDENTITY, [0.0; 3]);
@@ -518,12 +642,13 @@ fn change(
                 r => r?,
             }
         } else {
-            singular = tilt_block(dialect, &spec, &t1, how, decimals, out)?;
+            singular = tilt(out)?;
             tilt_written = true;
         }
     }
-    // Where a block of its own moves the machine (`G53.1`): after a new tilt, or alone.
-    if active && (tilt_written || moved) {
+    // Where a block of its own moves the machine (`G53.1`): after a new tilt, or alone (a
+    // direct mode's block moves the axes itself).
+    if active && d1.is_none() && (tilt_written || moved) {
         if let Some(text) = dialect.positioning_block(&spec, after.positioning) {
             next(out);
             out.text(text);

@@ -7,7 +7,7 @@
 //! dispatch, no function pointers, so the no-panic proof sees every path.
 
 use super::family::{
-    Block, Family, Form, FormInfo, FormSpec, Modal, Motion, Positioning, MAX_VALUES,
+    Block, Direct, Family, Form, FormInfo, FormSpec, Modal, Motion, Positioning, MAX_VALUES,
 };
 use super::{fanuc, haas, heidenhain, sinumerik, syntec, twincat};
 use crate::text::number::Out;
@@ -118,6 +118,28 @@ macro_rules! families {
             ) -> Result<(), Error> {
                 match self {
                     $(Dialect::$name => <$family>::write_shift(shift, decimals, out),)*
+                }
+            }
+
+            pub(crate) const fn direct_has_origin(self) -> bool {
+                match self {
+                    $(Dialect::$name => <$family>::DIRECT_HAS_ORIGIN,)*
+                }
+            }
+
+            pub(crate) fn write_direct(
+                self,
+                spec: &FormSpec,
+                origin: Vector,
+                direct: (Direct, [f64; 3]),
+                how: Motion,
+                decimals: i32,
+                out: &mut Out,
+            ) -> Result<(), Error> {
+                match self {
+                    $(Dialect::$name => {
+                        <$family>::write_direct(spec, origin, direct, how, decimals, out)
+                    })*
                 }
             }
 

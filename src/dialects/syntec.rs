@@ -13,8 +13,10 @@ pub enum Mode {
     /// 1: three rotations in the order code, each about the axes already turned ("the
     /// rotation in the latter order is based on the last rotation") \[doc\]: intrinsic.
     Order(AxisCode),
-    /// 2: the rotary-axis positions themselves (needs the machine's kinematics:
-    /// [`Error::NotAvailable`] until the library has them).
+    /// 2: the rotary-axis positions themselves: the frame follows from the machine's
+    /// kinematics (a program keeps the positions, [`crate::dialects::program::Direct`];
+    /// [`rotation`] and [`frame`], which have no machine, refuse it with
+    /// [`Error::NotAvailable`]).
     Direct,
     /// 3: `A B C` is the tool direction, the new Z axis \[doc\].
     Normal,
@@ -139,7 +141,8 @@ fn normal(n: Vector) -> Result<Matrix, Error> {
 // Program lines.
 
 use super::family::{
-    put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, Motion, Positioning, MAX_VALUES,
+    put, v3, Block, Direct, DirectAxes, Family, Form, FormInfo, FormSpec, Modal, Motion,
+    Positioning, MAX_VALUES,
 };
 use super::fanuc;
 use crate::text::number::{write_integer, write_word, Out};
@@ -182,7 +185,29 @@ impl Family for Syntec {
             // A bad P is reported at its value, not at the command.
             let at = w.column(1);
             let pword = LineError::at(at, PWord::decode(whole(pw, at)?))?;
-            let f = frame(&m.frame, pword, [x, y, z], [a, b, cc], [u, v, ww]);
+            // Incremental on the active tilt, about its datum (the shift is added once).
+            let base = if pword.incremental {
+                LineError::at(column, m.tilt_base())?
+            } else {
+                Frame::IDENTITY
+            };
+            if pword.mode == Mode::Direct {
+                // The positions of the axes A, B, C (omitted: 0); the axes turn there [doc:
+                // "the rotary axis will be selected to be actuated"]. On an active plane, or
+                // with `U V W` after a rotation only the machine knows: not followed here.
+                if pword.incremental || [u, v, ww] != [0.0; 3] {
+                    return LineError::at(column, Err(Error::NotAvailable));
+                }
+                let direct = Direct {
+                    by: DirectAxes::Letters,
+                    given: 0b111,
+                };
+                return Ok(Block::Frame(Modal {
+                    positioning: Positioning::Turn,
+                    ..m.with_direct([x, y, z], direct, [a, b, cc])
+                }));
+            }
+            let f = frame(&base, pword, [x, y, z], [a, b, cc], [u, v, ww]);
             return Ok(Block::Frame(m.with_frame(LineError::at(column, f)?)));
         }
         if let Some(result) = fanuc::read_g68(m, &mut c) {
@@ -262,6 +287,32 @@ impl Family for Syntec {
             }
             _ => Err(Error::BadArgument),
         }
+    }
+
+    /// `G158 P10200 X Y Z A B C U0. V0. W0.`: mode 2, the axes named by letter.
+    const DIRECT_HAS_ORIGIN: bool = true;
+
+    fn write_direct(
+        _: &FormSpec,
+        origin: Vector,
+        (direct, positions): (Direct, [f64; 3]),
+        _: Motion,
+        decimals: i32,
+        out: &mut Out,
+    ) -> Result<(), Error> {
+        if direct.by != DirectAxes::Letters {
+            return Err(Error::NotAvailable);
+        }
+        out.text(b"G158 P10200");
+        let [a, b, c] = positions;
+        let words = [origin[0], origin[1], origin[2], a, b, c, 0.0, 0.0, 0.0];
+        let names: [&[u8]; 9] = [
+            b" X", b" Y", b" Z", b" A", b" B", b" C", b" U", b" V", b" W",
+        ];
+        for (name, &v) in names.iter().zip(&words) {
+            write_word(out, name, v, decimals, super::fanuc::STYLE)?;
+        }
+        Ok(())
     }
 
     /// `G52 X Y Z`, as Fanuc writes it.

@@ -6,7 +6,9 @@ use super::machine::{
     cncrot_machine, CNCROT_CHOOSE_CLOSEST, CNCROT_CHOOSE_MINUS, CNCROT_CHOOSE_PLUS,
 };
 use super::{cncrot_status, guard, non_null, read_finite, write};
-use crate::dialects::program::{self, AxisChoice, Dialect, Positioning, Program, Remark};
+use crate::dialects::program::{
+    self, AxisChoice, Dialect, Direct, DirectAxes, Positioning, Program, Remark,
+};
 use crate::{crc32, Error, Frame};
 use core::ffi::c_char;
 
@@ -62,7 +64,7 @@ const FORM_MAX: usize = 64;
 ///
 /// Layout (176 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
 /// `angles` 96, `shift` 120, `active` 144, `dialect` 148, `options` 152, `choice` 156,
-/// `reference_axis` 160, `positioning` 164, `spare` 168, `reserved` 172. Accepted on entry:
+/// `reference_axis` 160, `positioning` 164, `direct_given` 168, `reserved` 172. Accepted on entry:
 /// all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..172
 /// exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
 #[repr(C)]
@@ -73,13 +75,18 @@ pub struct cncrot_program {
     /// The active origin: the datum shift and the tilt's origin together (all zero while
     /// `active` is 0).
     pub origin: [f64; 3],
-    /// TwinCAT's programmed angles `X Y Z` (its `AROT` adds angles); zero in other dialects.
+    /// TwinCAT's programmed angles `X Y Z` (its `AROT` adds angles); a direct mode's
+    /// rotary-axis positions (degrees); zero otherwise.
     pub angles: [f64; 3],
     /// The datum shift the program made active (Heidenhain `CYCL DEF 7`, `TRANS DATUM`;
     /// Fanuc-style `G52`), in the workpiece axes before the tilt: part of `origin`, kept
     /// when the tilt is cancelled.
     pub shift: [f64; 3],
-    /// 1 while a frame is active, 0 when none is (the identity).
+    /// 1 while a frame is active, 0 when none is (the identity); 2 or 3 while a direct mode
+    /// is (`PLANE AXIAL`, `G158` mode 2: 2, the positions of the axes named A, B, C;
+    /// `CYCLE800` direct: 3, the positions of the machine's rotary axes 1, 2, 3): then
+    /// `angles` holds the positions, `origin` the origin, `rotation` is all zero (the
+    /// machine's kinematics gives it: `cncrot_program_frame_on`).
     pub active: i32,
     /// The dialect of the blocks read so far (`CNCROT_DIALECT_*`), 0 before the first.
     pub dialect: i32,
@@ -99,8 +106,9 @@ pub struct cncrot_program {
     /// `CNCROT_POSITIONING_TURN` (`TURN`, `G53.1`, `G253`, a `CYCLE800`),
     /// `CNCROT_POSITIONING_MOVE` (`MOVE`, `G53.6`: the tool tip kept in place).
     pub positioning: i32,
-    /// Zero (room for a later field without a change of size).
-    pub spare: u32,
+    /// Which rotary-axis positions an active direct mode gave: bit k for `angles[k]`
+    /// (1..7 while `active` is 2 or 3; 0 otherwise).
+    pub direct_given: u32,
     /// The seal: 0 in the all-zero initial state, else the checksum described above (the
     /// field keeps the name it had when it was reserved, so that the layout is unchanged).
     pub reserved: u32,
@@ -159,8 +167,18 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
             let r = core::array::from_fn(|i| core::array::from_fn(|j| c.rotation[3 * i + j]));
             Frame::with_translations(c.origin, r, [0.0; 3])
         }
+        2 | 3 if c.rotation == [0.0; 9] => {
+            Frame::with_translations(c.origin, crate::IDENTITY, [0.0; 3])
+        }
         _ => return Err(Error::BadState),
     };
+    let direct = match (c.active, u8::try_from(c.direct_given)) {
+        (0 | 1, Ok(0)) => None,
+        (2, Ok(given)) => Some((DirectAxes::Letters, given)),
+        (3, Ok(given)) => Some((DirectAxes::Numbered, given)),
+        _ => return Err(Error::BadState),
+    };
+    let direct = direct.map(|(by, given)| Direct { by, given });
     let axis = u8::try_from(c.reference_axis)
         .ok()
         .filter(|&k| usize::from(k) <= crate::kinematics::MAX_AXES)
@@ -173,16 +191,14 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
     };
     let positioning = match c.positioning {
         CNCROT_POSITIONING_STAY => Positioning::Stay,
-        CNCROT_POSITIONING_TURN if c.active == 1 => Positioning::Turn,
-        CNCROT_POSITIONING_MOVE if c.active == 1 => Positioning::Move,
+        CNCROT_POSITIONING_TURN if c.active != 0 => Positioning::Turn,
+        CNCROT_POSITIONING_MOVE if c.active != 0 => Positioning::Move,
         _ => return Err(Error::BadState),
     };
-    if c.spare != 0 {
-        return Err(Error::BadState);
-    }
     let p = Program {
         frame,
         angles: c.angles,
+        direct,
         dialect,
         euler: c.options & CNCROT_PROGRAM_SINUMERIK_EULER != 0,
         shift: c.shift,
@@ -205,8 +221,17 @@ unsafe fn load_at(c: *const cncrot_program) -> Result<Program, Error> {
 
 #[inline(always)]
 fn store(p: &Program, options: u32) -> cncrot_program {
-    let active = p.frame != Frame::IDENTITY;
-    let (rotation, origin) = if active {
+    let active = match p.direct {
+        None => i32::from(p.frame != Frame::IDENTITY),
+        Some(Direct {
+            by: DirectAxes::Letters,
+            ..
+        }) => 2,
+        Some(_) => 3,
+    };
+    let (rotation, origin) = if active > 1 {
+        ([0.0; 9], p.frame.translation.map(|x| x + 0.0))
+    } else if active == 1 {
         let r = p.frame.rotation;
         (
             core::array::from_fn(|k| r[k / 3][k % 3] + 0.0),
@@ -230,13 +255,13 @@ fn store(p: &Program, options: u32) -> cncrot_program {
         origin,
         angles: p.angles.map(|x| x + 0.0),
         shift: p.shift.map(|x| x + 0.0),
-        active: i32::from(active),
+        active,
         dialect: p.dialect.map_or(0, |d| d as i32),
         options,
         choice,
         reference_axis,
         positioning,
-        spare: 0,
+        direct_given: p.direct.map_or(0, |d| u32::from(d.given)),
         reserved: 0,
     };
     c.reserved = seal_of(&c);
@@ -477,15 +502,20 @@ pub unsafe extern "C" fn cncrot_program_expected(
 /// head's axis nearest the tool, else the axis nearest the machine base) — and without
 /// them `CNCROT_CHOOSE_CLOSEST`, the choice SINUMERIK makes for a frame and Heidenhain
 /// without `SEQ`: whole turns unwound toward `current`, within the travel limits and on the
-/// Hirth grids. No tilt active: the positions of the identity frame. Axes the machine lacks
-/// are 0 in `axes` (and must be 0 in `current`).
+/// Hirth grids. No tilt active: the positions of the identity frame. A direct mode
+/// (`active` 2 or 3): the positions it states, mapped onto the machine's axes (by place, or
+/// by letter: each axis takes the position of the letter its direction is nearest, A for X,
+/// B for Y, C for Z), as stated on an axis with travel limits, the turn nearest `current`
+/// on a modulo axis. Axes the machine lacks are 0 in `axes` (and must be 0 in `current`).
 ///
 /// Returns 0, `CNCROT_STATUS_FREE_AXIS` (a free axis kept at its current position),
 /// `CNCROT_STATUS_SNAPPED` (a Hirth axis snapped to its grid), or with `axes` untouched:
 /// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a program state this library did
 /// not write), `CNCROT_STATUS_UNREACHABLE`, `CNCROT_STATUS_OUT_OF_TRAVEL`,
-/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE` (a current position), and the
-/// statuses of a description that is not a machine (see `cncrot_machine`).
+/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE` (a current position, a direct
+/// position of magnitude `CNCROT_MACHINE_ANGLE_MAX_DEG` or more), `CNCROT_STATUS_BAD_ARGUMENT`
+/// (a direct position for an axis the machine lacks), and the statuses of a description
+/// that is not a machine (see `cncrot_machine`).
 ///
 /// # Safety
 /// `program` points to a readable `cncrot_program`, `machine` to a `cncrot_machine`,
@@ -522,8 +552,10 @@ pub unsafe extern "C" fn cncrot_program_axes(
 
 /// The active frame of a program (4x4, row-major; the identity when none is active).
 ///
-/// Returns 0, or with `frame` untouched `CNCROT_STATUS_NULL_POINTER` or
-/// `CNCROT_STATUS_BAD_STATE` (a state this library did not write).
+/// Returns 0, or with `frame` untouched `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_BAD_STATE` (a state this library did not write) or
+/// `CNCROT_STATUS_NOT_AVAILABLE` (a direct mode is active, whose rotation follows from the
+/// machine: `cncrot_program_frame_on`).
 ///
 /// # Safety
 /// `program` points to a readable `cncrot_program`, `frame` to 16 writable doubles (or NULL:
@@ -542,7 +574,47 @@ pub unsafe extern "C" fn cncrot_program_frame(
     guard(|| {
         non_null(&[program.is_null(), frame.is_null()])?;
         let p = load(&program.read_unaligned())?;
+        if p.direct.is_some() {
+            return Err(cncrot_status::NotAvailable);
+        }
         write_frame(frame, &p.frame)?;
+        Ok(cncrot_status::Ok)
+    })
+}
+
+/// The active frame of a program on `machine` (4x4, row-major): the state's frame, or for a
+/// direct mode (`PLANE AXIAL`, `CYCLE800` direct, `G158` mode 2) the rotation the machine's
+/// kinematics gives with its rotary axes at the stated positions (the rotation of
+/// `cncrot_machine_forward`; the axes mapped as in `cncrot_program_axes`) about the
+/// block's origin.
+///
+/// Returns 0, or with `frame` untouched `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_BAD_STATE` (a state this library did not write),
+/// `CNCROT_STATUS_BAD_ARGUMENT` (a direct position for an axis the machine lacks),
+/// `CNCROT_STATUS_OUT_OF_RANGE` (a result that overflows), and the statuses of a
+/// description that is not a machine (see `cncrot_machine`).
+///
+/// # Safety
+/// `program` points to a readable `cncrot_program`, `machine` to a `cncrot_machine`,
+/// `frame` to 16 writable doubles (or NULL: error).
+///
+/// ```c
+/// double f[16];
+/// cncrot_program_frame_on(&p, &m, f);   // after PLANE AXIAL B+30 C+45
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_program_frame_on(
+    program: *const cncrot_program,
+    machine: *const cncrot_machine,
+    frame: *mut f64,
+) -> i32 {
+    guard(|| {
+        non_null(&[program.is_null(), machine.is_null(), frame.is_null()])?;
+        let p = load(&program.read_unaligned())?;
+        let mut m = crate::kinematics::Machine::EMPTY;
+        super::machine::load_into(machine, &mut m)?;
+        write_frame(frame, &p.frame_on(&m)?)?;
         Ok(cncrot_status::Ok)
     })
 }

@@ -2,7 +2,7 @@
 //! the controllers' rules (CYCLE800 minus/plus, Heidenhain `SEQ±`, CYCLE600 `_ROT_INV`).
 
 use super::{Machine, RotaryAxis, MAX_AXES, MAX_SOLUTIONS, TRAVEL_TOLERANCE};
-use crate::math::{ceil, round, turns_toward};
+use crate::math::{abs, ceil, round, turns_toward};
 use crate::{check_rotation, mul, transpose, Error, Matrix, CLOSEST_MAX, IDENTITY};
 
 /// Which solution [`Machine::choose`] takes.
@@ -128,6 +128,65 @@ impl Machine {
         Ok(Choice {
             remaining: mul(&transpose(&reached), target),
             ..c
+        })
+    }
+
+    /// The positions a direct command moves the axes to (`PLANE AXIAL`, a `CYCLE800`
+    /// direct, `G158` mode 2: the positions themselves, not a plane): an axis with travel
+    /// limits to the position as stated ([`Error::OutOfTravel`] beyond them), a modulo axis
+    /// (no limits) to the turn of it nearest `current`, on its Hirth grid. The remaining
+    /// rotation is what the grid leaves: `Fᵀ·F_stated`. Errors: [`Error::NotFinite`],
+    /// [`Error::BadArgument`] (a nonzero position of an axis the machine lacks),
+    /// [`Error::OutOfRange`] (a position of magnitude [`CLOSEST_MAX`] or more),
+    /// [`Error::OutOfTravel`].
+    ///
+    /// ```
+    /// use cncrot::kinematics::{Machine, RotaryAxis, Side};
+    /// let mut c = RotaryAxis::new(Side::Work, [0.0, 0.0, 1.0], [0.0; 3]);
+    /// let m = Machine::new([0.0, 0.0, 1.0]).unwrap().with_axis(c).unwrap();
+    /// // A modulo C: 370° from 0° is 10°, the same plane.
+    /// assert_eq!(m.commanded([370.0, 0.0, 0.0], [0.0; 3]).unwrap().axes[0], 10.0);
+    /// c.limits = Some([-360.0, 360.0]);
+    /// let m = Machine::new([0.0, 0.0, 1.0]).unwrap().with_axis(c).unwrap();
+    /// assert!(m.commanded([370.0, 0.0, 0.0], [0.0; 3]).is_err());
+    /// ```
+    pub fn commanded(
+        &self,
+        positions: [f64; MAX_AXES],
+        current: [f64; MAX_AXES],
+    ) -> Result<Choice, Error> {
+        let stated = self.positions(positions)?;
+        let current = self.positions(current)?;
+        if !stated.iter().chain(&current).all(|x| abs(*x) < CLOSEST_MAX) {
+            return Err(Error::OutOfRange);
+        }
+        let mut axes = [0.0; MAX_AXES];
+        let mut residual = [0.0; MAX_AXES];
+        for (k, axis) in self.axes().iter().enumerate() {
+            let (x, cur) = (stated.get(k).copied(), current.get(k).copied());
+            let (Some(x), Some(cur)) = (x, cur) else {
+                continue;
+            };
+            let from = match axis.limits {
+                Some([lo, hi]) if !(x >= lo - TRAVEL_TOLERANCE && x <= hi + TRAVEL_TOLERANCE) => {
+                    return Err(Error::OutOfTravel);
+                }
+                Some(_) => x,
+                None => cur,
+            };
+            let (at, r) = place(axis, x, from).ok_or(Error::OutOfTravel)?;
+            if let (Some(a), Some(slot)) = (axes.get_mut(k), residual.get_mut(k)) {
+                *a = at;
+                *slot = r;
+            }
+        }
+        let reached = self.rotation_at(axes);
+        let target = self.rotation_at(stated);
+        Ok(Choice {
+            axes,
+            residual,
+            remaining: mul(&transpose(&reached), &target),
+            free: false,
         })
     }
 

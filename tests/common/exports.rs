@@ -840,6 +840,35 @@ fn programs() -> Vec<Call> {
             t.status(cncrot_program_frame(null(), f.as_mut_ptr()));
             t.f64s(&f);
         }),
+        ("cncrot_program_frame_on", |t| unsafe {
+            let m = head();
+            let mut p = cncrot_program::default();
+            let mut f = [0.0; 16];
+            // Nothing active, a frame, a direct mode (which cncrot_program_frame refuses),
+            // refusals.
+            t.status(cncrot_program_frame_on(&p, &m, f.as_mut_ptr()));
+            t.f64s(&f);
+            for l in [
+                &b"PLANE SPATIAL SPA+0 SPB+30 SPC+0"[..],
+                b"PLANE AXIAL B+30 C+45",
+            ] {
+                t.status(cncrot_program_line(
+                    &mut p,
+                    CNCROT_DIALECT_HEIDENHAIN,
+                    l.as_ptr().cast(),
+                    l.len(),
+                ));
+                t.status(cncrot_program_frame_on(&p, &m, f.as_mut_ptr()));
+                t.f64s(&f);
+                t.status(cncrot_program_frame(&p, f.as_mut_ptr()));
+            }
+            t.status(cncrot_program_frame_on(&p, null(), f.as_mut_ptr()));
+            t.status(cncrot_program_frame_on(&p, &m, null_mut()));
+            let mut bad = p;
+            bad.angles[1] += 1.0;
+            t.status(cncrot_program_frame_on(&bad, &m, f.as_mut_ptr()));
+            t.f64s(&f);
+        }),
         ("cncrot_program_init", |t| unsafe {
             let mut p = cncrot_program::default();
             for options in [0, CNCROT_PROGRAM_SINUMERIK_EULER, 2, u32::MAX] {

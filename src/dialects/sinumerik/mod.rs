@@ -371,8 +371,8 @@ pub fn orirpy_angles(v: Vector) -> Result<([f64; 3], bool), Error> {
 // Program lines.
 
 use super::family::{
-    put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, Motion, Positioning,
-    MAX_VALUES,
+    put, v3, AxisChoice, Block, Direct, DirectAxes, Family, Form, FormInfo, FormSpec, Modal,
+    Motion, Positioning, MAX_VALUES,
 };
 use crate::text::number::{write, write_integer, write_word, Out, Style};
 use crate::text::scan::{
@@ -551,13 +551,52 @@ fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
         return Err(refused(args.column(2), allowed)(Error::BadArgument));
     }
     let allowed = "_MODE: a swivel mode (57: axis by axis X, Y, Z; 27: Z, Y, X; ...)";
+    if SwivelMode::from_mode(mode) == Ok(SwivelMode::Direct) {
+        return cycle800_direct(m, &args, st % 10 == 1, &w);
+    }
     let call = cycle800_words(mode, &w).map_err(refused(args.column(3), allowed))?;
     // The cycle swivels the machine to the plane [choice: `_ST`'s higher digits, which may
     // say "swivel: no", are not public].
+    let base = if st % 10 == 1 {
+        m.tilt_base().map_err(at(args.column(2)))?
+    } else {
+        m.frame
+    };
     Ok(Modal {
         choice,
         positioning: Positioning::Turn,
-        ..m.with_frame(cycle800_apply(&m.frame, st % 10 == 1, &call))
+        ..m.with_frame(cycle800_apply(&base, st % 10 == 1, &call))
+    })
+}
+
+/// A `CYCLE800` in direct mode (`_MODE` bits 7..6 = 11): `_A` and `_B` are the positions
+/// of the swivel data set's rotary axes 1 and 2 \[doc\], about the origin `_X0 _Y0 _Z0`; the
+/// frame follows from the kinematics, so the program keeps the positions (a
+/// [`Direct`] mode). Additive (`_ST` units digit 1), a `_C` (a data set has two axes) or a
+/// translation `_X1 _Y1 _Z1` after a rotation only the machine knows: not read here
+/// ([`Error::NotAvailable`] at that parameter). Not inlined (stack bound).
+#[inline(never)]
+fn cycle800_direct(
+    m: &Modal,
+    args: &Args<16>,
+    additive: bool,
+    w: &[f64; 9],
+) -> Result<Modal, LineError> {
+    let unread = [(additive, 2), (w[5] != 0.0, 9)]
+        .into_iter()
+        .chain((6..9).map(|k| (w[k] != 0.0, 4 + k)));
+    for (refused, k) in unread {
+        if refused {
+            return Err(at(args.column(k))(Error::NotAvailable));
+        }
+    }
+    let direct = Direct {
+        by: DirectAxes::Numbered,
+        given: 0b011,
+    };
+    Ok(Modal {
+        positioning: Positioning::Turn,
+        ..m.with_direct(v3(w, 0), direct, [w[3], w[4], 0.0])
     })
 }
 
@@ -592,6 +631,11 @@ fn cycle600_line(m: &Modal, c: &mut Cursor, column: usize) -> Result<Modal, Line
     // stands, so that a bad one is reported at its own column.
     if let Some((k, error, allowed)) = cycle600::first_fault(&call) {
         return Err(refused(args.column(k).max(column), allowed)(error));
+    }
+    // `_ROT_AD = 1` adds to the active frame: not to a direct mode's, which only the
+    // machine knows.
+    if call.rot_ad == 1 && m.direct.is_some() {
+        return Err(at(args.column(15).max(column))(Error::NotAvailable));
     }
     let state = cycle600::State {
         frame: m.frame,
@@ -805,7 +849,7 @@ impl Family for Sinumerik {
             _ => Frame::with_translations(xyz, crate::IDENTITY, [0.0; 3]),
         };
         Ok(Block::Frame(m.with_frame(if additive {
-            m.frame.compose(&step)
+            m.tilt_base().map_err(at(column))?.compose(&step)
         } else {
             step
         })))
@@ -886,6 +930,36 @@ impl Family for Sinumerik {
             }
             _ => return Err(Error::BadArgument),
         }
+        Ok(())
+    }
+
+    /// A `CYCLE800` in direct mode (`_MODE` 192): `_X0 _Y0 _Z0` the origin, `_A _B` the
+    /// positions of rotary axes 1 and 2; the axes named by place.
+    const DIRECT_HAS_ORIGIN: bool = true;
+
+    fn write_direct(
+        _: &FormSpec,
+        origin: Vector,
+        (direct, positions): (Direct, [f64; 3]),
+        _: Motion,
+        decimals: i32,
+        out: &mut Out,
+    ) -> Result<(), Error> {
+        if direct.by != DirectAxes::Numbered || positions[2] != 0.0 {
+            return Err(Error::NotAvailable);
+        }
+        let style = Style {
+            plus: false,
+            point: false,
+        };
+        out.text(b"CYCLE800(0,\"\",0,192");
+        let [a, b, _] = positions;
+        for v in [origin[0], origin[1], origin[2], a, b, 0.0, 0.0, 0.0, 0.0] {
+            out.byte(b',');
+            write(out, v, decimals, style)?;
+        }
+        // `_DIR` names no choice: the positions are the solution.
+        out.text(b",0,0,0)");
         Ok(())
     }
 
