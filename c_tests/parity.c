@@ -207,6 +207,22 @@ int main(void) {
     memset(&m, 0, sizeof m);
     for (int r = 0; r < 2 + k; r++)
       cncrot_machine_add_axis(&m, (int32_t)MACH[k][r][0], MACH[k][r] + 1, MACH[k][r] + 4, MACH[k][r][7], MACH[k][r][8]);
+    /* A direct mode's frame on the machine (PLANE AXIAL: C and B by letter on the head, the
+     * table's A, C and B; CYCLE800 direct: axes 1 and 2). */
+    for (int j = 0; j < 4; j++) {
+      char line[96];
+      int32_t dialect = j % 2 ? CNCROT_DIALECT_SINUMERIK : CNCROT_DIALECT_HEIDENHAIN;
+      double a = rnd(-90, 90), b = rnd(-90, 90);
+      if (dialect == CNCROT_DIALECT_HEIDENHAIN)
+        snprintf(line, sizeof line, "PLANE AXIAL %s%.6f C%+.6f TURN", k ? "A" : "B", a, b);
+      else
+        snprintf(line, sizeof line, "CYCLE800(0,\"TC1\",0,192,1,2,3,%.6f,%.6f,0,0,0,0,-1)", a, b);
+      cncrot_program p;
+      memset(&p, 0, sizeof p);
+      double f[16];
+      if (cncrot_program_line(&p, dialect, line, strlen(line)) < 0 || cncrot_program_frame_on(&p, &m, f) < 0) continue;
+      printf("KP %d %d", k, dialect), text_hex(line), hexes(f, 16), printf("\n");
+    }
     for (int j = 0; j < 12; j++) {
       double ax[3] = {rnd(-180, 180), rnd(-100, 100), k ? rnd(-180, 180) : 0}, f[16], sol[6] = {0}, cur[3] = {rnd(-720, 720), 0, 0};
       double out[3], res[3], rem[16];

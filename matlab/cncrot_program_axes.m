@@ -6,7 +6,10 @@
 %   whole turns unwound toward it, within the travel limits and on the Hirth grids: what
 %   cncrot_machine_choose(MACHINE, F, CURRENT, 'closest') gives for the state's frame F, the
 %   choice SINUMERIK makes for a frame and Heidenhain makes without SEQ. No tilt active: the
-%   positions of the identity frame. STATUS 0, 2 (a free axis kept at its current position)
+%   positions of the identity frame. A direct mode (PLANE AXIAL, G158 mode 2, CYCLE800
+%   direct): the positions it states, each axis taking its letter's (A about X, B about Y,
+%   C about Z, by the axis' direction) or its place's, as stated on an axis with travel
+%   limits, the turn nearest CURRENT on a modulo axis. STATUS 0, 2 (a free axis kept at its current position)
 %   or 3 (a Hirth axis snapped). Errors: cncrot:unreachable, cncrot:outOfTravel,
 %   cncrot:badState (a state whose fields were changed), ...; the message names the argument.
 %

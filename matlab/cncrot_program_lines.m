@@ -2,6 +2,7 @@
 %   [F, state, frames] = cncrot_program_lines(dialect, lines)
 %   [F, state, frames] = cncrot_program_lines(dialect, lines, state)
 %   [F, state, frames, remarks] = cncrot_program_lines(...)
+%   [...] = cncrot_program_lines(dialect, lines, state, machine)
 %   dialect: 'sinumerik', 'heidenhain', 'fanuc', 'syntec', 'twincat' or 'haas' (any case,
 %   char or string), or its code (cncrot_dialects, of any numeric class); lines: one block
 %   (a char row or a string) or several (a cell array of them, or a string array), applied
@@ -13,7 +14,12 @@
 %   tilt's own choice words (state.choice 1 minus, 2 plus for SEQ-/SEQ+ and _DIR, with
 %   state.reference_axis; cncrot_program_axes follows them) and how the program moves the
 %   machine to the tilt (state.positioning 0 stay, 1 turn for TURN, G53.1, G253, CYCLE800,
-%   2 move for MOVE, G53.6). The state carries a
+%   2 move for MOVE, G53.6). A direct mode (PLANE AXIAL, G158 mode 2, a CYCLE800 with
+%   _MODE 192) keeps the rotary-axis positions (state.angles; state.active 2 by letter A,
+%   B, C, 3 by the machine's axes 1, 2, 3; state.direct_given which were given): its frame
+%   follows from the machine's kinematics, NaN without one; with machine (as in
+%   cncrot_machine_forward: a swivel-data text or axis rows) it is the rotation the machine
+%   reaches there, about the block's origin. The state carries a
 %   seal: a state whose fields were changed is refused (cncrot:badState). Every block of a
 %   program is read: remarks (N-by-1 cell) says for each line 'applied' (a command that
 %   concerns the frame), 'passed' (motion, tool, M words, comments, program structure: the
@@ -32,5 +38,7 @@
 %     F = cncrot_program_lines('heidenhain', '5 PLANE SPATIAL SPA+27 SPB+0 SPC+45 TURN FMAX')
 %     [F, ~, ~, r] = cncrot_program_lines('fanuc', {'N10 G54', 'N20 G68.2 J30', 'N30 G1 X10'})
 %     % r = {'not followed'; 'applied'; 'passed'}
+%     hd = [0 0 0 1 0 0 0 0 0 0 0 0; 0 0 1 0 0 0 150 -100 100 0 0 0];   % C carrying B
+%     F = cncrot_program_lines('heidenhain', 'PLANE AXIAL B+30 C+45', [], hd)
 %
 %   See also CNCROT_PROGRAM_WRITE, CNCROT_PROGRAM_TRANSLATE, CNCROT_DIALECTS, CNCROT_FORM_FRAME.

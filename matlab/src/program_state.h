@@ -1,12 +1,12 @@
 /* The program state as a MATLAB struct (rotation, origin, angles, shift, active, dialect,
- * options, choice, reference_axis, positioning, seal) and back, and the reading of program lines: shared by
+ * options, choice, reference_axis, positioning, direct_given, seal) and back, and the reading of program lines: shared by
  * cncrot_program_lines, cncrot_program_translate and cncrot_program_axes. */
 #ifndef CNCROT_PROGRAM_STATE_H
 #define CNCROT_PROGRAM_STATE_H
 #include "gateway.h"
 
 static const char *FIELDS[] = {"rotation", "origin", "angles", "shift", "active", "dialect",
-                               "options", "choice", "reference_axis", "positioning", "seal"};
+                               "options", "choice", "reference_axis", "positioning", "direct_given", "seal"};
 
 /* A field of the state struct as n doubles (absent: zeros; wrong size: an error). */
 static void field(const mxArray *s, int arg, const char *name, double *out, size_t n) {
@@ -56,6 +56,8 @@ static void from_struct(const mxArray *s, int arg, cncrot_program *p) {
     v[0] = mxGetScalar(o);
   else field(s, arg, "options", v, 1);
   p->options = as_u32(v[0]);
+  field(s, arg, "direct_given", v, 1);
+  p->direct_given = as_u32(v[0]);
   if (mxGetField(s, 0, "seal")) {
     field(s, arg, "seal", v, 1);
     p->reserved = as_u32(v[0]);
@@ -69,7 +71,7 @@ static void from_struct(const mxArray *s, int arg, cncrot_program *p) {
 }
 
 static mxArray *to_struct(const cncrot_program *p) {
-  mxArray *s = mxCreateStructMatrix(1, 1, 11, FIELDS);
+  mxArray *s = mxCreateStructMatrix(1, 1, 12, FIELDS);
   mxArray *r = mxCreateDoubleMatrix(3, 3, mxREAL);
   to_col_major(p->rotation, mxGetDoubles(r));
   mxSetField(s, 0, "rotation", r);
@@ -87,7 +89,20 @@ static mxArray *to_struct(const cncrot_program *p) {
   mxSetField(s, 0, "active", mxCreateDoubleScalar(p->active));
   mxSetField(s, 0, "dialect", mxCreateDoubleScalar(p->dialect));
   mxSetField(s, 0, "options", mxCreateDoubleScalar(p->options));
+  mxSetField(s, 0, "direct_given", mxCreateDoubleScalar(p->direct_given));
   mxSetField(s, 0, "seal", mxCreateDoubleScalar(p->reserved));
+  return s;
+}
+
+/* The active frame of p: on machine m when one is given (a direct mode's frame follows from
+ * it), else the state's own, NaN for a direct mode (PLANE AXIAL, CYCLE800 direct, G158 mode
+ * 2), whose frame needs the machine. Returns the library's status otherwise. */
+static int32_t frame_of(const cncrot_program *p, const cncrot_machine *m, double f[16]) {
+  int32_t s = m ? cncrot_program_frame_on(p, m, f) : cncrot_program_frame(p, f);
+  if (s == CNCROT_STATUS_NOT_AVAILABLE && m == NULL) {
+    for (int k = 0; k < 16; k++) f[k] = NAN;
+    return CNCROT_STATUS_OK;
+  }
   return s;
 }
 

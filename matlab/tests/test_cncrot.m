@@ -258,6 +258,20 @@ function test_cncrot(cases_file)
   check(isequal(ax, cncrot_machine_choose(hd, Fp30, [730 0 0], 'closest')), 'program_axes is the closest choice');
   [ax0, s0] = cncrot_program_axes([], hd, [730 0 0]);
   check(isequal(ax0, [730 0 0]) && s0 == 2, 'program_axes with nothing active');
+  % Direct modes: PLANE AXIAL keeps the positions; its frame needs the machine: NaN without
+  % one; on the head (which turns the tool frame) Rz(45)*Ry(30), by hand.
+  [Fa, sta, fra] = cncrot_program_lines('heidenhain', {'PLANE SPATIAL SPA+0 SPB+30 SPC+0', 'PLANE AXIAL B+30 C+45 TURN FMAX'});
+  first = fra(:, :, 1);
+  check(all(isnan(Fa(:))) && ~any(isnan(first(:))) && sta.active == 2 && isequal(sta.angles, [0 30 45]) ...
+        && sta.direct_given == 6 && sta.positioning == 1, 'PLANE AXIAL without a machine');
+  c45 = sqrt(0.5);
+  Rw = [c45 -c45 0; c45 c45 0; 0 0 1] * [sqrt(3)/2 0 0.5; 0 1 0; -0.5 0 sqrt(3)/2];
+  Fm = cncrot_program_lines('heidenhain', 'PLANE AXIAL B+30 C+45 TURN FMAX', [], hd);
+  check(max(max(abs(Fm(1:3, 1:3) - Rw))) < 1e-15 && isequal(Fm(1:3, 4), [0; 0; 0]), 'PLANE AXIAL on a machine');
+  [axd, sd] = cncrot_program_axes(sta, hd, [730 0 0]);
+  check(isequal(axd, [765 30 0]) && sd == 0, 'program_axes of PLANE AXIAL: the modulo C nearest 730');
+  expect_message('cncrot:badArgument', @() cncrot_program_lines('heidenhain', 'PLANE AXIAL A+10', [], hd), ...
+                 'PLANE AXIAL: an A on a head without one', 'cncrot_program_lines', 'line 1', 'argument 4 (machine)');
   bad = stp; bad.origin(1) = 1;
   expect_message('cncrot:badState', @() cncrot_program_axes(bad, hd, [0 0 0]), 'program_axes of an edited state', 'cncrot_program_axes', 'argument 1 (state)');
   expect_message('cncrot:badArgument', @() cncrot_program_axes(stp, hd, [0 0 5]), 'program_axes: a position for no axis', 'cncrot_program_axes', 'argument 3 (current)');
@@ -565,6 +579,9 @@ function test_cncrot(cases_file)
       case 'L'
         F = cncrot_program_lines(str2double(t{2}), unhex(t{3}));
         check(same(reshape(F.', 1, 16), 4), ['parity ' line]);
+      case 'KP'
+        F = cncrot_program_lines(str2double(t{3}), unhex(t{4}), [], machines{str2double(t{2}) + 1});
+        check(same(reshape(F.', 1, 16), 5), ['parity ' line]);
       case 'KF'
         F = cncrot_machine_forward(machines{str2double(t{2}) + 1}, hv(3, 3));
         check(same(reshape(F.', 1, 16), 6), ['parity ' line]);
