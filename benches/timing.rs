@@ -702,6 +702,29 @@ $TC_CARR34[1]=\"HEAD_CB\"
             b.time("cncrot_program_axes", class, &states, &mut |p| unsafe {
                 cncrot_program_axes(p, m, cur.as_ptr(), ax.as_mut_ptr())
             });
+            // Direct modes (a CYCLE800 with _MODE 192 at the same positions of axes 1 and 2):
+            // the frame the machine gives there.
+            let direct: Vec<cncrot_program> = pos
+                .iter()
+                .map(|a| unsafe {
+                    let line = format!(
+                        "CYCLE800(0,\"TC1\",0,192,0,0,0,{},{},0,0,0,0,-1)",
+                        a[0], a[1]
+                    );
+                    let mut p = cncrot_program::default();
+                    let s = cncrot_program_line(
+                        &mut p,
+                        CNCROT_DIALECT_SINUMERIK,
+                        line.as_ptr().cast(),
+                        line.len(),
+                    );
+                    assert_eq!(s, 0, "{line}");
+                    p
+                })
+                .collect();
+            b.time("cncrot_program_frame_on", class, &direct, &mut |p| unsafe {
+                cncrot_program_frame_on(p, m, f.as_mut_ptr())
+            });
             // The five-axis transformation: poses (tip and direction) at random axes, and back
             // from previous positions a cycle away (0.1° off on every rotary axis).
             let six: Vec<[f64; 6]> = pos

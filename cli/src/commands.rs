@@ -7,7 +7,9 @@ use crate::svg;
 use crate::{run, Common, Report};
 use cncrot::dialects::cycle600::{self, Call, State};
 use cncrot::dialects::head_def::HeadTable;
-use cncrot::dialects::program::{write_change, write_line, Dialect, Program, Remark, MAX_CHANGE};
+use cncrot::dialects::program::{
+    write_change, write_line, Dialect, DirectAxes, Program, Remark, MAX_CHANGE,
+};
 use cncrot::kinematics::{Machine, RotaryAxis, Rule, Side, MAX_AXES};
 use cncrot::{
     angles_from_matrix, closest_of, decompose, matrix_from_angles, probe, second_solution,
@@ -234,6 +236,81 @@ fn targets(to: &[String]) -> Result<Vec<Target>, Failure> {
         .map_err(option("--to"))
 }
 
+/// The positions a direct mode states, as its block names them (`B=30 C=45`, or
+/// `axis 1=45 axis 2=30`).
+fn direct_text(p: &Program, d: i32) -> String {
+    let Some(direct) = p.direct else {
+        return String::new();
+    };
+    let mut words = Vec::new();
+    for (k, v) in p.angles.iter().enumerate() {
+        if direct.given & (1 << k) == 0 {
+            continue;
+        }
+        let v = nums(&[*v], d);
+        words.push(match direct.by {
+            DirectAxes::Letters => format!("{}={}", ["A", "B", "C"][k], v.trim()),
+            DirectAxes::Numbered => format!("axis {}={}", k + 1, v.trim()),
+        });
+    }
+    words.join(" ")
+}
+
+/// What `line` reports for a direct mode: its positions (the frame needs the machine) and
+/// the block in each target that has a direct mode naming the axes the same way; a target
+/// asked for by name that has none is a failure, one of the default list is left out.
+fn direct_report(p: &Program, targets: &[Target], asked: bool, d: i32) -> Result<Report, Failure> {
+    let axes = direct_text(p, d);
+    let mut full = format!(
+        "direct: {axes}\n(the frame follows from the machine: `cncrot program` with --carr or --axis)\n"
+    );
+    let (mut brief, mut lines, mut failed) = (vec![format!("direct: {axes}")], vec![], vec![]);
+    for t in targets {
+        let name = input::dialect_name(t.dialect);
+        let mut buf = [0u8; MAX_CHANGE];
+        match write_change(
+            t.dialect,
+            t.form.as_bytes(),
+            &Program::default(),
+            p,
+            d,
+            &mut buf,
+        ) {
+            Ok((n, _)) => {
+                let text = String::from_utf8_lossy(&buf[..n]).replace('\n', "  ");
+                full += &format!("{name:<10} {text}\n");
+                brief.push(text.clone());
+                lines.push(Json::Obj(vec![
+                    ("dialect", Json::str(name)),
+                    ("form", Json::str(t.form.clone())),
+                    ("text", Json::str(text)),
+                ]));
+            }
+            Err(e) if asked => failed.push(format!("{name} {}: {}", t.form, e.message())),
+            Err(_) => {}
+        }
+    }
+    if !failed.is_empty() {
+        return Err(Failure::new(failed.join("; ")));
+    }
+    Ok(Report {
+        full,
+        brief: brief.join("\t"),
+        json: Json::Obj(vec![
+            ("direct", Json::nums(&p.angles)),
+            ("by", Json::str(direct_by(p))),
+            ("lines", Json::Arr(lines)),
+        ]),
+    })
+}
+
+fn direct_by(p: &Program) -> &'static str {
+    match p.direct.map(|d| d.by) {
+        Some(DirectAxes::Numbered) => "axis",
+        _ => "letter",
+    }
+}
+
 pub fn line(
     from: &str,
     to: &[String],
@@ -272,6 +349,9 @@ pub fn line(
                 brief: brief.to_string(),
                 json: Json::Obj(vec![("remark", Json::str(brief.to_string()))]),
             });
+        }
+        if program.direct.is_some() {
+            return direct_report(&program, &targets, !to.is_empty(), d);
         }
         last = Some(line.trim().to_string());
         frame_report(
@@ -1165,7 +1245,16 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
             }
             Remark::Applied => {
                 applied += 1;
-                let f = p.frame;
+                // A direct mode's frame needs the machine.
+                let on_machine = match (p.direct, &machine) {
+                    (None, _) => Some(Ok(p.frame)),
+                    (Some(_), Some(m)) => Some(p.frame_on(m)),
+                    (Some(_), None) => None,
+                };
+                let f = match on_machine {
+                    Some(Ok(f)) => f,
+                    _ => Frame::IDENTITY,
+                };
                 if f != Frame::IDENTITY {
                     tilts += 1;
                     if drawn.len() < MAX_DRAWN {
@@ -1208,6 +1297,40 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         nums(&f.translation, d),
                         nums(&tool, d)
                     );
+                    match on_machine {
+                        Some(Ok(_)) => {}
+                        Some(Err(e)) => {
+                            ok = false;
+                            let why = match e {
+                                Error::BadArgument => {
+                                    "the machine has no axis for a position the block states"
+                                }
+                                e => e.message(),
+                            };
+                            row = format!(
+                                "line {line}: {block}\n  direct: {}  frame: {why}",
+                                direct_text(&p, d),
+                            );
+                            json = Json::Obj(vec![
+                                ("line", Json::Int(line as i64)),
+                                ("block", Json::str(block)),
+                                ("direct", Json::nums(&p.angles)),
+                                ("frame_error", Json::str(why)),
+                            ]);
+                        }
+                        None => {
+                            row = format!(
+                                "line {line}: {block}\n  direct: {} (the frame follows from the machine: --carr or --axis)",
+                                direct_text(&p, d)
+                            );
+                            json = Json::Obj(vec![
+                                ("line", Json::Int(line as i64)),
+                                ("block", Json::str(block)),
+                                ("direct", Json::nums(&p.angles)),
+                                ("by", Json::str(direct_by(&p))),
+                            ]);
+                        }
+                    }
                     match axes {
                         Some(Ok(c)) => {
                             current = c.axes;
@@ -1220,8 +1343,14 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         }
                         Some(Err(e)) => {
                             ok = false;
-                            row += &format!("  axes: {}", e.message());
-                            json = json.with("axes_error", Json::str(e.message()));
+                            let why = match e {
+                                Error::BadArgument if p.direct.is_some() => {
+                                    "the machine has no axis for a position the block states"
+                                }
+                                e => e.message(),
+                            };
+                            row += &format!("  axes: {why}");
+                            json = json.with("axes_error", Json::str(why));
                         }
                         None => {}
                     }

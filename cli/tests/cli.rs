@@ -1435,3 +1435,68 @@ fn program_to_writes_datum_shifts() {
         r.stderr
     );
 }
+
+/// A direct mode (`PLANE AXIAL`) states the rotary-axis positions: without a machine its
+/// frame is not known and the row says so; on a head C about Z carrying B about Y the tool
+/// direction is Rz(45)·Ry(30)·e_z = (0.5·cos 45°, 0.5·sin 45°, cos 30°) by hand, the
+/// modulo C the turn nearest 730 (765), B as stated; an A on that head is refused with
+/// the reason. `line` writes it in the direct mode of the dialects that name axes by
+/// letter.
+#[test]
+fn program_reads_direct_modes_through_the_machine() {
+    let prog = "PLANE AXIAL B+30 C+45 TURN FMAX\nPLANE AXIAL A+10\n";
+    let r = cncrot(&["program", "-", "--dialect", "heidenhain"], prog);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(
+        r.stdout
+            .contains("direct: B=30.0000 C=45.0000 (the frame follows from the machine"),
+        "{}",
+        r.stdout
+    );
+    let head = [
+        "--axis",
+        "tool:0,0,1",
+        "--axis",
+        "tool:0,1,0@0,0,150",
+        "--current",
+        "730,0",
+    ];
+    let mut args = vec!["program", "-", "--dialect", "heidenhain"];
+    args.extend(head);
+    let r = cncrot(&args, prog);
+    assert_eq!(r.code, 1, "{}", r.stdout);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(
+        lines[1],
+        "  origin: 0.0000 0.0000 0.0000  tool direction: 0.3536 0.3536 0.8660  axes: 765.0000 30.0000"
+    );
+    assert!(
+        lines[3].contains("the machine has no axis for a position the block states"),
+        "{}",
+        lines[3]
+    );
+    let out = ok(&[
+        "line",
+        "--from",
+        "heidenhain",
+        "--to",
+        "syntec:G158",
+        "PLANE AXIAL B+30 C+45",
+    ]);
+    assert!(
+        out.contains("G158 P10200 X0. Y0. Z0. A0. B30. C45. U0. V0. W0."),
+        "{out}"
+    );
+    let r = cncrot(
+        &[
+            "line",
+            "--from",
+            "heidenhain",
+            "--to",
+            "fanuc",
+            "PLANE AXIAL B+30",
+        ],
+        "",
+    );
+    assert_eq!(r.code, 1, "{}", r.stderr);
+}
