@@ -2024,7 +2024,18 @@ fn direct_modes_keep_the_positions_and_the_machine_gives_the_frame() {
 fn direct_modes_are_translated_where_the_target_has_one() {
     // Source dialect and blocks, target dialect and form, the blocks written.
     type Case<'a> = (Dialect, &'a [&'a str], Dialect, &'a str, &'a [&'a str]);
-    let cases: [Case; 4] = [
+    let cases: [Case; 5] = [
+        // New positions are a new block, in every dialect.
+        (
+            Dialect::Heidenhain,
+            &["PLANE AXIAL B+30 TURN", "PLANE AXIAL B+40 TURN"],
+            Dialect::Syntec,
+            "G158",
+            &[
+                "G158 P10200 X0. Y0. Z0. A0. B30. C0. U0. V0. W0.",
+                "G158 P10200 X0. Y0. Z0. A0. B40. C0. U0. V0. W0.",
+            ],
+        ),
         (
             Dialect::Heidenhain,
             &["PLANE AXIAL B+30 C+45 TURN FMAX"],

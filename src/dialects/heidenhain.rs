@@ -479,8 +479,9 @@ impl Family for Heidenhain {
     /// order), `PLANE RELATIV SPA|SPB|SPC` (on the active plane), `PLANE RESET`, each with the
     /// positioning and solution options, after a line number, with `;` comments; every other
     /// block is passed over or not followed (`other_block`); `PLANE AXIAL A B C` keeps the
-    /// rotary-axis positions (a [`Direct`] mode: the machine gives the frame). A `PLANE` replaces the active one; the datum is not part of
-    /// the plane (`POINTS` too: P1 is a point of the plane, the datum stays) \[doc\].
+    /// rotary-axis positions (a [`Direct`] mode: the machine gives the frame). A `PLANE`
+    /// replaces the active one; the datum is not part of the plane (`POINTS` too: P1 is a
+    /// point of the plane, the datum stays) \[doc\].
     #[inline(never)]
     fn read_line(m: &Modal, text: &[u8]) -> Result<Block, LineError> {
         let mut c = Cursor::new(text);

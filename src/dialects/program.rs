@@ -594,7 +594,10 @@ fn change(
         positioning: after.positioning,
     };
     // A direct mode's tilt is its positions (its rotation only the machine knows).
-    let (mut d0, d1) = (before.direct, after.direct);
+    let (mut d0, d1) = (
+        before.direct.map(|d| (d, before.angles)),
+        after.direct.map(|d| (d, after.angles)),
+    );
     let active = t1 != Frame::IDENTITY || d1.is_some();
     let words_changed = before.choice != after.choice;
     let moved = before.positioning != after.positioning;
@@ -610,7 +613,7 @@ fn change(
     let mut tilt_written = false;
     let tilt = |out: &mut Out| match d1 {
         Some(d) => dialect
-            .write_direct(&spec, t1.translation, (d, after.angles), how, decimals, out)
+            .write_direct(&spec, t1.translation, d, how, decimals, out)
             .map(|()| false),
         None => tilt_block(dialect, &spec, &t1, how, decimals, out),
     };
