@@ -312,17 +312,20 @@ static void whole_programs(void) {
   CHECK(memcmp(&fresh, &zero, sizeof fresh) == 0, "a passed block wrote the state");
 }
 
-/* The positions a program's tilt moves a machine to: a fork head from swivel data (C about
- * Z carrying B about Y, B within ±100°). Ry(30°) is C 0, B 30 or C 180, B -30; from C 730 the
- * first, C unwound to 720. Nothing active: B 0 with C free, kept where it is. The same bits
- * as cncrot_machine_choose with CNCROT_CHOOSE_CLOSEST. */
+/* The fork head of the machine tests: C about Z carrying B about Y (B within +-100), the
+ * pivot 150 mm above the tool adapter. */
+static const char FORK_HEAD[] =
+    "$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1 $TC_CARR10[1]=0 $TC_CARR11[1]=1 $TC_CARR12[1]=0\n"
+    "$TC_CARR6[1]=-150 $TC_CARR23[1]=\"T\" $TC_CARR31[1]=-100 $TC_CARR33[1]=100\n";
+
+/* The positions a program's tilt moves a machine to: the fork head from swivel data.
+ * Ry(30°) is C 0, B 30 or C 180, B -30; from C 730 the first, C unwound to 720. Nothing
+ * active: B 0 with C free, kept where it is. The same bits as cncrot_machine_choose with
+ * CNCROT_CHOOSE_CLOSEST. */
 static void program_axes(void) {
-  static const char carr[] =
-      "$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1 $TC_CARR10[1]=0 $TC_CARR11[1]=1 $TC_CARR12[1]=0\n"
-      "$TC_CARR6[1]=-150 $TC_CARR23[1]=\"T\" $TC_CARR31[1]=-100 $TC_CARR33[1]=100\n";
   cncrot_machine m;
   memset(&m, 0, sizeof m);
-  CHECK_STATUS(cncrot_machine_from_carr(&m, carr, strlen(carr), 1), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_from_carr(&m, FORK_HEAD, strlen(FORK_HEAD), 1), CNCROT_STATUS_OK);
   cncrot_program p;
   memset(&p, 0, sizeof p);
   double cur[3] = {730, 0, 0}, ax[3], want[3];
@@ -362,12 +365,9 @@ static void program_axes(void) {
  * B+30 C+45 and a CYCLE800 direct with _A = 45 (axis 1, C), _B = 30 (axis 2, B) are both
  * Rz(45)·Ry(30), written out by hand below. */
 static void direct_modes(void) {
-  static const char carr[] =
-      "$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1 $TC_CARR10[1]=0 $TC_CARR11[1]=1 $TC_CARR12[1]=0\n"
-      "$TC_CARR6[1]=-150 $TC_CARR23[1]=\"T\" $TC_CARR31[1]=-100 $TC_CARR33[1]=100\n";
   cncrot_machine m;
   memset(&m, 0, sizeof m);
-  CHECK_STATUS(cncrot_machine_from_carr(&m, carr, strlen(carr), 1), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_from_carr(&m, FORK_HEAD, strlen(FORK_HEAD), 1), CNCROT_STATUS_OK);
   const double c = sqrt(0.5), cb = sqrt(3) / 2, sb = 0.5;
   /* Rz(45)·Ry(30), row-major. */
   const double want[9] = {c * cb, -c, c * sb, c * cb, c, c * sb, -sb, 0, cb};

@@ -152,6 +152,20 @@ fn plane_words<const N: usize>(
     c: &mut Cursor,
     names: [&'static [u8]; N],
 ) -> Result<[f64; N], LineError> {
+    let (values, given) = named_words(c, names)?;
+    if given.contains(&false) {
+        let first = given.iter().position(|g| !g).and_then(|k| names.get(k));
+        let name = first.and_then(|n| core::str::from_utf8(n).ok());
+        return Err(not_there(c, name.unwrap_or("a word of the plane")));
+    }
+    Ok(values)
+}
+
+/// The words `names` in any order, each at most once: their values and which were given.
+fn named_words<const N: usize>(
+    c: &mut Cursor,
+    names: [&'static [u8]; N],
+) -> Result<([f64; N], [bool; N]), LineError> {
     let mut values = [0.0; N];
     let mut given = [false; N];
     loop {
@@ -159,7 +173,7 @@ fn plane_words<const N: usize>(
         let column = c.column();
         let hit = names.iter().position(|n| c.word(n));
         let Some(k) = hit else {
-            break;
+            return Ok((values, given));
         };
         if given.get(k).copied().unwrap_or(true) {
             return Err(LineError {
@@ -175,18 +189,17 @@ fn plane_words<const N: usize>(
             *g = true;
         }
     }
-    if given.contains(&false) {
-        // A word is missing if what follows is the line's end or the positioning options;
-        // anything else standing there is a word the command does not have (`SPX+10`).
-        let missing = options(&mut c.clone()).is_ok();
-        if !missing {
-            return Err(c.error(Error::UnknownWord));
-        }
-        let first = given.iter().position(|g| !g).and_then(|k| names.get(k));
-        let name = first.and_then(|n| core::str::from_utf8(n).ok());
-        return Err(c.missing(name.unwrap_or("a word of the plane")));
+}
+
+/// A word `what` is missing at the cursor if what follows is the line's end or the
+/// positioning options; anything else standing there is a word the command does not have
+/// (`SPX+10`).
+fn not_there(c: &Cursor, what: &'static str) -> LineError {
+    if options(&mut c.clone()).is_ok() {
+        c.missing(what)
+    } else {
+        c.error(Error::UnknownWord)
     }
-    Ok(values)
 }
 
 /// How a `PLANE` moves the machine: `STAY` tilts the plane without moving; `TURN FMAX`,
@@ -216,37 +229,17 @@ fn axial(m: &Modal, c: &mut Cursor) -> Result<Block, LineError> {
 /// least one, each once \[doc\]; the axes not named stay at 0 \[choice: the control may
 /// keep them where they are\].
 fn axial_words(c: &mut Cursor) -> Result<(Direct, [f64; 3]), LineError> {
-    let mut d = Direct {
+    let (positions, given) = named_words(c, [b"A", b"B", b"C"])?;
+    if !given.contains(&true) {
+        return Err(not_there(c, "A, B or C"));
+    }
+    let d = Direct {
         by: DirectAxes::Letters,
-        given: 0,
+        given: given
+            .iter()
+            .enumerate()
+            .fold(0, |m, (k, &g)| m | (u8::from(g) << k)),
     };
-    let mut positions = [0.0; 3];
-    loop {
-        c.spaces();
-        let column = c.column();
-        let Some(k) = [b"A", b"B", b"C"].iter().position(|n| c.word(*n)) else {
-            break;
-        };
-        if d.given & (1 << k) != 0 {
-            return Err(LineError {
-                error: Error::UnknownWord,
-                column,
-                expected: None,
-            });
-        }
-        c.spaces();
-        let v = c.number(SYNTAX)?;
-        if let Some(slot) = positions.get_mut(k) {
-            *slot = v;
-        }
-        d.given |= 1 << k;
-    }
-    if d.given == 0 {
-        if options(&mut c.clone()).is_err() {
-            return Err(c.error(Error::UnknownWord));
-        }
-        return Err(c.missing("A, B or C"));
-    }
     Ok((d, positions))
 }
 
