@@ -374,43 +374,19 @@ fn translated(
         .chain(&after.shift)
         .fold(1.0f64, |a, x| a.max(x.abs()));
     translations.retain_mut(|(dialect, form, has_origin, state)| {
-        let mut out = [0x5Au8; CNCROT_PROGRAM_CHANGE_MAX + 2];
-        // SAFETY: valid pointers, out holds more than cap bytes.
-        let s = unsafe {
-            cncrot_program_write_change(
-                before,
-                after,
-                *dialect,
-                form.as_ptr(),
-                -1,
-                out.as_mut_ptr().cast(),
-                CNCROT_PROGRAM_CHANGE_MAX + 1,
-            )
-        };
-        input::assert_known(s);
-        assert_eq!(out[CNCROT_PROGRAM_CHANGE_MAX + 1], 0x5A);
-        if s < 0 {
-            assert!(out.iter().all(|&b| b == 0x5A), "{form:?}: {s} wrote");
-            let origin = f[3] != 0.0 || f[7] != 0.0 || f[11] != 0.0;
-            let ok = (s == cncrot_status::HasOrigin as i32
-                && !*has_origin
-                && origin
-                && (*dialect == 1 || *dialect == 5))
-                || s == cncrot_status::OutOfRange as i32;
-            assert!(ok, "{form:?} in dialect {dialect}: {s}");
-            return false;
-        }
-        let n = out.iter().position(|&b| b == 0).expect("NUL");
-        if n > 0 {
-            for block in out[..n].split(|&b| b == b'\n') {
-                let text = String::from_utf8_lossy(block);
-                // SAFETY: the block holds its length in bytes; state is valid.
-                let r = unsafe {
-                    cncrot_program_line(state, *dialect, block.as_ptr().cast(), block.len())
-                };
-                assert!(r >= 0, "{form:?}: {text}: {r}");
+        let text = match write_and_read(before, after, *dialect, form, state) {
+            Ok(text) => text,
+            Err(s) => {
+                let origin = f[3] != 0.0 || f[7] != 0.0 || f[11] != 0.0;
+                let ok = (s == cncrot_status::HasOrigin as i32
+                    && !*has_origin
+                    && origin
+                    && (*dialect == 1 || *dialect == 5))
+                    || s == cncrot_status::OutOfRange as i32;
+                assert!(ok, "{form:?} in dialect {dialect}: {s}");
+                return false;
             }
-        }
+        };
         let g = frame(state);
         // Where the target says how to move (Heidenhain's PLANE, G68.2's G53.1 and G53.6),
         // the way of moving to a rotated plane reads back. A tilt so small that the form's
@@ -424,10 +400,8 @@ fn translated(
         };
         if says && rotated(after) && rotated(state) {
             assert_eq!(
-                state.positioning,
-                after.positioning,
-                "{form:?} in dialect {dialect}: {}",
-                String::from_utf8_lossy(&out[..n])
+                state.positioning, after.positioning,
+                "{form:?} in dialect {dialect}: {text}"
             );
         }
         let d = g
@@ -437,8 +411,7 @@ fn translated(
             .fold(0.0, f64::max);
         assert!(
             d <= 1e-11 * scale,
-            "{form:?} in dialect {dialect}: {}: {d:e}",
-            String::from_utf8_lossy(&out[..n])
+            "{form:?} in dialect {dialect}: {text}: {d:e}"
         );
         true
     });
@@ -455,36 +428,16 @@ fn direct_translated(
     form: &CStr,
     state: &mut cncrot_program,
 ) -> bool {
-    let mut out = [0x5Au8; CNCROT_PROGRAM_CHANGE_MAX + 2];
-    // SAFETY: valid pointers, out holds more than cap bytes.
-    let s = unsafe {
-        cncrot_program_write_change(
-            before,
-            after,
-            dialect,
-            form.as_ptr(),
-            -1,
-            out.as_mut_ptr().cast(),
-            CNCROT_PROGRAM_CHANGE_MAX + 1,
-        )
+    let text = match write_and_read(before, after, dialect, form, state) {
+        Ok(text) => text,
+        Err(s) => {
+            assert!(
+                s == cncrot_status::NotAvailable as i32 || s == cncrot_status::OutOfRange as i32,
+                "{form:?} in dialect {dialect}: {s}"
+            );
+            return false;
+        }
     };
-    input::assert_known(s);
-    if s < 0 {
-        assert!(out.iter().all(|&b| b == 0x5A), "{form:?}: {s} wrote");
-        assert!(
-            s == cncrot_status::NotAvailable as i32 || s == cncrot_status::OutOfRange as i32,
-            "{form:?} in dialect {dialect}: {s}"
-        );
-        return false;
-    }
-    let n = out.iter().position(|&b| b == 0).expect("NUL");
-    for block in out[..n].split(|&b| b == b'\n') {
-        let text = String::from_utf8_lossy(block);
-        // SAFETY: the block holds its length in bytes; state is valid.
-        let r = unsafe { cncrot_program_line(state, dialect, block.as_ptr().cast(), block.len()) };
-        assert!(r >= 0, "{form:?}: {text}: {r}");
-    }
-    let text = String::from_utf8_lossy(&out[..n]);
     assert_eq!(state.active, after.active, "{form:?}: {text}");
     assert_eq!(
         state.angles.map(f64::to_bits),
@@ -499,6 +452,48 @@ fn direct_translated(
         );
     }
     true
+}
+
+/// The blocks `cncrot_program_write_change` writes for `before` → `after` in `dialect` and
+/// `form`, each read into `state` (every one accepted); a known refusal, with `out`
+/// untouched, as `Err`. The text never passes the room given.
+fn write_and_read(
+    before: &cncrot_program,
+    after: &cncrot_program,
+    dialect: i32,
+    form: &CStr,
+    state: &mut cncrot_program,
+) -> Result<String, i32> {
+    let mut out = [0x5Au8; CNCROT_PROGRAM_CHANGE_MAX + 2];
+    // SAFETY: valid pointers, out holds more than cap bytes.
+    let s = unsafe {
+        cncrot_program_write_change(
+            before,
+            after,
+            dialect,
+            form.as_ptr(),
+            -1,
+            out.as_mut_ptr().cast(),
+            CNCROT_PROGRAM_CHANGE_MAX + 1,
+        )
+    };
+    input::assert_known(s);
+    assert_eq!(out[CNCROT_PROGRAM_CHANGE_MAX + 1], 0x5A);
+    if s < 0 {
+        assert!(out.iter().all(|&b| b == 0x5A), "{form:?}: {s} wrote");
+        return Err(s);
+    }
+    let n = out.iter().position(|&b| b == 0).expect("NUL");
+    if n > 0 {
+        for block in out[..n].split(|&b| b == b'\n') {
+            let text = String::from_utf8_lossy(block);
+            // SAFETY: the block holds its length in bytes; state is valid.
+            let r =
+                unsafe { cncrot_program_line(state, dialect, block.as_ptr().cast(), block.len()) };
+            assert!(r >= 0, "{form:?}: {text}: {r}");
+        }
+    }
+    Ok(String::from_utf8_lossy(&out[..n]).into_owned())
 }
 
 fn round_trips(dialect: i32, f: &[f64; 16]) {

@@ -296,23 +296,21 @@ impl Family for Syntec {
         _: &FormSpec,
         origin: Vector,
         (direct, positions): (Direct, [f64; 3]),
-        _: Motion,
+        how: Motion,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {
         if direct.by != DirectAxes::Letters {
             return Err(Error::NotAvailable);
         }
-        out.text(b"G158 P10200");
+        // The `G158` block of mode 2: its words as any mode's.
         let [a, b, c] = positions;
         let words = [origin[0], origin[1], origin[2], a, b, c, 0.0, 0.0, 0.0];
-        let names: [&[u8]; 9] = [
-            b" X", b" Y", b" Z", b" A", b" B", b" C", b" U", b" V", b" W",
-        ];
-        for (name, &v) in names.iter().zip(&words) {
-            write_word(out, name, v, decimals, super::fanuc::STYLE)?;
-        }
-        Ok(())
+        let spec = FormSpec {
+            form: Form::G158,
+            selector: 10200,
+        };
+        Self::write_line(&spec, &words, how, decimals, out)
     }
 
     /// `G52 X Y Z`, as Fanuc writes it.
