@@ -779,6 +779,34 @@ $TC_CARR34[1]=\"HEAD_CB\"
                     )
                 },
             );
+            // The same description edited by hand (its seal no longer matches): checked whole
+            // on every call, as every description was before seals.
+            let mut edited = *m;
+            edited.reserved ^= 1;
+            let unsealed = if class == "fork head" {
+                "fork head, unsealed"
+            } else {
+                "three axes, unsealed"
+            };
+            b.time(
+                "cncrot_machine_tcp_inverse",
+                unsealed,
+                &tcp,
+                &mut |(pose, prev)| unsafe {
+                    cncrot_machine_tcp_inverse(
+                        &edited,
+                        pose.as_ptr(),
+                        120.0,
+                        prev.as_ptr(),
+                        out6.as_mut_ptr(),
+                    )
+                },
+            );
+            let mut copy = edited;
+            b.time("cncrot_machine_seal", class, &[()], &mut |_| unsafe {
+                copy.reserved ^= 1;
+                cncrot_machine_seal(&mut copy)
+            });
             let mut lin = [0.0; 3];
             b.time("cncrot_machine_follow", class, &pos, &mut |p| unsafe {
                 cncrot_machine_follow(

@@ -492,8 +492,69 @@ static void five_axis_transformation(void) {
   CHECK_STATUS(cncrot_machine_tcp_forward(&m, unused, 50, back), CNCROT_STATUS_BAD_ARGUMENT);
 }
 
+/* Sealed descriptions: what the library writes carries its seal; a hand-filled one computes
+ * exactly as its sealed form; an edit after sealing takes effect (the stale seal is not
+ * trusted); a seal over what is not a machine is refused with nothing written. */
+static void sealed_descriptions(void) {
+  cncrot_machine m;
+  memset(&m, 0, sizeof m);
+  double x[3] = {1, 0, 0}, z[3] = {0, 0, 1}, pa[3] = {0, 0, 100}, pc[3] = {0, 0, 0};
+  CHECK_STATUS(cncrot_machine_add_axis(&m, 1, x, pa, 0, 0), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_add_axis(&m, 1, z, pc, 0, 0), CNCROT_STATUS_OK);
+  CHECK(m.reserved != 0, "add_axis wrote no seal");
+  /* The same table filled by hand, directions of other lengths, a seal that is not one. */
+  cncrot_machine h;
+  memset(&h, 0, sizeof h);
+  h.count = 2;
+  h.reserved = 12345;
+  h.axes[0].work_side = 1;
+  h.axes[0].direction[0] = 3;
+  h.axes[0].point[2] = 100;
+  h.axes[1].work_side = 1;
+  h.axes[1].direction[2] = 0.5;
+  double s3 = sqrt(3.0);
+  double pose[16] = {0, s3 / 2, 0.5, 10, -1, 0, 0, 0, 0, -0.5, s3 / 2, 0, 0, 0, 0, 1};
+  double prev[6] = {0, 0, 0, 20, 80, 0}, a1[6], a2[6], a3[6];
+  CHECK_STATUS(cncrot_machine_tcp_inverse(&h, pose, 50, prev, a1), CNCROT_STATUS_OK);
+  cncrot_machine sealed = h;
+  CHECK_STATUS(cncrot_machine_seal(&sealed), CNCROT_STATUS_OK);
+  CHECK(sealed.reserved != 0 && sealed.axes[0].direction[0] == 1 && sealed.axes[1].direction[2] == 1,
+        "seal: %u, directions %g %g", (unsigned)sealed.reserved, sealed.axes[0].direction[0],
+        sealed.axes[1].direction[2]);
+  CHECK(memcmp(&sealed, &m, sizeof m) == 0, "the sealed hand-filled table differs from the built one");
+  CHECK_STATUS(cncrot_machine_tcp_inverse(&sealed, pose, 50, prev, a2), CNCROT_STATUS_OK);
+  CHECK(memcmp(a1, a2, sizeof a1) == 0, "sealed and unsealed differ");
+  /* Sealing twice changes nothing. */
+  cncrot_machine again = sealed;
+  CHECK_STATUS(cncrot_machine_seal(&again), CNCROT_STATUS_OK);
+  CHECK(memcmp(&again, &sealed, sizeof again) == 0, "a second seal changed the description");
+  /* An edit after sealing: A within ±10° now, so A = ±30° is out of travel. */
+  sealed.axes[0].min_deg = -10;
+  sealed.axes[0].max_deg = 10;
+  double keep[6] = {7, 7, 7, 7, 7, 7}, seven[6] = {7, 7, 7, 7, 7, 7};
+  CHECK_STATUS(cncrot_machine_tcp_inverse(&sealed, pose, 50, prev, keep), CNCROT_STATUS_OUT_OF_TRAVEL);
+  CHECK_NEAR(keep, seven, 6, 0);
+  sealed.axes[0].min_deg = -40;
+  sealed.axes[0].max_deg = 40;
+  CHECK_STATUS(cncrot_machine_seal(&sealed), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_tcp_inverse(&sealed, pose, 50, prev, a3), CNCROT_STATUS_OK);
+  CHECK(memcmp(a1, a3, sizeof a1) == 0, "limits that admit the solution changed it");
+  /* An edited count with its old seal: checked, refused. */
+  cncrot_machine bad = m;
+  bad.count = 5;
+  CHECK_STATUS(cncrot_machine_tcp_inverse(&bad, pose, 50, prev, keep), CNCROT_STATUS_BAD_ARGUMENT);
+  /* Not a machine: refused, nothing written. */
+  cncrot_machine zero = h, copy;
+  zero.axes[1].direction[2] = 0;
+  copy = zero;
+  CHECK_STATUS(cncrot_machine_seal(&zero), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK(memcmp(&zero, &copy, sizeof zero) == 0, "a refused seal wrote");
+  CHECK_STATUS(cncrot_machine_seal(NULL), CNCROT_STATUS_NULL_POINTER);
+}
+
 int main(void) {
   fork_head();
+  sealed_descriptions();
   table_and_mixed();
   nutating_and_three_axes();
   cycle600_and_refusals();

@@ -594,11 +594,17 @@ typedef struct cncrot_machine_axis {
  * same side is carried by it), the tool's base direction and a name. A caller-owned plain
  * struct; zeroed, it is a machine without rotary axes whose tool points along +Z.
  *
+ * Every function that writes one (`cncrot_machine_from_carr`, `_from_head`, `_add_axis`,
+ * `_seal`) seals it: `reserved` holds a hash of the rest, and a call that reads a sealed
+ * description uses it in place, checking the seal (about 20 ns) instead of every field:
+ * what the five-axis transformation needs in the interpolation cycle.
+ *
  * The caller may fill it by hand, wholly or in part (offsets, Hirth grids and limits after
- * `cncrot_machine_add_axis`, say): every call that reads it checks all of it and refuses
+ * `cncrot_machine_add_axis`, say): the seal no longer matches, and every call that reads
+ * it checks all of it (as `cncrot_machine_seal` does, which seals it again) and refuses
  * what is not a machine, with nothing written. `CNCROT_STATUS_BAD_ARGUMENT`: a pointer
- * not aligned for the struct, `count` outside 0..3, a `reserved` field not 0, an unused
- * entry of `axes` not all zero, a zero direction, `min_deg > max_deg`, a Hirth step
+ * not aligned for the struct, `count` outside 0..3, an axis' `reserved` field not 0, an
+ * unused entry of `axes` not all zero, a zero direction, `min_deg > max_deg`, a Hirth step
  * between 0 and `CNCROT_MACHINE_HIRTH_STEP_MIN_DEG` or negative, two consecutive axes of
  * the rotation chain parallel (within a sine of 1e-6), a name with bytes other than
  * printable ASCII; `CNCROT_STATUS_BAD_FLAG`: `work_side` other than 0 or 1;
@@ -607,8 +613,9 @@ typedef struct cncrot_machine_axis {
  * `CNCROT_STATUS_OUT_OF_RANGE`: an angle (offset, limit, Hirth offset) of magnitude
  * `CNCROT_MACHINE_ANGLE_MAX_DEG` or more, a point coordinate beyond
  * ±`CNCROT_MACHINE_LENGTH_MAX_MM`; `CNCROT_STATUS_NAME_TOO_LONG`: no NUL in `name`.
- * Directions need not be unit vectors (the library stores unit vectors); bytes after the
- * name's NUL are not read.
+ * Directions need not be unit vectors (the library stores unit vectors, and a direction
+ * within 8 units in the last place of length 1 as it is); bytes after the name's NUL are
+ * not read. A description and its sealed form compute exactly alike.
  */
 typedef struct cncrot_machine {
   /**
@@ -616,9 +623,10 @@ typedef struct cncrot_machine {
    */
   int32_t count;
   /**
-   * Zero.
+   * The seal the library writes (any value: a description whose seal does not match is
+   * checked whole).
    */
-  int32_t reserved;
+  uint32_t reserved;
   /**
    * The tool's direction with every axis at its initial position; all 0: +Z.
    */
@@ -1239,6 +1247,28 @@ int32_t cncrot_machine_from_head(struct cncrot_machine *machine,
                                  const char *name,
                                  const double *v1,
                                  const double *v2);
+
+/**
+ * Checks `machine` whole and seals it: directions stored as unit vectors, the seal
+ * written. What a caller does once after filling or editing a description by hand (the
+ * functions that write one seal it themselves), so that the calls that read it (the
+ * five-axis transformation in every interpolation cycle) check the seal instead of every
+ * field. A sealed description computes exactly as it did unsealed.
+ *
+ * Returns 0, or with `machine` untouched: `CNCROT_STATUS_NULL_POINTER`, and the statuses
+ * of a description that is not a machine (`CNCROT_STATUS_BAD_ARGUMENT`,
+ * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`,
+ * `CNCROT_STATUS_NAME_TOO_LONG`: see `cncrot_machine`).
+ *
+ * # Safety
+ * `machine` points to a writable `cncrot_machine`.
+ *
+ * ```c
+ * m.axes[0].min_deg = -30;       // edited by hand: the seal no longer matches
+ * cncrot_machine_seal(&m);       // checked once, sealed again
+ * ```
+ */
+int32_t cncrot_machine_seal(struct cncrot_machine *machine);
 
 /**
  * Adds a rotary axis to `machine`: it turns the tool (`work_side` 0) or the workpiece (1)

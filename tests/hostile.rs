@@ -799,9 +799,9 @@ fn c_machine() -> cncrot_machine {
 }
 
 /// The statuses of every export that reads a description, on `m`: forward, inverse,
-/// choose, follow-up, adding an axis, CYCLE600 positioning. On a refusal each must leave
-/// its outputs (and the description) untouched.
-fn statuses_of(m: &cncrot_machine) -> [i32; 9] {
+/// choose, follow-up, adding an axis, CYCLE600 positioning, the five-axis transformation,
+/// sealing. On a refusal each must leave its outputs (and the description) untouched.
+fn statuses_of(m: &cncrot_machine) -> [i32; 10] {
     let id = [
         1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
     ];
@@ -813,6 +813,7 @@ fn statuses_of(m: &cncrot_machine) -> [i32; 9] {
     let mut out = [[7.0f64; 16]; 9];
     let mut count = 99usize;
     let mut copy = *m;
+    let mut sealed = *m;
     let six = [1.0, 2.0, 3.0, pos[0], pos[1], pos[2]];
     let s = unsafe {
         [
@@ -856,10 +857,12 @@ fn statuses_of(m: &cncrot_machine) -> [i32; 9] {
                 0,
                 out[8].as_mut_ptr(),
             ),
+            cncrot_machine_seal(&mut sealed),
         ]
     };
     if s.iter().all(|&x| x < 0) {
         assert!(out.iter().flatten().all(|&x| x == 7.0) && count == 99);
+        assert_eq!(bytes_of_machine(&sealed), bytes_of_machine(m));
         assert_eq!(bytes_of_machine(&copy), bytes_of_machine(m));
     }
     s
@@ -877,7 +880,7 @@ fn bytes_of_machine(m: &cncrot_machine) -> Vec<u8> {
 #[test]
 fn a_hand_filled_machine_is_refused_unless_it_is_one() {
     type Edit = fn(&mut cncrot_machine);
-    let refused: [(&str, Edit, i32); 27] = [
+    let refused: [(&str, Edit, i32); 26] = [
         (
             "garbage in an unused entry",
             |m| m.axes[2].point[0] = 1.0,
@@ -896,7 +899,6 @@ fn a_hand_filled_machine_is_refused_unless_it_is_one() {
         ("a count over an empty entry", |m| m.count = 3, BAD_ARGUMENT),
         ("count -1", |m| m.count = -1, BAD_ARGUMENT),
         ("count 4", |m| m.count = 4, BAD_ARGUMENT),
-        ("reserved", |m| m.reserved = 1, BAD_ARGUMENT),
         (
             "an axis' reserved",
             |m| m.axes[0].reserved = 1,
@@ -977,9 +979,13 @@ fn a_hand_filled_machine_is_refused_unless_it_is_one() {
     for (what, edit, want) in refused {
         let mut m = good;
         edit(&mut m);
-        assert_eq!(statuses_of(&m), [want; 9], "{what}");
+        assert_eq!(statuses_of(&m), [want; 10], "{what}");
+        // A seal that does not match (edited, or never written) is no way past the check.
+        m.reserved = 1;
+        assert_eq!(statuses_of(&m), [want; 10], "{what}, any seal");
     }
-    let accepted: [(&str, Edit); 7] = [
+    let accepted: [(&str, Edit); 8] = [
+        ("a seal that does not match", |m| m.reserved ^= 1),
         ("a direction of any length", |m| {
             m.axes[1].direction = [0.0, 5.0, 0.0]
         }),
@@ -1049,7 +1055,7 @@ fn hostile_machine(rng: &mut Rng) -> cncrot_machine {
         let k = (rng.next() % 3) as usize;
         match rng.next() % 14 {
             0 => m.count = i,
-            1 => m.reserved = i,
+            1 => m.reserved = i as u32,
             2 => m.tool_direction[k] = v,
             3 => m.axes[a].work_side = i,
             4 => m.axes[a].reserved = i,
@@ -1179,6 +1185,8 @@ fn every_status_of_a_kinematics_export_is_named_in_its_header_doc() {
                     six_out.as_mut_ptr(),
                 ),
             );
+            let mut to_seal = m;
+            note("cncrot_machine_seal", cncrot_machine_seal(&mut to_seal));
             note(
                 "cncrot_machine_add_axis",
                 cncrot_machine_add_axis(
@@ -1317,6 +1325,7 @@ fn every_status_of_a_kinematics_export_is_named_in_its_header_doc() {
             "cncrot_machine_add_axis",
             cncrot_machine_add_axis(&mut w, 0, null(), d.as_ptr(), 0.0, 0.0),
         );
+        note("cncrot_machine_seal", cncrot_machine_seal(null_mut()));
         note(
             "cncrot_cycle600_position",
             cncrot_cycle600_position(

@@ -101,6 +101,22 @@ fn tcp(m: &cncrot_machine, n: usize, pos: &[f64; 3], current: &[f64; 3], t: &[u8
     } else {
         assert!(ruled.iter().all(|x| x.is_finite()));
     }
+    // The description sealed and the same without a seal compute exactly alike (a machine
+    // tcp_forward accepted is one, so sealing it succeeds).
+    let mut sealed = *m;
+    assert_eq!(unsafe { cncrot_machine_seal(&mut sealed) }, 0);
+    let mut unsealed = sealed;
+    unsealed.reserved ^= 0x5a5a;
+    for d in [&sealed, &unsealed] {
+        let mut again = [4.0; 6];
+        let s2 = unsafe {
+            cncrot_machine_tcp_inverse(d, pose.as_ptr(), length, prev.as_ptr(), again.as_mut_ptr())
+        };
+        assert_eq!((s2, as_bytes(&again)), (s, as_bytes(&out)));
+        let mut p2 = [9.0; 16];
+        let f2 = unsafe { cncrot_machine_tcp_forward(d, six.as_ptr(), length, p2.as_mut_ptr()) };
+        assert_eq!((f2, as_bytes(&p2)), (0, as_bytes(&pose)));
+    }
     if s < 0 {
         assert_eq!(out, [4.0; 6]);
         return;

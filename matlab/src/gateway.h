@@ -677,6 +677,10 @@ static void machine_arg(const mxArray *a, int pos, cncrot_machine *m) {
     m->axes[r].hirth_offset_deg = row[10];
     m->axes[r].hirth_step_deg = row[11];
   }
+  /* Sealed once here, so that a whole path's calls check the seal instead of every field. A
+   * description that is not a machine stays as it is: the call that reads it raises the error
+   * (a sealed description computes exactly as the unsealed one). */
+  (void)cncrot_machine_seal(m);
 }
 
 /* Statuses of a batch call are preset to this, which no status has: a row still holding it

@@ -1,7 +1,7 @@
 //! The choice among the solutions: travel limits, whole-turn unwinding, Hirth grids, and
 //! the controllers' rules (CYCLE800 minus/plus, Heidenhain `SEQ±`, CYCLE600 `_ROT_INV`).
 
-use super::{Machine, RotaryAxis, MAX_AXES, MAX_SOLUTIONS, TRAVEL_TOLERANCE};
+use super::{Machine, Stored, MAX_AXES, MAX_SOLUTIONS, TRAVEL_TOLERANCE};
 use crate::math::{abs, ceil, round, turns_toward};
 use crate::{check_rotation, mul, transpose, Error, Matrix, CLOSEST_MAX, IDENTITY};
 
@@ -45,9 +45,10 @@ pub struct Choice {
 /// nothing. Every comparison is written so that NaN refuses. Not inlined: its temporaries
 /// would otherwise stay in the frame of `choose` through the inverse (stack bound).
 #[inline(never)]
-pub(crate) fn place(axis: &RotaryAxis, angle: f64, current: f64) -> Option<(f64, f64)> {
+pub(crate) fn place(axis: &Stored, angle: f64, current: f64) -> Option<(f64, f64)> {
+    let limits = axis.limits();
     let mut x = angle + turns_toward(angle, current) + 0.0;
-    if let Some([lo, hi]) = axis.limits {
+    if let Some([lo, hi]) = limits {
         if x > hi + TRAVEL_TOLERANCE {
             x -= 360.0 * ceil((x - hi - TRAVEL_TOLERANCE) / 360.0);
         } else if x < lo - TRAVEL_TOLERANCE {
@@ -56,9 +57,9 @@ pub(crate) fn place(axis: &RotaryAxis, angle: f64, current: f64) -> Option<(f64,
         x = onto_travel(x, lo, hi);
     }
     let exact = x;
-    if let Some(h) = axis.hirth {
+    if let Some(h) = axis.hirth() {
         x = h.offset + round((x - h.offset) / h.step) * h.step + 0.0;
-        if let Some([lo, hi]) = axis.limits {
+        if let Some([lo, hi]) = limits {
             if x > hi + TRAVEL_TOLERANCE {
                 x -= h.step;
             } else if x < lo - TRAVEL_TOLERANCE {
@@ -67,7 +68,7 @@ pub(crate) fn place(axis: &RotaryAxis, angle: f64, current: f64) -> Option<(f64,
             x = onto_travel(x, lo, hi);
         }
     }
-    let fits = axis.limits.map_or(true, |[lo, hi]| x >= lo && x <= hi);
+    let fits = limits.map_or(true, |[lo, hi]| x >= lo && x <= hi);
     fits.then_some((x, x - exact + 0.0))
 }
 
@@ -162,12 +163,12 @@ impl Machine {
         }
         let mut axes = [0.0; MAX_AXES];
         let mut residual = [0.0; MAX_AXES];
-        for (k, axis) in self.axes().iter().enumerate() {
+        for (k, axis) in self.stored().iter().enumerate() {
             let (x, cur) = (stated.get(k).copied(), current.get(k).copied());
             let (Some(x), Some(cur)) = (x, cur) else {
                 continue;
             };
-            let from = match axis.limits {
+            let from = match axis.limits() {
                 Some([lo, hi]) if !(x >= lo - TRAVEL_TOLERANCE && x <= hi + TRAVEL_TOLERANCE) => {
                     return Err(Error::OutOfTravel);
                 }
@@ -206,7 +207,7 @@ impl Machine {
         if !current.iter().all(|x| crate::math::abs(*x) < CLOSEST_MAX) {
             return Err(Error::OutOfRange);
         }
-        let n = self.axes().len();
+        let n = self.axis_count();
         if let Rule::Minus(k) | Rule::Plus(k) = rule {
             if k >= n {
                 return Err(Error::BadArgument);
@@ -219,7 +220,7 @@ impl Machine {
             let mut axes = [0.0; MAX_AXES];
             let mut residual = [0.0; MAX_AXES];
             let mut distance = 0.0;
-            for (k, a) in self.axes().iter().enumerate() {
+            for (k, a) in self.stored().iter().enumerate() {
                 let (Some(&angle), Some(&cur)) = (s.get(k), current.get(k)) else {
                     continue;
                 };

@@ -160,14 +160,95 @@ impl RotaryAxis {
         if !(angle(self.offset) && angle(lo) && angle(hi) && angle(tooth) && length(&self.point)) {
             return Err(Error::OutOfRange);
         }
-        let direction = unit_vector(self.direction).map_err(|_| Error::BadArgument)?;
+        let direction = direction_of(self.direction)?;
         Ok(RotaryAxis { direction, ..*self })
+    }
+}
+
+/// One axis as a [`Machine`] stores it: the layout of the C description's axis
+/// (`cncrot_machine_axis`), plain numbers only, so that a sealed description is read in
+/// place. Limits `[0, 0]` stand for none and a Hirth step of 0 for no grid, as in C.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Stored {
+    /// 0: the tool side; anything else the work side (a machine holds 0 or 1).
+    pub(crate) work_side: i32,
+    pub(crate) reserved: i32,
+    pub(crate) direction: Vector,
+    pub(crate) point: Vector,
+    pub(crate) offset: f64,
+    pub(crate) min: f64,
+    pub(crate) max: f64,
+    pub(crate) tooth: f64,
+    pub(crate) step: f64,
+}
+
+impl Stored {
+    const EMPTY: Stored = Stored {
+        work_side: 0,
+        reserved: 0,
+        direction: [0.0; 3],
+        point: [0.0; 3],
+        offset: 0.0,
+        min: 0.0,
+        max: 0.0,
+        tooth: 0.0,
+        step: 0.0,
+    };
+
+    fn of(a: &RotaryAxis) -> Stored {
+        let [min, max] = a.limits.unwrap_or([0.0; 2]);
+        let (tooth, step) = a.hirth.map_or((0.0, 0.0), |h| (h.offset, h.step));
+        Stored {
+            work_side: i32::from(a.side == Side::Work),
+            reserved: 0,
+            direction: a.direction,
+            point: a.point,
+            offset: a.offset,
+            min,
+            max,
+            tooth,
+            step,
+        }
+    }
+
+    pub(crate) fn side(&self) -> Side {
+        if self.work_side == 0 {
+            Side::Tool
+        } else {
+            Side::Work
+        }
+    }
+
+    pub(crate) fn limits(&self) -> Option<[f64; 2]> {
+        (self.min != 0.0 || self.max != 0.0).then_some([self.min, self.max])
+    }
+
+    pub(crate) fn hirth(&self) -> Option<Hirth> {
+        // Written so that NaN (not in a machine) would mean no grid.
+        (self.step > 0.0).then_some(Hirth {
+            offset: self.tooth,
+            step: self.step,
+        })
+    }
+
+    fn axis(&self) -> RotaryAxis {
+        RotaryAxis {
+            offset: self.offset,
+            limits: self.limits(),
+            hirth: self.hirth(),
+            ..RotaryAxis::new(self.side(), self.direction, self.point)
+        }
     }
 }
 
 /// A machine: up to three rotary axes, the tool's base direction and a name. Built by
 /// [`Machine::new`] and [`Machine::with_axis`], which check every part, so a `Machine` is
 /// always usable.
+///
+/// Its layout is the C description's (`cncrot_machine`), plain numbers only, with a seal
+/// over the rest: a description the library wrote is read in place, its seal checked
+/// instead of every field (the five-axis transformation runs in the interpolation cycle).
 ///
 /// ```
 /// use cncrot::kinematics::{Machine, RotaryAxis, Side};
@@ -176,13 +257,70 @@ impl RotaryAxis {
 ///     .with_axis(RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3])).unwrap();
 /// assert!(m.with_axis(RotaryAxis::new(Side::Tool, [0.0, 0.0, 2.0], [0.0; 3])).is_err());
 /// ```
+#[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Machine {
-    axes: [RotaryAxis; MAX_AXES],
-    count: usize,
+    count: i32,
+    seal: u32,
     tool_direction: Vector,
-    name: [u8; MACHINE_NAME_MAX],
-    name_len: u8,
+    axes: [Stored; MAX_AXES],
+    /// NUL-terminated (so at most [`MACHINE_NAME_MAX`] bytes), zeros after the NUL.
+    name: [u8; MACHINE_NAME_MAX + 1],
+}
+
+/// The size of a machine's image in bytes: eight-byte words without padding, which the seal
+/// covers (all but the seal's own four bytes).
+pub(crate) const IMAGE_SIZE: usize = 352;
+const _: () = assert!(core::mem::size_of::<Stored>() == 96);
+const _: () = assert!(core::mem::size_of::<Machine>() == IMAGE_SIZE);
+const _: () = assert!(core::mem::align_of::<Machine>() == 8);
+// No padding: the fields' sizes add up to the whole, so every byte is initialised.
+const _: () = assert!(4 + 4 + 24 + 3 * 96 + MACHINE_NAME_MAX + 1 == IMAGE_SIZE);
+
+/// Offsets of a machine's fields (count, seal, tool direction, axes, name) and of an axis'
+/// (side, reserved, direction, point, offset, min, max, Hirth tooth, Hirth step): the C
+/// boundary asserts that its description has the same.
+pub(crate) const MACHINE_LAYOUT: [usize; 5] = [
+    core::mem::offset_of!(Machine, count),
+    core::mem::offset_of!(Machine, seal),
+    core::mem::offset_of!(Machine, tool_direction),
+    core::mem::offset_of!(Machine, axes),
+    core::mem::offset_of!(Machine, name),
+];
+/// See [`MACHINE_LAYOUT`].
+pub(crate) const AXIS_LAYOUT: [usize; 9] = [
+    core::mem::offset_of!(Stored, work_side),
+    core::mem::offset_of!(Stored, reserved),
+    core::mem::offset_of!(Stored, direction),
+    core::mem::offset_of!(Stored, point),
+    core::mem::offset_of!(Stored, offset),
+    core::mem::offset_of!(Stored, min),
+    core::mem::offset_of!(Stored, max),
+    core::mem::offset_of!(Stored, tooth),
+    core::mem::offset_of!(Stored, step),
+];
+
+/// The axes of a machine, as [`Machine::axes`] returns them: a slice of
+/// [`RotaryAxis`] (through `Deref`), copied out of the machine's storage.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Axes {
+    items: [RotaryAxis; MAX_AXES],
+    len: usize,
+}
+
+impl core::ops::Deref for Axes {
+    type Target = [RotaryAxis];
+    fn deref(&self) -> &[RotaryAxis] {
+        self.items.get(..self.len).unwrap_or(&[])
+    }
+}
+
+impl<'a> IntoIterator for &'a Axes {
+    type Item = &'a RotaryAxis;
+    type IntoIter = core::slice::Iter<'a, RotaryAxis>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
+    }
 }
 
 /// One link of the rotation chain `W⁻¹·T`: work-side axes innermost first with negated
@@ -198,47 +336,36 @@ pub(crate) struct Link {
 
 impl Machine {
     /// A machine without rotary axes whose tool points along +Z: where a machine is built
-    /// in place ([`Machine::reset`]).
+    /// in place ([`Machine::reset`]). Not sealed: only a start.
     pub(crate) const EMPTY: Machine = Machine {
-        axes: [RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]); MAX_AXES],
         count: 0,
+        seal: 0,
         tool_direction: [0.0, 0.0, 1.0],
-        name: [0; MACHINE_NAME_MAX],
-        name_len: 0,
+        axes: [Stored::EMPTY; MAX_AXES],
+        name: [0; MACHINE_NAME_MAX + 1],
     };
 
     /// Makes `self`, a [`Machine::EMPTY`], [`Machine::new`]`(tool_direction)` in place
     /// (unchanged on an error):
-    /// the C boundary builds its machine in the caller's frame instead of returning 400
-    /// bytes through two `Result`s (stack bound of the hot path).
+    /// the C boundary builds its machine in the caller's frame instead of returning it
+    /// through two `Result`s (stack bound of the hot path).
     pub(crate) fn reset(&mut self, tool_direction: Vector) -> Result<(), Error> {
         if !tool_direction.iter().all(|x| x.is_finite()) {
             return Err(Error::NotFinite);
         }
-        let b = unit_vector(tool_direction).map_err(|_| Error::BadArgument)?;
-        // The fields a machine without axes reads; the slots of the axes and the name's
-        // bytes are written as axes and a name are added (a copy of `EMPTY` cost 400 bytes
-        // of stores on every call).
-        self.count = 0;
-        self.name_len = 0;
+        let b = direction_of(tool_direction)?;
+        *self = Machine::EMPTY;
         self.tool_direction = b;
+        self.seal();
         Ok(())
     }
 
     /// A machine without rotary axes whose tool points along `tool_direction` (any length)
     /// when every axis is in its initial position; +Z on most machines.
     pub fn new(tool_direction: Vector) -> Result<Machine, Error> {
-        if !tool_direction.iter().all(|x| x.is_finite()) {
-            return Err(Error::NotFinite);
-        }
-        let tool_direction = unit_vector(tool_direction).map_err(|_| Error::BadArgument)?;
-        Ok(Machine {
-            axes: [RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]); MAX_AXES],
-            count: 0,
-            tool_direction,
-            name: [0; MACHINE_NAME_MAX],
-            name_len: 0,
-        })
+        let mut m = Machine::EMPTY;
+        m.reset(tool_direction)?;
+        Ok(m)
     }
 
     /// The machine with one more axis, carried by the axes already on its side.
@@ -247,7 +374,8 @@ impl Machine {
     /// [`HIRTH_STEP_MIN`], or two consecutive axes of the chain parallel within
     /// [`PARALLEL_SINE`] ([`Error::BadArgument`]), an offset, limit or Hirth offset of
     /// magnitude [`crate::CLOSEST_MAX`] (65 536°) or more, or a point coordinate beyond
-    /// ±[`LENGTH_MAX`] ([`Error::OutOfRange`]).
+    /// ±[`LENGTH_MAX`] ([`Error::OutOfRange`]). Limits `Some([0.0, 0.0])` mean no limits,
+    /// as in the C description.
     pub fn with_axis(&self, axis: RotaryAxis) -> Result<Machine, Error> {
         let mut next = *self;
         next.push_axis(axis)?;
@@ -259,29 +387,31 @@ impl Machine {
     /// one frame serves every axis added (stack bound of the C exports).
     #[inline(never)]
     pub fn push_axis(&mut self, axis: RotaryAxis) -> Result<(), Error> {
-        if self.count >= MAX_AXES {
+        let n = self.stored().len();
+        if n >= MAX_AXES {
             return Err(Error::TableFull);
         }
         let checked = axis.checked()?;
         // The new axis joins the chain `W⁻¹·T` at one end (a table axis first, a head axis
         // last), next to one axis: the newest on its side, else the oldest on the other.
         // That pair is the only new one: checking it checks every pair once.
-        let before = self.axes();
+        let before = self.stored();
         let neighbour = before
             .iter()
             .rev()
-            .find(|a| a.side == checked.side)
-            .or_else(|| before.iter().find(|a| a.side != checked.side));
+            .find(|a| a.side() == checked.side)
+            .or_else(|| before.iter().find(|a| a.side() != checked.side));
         if let Some(a) = neighbour {
             let c = cross(a.direction, checked.direction);
             if dot(c, c) < PARALLEL_SINE * PARALLEL_SINE {
                 return Err(Error::BadArgument);
             }
         }
-        if let Some(slot) = self.axes.get_mut(self.count) {
-            *slot = checked;
+        if let Some(slot) = self.axes.get_mut(n) {
+            *slot = Stored::of(&checked);
+            self.count = n as i32 + 1;
         }
-        self.count += 1;
+        self.seal();
         Ok(())
     }
 
@@ -300,17 +430,36 @@ impl Machine {
         if !name.iter().all(|b| (0x20..0x7f).contains(b)) {
             return Err(Error::BadArgument);
         }
-        self.name = [0; MACHINE_NAME_MAX];
+        self.name = [0; MACHINE_NAME_MAX + 1];
         if let Some(dst) = self.name.get_mut(..name.len()) {
             dst.copy_from_slice(name);
         }
-        self.name_len = name.len() as u8;
+        self.seal();
         Ok(())
     }
 
-    /// The axes, in the order they were added.
-    pub fn axes(&self) -> &[RotaryAxis] {
-        self.axes.get(..self.count).unwrap_or(&[])
+    /// The axes, in the order they were added (copies).
+    pub fn axes(&self) -> Axes {
+        let stored = self.stored();
+        let mut items = [RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]); MAX_AXES];
+        for (dst, a) in items.iter_mut().zip(stored) {
+            *dst = a.axis();
+        }
+        Axes {
+            items,
+            len: stored.len(),
+        }
+    }
+
+    /// The axes as stored: what the computations read (no copies).
+    pub(crate) fn stored(&self) -> &[Stored] {
+        let n = usize::try_from(self.count).map_or(0, |n| n.min(MAX_AXES));
+        self.axes.get(..n).unwrap_or(&[])
+    }
+
+    /// The number of rotary axes.
+    pub fn axis_count(&self) -> usize {
+        self.stored().len()
     }
 
     /// The tool's base direction (a unit vector).
@@ -320,7 +469,56 @@ impl Machine {
 
     /// The name.
     pub fn name(&self) -> &[u8] {
-        self.name.get(..usize::from(self.name_len)).unwrap_or(&[])
+        let len = self.name.iter().position(|&b| b == 0).unwrap_or(0);
+        self.name.get(..len).unwrap_or(&[])
+    }
+
+    /// The image's eight-byte words.
+    fn words(&self) -> &[u64; IMAGE_SIZE / 8] {
+        // SAFETY: `Machine` is `repr(C)`, 352 bytes aligned to 8 without padding (asserted
+        // above), every byte an initialised number: it reads as 44 words.
+        unsafe { &*(self as *const Machine).cast::<[u64; IMAGE_SIZE / 8]>() }
+    }
+
+    /// The seal of the image as it is: a hash of every byte but the seal's own, never 0
+    /// (the seal of a description the library did not write). Four independent lanes of
+    /// multiply-xor steps, each a bijection of its state, so a change of any one word
+    /// changes its lane and the result (up to the final fold to 32 bits); about 20 ns.
+    pub(crate) fn seal_of(&self) -> u32 {
+        const K: u64 = 0x9E37_79B9_7F4A_7C15;
+        // The format of the image: a library that lays it out otherwise starts elsewhere.
+        let mut lane = [0x636E_6372_6F74_0001u64, 1, 2, 3];
+        let mut step = |c: [u64; 4]| {
+            for (l, x) in lane.iter_mut().zip(c) {
+                *l = (*l ^ x).wrapping_mul(K);
+            }
+        };
+        let w = self.words();
+        // The first word holds the count and the seal: only the count is covered.
+        step([u64::from(self.count as u32), w[1], w[2], w[3]]);
+        for c in w[4..].chunks_exact(4) {
+            if let [a, b, c, d] = *c {
+                step([a, b, c, d]);
+            }
+        }
+        let mut h =
+            lane[0] ^ lane[1].rotate_left(16) ^ lane[2].rotate_left(32) ^ lane[3].rotate_left(48);
+        // Murmur3's finaliser: every bit of `h` reaches the low 32.
+        h ^= h >> 33;
+        h = h.wrapping_mul(0xFF51_AFD7_ED55_8CCD);
+        h ^= h >> 33;
+        h = h.wrapping_mul(0xC4CE_B9FE_1A85_EC53);
+        h ^= h >> 33;
+        (h as u32).max(1)
+    }
+
+    fn seal(&mut self) {
+        self.seal = self.seal_of();
+    }
+
+    /// Whether the image carries its seal: written by the library and not changed since.
+    pub(crate) fn is_sealed(&self) -> bool {
+        self.seal == self.seal_of()
     }
 
     /// The rotation chain of `W⁻¹·T` and its length.
@@ -331,10 +529,10 @@ impl Machine {
             index: 0,
         }; MAX_AXES];
         let mut n = 0;
-        let axes = self.axes();
+        let axes = self.stored();
         // Plain loops over the three slots: the iterator adapters cost a tenth of a
         // five-axis transformation, which builds the chain more than once.
-        let mut put = |index: usize, a: &RotaryAxis, sign: f64| {
+        let mut put = |index: usize, a: &Stored, sign: f64| {
             if let Some(link) = chain.get_mut(n) {
                 *link = Link {
                     axis: a.direction,
@@ -345,12 +543,12 @@ impl Machine {
             }
         };
         for index in (0..axes.len()).rev() {
-            if let Some(a) = axes.get(index).filter(|a| a.side == Side::Work) {
+            if let Some(a) = axes.get(index).filter(|a| a.work_side != 0) {
                 put(index, a, -1.0);
             }
         }
         for index in 0..axes.len() {
-            if let Some(a) = axes.get(index).filter(|a| a.side == Side::Tool) {
+            if let Some(a) = axes.get(index).filter(|a| a.work_side == 0) {
                 put(index, a, 1.0);
             }
         }
@@ -390,7 +588,7 @@ impl Machine {
         if !axes.iter().all(|x| x.is_finite()) {
             return Err(Error::NotFinite);
         }
-        if axes.iter().skip(self.count).any(|&x| x != 0.0) {
+        if axes.iter().skip(self.axis_count()).any(|&x| x != 0.0) {
             return Err(Error::BadArgument);
         }
         Ok(axes)
@@ -436,7 +634,7 @@ impl Machine {
 
     /// How far axis `k` turns at position `theta[k]`: `θ − offset`.
     pub(crate) fn turn(&self, k: usize, theta: [f64; MAX_AXES]) -> f64 {
-        let offset = self.axes().get(k).map_or(0.0, |a| a.offset);
+        let offset = self.stored().get(k).map_or(0.0, |a| a.offset);
         theta.get(k).copied().unwrap_or(0.0) - offset
     }
 
@@ -516,6 +714,19 @@ impl Machine {
         let at = self.tool_point(&r, tip_in_tool);
         finite(core::array::from_fn(|k| on_work[k] - at[k] + 0.0))
     }
+}
+
+/// A direction as a machine keeps it: `v` itself when it is a unit vector to within eight
+/// units in the last place, else `v` made one ([`Error::BadArgument`] for a zero vector).
+/// Idempotent: the unit vectors the library computes are within that of length 1, so a
+/// description it wrote, checked again, keeps the same bits, and a sealed description
+/// computes exactly as its unsealed copy.
+fn direction_of(v: Vector) -> Result<Vector, Error> {
+    // Written so that NaN (refused before) would normalise and fail.
+    if abs(dot(v, v) - 1.0) <= 8.0 * f64::EPSILON {
+        return Ok(v.map(|x| x + 0.0));
+    }
+    unit_vector(v).map_err(|_| Error::BadArgument)
 }
 
 fn finite(v: Vector) -> Result<Vector, Error> {

@@ -278,7 +278,7 @@ impl Machine {
             let mut theta = [0.0; MAX_AXES];
             for (j, &ph) in phi.iter().enumerate().take(n) {
                 if let Some(l) = link(j) {
-                    let offset = self.axes().get(l.index).map_or(0.0, |a| a.offset);
+                    let offset = self.stored().get(l.index).map_or(0.0, |a| a.offset);
                     if let Some(t) = theta.get_mut(l.index) {
                         *t = wrap_deg(offset + l.sign * ph);
                     }
@@ -331,7 +331,7 @@ pub(crate) fn third_angles(
 ) -> [f64; MAX_SOLUTIONS] {
     let x = perpendicular_to(u3);
     let [p, q] = phis.phi;
-    let (s, c) = sin_cos_deg4([-p[0], -p[1], -q[0], -q[1]]);
+    let (s, c) = lanes_sin_cos([-p[0], -p[1], -q[0], -q[1]]);
     let (mut ys, mut xs) = ([0.0; 4], [1.0; 4]);
     for k in 0..phis.count.min(MAX_SOLUTIONS) {
         let at = |j: usize| (s.get(j).copied(), c.get(j).copied());
@@ -351,8 +351,21 @@ pub(crate) fn third_angles(
             (*ty, *tx) = (y, xx);
         }
     }
-    let t = atan2_deg4(ys, xs);
+    let t = lanes_atan2(ys, xs);
     [t[0], t[1]]
+}
+
+/// [`sin_cos_deg4`] in a frame of its own: its lanes are not on the stack while
+/// [`third_angles`] works out its `atan2` arguments (stack bound).
+#[inline(never)]
+fn lanes_sin_cos(deg: [f64; 4]) -> ([f64; 4], [f64; 4]) {
+    sin_cos_deg4(deg)
+}
+
+/// [`atan2_deg4`] in a frame of its own (see [`lanes_sin_cos`]).
+#[inline(never)]
+fn lanes_atan2(y: [f64; 4], x: [f64; 4]) -> [f64; 4] {
+    atan2_deg4(y, x)
 }
 
 /// The `atan2` arguments of one solution's third angle: `x` turned back by the first two

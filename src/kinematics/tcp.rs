@@ -22,7 +22,9 @@
 
 use super::choose::place;
 use super::solve::{along, third_angles, turn_onto, two_isolated, Phis, VERIFY};
-use super::{about_axis_sc, Choice, Machine, Rule, Side, LENGTH_MAX, MAX_AXES, REACH_TOLERANCE};
+use super::{
+    about_axis_sc, Choice, Machine, Rule, LENGTH_MAX, MAX_AXES, MAX_SOLUTIONS, REACH_TOLERANCE,
+};
 use crate::math::{abs, sin_cos_deg4, wrap_deg};
 use crate::vector::dot;
 use crate::{
@@ -44,6 +46,9 @@ pub struct Tcp {
     /// A singular pose: a free rotary axis stayed at its previous position.
     pub free: bool,
 }
+
+/// The isolated solutions' positions, one row per solution.
+type Positions = [[f64; MAX_AXES]; MAX_SOLUTIONS];
 
 impl Machine {
     /// The tool's pose in workpiece coordinates at machine axes `axes` (`X, Y, Z` in mm,
@@ -219,7 +224,53 @@ impl Machine {
         target: &Matrix,
         current: [f64; MAX_AXES],
     ) -> Option<Result<Choice, Error>> {
-        let n = self.axes().len();
+        let (thetas, count) = match self.isolated(target)? {
+            Ok(p) => p,
+            Err(e) => return Some(Err(e)),
+        };
+        let axes = self.stored();
+        let mut best: Option<([f64; MAX_AXES], [f64; MAX_AXES], f64)> = None;
+        'solutions: for theta in thetas.iter().take(count) {
+            // Placed as `settle` places them, the distance summed in axis order.
+            let (mut placed, mut residual, mut distance) = ([0.0; MAX_AXES], [0.0; MAX_AXES], 0.0);
+            for (k, a) in axes.iter().enumerate() {
+                let (Some(&angle), Some(&cur)) = (theta.get(k), current.get(k)) else {
+                    continue;
+                };
+                let Some((x, r)) = place(a, angle, cur) else {
+                    continue 'solutions;
+                };
+                if let (Some(ax), Some(re)) = (placed.get_mut(k), residual.get_mut(k)) {
+                    *ax = x;
+                    *re = r;
+                }
+                distance += (x - cur) * (x - cur);
+            }
+            if best.map_or(true, |q| distance < q.2) {
+                best = Some((placed, residual, distance));
+            }
+        }
+        Some(match best {
+            Some((axes, residual, _)) => Ok(Choice {
+                axes,
+                residual,
+                remaining: IDENTITY,
+                free: false,
+            }),
+            None => Err(Error::OutOfTravel),
+        })
+    }
+
+    /// The isolated solutions of `target` as [`Machine::solve`] computes and writes them
+    /// (positions within (-180°, 180°], in axis order), and their count; `None` at a pole
+    /// or without axes. Not inlined: its matrices are gone from the stack when the
+    /// solutions are placed (stack bound).
+    #[inline(never)]
+    fn isolated(
+        &self,
+        target: &Matrix,
+    ) -> Option<Result<(Positions, usize), Error>> {
+        let n = self.axis_count();
         if n == 0 {
             return None;
         }
@@ -227,7 +278,7 @@ impl Machine {
         let [l1, l2, l3] = chain;
         let b = self.tool_direction();
         let d = [target[0][2], target[1][2], target[2][2]];
-        let mut third = [0.0; 2];
+        let mut third = [0.0; MAX_SOLUTIONS];
         let phis = if n == MAX_AXES {
             // As `solve` does it: the first two axes bring the third's direction where the
             // target has it, the third turns about it for the rest.
@@ -264,45 +315,18 @@ impl Machine {
                 Err(e) => return Some(Err(e)),
             }
         };
-        let axes = self.axes();
-        let mut best: Option<([f64; MAX_AXES], [f64; MAX_AXES], f64)> = None;
-        'solutions: for (p, t3) in phis.phi.iter().zip(third).take(phis.count) {
+        let mut thetas = [[0.0; MAX_AXES]; MAX_SOLUTIONS];
+        let axes = self.stored();
+        for ((p, t3), theta) in phis.phi.iter().zip(third).zip(&mut thetas) {
             // The positions as `solve` writes them.
-            let mut theta = [0.0; MAX_AXES];
-            for (link, ph) in [l1, l2, l3].iter().zip([p[0], p[1], t3]).take(n) {
+            for (link, ph) in chain.iter().zip([p[0], p[1], t3]).take(n) {
                 let offset = axes.get(link.index).map_or(0.0, |a| a.offset);
                 if let Some(t) = theta.get_mut(link.index) {
                     *t = wrap_deg(offset + link.sign * ph);
                 }
             }
-            // Placed as `settle` places them, the distance summed in axis order.
-            let (mut placed, mut residual, mut distance) = ([0.0; MAX_AXES], [0.0; MAX_AXES], 0.0);
-            for (k, a) in axes.iter().enumerate() {
-                let (Some(&angle), Some(&cur)) = (theta.get(k), current.get(k)) else {
-                    continue;
-                };
-                let Some((x, r)) = place(a, angle, cur) else {
-                    continue 'solutions;
-                };
-                if let (Some(ax), Some(re)) = (placed.get_mut(k), residual.get_mut(k)) {
-                    *ax = x;
-                    *re = r;
-                }
-                distance += (x - cur) * (x - cur);
-            }
-            if best.map_or(true, |q| distance < q.2) {
-                best = Some((placed, residual, distance));
-            }
         }
-        Some(match best {
-            Some((axes, residual, _)) => Ok(Choice {
-                axes,
-                residual,
-                remaining: IDENTITY,
-                free: false,
-            }),
-            None => Err(Error::OutOfTravel),
-        })
+        Some(Ok((thetas, phis.count.min(MAX_SOLUTIONS))))
     }
 
     /// The linear axes for the rotary choice `c`: `None` when `verify` is set and the
@@ -343,7 +367,7 @@ impl Machine {
     /// How far the rotation at the turns `r` is from `target`: the largest element
     /// difference of the whole rotation with three axes, of the tool direction with fewer.
     fn rotation_misses(&self, r: &[Matrix; MAX_AXES], target: &Matrix) -> f64 {
-        let whole = self.axes().len() == MAX_AXES;
+        let whole = self.axis_count() == MAX_AXES;
         if !whole {
             // The direction alone: the chain applied to `b`, vector by vector.
             let (chain, n) = self.chain();
@@ -391,7 +415,7 @@ impl Machine {
             0.0,
         ];
         let (s, c) = sin_cos_deg4(t);
-        core::array::from_fn(|k| match (self.axes().get(k), s.get(k), c.get(k)) {
+        core::array::from_fn(|k| match (self.stored().get(k), s.get(k), c.get(k)) {
             (Some(a), Some(&sk), Some(&ck)) => about_axis_sc(a.direction, sk, ck),
             _ => IDENTITY,
         })
@@ -400,32 +424,32 @@ impl Machine {
     /// `T·q`: a point of the tool adapter's system in machine coordinates (the head's
     /// axes, innermost first).
     pub(crate) fn tool_point(&self, r: &[Matrix; MAX_AXES], q: Vector) -> Vector {
-        self.axes()
+        self.stored()
             .iter()
             .zip(r)
             .rev()
-            .filter(|(a, _)| a.side == Side::Tool)
+            .filter(|(a, _)| a.work_side == 0)
             .fold(q, |q, (a, rk)| about_point(rk, a.point, q))
     }
 
     /// `W·q`: a workpiece point in machine coordinates (the table's axes, innermost
     /// first).
     pub(crate) fn work_point(&self, r: &[Matrix; MAX_AXES], q: Vector) -> Vector {
-        self.axes()
+        self.stored()
             .iter()
             .zip(r)
             .rev()
-            .filter(|(a, _)| a.side == Side::Work)
+            .filter(|(a, _)| a.work_side != 0)
             .fold(q, |q, (a, rk)| about_point(rk, a.point, q))
     }
 
     /// `W⁻¹·q`: a machine point in workpiece coordinates (the table's axes undone,
     /// outermost first).
     pub(crate) fn work_point_inverse(&self, r: &[Matrix; MAX_AXES], q: Vector) -> Vector {
-        self.axes()
+        self.stored()
             .iter()
             .zip(r)
-            .filter(|(a, _)| a.side == Side::Work)
+            .filter(|(a, _)| a.work_side != 0)
             .fold(q, |q, (a, rk)| about_point(&transpose(rk), a.point, q))
     }
 

@@ -1198,6 +1198,19 @@ fn machines() -> Vec<Call> {
             ));
             t.bytes(&m);
         }),
+        ("cncrot_machine_seal", |t| unsafe {
+            // Edited by hand (unsealed), sealed again; a description that is not a machine
+            // refused with it untouched.
+            let mut m = head();
+            m.axes[1].min_deg = -90.0;
+            m.axes[0].direction = [0.0, 0.0, 2.0];
+            t.status(cncrot_machine_seal(&mut m));
+            t.bytes(&m);
+            let mut broken = m;
+            broken.axes[0].direction = [0.0; 3];
+            t.status(cncrot_machine_seal(&mut broken));
+            t.bytes(&broken);
+        }),
         ("cncrot_machine_forward", |t| unsafe {
             let m = head();
             let mut f = [0.0; 16];
