@@ -432,16 +432,21 @@ static void hand_filled_descriptions(void) {
   CHECK(memcmp(&keep, &m, sizeof m) == 0, "untouched");
 }
 
+/* The AC table of the five-axis tests: A about X through (0, 0, 100), C about Z on it. */
+static void ac_table(cncrot_machine *m) {
+  memset(m, 0, sizeof *m);
+  double x[3] = {1, 0, 0}, z[3] = {0, 0, 1}, pa[3] = {0, 0, 100}, pc[3] = {0, 0, 0};
+  CHECK_STATUS(cncrot_machine_add_axis(m, 1, x, pa, 0, 0), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_machine_add_axis(m, 1, z, pc, 0, 0), CNCROT_STATUS_OK);
+}
+
 /* The five-axis transformation on an AC table (A about X through (0, 0, 100), C about Z
  * carried by it), tool 50 mm, by hand: tip at the workpiece point (10, 0, 0), direction
  * (0.5, 0, sqrt(3)/2) = (sin A sin C, sin A cos C, cos A) at A = 30, C = 90; the adapter
  * at W·tip + (0, 0, 50) = (0, 50 + 5·sqrt(3), 155 - 50·sqrt(3)). */
 static void five_axis_transformation(void) {
   cncrot_machine m;
-  memset(&m, 0, sizeof m);
-  double x[3] = {1, 0, 0}, z[3] = {0, 0, 1}, pa[3] = {0, 0, 100}, pc[3] = {0, 0, 0};
-  CHECK_STATUS(cncrot_machine_add_axis(&m, 1, x, pa, 0, 0), CNCROT_STATUS_OK);
-  CHECK_STATUS(cncrot_machine_add_axis(&m, 1, z, pc, 0, 0), CNCROT_STATUS_OK);
+  ac_table(&m);
   double s3 = sqrt(3.0);
   /* Rz(-90)·Rx(-30): the workpiece's view of the tool at A = 30, C = 90. */
   double pose[16] = {0, s3 / 2, 0.5, 10, -1, 0, 0, 0, 0, -0.5, s3 / 2, 0, 0, 0, 0, 1};
@@ -497,10 +502,7 @@ static void five_axis_transformation(void) {
  * trusted); a seal over what is not a machine is refused with nothing written. */
 static void sealed_descriptions(void) {
   cncrot_machine m;
-  memset(&m, 0, sizeof m);
-  double x[3] = {1, 0, 0}, z[3] = {0, 0, 1}, pa[3] = {0, 0, 100}, pc[3] = {0, 0, 0};
-  CHECK_STATUS(cncrot_machine_add_axis(&m, 1, x, pa, 0, 0), CNCROT_STATUS_OK);
-  CHECK_STATUS(cncrot_machine_add_axis(&m, 1, z, pc, 0, 0), CNCROT_STATUS_OK);
+  ac_table(&m);
   CHECK(m.reserved != 0, "add_axis wrote no seal");
   /* The same table filled by hand, directions of other lengths, a seal that is not one. */
   cncrot_machine h;
