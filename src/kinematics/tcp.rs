@@ -266,10 +266,7 @@ impl Machine {
     /// or without axes. Not inlined: its matrices are gone from the stack when the
     /// solutions are placed (stack bound).
     #[inline(never)]
-    fn isolated(
-        &self,
-        target: &Matrix,
-    ) -> Option<Result<(Positions, usize), Error>> {
+    fn isolated(&self, target: &Matrix) -> Option<Result<(Positions, usize), Error>> {
         let n = self.axis_count();
         if n == 0 {
             return None;
