@@ -262,6 +262,21 @@
 #define CNCROT_PROGRAM_CHANGE_MAX 2048
 
 /**
+ * `cncrot_tool_path.orientation`: no orientation stated yet.
+ */
+#define CNCROT_ORIENTATION_UNSTATED 0
+
+/**
+ * `cncrot_tool_path.orientation`: a tool direction (`direction`).
+ */
+#define CNCROT_ORIENTATION_DIRECTION 1
+
+/**
+ * `cncrot_tool_path.orientation`: rotary-axis positions by letter A, B, C (`axes`).
+ */
+#define CNCROT_ORIENTATION_AXES 2
+
+/**
  * Status of every `cncrot_` function: 0 success, positive success with a remark, negative
  * an error (outputs untouched).
  */
@@ -724,6 +739,47 @@ typedef struct cncrot_program {
    */
   uint32_t reserved;
 } cncrot_program;
+
+/**
+ * The modal state of a five-axis program (SINUMERIK `TRAORI`, Heidenhain `M128` /
+ * `FUNCTION TCPM`, Fanuc and Syntec `G43.4` / `G43.5`, Haas `G234`) as
+ * `cncrot_tool_path_line` leaves it: a caller-owned plain struct, all zero bytes at the
+ * start of a program (the transformation off, the tip at 0, no orientation, absolute
+ * coordinates, SINUMERIK angles as `ORIEULER`). 88 bytes.
+ */
+typedef struct cncrot_tool_path {
+  /**
+   * 1 while the transformation is on.
+   */
+  int32_t on;
+  /**
+   * `CNCROT_ORIENTATION_*`: how the orientation was last stated.
+   */
+  int32_t orientation;
+  /**
+   * 1 when the last block read with status 0 was a point: a move with the transformation
+   * on, `tip` and the orientation its CL point; 0 when it only changed the state.
+   */
+  int32_t point;
+  /**
+   * Bit 0: SINUMERIK `ORIRPY` (else `ORIEULER`); bit 1: incremental (`G91`).
+   */
+  int32_t flags;
+  /**
+   * The programmed tool tip, mm, workpiece coordinates.
+   */
+  double tip[3];
+  /**
+   * The tool direction (a unit vector) when `orientation` is `CNCROT_ORIENTATION_DIRECTION`;
+   * otherwise 0.
+   */
+  double direction[3];
+  /**
+   * Rotary positions stated by letter A, B, C, degrees (0 for letters never stated): the
+   * orientation when `orientation` is `CNCROT_ORIENTATION_AXES`.
+   */
+  double axes[3];
+} cncrot_tool_path;
 
 
 
@@ -2204,6 +2260,43 @@ int32_t cncrot_rotate_vector(const double *matrix, const double *vector, double 
  * ```
  */
 int32_t cncrot_rotate_vector_inverse(const double *matrix, const double *vector, double *out);
+
+/**
+ * Reads one block of a five-axis program (`len` bytes, no NUL needed; a trailing line end
+ * is ignored) in `dialect` (`CNCROT_DIALECT_*`) into `*path`: the transformation switched
+ * on or off, SINUMERIK's angle mode, `G90`/`G91`, and a motion block's tip `X Y Z` and
+ * orientation (the tool direction `A3 B3 C3`, `A2 B2 C2`, `TX TY TZ` or `I J K`, components
+ * not written 0, made a unit vector; or rotary positions `A B C`, absolute or incremental),
+ * as the control keeps them. With the transformation on, a motion block is a CL point:
+ * status 0 and `path->point` 1; the machine's axes for it: `cncrot_machine_tcp_inverse`.
+ *
+ * Returns 0 (`point` 1 for a CL point, 0 for a state change), `CNCROT_STATUS_PASSED` (a
+ * block that concerns neither: `*path` byte-identical), `CNCROT_STATUS_NOT_FOLLOWED` (a
+ * move the reader does not follow: an arc, a reference or machine-coordinate move, a value
+ * that is not a number: `*path` byte-identical, and no longer the control's); or with
+ * `*path` untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a state the
+ * library does not write), `CNCROT_STATUS_NOT_AVAILABLE` (TwinCAT: its five-axis
+ * programs are not read), `CNCROT_STATUS_LINE_TOO_LONG`, `CNCROT_STATUS_BAD_ARGUMENT` (a
+ * dialect that is not one, a zero tool direction, a direction and rotary positions in one
+ * block), `CNCROT_STATUS_TABLE_FULL` (more than 32 words), `CNCROT_STATUS_OUT_OF_RANGE`
+ * (a position that overflows).
+ *
+ * # Safety
+ * `path` points to a writable `cncrot_tool_path`, `line` to `len` readable bytes.
+ *
+ * ```c
+ * cncrot_tool_path t;
+ * memset(&t, 0, sizeof t);
+ * cncrot_tool_path_line(&t, CNCROT_DIALECT_SINUMERIK, "TRAORI", 6);
+ * const char *l = "G1 X10 Y20 Z5 A3=0 B3=-1 C3=1";
+ * cncrot_tool_path_line(&t, CNCROT_DIALECT_SINUMERIK, l, strlen(l));
+ * /* t.point == 1, t.tip = (10, 20, 5), t.direction = (0, -0.7071, 0.7071) */
+ * ```
+ */
+int32_t cncrot_tool_path_line(struct cncrot_tool_path *path,
+                              int32_t dialect,
+                              const char *line,
+                              size_t len);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -1407,11 +1407,34 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
 }
 
 /// What `path` takes besides the machine.
+/// One row of `path`: the machine's axes, the free-axis or Hirth remark, and as JSON.
+fn path_row(t: &cncrot::kinematics::Tcp, n: usize, d: i32) -> Report {
+    let shown = &t.axes[..3 + n];
+    let mut brief = nums(shown, d);
+    if t.free {
+        brief += "  (free axis kept)";
+    } else if t.residual.iter().any(|&r| r != 0.0) {
+        brief += &format!("  (Hirth: snapped by {})", nums(&t.residual[..n], d));
+    }
+    let json = Json::Obj(vec![
+        ("linear", Json::nums(&t.axes[..3])),
+        ("rotary", Json::nums(&t.axes[3..3 + n])),
+        ("free", Json::Bool(t.free)),
+        ("residual", Json::nums(&t.residual[..n])),
+    ]);
+    Report {
+        full: brief.clone() + "\n",
+        brief,
+        json,
+    }
+}
+
 pub struct PathArgs<'a> {
     pub file: &'a str,
     pub tool_length: f64,
     pub current: Option<&'a str>,
     pub rule: &'a str,
+    pub dialect: Option<&'a str>,
 }
 
 /// A frame whose third column is the unit vector `k`: X' the component of the machine's X
@@ -1467,7 +1490,31 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
         decimals: common.decimals,
     };
     let mut first = true;
+    let program = a.dialect.map(input::dialect).transpose()?;
+    let mut state = cncrot::dialects::toolpath::ToolPath::default();
     run(&common, None, |text| {
+        if let Some(dialect) = program {
+            use cncrot::dialects::toolpath::PathRemark;
+            let (next, remark) = state
+                .line(dialect, text.as_bytes())
+                .map_err(|e| Failure::at(e.column, input::block_message(text, &e)))?;
+            state = next;
+            if remark != PathRemark::Point {
+                let note = if remark == PathRemark::NotFollowed {
+                    "(not followed: the point is not known here)"
+                } else {
+                    ""
+                };
+                return Ok(Report {
+                    full: note.to_string(),
+                    brief: note.to_string(),
+                    json: Json::Obj(vec![("point", Json::Bool(false))]),
+                });
+            }
+            let t = state.machine_axes(&machine, a.tool_length, previous, rule)?;
+            previous = t.axes;
+            return Ok(path_row(&t, n, d));
+        }
         let trimmed = text.trim_start();
         let header =
             first && !trimmed.starts_with(|c: char| c.is_ascii_digit() || "+-.".contains(c));
@@ -1493,23 +1540,6 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
         };
         let t = machine.tcp_inverse_with(&pose, a.tool_length, previous, rule)?;
         previous = t.axes;
-        let shown = &t.axes[..3 + n];
-        let mut brief = nums(shown, d);
-        if t.free {
-            brief += "  (free axis kept)";
-        } else if t.residual.iter().any(|&r| r != 0.0) {
-            brief += &format!("  (Hirth: snapped by {})", nums(&t.residual[..n], d));
-        }
-        let json = Json::Obj(vec![
-            ("linear", Json::nums(&t.axes[..3])),
-            ("rotary", Json::nums(&t.axes[3..3 + n])),
-            ("free", Json::Bool(t.free)),
-            ("residual", Json::nums(&t.residual[..n])),
-        ]);
-        Ok(Report {
-            full: brief.clone() + "\n",
-            brief,
-            json,
-        })
+        Ok(path_row(&t, n, d))
     })
 }

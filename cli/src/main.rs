@@ -254,7 +254,13 @@ enum Command {
                       the last point reached). The machine as for 'axes'.\n\n\
                       Example (an AC table: A about X through z = 100, C on it; tool 50 mm):\n  \
                       cncrot path cl.txt --axis work:1,0,0@0,0,100 --axis work:0,0,1 \\\n    \
-                      --tool-length 50 --current 20,80"
+                      --tool-length 50 --current 20,80\n\n\
+                      With --dialect, FILE is a five-axis part program (SINUMERIK TRAORI, \
+                      Heidenhain M128 / FUNCTION TCPM, Fanuc or Syntec G43.4 / G43.5, Haas \
+                      G234): each motion block with the transformation on is a point, its \
+                      orientation a tool direction (A3 B3 C3, A2 B2 C2, TX TY TZ, I J K) or \
+                      rotary positions (A B C, each machine axis taking the letter its \
+                      direction is nearest); other blocks give blank lines."
     )]
     Path {
         /// The CL file ('-': standard input).
@@ -271,6 +277,9 @@ enum Command {
         /// minus:K / plus:K (its lower / higher position), or inverse.
         #[arg(long, default_value = "closest")]
         rule: String,
+        /// FILE is a five-axis part program in this dialect, not CL points.
+        #[arg(long)]
+        dialect: Option<String>,
         /// One JSON object per line.
         #[arg(long)]
         json: bool,
@@ -418,6 +427,7 @@ fn main() -> ExitCode {
             tool_length,
             current,
             rule,
+            dialect,
             json,
             decimals,
         } => commands::path(
@@ -426,6 +436,7 @@ fn main() -> ExitCode {
                 tool_length,
                 current: current.as_deref(),
                 rule: &rule,
+                dialect: dialect.as_deref(),
             },
             &machine.args(),
             &Common {

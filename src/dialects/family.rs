@@ -386,6 +386,9 @@ pub(crate) trait Family {
     /// `CYCLE800`'s `_X0 _Y0 _Z0`; `PLANE AXIAL` has none).
     const DIRECT_HAS_ORIGIN: bool = false;
 
+    /// How the family's five-axis programs are written; `None`: not read.
+    const TOOL_PATH: Option<&'static PathWords> = None;
+
     /// Writes the direct-mode block that positions the rotary axes as `direct` says
     /// (`PLANE AXIAL`, `G158 P10200`, `CYCLE800` direct), with its origin `origin` (zero for
     /// a block without origin words) and the positioning of `how` where the block says it,
@@ -429,6 +432,73 @@ pub struct Motion {
     pub choice: AxisChoice,
     /// How the machine moves to the plane.
     pub positioning: Positioning,
+}
+
+/// A command of a five-axis program (see [`PathWords`]).
+pub(crate) enum PathCommand {
+    /// A G or M code in tenths: `Code(b'G', 434)` is `G43.4`.
+    Code(u8, u32),
+    /// A name standing alone (`TRAORI`, `ORIRPY`; arguments in parentheses allowed).
+    Name(&'static [u8]),
+    /// Names in a row (`FUNCTION TCPM`).
+    Phrase(&'static [&'static [u8]]),
+}
+
+/// How a dialect writes the programs of the five-axis transformation (read by
+/// `dialects::toolpath`): the commands that switch it on and off, the words of the tool
+/// direction, what is not a straight move.
+pub(crate) struct PathWords {
+    /// One-letter addresses whose words may run together (`G1X10.`); otherwise names,
+    /// `=` optional after one letter and required after a name ending in digits (`A3=`).
+    pub(crate) iso: bool,
+    /// Switch the transformation on.
+    pub(crate) on: &'static [PathCommand],
+    /// Switch it off.
+    pub(crate) off: &'static [PathCommand],
+    /// The tool direction's components (`A3 B3 C3`, `TX TY TZ`, `I J K`).
+    pub(crate) vector: [&'static [u8]; 3],
+    /// Orientation angles (SINUMERIK `A2 B2 C2`).
+    pub(crate) angles: Option<[&'static [u8]; 3]>,
+    /// Commands that make the angles roll, pitch and yaw, or Euler angles.
+    pub(crate) rpy: &'static [PathCommand],
+    /// See `rpy`.
+    pub(crate) euler: &'static [PathCommand],
+    /// Commands that make coordinates incremental, absolute.
+    pub(crate) incremental: &'static [PathCommand],
+    /// See `incremental`.
+    pub(crate) absolute: &'static [PathCommand],
+    /// An `I` before a letter makes that word incremental (Heidenhain `IX`).
+    pub(crate) i_prefix: bool,
+    /// The first words of the blocks that move in a straight line (Heidenhain `L`, `LN`);
+    /// empty: every block with motion words.
+    pub(crate) moves: &'static [&'static [u8]],
+    /// Moves the reader does not follow: arcs, moves in machine coordinates, reference
+    /// returns.
+    pub(crate) arcs: &'static [PathCommand],
+}
+
+/// The ISO dialects' five-axis programs, switched on by `on`, off by `G49`.
+pub(crate) const fn iso_path(on: &'static [PathCommand], vector: [&'static [u8]; 3]) -> PathWords {
+    PathWords {
+        iso: true,
+        on,
+        off: &[PathCommand::Code(b'G', 490)],
+        vector,
+        angles: None,
+        rpy: &[],
+        euler: &[],
+        incremental: &[PathCommand::Code(b'G', 910)],
+        absolute: &[PathCommand::Code(b'G', 900)],
+        i_prefix: false,
+        moves: &[],
+        arcs: &[
+            PathCommand::Code(b'G', 20),
+            PathCommand::Code(b'G', 30),
+            PathCommand::Code(b'G', 280),
+            PathCommand::Code(b'G', 300),
+            PathCommand::Code(b'G', 530),
+        ],
+    }
 }
 
 /// A form without a selector: anything but 0 is [`Error::BadArgument`].

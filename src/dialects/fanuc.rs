@@ -351,7 +351,19 @@ pub(crate) fn write_g52(shift: Vector, decimals: i32, out: &mut Out) -> Result<(
     Ok(())
 }
 
+/// Fanuc's five-axis programs: `G43.4` (tool centre point, rotary positions `A B C`) and
+/// `G43.5` (the tool direction `I J K`) switch the transformation on, `G49` off \[doc\];
+/// `G90`/`G91`; arcs, `G28`/`G30` and `G53` moves are not followed.
+pub(crate) const FANUC_PATH: super::family::PathWords = super::family::iso_path(
+    &[
+        super::family::PathCommand::Code(b'G', 434),
+        super::family::PathCommand::Code(b'G', 435),
+    ],
+    [b"I", b"J", b"K"],
+);
+
 impl Family for Fanuc {
+    const TOOL_PATH: Option<&'static super::family::PathWords> = Some(&FANUC_PATH);
     const MAX_LINE: usize = 256;
     const KEEPS_SHIFT: bool = true;
     const FORMS: &'static [FormInfo] = &[

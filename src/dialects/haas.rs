@@ -78,7 +78,15 @@ const SYNTAX: Syntax = crate::text::scan::ISO_WORDS;
 /// The Haas family: `G268`, `G269`.
 pub(crate) struct Haas;
 
+/// Haas's five-axis programs: `G234` (tool centre point control, rotary positions `A B C`)
+/// on, `G49` off \[doc\]; no direction words.
+pub(crate) const HAAS_PATH: super::family::PathWords = super::family::iso_path(
+    &[super::family::PathCommand::Code(b'G', 2340)],
+    [b"", b"", b""],
+);
+
 impl Family for Haas {
+    const TOOL_PATH: Option<&'static super::family::PathWords> = Some(&HAAS_PATH);
     const MAX_LINE: usize = 256;
     const KEEPS_SHIFT: bool = true;
     const FORMS: &'static [FormInfo] = &[FormInfo {

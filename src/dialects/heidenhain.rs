@@ -429,7 +429,30 @@ fn other_block(text: &[u8]) -> Block {
 /// The Heidenhain family: `PLANE`.
 pub(crate) struct Heidenhain;
 
+/// Heidenhain's five-axis programs: `M128` or `FUNCTION TCPM …` on, `M129` or
+/// `FUNCTION RESET TCPM` off \[doc\]; `L` blocks with rotary positions `A B C`, `LN` blocks with
+/// the tool vector `TX TY TZ` \[doc\]; `IX`… incremental; circles (`C`, `CR`, `CT`, `CP`) not
+/// followed.
+pub(crate) const HEIDENHAIN_PATH: super::family::PathWords = {
+    use super::family::PathCommand::{Code, Name, Phrase};
+    super::family::PathWords {
+        iso: false,
+        on: &[Code(b'M', 1280), Phrase(&[b"FUNCTION", b"TCPM"])],
+        off: &[Code(b'M', 1290), Phrase(&[b"FUNCTION", b"RESET", b"TCPM"])],
+        vector: [b"TX", b"TY", b"TZ"],
+        angles: None,
+        rpy: &[],
+        euler: &[],
+        incremental: &[],
+        absolute: &[],
+        i_prefix: true,
+        moves: &[b"L", b"LN"],
+        arcs: &[Name(b"C"), Name(b"CR"), Name(b"CT"), Name(b"CP")],
+    }
+};
+
 impl Family for Heidenhain {
+    const TOOL_PATH: Option<&'static super::family::PathWords> = Some(&HEIDENHAIN_PATH);
     const MAX_LINE: usize = 254;
     const KEEPS_SHIFT: bool = true;
     const POSITIONING_IN_BLOCK: bool = true;

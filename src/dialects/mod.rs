@@ -16,6 +16,7 @@ pub mod program;
 mod registry;
 pub mod sinumerik;
 pub mod syntec;
+pub mod toolpath;
 pub mod twincat;
 
 // SINUMERIK's cycles and data, at the paths they have always had.

@@ -292,7 +292,11 @@ impl Program {
 /// (A for X, B for Y, C for Z: the largest component, the first of equal ones) \[choice:
 /// a machine description carries no axis names\]. A nonzero position for a letter or a
 /// place the machine lacks: [`Error::BadArgument`].
-fn direct_positions(d: &Direct, stated: [f64; 3], machine: &Machine) -> Result<[f64; 3], Error> {
+pub(crate) fn direct_positions(
+    d: &Direct,
+    stated: [f64; 3],
+    machine: &Machine,
+) -> Result<[f64; 3], Error> {
     let mut positions = [0.0; 3];
     let mut taken = 0u8;
     for (k, axis) in machine.axes().iter().enumerate() {

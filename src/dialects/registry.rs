@@ -7,7 +7,8 @@
 //! dispatch, no function pointers, so the no-panic proof sees every path.
 
 use super::family::{
-    Block, Direct, Family, Form, FormInfo, FormSpec, Modal, Motion, Positioning, MAX_VALUES,
+    Block, Direct, Family, Form, FormInfo, FormSpec, Modal, Motion, PathWords, Positioning,
+    MAX_VALUES,
 };
 use super::{fanuc, haas, heidenhain, sinumerik, syntec, twincat};
 use crate::text::number::Out;
@@ -118,6 +119,12 @@ macro_rules! families {
             ) -> Result<(), Error> {
                 match self {
                     $(Dialect::$name => <$family>::write_shift(shift, decimals, out),)*
+                }
+            }
+
+            pub(crate) const fn tool_path(self) -> Option<&'static PathWords> {
+                match self {
+                    $(Dialect::$name => <$family>::TOOL_PATH,)*
                 }
             }
 

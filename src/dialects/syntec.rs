@@ -153,7 +153,17 @@ const SYNTAX: Syntax = crate::text::scan::ISO_WORDS;
 /// The Syntec family: `G158`, and the Fanuc-style `G68.2` of its G68.2 mode.
 pub(crate) struct Syntec;
 
+/// Syntec's five-axis programs: `G43.4` and `G43.5` as Fanuc's \[doc\].
+pub(crate) const SYNTEC_PATH: super::family::PathWords = super::family::iso_path(
+    &[
+        super::family::PathCommand::Code(b'G', 434),
+        super::family::PathCommand::Code(b'G', 435),
+    ],
+    [b"I", b"J", b"K"],
+);
+
 impl Family for Syntec {
+    const TOOL_PATH: Option<&'static super::family::PathWords> = Some(&SYNTEC_PATH);
     const MAX_LINE: usize = 256;
     const KEEPS_SHIFT: bool = true;
     const FORMS: &'static [FormInfo] = &[FormInfo {

@@ -1039,7 +1039,7 @@ pub unsafe extern "C" fn cncrot_machine_tcp_inverse_rule(
 ///
 /// # Safety
 /// `axes` is non-NULL and points to 6 writable doubles.
-unsafe fn write_tcp(
+pub(super) unsafe fn write_tcp(
     axes: *mut f64,
     t: &crate::kinematics::Tcp,
 ) -> Result<cncrot_status, cncrot_status> {

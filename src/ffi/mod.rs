@@ -21,6 +21,7 @@ mod machine;
 mod probe;
 mod program;
 mod rotation;
+mod toolpath;
 
 pub use batch::*;
 pub use cycle600::*;
@@ -31,6 +32,7 @@ pub use machine::*;
 pub use probe::*;
 pub use program::*;
 pub use rotation::*;
+pub use toolpath::*;
 
 use crate::{Convention, Error, Kind};
 use core::ffi::c_char;

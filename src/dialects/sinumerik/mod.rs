@@ -749,7 +749,36 @@ fn other_block(rest: &[u8], offset: usize) -> Result<Block, LineError> {
 /// The SINUMERIK family: `CYCLE800`, `CYCLE600`, the frame commands.
 pub(crate) struct Sinumerik;
 
+/// SINUMERIK's five-axis programs: `TRAORI` on, `TRAFOOF` off; the tool direction `A3 B3
+/// C3`, orientation angles `A2 B2 C2` after `ORIEULER` (the default machine data) or
+/// `ORIRPY`, rotary positions by axis name \[doc\]; `G90`/`G91`; arcs (`G2`, `G3`, `CIP`,
+/// `CT`) and reference moves (`G74`) not followed.
+pub(crate) const SINUMERIK_PATH: super::family::PathWords = {
+    use super::family::PathCommand::{Code, Name};
+    super::family::PathWords {
+        iso: false,
+        on: &[Name(b"TRAORI")],
+        off: &[Name(b"TRAFOOF")],
+        vector: [b"A3", b"B3", b"C3"],
+        angles: Some([b"A2", b"B2", b"C2"]),
+        rpy: &[Name(b"ORIRPY")],
+        euler: &[Name(b"ORIEULER")],
+        incremental: &[Code(b'G', 910)],
+        absolute: &[Code(b'G', 900)],
+        i_prefix: false,
+        moves: &[],
+        arcs: &[
+            Code(b'G', 20),
+            Code(b'G', 30),
+            Name(b"CIP"),
+            Name(b"CT"),
+            Code(b'G', 740),
+        ],
+    }
+};
+
 impl Family for Sinumerik {
+    const TOOL_PATH: Option<&'static super::family::PathWords> = Some(&SINUMERIK_PATH);
     /// Its manual's limit for a block.
     const MAX_LINE: usize = 512;
     const FORMS: &'static [FormInfo] = &[

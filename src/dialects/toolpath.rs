@@ -1,0 +1,686 @@
+//! Programs of the five-axis transformation: motion blocks that state the tool tip and the
+//! tool's orientation in workpiece coordinates while the control keeps the tip on the path
+//! (SINUMERIK `TRAORI`, Heidenhain `M128` / `FUNCTION TCPM`, Fanuc and Syntec `G43.4` /
+//! `G43.5`, Haas `G234`), read block by block into CL points: the tip, and the tool
+//! direction or the rotary-axis positions the block states. What each dialect writes is in
+//! its family file ([`PathWords`]); this module holds the modal state and the reading that is
+//! the same for all.
+//!
+//! ```
+//! use cncrot::dialects::program::Dialect;
+//! use cncrot::dialects::toolpath::{Orientation, PathRemark, ToolPath};
+//! let (p, _) = ToolPath::default().line(Dialect::Sinumerik, b"TRAORI").unwrap();
+//! let (p, r) = p.line(Dialect::Sinumerik, b"N20 G1 X10 Y20 Z5 A3=0 B3=-1 C3=1").unwrap();
+//! assert_eq!(r, PathRemark::Point);
+//! assert_eq!(p.tip, [10.0, 20.0, 5.0]);
+//! // The direction (0, −1, 1) made a unit vector.
+//! let Orientation::Direction(d) = p.orientation else { panic!() };
+//! assert!((d[1] + 0.5f64.sqrt()).abs() < 1e-15 && (d[2] - 0.5f64.sqrt()).abs() < 1e-15);
+//! ```
+
+use super::family::{Direct, DirectAxes, PathCommand, PathWords};
+use super::program::direct_positions;
+use super::registry::Dialect;
+use super::sinumerik::{orieuler_vector, orirpy_vector};
+use crate::kinematics::{Machine, Rule, Tcp};
+use crate::text::scan::LineError;
+use crate::{rotation_from_z_x, Frame};
+use crate::{Error, Vector};
+
+/// The tool's orientation a program last stated.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum Orientation {
+    /// None yet (the rotary axes stay where they are).
+    #[default]
+    Unstated,
+    /// A tool direction (unit vector, workpiece coordinates): `A3 B3 C3`, `A2 B2 C2`,
+    /// `TX TY TZ`, `I J K`.
+    Direction(Vector),
+    /// Rotary-axis positions by letter `A`, `B`, `C` (degrees; letters never stated 0):
+    /// the machine gives the direction.
+    Axes([f64; 3]),
+}
+
+/// The modal state of a five-axis program, as its blocks leave it. The default: the
+/// transformation off, the tip at the origin, no orientation stated, absolute coordinates,
+/// SINUMERIK's angles as Euler angles (`ORIEULER`, the usual machine data).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ToolPath {
+    /// Whether the transformation is on (`TRAORI`, `M128`, `FUNCTION TCPM`, `G43.4`,
+    /// `G43.5`, `G234`).
+    pub on: bool,
+    /// The programmed tip `X Y Z` (mm, workpiece coordinates).
+    pub tip: Vector,
+    /// The orientation last stated.
+    pub orientation: Orientation,
+    /// The rotary positions stated by letter so far (`A`, `B`, `C`), kept when a direction
+    /// is stated in between.
+    pub axes: [f64; 3],
+    /// SINUMERIK `ORIRPY` (`A2 B2 C2` as roll, pitch, yaw) rather than `ORIEULER`.
+    pub rpy: bool,
+    /// ISO `G91`: `X Y Z` and the rotary positions add to the last ones.
+    pub incremental: bool,
+}
+
+/// What a block did, beside the state it leaves.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PathRemark {
+    /// A motion block with the transformation on: the state's tip and orientation are a CL
+    /// point.
+    Point,
+    /// A block that changes the state without a point (the transformation switched, an
+    /// angle mode, a motion block with the transformation off).
+    Applied,
+    /// A block that concerns neither (the state is the one given, byte for byte).
+    Passed,
+    /// A move the reader does not follow (an arc, an expression or incremental function
+    /// where a number belongs): the state is the one given, and no longer the control's.
+    NotFollowed,
+}
+
+/// One word of a block: its name (`X`, `A3`, `TX`, `TRAORI`, `G`), its value as written
+/// (empty for a name alone) and the 1-based column of the name.
+#[derive(Clone, Copy)]
+struct Word<'a> {
+    name: &'a [u8],
+    value: &'a [u8],
+    column: usize,
+}
+
+/// The words of a block, comments, strings and parenthesised arguments skipped; a
+/// leading block number (`N10`, Heidenhain's `15`) skipped too.
+struct Words<'a> {
+    text: &'a [u8],
+    pos: usize,
+    iso: bool,
+}
+
+impl<'a> Words<'a> {
+    fn at(&self, k: usize) -> u8 {
+        self.text.get(k).copied().unwrap_or(0)
+    }
+}
+
+impl<'a> Iterator for Words<'a> {
+    type Item = Word<'a>;
+
+    fn next(&mut self) -> Option<Word<'a>> {
+        loop {
+            let b = self.at(self.pos);
+            if self.pos >= self.text.len() || b == b';' {
+                return None;
+            }
+            if b == b'(' || b == b'"' {
+                let close = if b == b'(' { b')' } else { b'"' };
+                self.pos += 1;
+                while self.pos < self.text.len() && self.at(self.pos) != close {
+                    self.pos += 1;
+                }
+                self.pos += 1;
+                continue;
+            }
+            if !b.is_ascii_alphabetic() && b != b'_' {
+                self.pos += 1;
+                continue;
+            }
+            let start = self.pos;
+            self.pos += 1;
+            if !self.iso {
+                while self.at(self.pos).is_ascii_alphabetic() || self.at(self.pos) == b'_' {
+                    self.pos += 1;
+                }
+                // Digits belong to the name when `=` follows them (`A3=`, `C2=`).
+                let mut k = self.pos;
+                while self.at(k).is_ascii_digit() {
+                    k += 1;
+                }
+                if k > self.pos && self.at(k) == b'=' {
+                    self.pos = k;
+                }
+            }
+            let name = self.text.get(start..self.pos).unwrap_or(&[]);
+            if !self.iso && self.at(self.pos) == b'=' {
+                self.pos += 1;
+            }
+            let from = self.pos;
+            let mut k = from;
+            if matches!(self.at(k), b'+' | b'-') {
+                k += 1;
+            }
+            while self.at(k).is_ascii_digit() || self.at(k) == b'.' {
+                k += 1;
+            }
+            // A value that is not a plain number (`IC(5)`, `R1`, `Q3`) stays empty here
+            // and reads as not followed where a number belongs.
+            let has_digits = self
+                .text
+                .get(from..k)
+                .is_some_and(|v| v.iter().any(u8::is_ascii_digit));
+            let value = if has_digits {
+                self.pos = k;
+                self.text.get(from..k).unwrap_or(&[])
+            } else {
+                &[]
+            };
+            return Some(Word {
+                name,
+                value,
+                column: start + 1,
+            });
+        }
+    }
+}
+
+/// The number of a word's value, or `None` for a word without one.
+fn number(w: &Word) -> Option<f64> {
+    core::str::from_utf8(w.value).ok()?.parse::<f64>().ok()
+}
+
+/// A G or M code in tenths (`43.4` → 434), as the program readers count them.
+fn code(value: &[u8]) -> Option<u32> {
+    let (int, frac) = match value.iter().position(|&b| b == b'.') {
+        Some(k) => (value.get(..k)?, value.get(k + 1..)?),
+        None => (value, &[][..]),
+    };
+    if int.is_empty() || int.len() > 6 || frac.len() > 1 {
+        return None;
+    }
+    let mut v = 0u32;
+    for &b in int.iter().chain(frac) {
+        if !b.is_ascii_digit() {
+            return None;
+        }
+        v = v * 10 + u32::from(b - b'0');
+    }
+    Some(if frac.is_empty() { v * 10 } else { v })
+}
+
+fn same(a: &[u8], b: &[u8]) -> bool {
+    a.eq_ignore_ascii_case(b)
+}
+
+/// Whether the words from `k` on start with the command `c`.
+fn is_command(words: &[Word], k: usize, c: &PathCommand) -> bool {
+    match c {
+        PathCommand::Code(letter, tenths) => words.get(k).is_some_and(|w| {
+            w.name.len() == 1
+                && w.name.eq_ignore_ascii_case(&[*letter])
+                && code(w.value) == Some(*tenths)
+        }),
+        PathCommand::Name(name) => words
+            .get(k)
+            .is_some_and(|w| same(w.name, name) && w.value.is_empty()),
+        PathCommand::Phrase(names) => names.iter().enumerate().all(|(j, name)| {
+            words
+                .get(k + j)
+                .is_some_and(|w| same(w.name, name) && w.value.is_empty())
+        }),
+    }
+}
+
+/// The most words a block of a five-axis program has that this reader looks at.
+const MAX_WORDS: usize = 32;
+
+impl ToolPath {
+    /// The state after block `text` of a program in `dialect`, and what the block did. A
+    /// refused block leaves the caller's state as it was: [`Error::NotAvailable`] for a
+    /// dialect whose five-axis programs are not read (TwinCAT), [`Error::LineTooLong`],
+    /// [`Error::BadArgument`] (a zero tool direction, a direction and rotary positions in
+    /// one block), [`Error::TableFull`] (more than 32 words), with the column.
+    pub fn line(&self, dialect: Dialect, text: &[u8]) -> Result<(ToolPath, PathRemark), LineError> {
+        let Some(pw) = dialect.tool_path() else {
+            return Err(LineError {
+                error: Error::NotAvailable,
+                column: 1,
+                expected: None,
+            });
+        };
+        // A line end is not part of the block.
+        let text = match text {
+            [rest @ .., b'\r', b'\n'] | [rest @ .., b'\n'] => rest,
+            _ => text,
+        };
+        if text.len() > dialect.max_line() {
+            return Err(LineError {
+                error: Error::LineTooLong,
+                column: dialect.max_line() + 1,
+                expected: None,
+            });
+        }
+        let mut list = [Word {
+            name: &[],
+            value: &[],
+            column: 0,
+        }; MAX_WORDS];
+        let mut n = 0;
+        let mut iter = Words {
+            text,
+            pos: 0,
+            iso: pw.iso,
+        };
+        // A leading block number: `N10`, or Heidenhain's bare digits (skipped as non-words).
+        for w in &mut iter {
+            if n == 0 && w.name.eq_ignore_ascii_case(b"N") && !w.value.is_empty() {
+                continue;
+            }
+            let Some(slot) = list.get_mut(n) else {
+                return Err(LineError {
+                    error: Error::TableFull,
+                    column: w.column,
+                    expected: None,
+                });
+            };
+            *slot = w;
+            n += 1;
+        }
+        let words = list.get(..n).unwrap_or(&[]);
+        self.apply(pw, words)
+    }
+
+    /// The machine's axes for the state's CL point (the tip with the tool of length
+    /// `tool_length`, mm, on `machine`), continuous with `previous` (`X, Y, Z`, then the
+    /// rotary positions, as [`Machine::tcp_inverse`] takes them): for a tool direction the
+    /// rotary solution `rule` picks; for rotary positions stated by letter, those positions
+    /// (each machine axis takes the letter its direction is nearest: A for X, B for Y, C for
+    /// Z \[choice\]); with no orientation stated, the rotary axes where they were. The
+    /// linear axes put the tip on the point. Errors: those of [`Machine::tcp_inverse`],
+    /// [`Error::BadArgument`] (a nonzero position for a letter the machine lacks).
+    ///
+    /// ```
+    /// use cncrot::dialects::program::Dialect;
+    /// use cncrot::dialects::toolpath::ToolPath;
+    /// use cncrot::kinematics::{Machine, RotaryAxis, Rule, Side};
+    /// // An AC table: A about X through (0, 0, 100), C on it.
+    /// let m = Machine::new([0.0, 0.0, 1.0]).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Work, [1.0, 0.0, 0.0], [0.0, 0.0, 100.0])).unwrap()
+    ///     .with_axis(RotaryAxis::new(Side::Work, [0.0, 0.0, 1.0], [0.0; 3])).unwrap();
+    /// let (p, _) = ToolPath::default().line(Dialect::Fanuc, b"G43.4 H1").unwrap();
+    /// let (p, _) = p.line(Dialect::Fanuc, b"G1 X10. Y0. Z0. A30. C90.").unwrap();
+    /// let t = p.machine_axes(&m, 50.0, [0.0; 6], Rule::Closest).unwrap();
+    /// // The worked example of docs/kinematics.md: Y = 50 + 5·√3, Z = 155 − 50·√3.
+    /// let s3 = 3f64.sqrt();
+    /// let want = [0.0, 50.0 + 5.0 * s3, 155.0 - 50.0 * s3, 30.0, 90.0, 0.0];
+    /// assert!(t.axes.iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-9));
+    /// ```
+    pub fn machine_axes(
+        &self,
+        machine: &Machine,
+        tool_length: f64,
+        previous: [f64; 6],
+        rule: Rule,
+    ) -> Result<Tcp, Error> {
+        let [_, _, _, r1, r2, r3] = previous;
+        let (rotation, previous, rule) = match self.orientation {
+            Orientation::Direction(d) => {
+                // X' from the workpiece's X, or Y for a direction near X: with fewer than
+                // three rotary axes only the direction counts.
+                let hint = if crate::math::abs(d[0]) < 0.9 {
+                    [1.0, 0.0, 0.0]
+                } else {
+                    [0.0, 1.0, 0.0]
+                };
+                (rotation_from_z_x(d, hint)?, previous, rule)
+            }
+            Orientation::Axes(stated) => {
+                let by = Direct {
+                    by: DirectAxes::Letters,
+                    given: 7,
+                };
+                let at = direct_positions(&by, stated, machine)?;
+                let [x, y, z, ..] = previous;
+                let f = machine.forward(at)?;
+                // From the stated positions themselves: the closest solution is they.
+                (f.rotation, [x, y, z, at[0], at[1], at[2]], Rule::Closest)
+            }
+            Orientation::Unstated => (
+                machine.forward([r1, r2, r3])?.rotation,
+                previous,
+                Rule::Closest,
+            ),
+        };
+        let pose = Frame {
+            rotation,
+            translation: self.tip,
+        };
+        machine.tcp_inverse_with(&pose, tool_length, previous, rule)
+    }
+
+    fn apply(&self, pw: &PathWords, words: &[Word]) -> Result<(ToolPath, PathRemark), LineError> {
+        let mut next = *self;
+        let mut changed = false;
+        // Commands first: the transformation, the angle mode, absolute or incremental.
+        for k in 0..words.len() {
+            if pw.on.iter().any(|c| is_command(words, k, c)) {
+                next.on = true;
+                changed = true;
+            } else if pw.off.iter().any(|c| is_command(words, k, c)) {
+                next.on = false;
+                changed = true;
+            } else if pw.rpy.iter().any(|c| is_command(words, k, c)) {
+                next.rpy = true;
+                changed = true;
+            } else if pw.euler.iter().any(|c| is_command(words, k, c)) {
+                next.rpy = false;
+                changed = true;
+            } else if pw.incremental.iter().any(|c| is_command(words, k, c)) {
+                next.incremental = true;
+                changed = true;
+            } else if pw.absolute.iter().any(|c| is_command(words, k, c)) {
+                next.incremental = false;
+                changed = true;
+            }
+        }
+        // A block that is not a straight move: an arc, or a block whose first word the
+        // dialect does not move with (Heidenhain's `L`/`LN`).
+        let first = words.first();
+        let arc = (0..words.len()).any(|k| pw.arcs.iter().any(|c| is_command(words, k, c)));
+        let moves =
+            pw.moves.is_empty() || first.is_some_and(|w| pw.moves.iter().any(|m| same(w.name, m)));
+        // The motion words: tip, rotary positions (absolute, or Heidenhain's `I` prefix),
+        // direction, angles.
+        let mut tip = [None; 3];
+        let mut tip_inc = [false; 3];
+        let mut axes = [None; 3];
+        let mut axes_inc = [false; 3];
+        let mut vector = [None; 3];
+        let mut angles = [None; 3];
+        let mut first_column = 0;
+        let mut unreadable = false;
+        for w in words {
+            let (name, inc) = match w.name {
+                [b'I' | b'i', rest @ ..] if pw.i_prefix && rest.len() == 1 => (rest, true),
+                _ => (w.name, false),
+            };
+            let letter = |set: &[u8; 3]| {
+                set.iter()
+                    .position(|l| name.len() == 1 && name.eq_ignore_ascii_case(&[*l]))
+            };
+            let named = |set: &[&[u8]; 3]| set.iter().position(|s| same(name, s));
+            let slot = if let Some(k) = letter(b"XYZ") {
+                tip_inc[k] = inc;
+                tip.get_mut(k)
+            } else if let Some(k) = letter(b"ABC").filter(|_| !pw.vector.contains(&name)) {
+                axes_inc[k] = inc;
+                axes.get_mut(k)
+            } else if let Some(k) = named(&pw.vector).filter(|_| !inc) {
+                vector.get_mut(k)
+            } else if let Some(k) = pw.angles.and_then(|a| named(&a)).filter(|_| !inc) {
+                angles.get_mut(k)
+            } else {
+                None
+            };
+            if let Some(slot) = slot {
+                if first_column == 0 {
+                    first_column = w.column;
+                }
+                match number(w) {
+                    Some(v) if v.is_finite() => *slot = Some((v, w.column)),
+                    _ => unreadable = true,
+                }
+            }
+        }
+        let unchanged = if changed {
+            (next, PathRemark::Applied)
+        } else {
+            (*self, PathRemark::Passed)
+        };
+        if first_column == 0 {
+            return Ok(unchanged);
+        }
+        if arc || (unreadable && moves) {
+            // Nothing of the block is taken: its end point is not known here.
+            return Ok((*self, PathRemark::NotFollowed));
+        }
+        if !moves {
+            // Words of a block that does not move (Heidenhain's `TOOL CALL 1 Z`, `CC X Y`).
+            return Ok(unchanged);
+        }
+        let given_vector = vector.iter().chain(&angles).find_map(|v| *v);
+        let given_axes = axes.iter().find_map(|v| *v);
+        if let (Some(_), Some((_, column))) = (given_vector, given_axes) {
+            return Err(LineError {
+                error: Error::BadArgument,
+                column,
+                expected: None,
+            });
+        }
+        for k in 0..3 {
+            if let (Some(t), Some(&(v, _))) =
+                (next.tip.get_mut(k), tip.get(k).and_then(|v| v.as_ref()))
+            {
+                let inc = next.incremental || tip_inc.get(k).copied().unwrap_or(false);
+                *t = if inc { *t + v } else { v };
+            }
+            if let (Some(a), Some(&(v, _))) =
+                (next.axes.get_mut(k), axes.get(k).and_then(|v| v.as_ref()))
+            {
+                let inc = next.incremental || axes_inc.get(k).copied().unwrap_or(false);
+                *a = if inc { *a + v } else { v };
+            }
+        }
+        if given_axes.is_some() {
+            next.orientation = Orientation::Axes(next.axes);
+        }
+        if let Some((_, column)) = vector.iter().find_map(|v| *v) {
+            // Components not written are 0 [choice].
+            let v = vector.map(|c| c.map_or(0.0, |(x, _)| x));
+            let d = crate::unit_vector(v).map_err(|_| LineError {
+                error: Error::BadArgument,
+                column,
+                expected: None,
+            })?;
+            next.orientation = Orientation::Direction(d);
+        } else if angles.iter().any(Option::is_some) {
+            let [a, b, c] = angles.map(|x| x.map_or(0.0, |(v, _)| v));
+            let d = if next.rpy {
+                orirpy_vector([a, b, c])
+            } else {
+                orieuler_vector([a, b])
+            };
+            next.orientation = Orientation::Direction(d);
+        }
+        let all_finite = next.tip.iter().chain(&next.axes).all(|x| x.is_finite());
+        if !all_finite {
+            return Err(LineError {
+                error: Error::OutOfRange,
+                column: first_column,
+                expected: None,
+            });
+        }
+        let remark = if next.on {
+            PathRemark::Point
+        } else {
+            PathRemark::Applied
+        };
+        Ok((next, remark))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn direction_near(o: Orientation, want: Vector) -> bool {
+        matches!(o, Orientation::Direction(d) if d.iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-15))
+    }
+
+    fn run(d: Dialect, lines: &[&str]) -> Vec<(ToolPath, PathRemark)> {
+        let mut p = ToolPath::default();
+        lines
+            .iter()
+            .map(|l| {
+                let (n, r) = p.line(d, l.as_bytes()).unwrap();
+                p = n;
+                (n, r)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn sinumerik_vectors_angles_and_axes() {
+        let s = 0.5f64.sqrt();
+        let out = run(
+            Dialect::Sinumerik,
+            &[
+                "N10 G1 X0 Y0 Z50",
+                "N20 TRAORI(1)",
+                "N30 X10 A3=0 B3=-1 C3=1",
+                "N40 Y20",
+                "N50 ORIRPY",
+                // Roll 90° about X turns +Z onto −Y.
+                "N60 A2=90 B2=0 C2=0",
+                "N70 ORIEULER",
+                // Euler: A2 about Z, then B2 about the new X: Rz(90)·Rx(90)·e_z = (1, 0, 0).
+                "N80 A2=90 B2=90",
+                "N90 A=30 C=-45.5",
+                "N100 G2 X5 Y5 CR=5",
+                "N110 X=IC(5)",
+                "N120 TRAFOOF",
+                "; a comment",
+            ],
+        );
+        let r: Vec<_> = out.iter().map(|o| o.1).collect();
+        use PathRemark::*;
+        assert_eq!(
+            r,
+            [
+                Applied,
+                Applied,
+                Point,
+                Point,
+                Applied,
+                Point,
+                Applied,
+                Point,
+                Point,
+                NotFollowed,
+                NotFollowed,
+                Applied,
+                Passed
+            ]
+        );
+        assert_eq!(out[2].0.tip, [10.0, 0.0, 50.0]);
+        assert!(direction_near(out[2].0.orientation, [0.0, -s, s]));
+        assert_eq!(out[3].0.tip, [10.0, 20.0, 50.0]);
+        assert_eq!(out[3].0.orientation, out[2].0.orientation);
+        let Orientation::Direction(d) = out[5].0.orientation else {
+            panic!()
+        };
+        assert!(d[0].abs() < 1e-15 && (d[1] + 1.0).abs() < 1e-15 && d[2].abs() < 1e-15);
+        let Orientation::Direction(d) = out[7].0.orientation else {
+            panic!()
+        };
+        assert!((d[0] - 1.0).abs() < 1e-15 && d[1].abs() < 1e-15 && d[2].abs() < 1e-15);
+        assert_eq!(out[8].0.orientation, Orientation::Axes([30.0, 0.0, -45.5]));
+        // Not followed and passed blocks leave the state as it was.
+        assert_eq!(out[9].0, out[8].0);
+        assert!(!out[11].0.on);
+    }
+
+    #[test]
+    fn heidenhain_l_and_ln_blocks() {
+        let out = run(
+            Dialect::Heidenhain,
+            &[
+                "0 BEGIN PGM P MM",
+                "1 TOOL CALL 5 Z S8000",
+                "2 L X+0 Y+0 Z+100 R0 FMAX",
+                "3 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS",
+                "4 L X+10 Y+5 Z+2 B+30 C-90 F1000",
+                "5 L IX+5 IB+5",
+                "6 LN X+1 Y+2 Z+3 NX+0 NY+0 NZ+1 TX+0 TY+0.6 TZ+0.8",
+                "7 CC X+0 Y+0",
+                "8 C X+5 Y+0 DR+",
+                "9 FUNCTION RESET TCPM",
+                "10 L Z+100 M128",
+                "11 L Z+50 M129",
+            ],
+        );
+        use PathRemark::*;
+        let r: Vec<_> = out.iter().map(|o| o.1).collect();
+        assert_eq!(
+            r,
+            [
+                Passed,
+                Passed,
+                Applied,
+                Applied,
+                Point,
+                Point,
+                Point,
+                Passed,
+                NotFollowed,
+                Applied,
+                Point,
+                Applied
+            ]
+        );
+        assert_eq!(out[4].0.orientation, Orientation::Axes([0.0, 30.0, -90.0]));
+        assert_eq!(out[5].0.tip, [15.0, 5.0, 2.0]);
+        assert_eq!(out[5].0.orientation, Orientation::Axes([0.0, 35.0, -90.0]));
+        assert!(direction_near(out[6].0.orientation, [0.0, 0.6, 0.8]));
+        assert_eq!(out[6].0.tip, [1.0, 2.0, 3.0]);
+        assert!(out[10].0.on && !out[11].0.on);
+    }
+
+    #[test]
+    fn fanuc_g43_4_and_g43_5() {
+        let out = run(
+            Dialect::Fanuc,
+            &[
+                "G90 G54 G0 X0 Y0",
+                "G43.5 H1",
+                "G1 X10. Y20. Z30. I0. J0. K1. F500",
+                "G91 X1. I1. K0.",
+                "G90 G43.4 H1",
+                "X5.A10.C20.",
+                "G2 X0 Y0 R5.",
+                "G49",
+                "(a comment) M30",
+            ],
+        );
+        use PathRemark::*;
+        let r: Vec<_> = out.iter().map(|o| o.1).collect();
+        assert_eq!(
+            r,
+            [
+                Applied,
+                Applied,
+                Point,
+                Point,
+                Applied,
+                Point,
+                NotFollowed,
+                Applied,
+                Passed
+            ]
+        );
+        assert_eq!(
+            out[2].0.orientation,
+            Orientation::Direction([0.0, 0.0, 1.0])
+        );
+        assert_eq!(out[3].0.tip, [11.0, 20.0, 30.0]);
+        assert_eq!(
+            out[3].0.orientation,
+            Orientation::Direction([1.0, 0.0, 0.0])
+        );
+        assert_eq!(out[5].0.tip, [5.0, 20.0, 30.0]);
+        assert_eq!(out[5].0.orientation, Orientation::Axes([10.0, 0.0, 20.0]));
+    }
+
+    #[test]
+    fn refusals_leave_nothing() {
+        let p = ToolPath::default();
+        let e = p.line(Dialect::Fanuc, b"G1 X1 I0 J0 K0").unwrap_err();
+        assert_eq!((e.error, e.column), (Error::BadArgument, 7));
+        let e = p.line(Dialect::Fanuc, b"G1 X1 A5 I1").unwrap_err();
+        assert_eq!(e.error, Error::BadArgument);
+        let e = p.line(Dialect::Twincat, b"G1 X1").unwrap_err();
+        assert_eq!(e.error, Error::NotAvailable);
+        let long = vec![b'X'; 600];
+        assert_eq!(
+            p.line(Dialect::Fanuc, &long).unwrap_err().error,
+            Error::LineTooLong
+        );
+    }
+}
