@@ -802,6 +802,30 @@ $TC_CARR34[1]=\"HEAD_CB\"
                     )
                 },
             );
+            // A five-axis program's block read, and its CL point's axes on the machine.
+            let mut tp: cncrot_tool_path = unsafe { std::mem::zeroed() };
+            let on = b"G43.5 H1";
+            unsafe {
+                cncrot_tool_path_line(&mut tp, CNCROT_DIALECT_FANUC, on.as_ptr().cast(), on.len())
+            };
+            let block: &[u8] = b"G1 X12.5 Y-3.25 Z40. I0.3 J-0.2 K0.9";
+            b.time("cncrot_tool_path_line", class, &[block], &mut |l| unsafe {
+                let mut t = tp;
+                cncrot_tool_path_line(&mut t, CNCROT_DIALECT_FANUC, l.as_ptr().cast(), l.len())
+            });
+            let mut point = tp;
+            unsafe {
+                cncrot_tool_path_line(
+                    &mut point,
+                    CNCROT_DIALECT_FANUC,
+                    block.as_ptr().cast(),
+                    block.len(),
+                )
+            };
+            let prev6 = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+            b.time("cncrot_tool_path_axes", class, &[()], &mut |_| unsafe {
+                cncrot_tool_path_axes(&point, m, 120.0, prev6.as_ptr(), 0, 0, out6.as_mut_ptr())
+            });
             let mut copy = edited;
             b.time("cncrot_machine_seal", class, &[()], &mut |_| unsafe {
                 copy.reserved ^= 1;

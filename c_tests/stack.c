@@ -303,6 +303,29 @@ static void machine_tcp_forward_unsealed(void) {
   b = edited(&mach);
   sink += cncrot_machine_tcp_forward(&a, ax, 100, pose) + cncrot_machine_tcp_forward(&b, ax, 100, pose);
 }
+static void tool_path_line(void) {
+  static const char *lines[] = {"TRAORI", "N30 G1 X10 Y0 Z5 A3=0 B3=-1 C3=1", "N40 ORIRPY", "N50 A2=10 B2=20 C2=30",
+                                "N60 G2 X1 Y1 CR=5"};
+  static cncrot_tool_path t;
+  memset(&t, 0, sizeof t);
+  for (size_t k = 0; k < sizeof lines / sizeof lines[0]; k++)
+    sink += cncrot_tool_path_line(&t, CNCROT_DIALECT_SINUMERIK, lines[k], strlen(lines[k]));
+  static const char h[] = "3 LN X+1 Y+2 Z+3 NX+0 NY+0 NZ+1 TX+0 TY+0.6 TZ+0.8 R0 F1000 M128";
+  sink += cncrot_tool_path_line(&t, CNCROT_DIALECT_HEIDENHAIN, h, sizeof h - 1);
+}
+static void tool_path_axes(void) {
+  static const double prev[6] = {0, 0, 0, 750, 10, -20};
+  static double ax[6];
+  static cncrot_tool_path t;
+  memset(&t, 0, sizeof t);
+  static const char a[] = "G43.5 H1 G1 X1 Y2 Z3 I0.5 J0 K0.8";
+  sink += cncrot_tool_path_line(&t, CNCROT_DIALECT_FANUC, a, sizeof a - 1);
+  sink += cncrot_tool_path_axes(&t, &head3, 100, prev, CNCROT_CHOOSE_CLOSEST, 0, ax) +
+          cncrot_tool_path_axes(&t, &mach, 100, prev, CNCROT_CHOOSE_MINUS, 2, ax);
+  static const char b[] = "X2 A10 B20 C30";
+  sink += cncrot_tool_path_line(&t, CNCROT_DIALECT_FANUC, b, sizeof b - 1);
+  sink += cncrot_tool_path_axes(&t, &head3, 100, prev, CNCROT_CHOOSE_CLOSEST, 0, ax);
+}
 static void machine_seal(void) {
   static cncrot_machine a;
   a = edited(&head3);
@@ -343,7 +366,7 @@ static const struct entry ENTRIES[] = {
     E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
     E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),
     E(program_axes, 1),      E(program_frame_on, 1),   E(machine_tcp_forward, 0), E(machine_tcp_inverse, 1),
-    E(machine_tcp_inverse_rule, 1), E(machine_seal, 1),
+    E(machine_tcp_inverse_rule, 1), E(machine_seal, 1), E(tool_path_line, 1), E(tool_path_axes, 1),
     E(matrices_from_angles, 0), E(angles_from_matrices, 0), E(convert_many, 0),
 };
 

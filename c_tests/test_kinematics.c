@@ -554,9 +554,63 @@ static void sealed_descriptions(void) {
   CHECK_STATUS(cncrot_machine_seal(NULL), CNCROT_STATUS_NULL_POINTER);
 }
 
+/* Five-axis programs: each dialect's blocks read into CL points, and the axes for them
+ * equal to the transformation's from the same tip and direction (the worked AC table). */
+static void five_axis_programs(void) {
+  cncrot_machine m;
+  ac_table(&m);
+  double s3 = sqrt(3.0);
+  double want[6] = {0, 50 + 5 * s3, 155 - 50 * s3, 30, 90, 0}, prev[6] = {0, 0, 0, 20, 80, 0}, ax[6];
+  static const struct {
+    int32_t dialect;
+    const char *lines[3];
+  } programs[] = {
+      {CNCROT_DIALECT_SINUMERIK, {"N10 TRAORI", "N20 G1 X10 Y0 Z0 A3=0.5 B3=0 C3=0.8660254037844386", NULL}},
+      {CNCROT_DIALECT_SINUMERIK, {"TRAORI", "ORIEULER", "G1 X10 Y0 Z0 A2=90 B2=30"}},
+      {CNCROT_DIALECT_HEIDENHAIN, {"1 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS", "2 L X+10 Y+0 Z+0 A+30 C+90 FMAX", NULL}},
+      {CNCROT_DIALECT_HEIDENHAIN, {"1 L Z+100 R0 FMAX M128", "2 LN X+10 Y+0 Z+0 TX+0.5 TY+0 TZ+0.8660254037844386", NULL}},
+      {CNCROT_DIALECT_FANUC, {"G43.4 H1", "G1 X10. Y0. Z0. A30. C90.", NULL}},
+      {CNCROT_DIALECT_SYNTEC, {"G43.5 H1", "G1 X10. Y0. Z0. I0.5 J0. K0.8660254037844386", NULL}},
+      {CNCROT_DIALECT_HAAS, {"G234 H1", "G1 X10. Y0. Z0. A30. C90.", NULL}},
+  };
+  for (size_t k = 0; k < sizeof programs / sizeof programs[0]; k++) {
+    cncrot_tool_path t;
+    memset(&t, 0, sizeof t);
+    int32_t s = 0;
+    for (int j = 0; j < 3 && programs[k].lines[j]; j++)
+      s = cncrot_tool_path_line(&t, programs[k].dialect, programs[k].lines[j], strlen(programs[k].lines[j]));
+    CHECK(s == 0 && t.on == 1 && t.point == 1, "program %zu: status %d, on %d, point %d", k, s, t.on, t.point);
+    double tip[3] = {10, 0, 0};
+    CHECK_NEAR(t.tip, tip, 3, 0);
+    CHECK_STATUS(cncrot_tool_path_axes(&t, &m, 50, prev, CNCROT_CHOOSE_CLOSEST, 0, ax), CNCROT_STATUS_OK);
+    CHECK_NEAR(ax, want, 6, 1e-9);
+  }
+  /* Passed and not followed blocks leave the state byte for byte; refusals too. */
+  cncrot_tool_path t, before;
+  memset(&t, 0, sizeof t);
+  CHECK_STATUS(cncrot_tool_path_line(&t, CNCROT_DIALECT_FANUC, "G43.5 H1", 8), CNCROT_STATUS_OK);
+  CHECK(t.on == 1 && t.point == 0, "G43.5: on %d point %d", t.on, t.point);
+  before = t;
+  CHECK_STATUS(cncrot_tool_path_line(&t, CNCROT_DIALECT_FANUC, "M30", 3), CNCROT_STATUS_PASSED);
+  CHECK_STATUS(cncrot_tool_path_line(&t, CNCROT_DIALECT_FANUC, "G2 X1. Y1. R1.", 14), CNCROT_STATUS_NOT_FOLLOWED);
+  CHECK_STATUS(cncrot_tool_path_line(&t, CNCROT_DIALECT_FANUC, "G1 I0 J0 K0", 11), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_tool_path_line(&t, CNCROT_DIALECT_TWINCAT, "G1 X1", 5), CNCROT_STATUS_NOT_AVAILABLE);
+  CHECK_STATUS(cncrot_tool_path_line(&t, 99, "G1 X1", 5), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_tool_path_line(NULL, CNCROT_DIALECT_FANUC, "G1 X1", 5), CNCROT_STATUS_NULL_POINTER);
+  CHECK(memcmp(&t, &before, sizeof t) == 0, "a passed, not followed or refused block changed the state");
+  cncrot_tool_path bad = t;
+  bad.direction[0] = 2;
+  bad.orientation = CNCROT_ORIENTATION_DIRECTION;
+  CHECK_STATUS(cncrot_tool_path_line(&bad, CNCROT_DIALECT_FANUC, "X1", 2), CNCROT_STATUS_BAD_STATE);
+  double keep[6] = {7, 7, 7, 7, 7, 7}, seven[6] = {7, 7, 7, 7, 7, 7};
+  CHECK_STATUS(cncrot_tool_path_axes(&bad, &m, 50, prev, 0, 0, keep), CNCROT_STATUS_BAD_STATE);
+  CHECK_NEAR(keep, seven, 6, 0);
+}
+
 int main(void) {
   fork_head();
   sealed_descriptions();
+  five_axis_programs();
   table_and_mixed();
   nutating_and_three_axes();
   cycle600_and_refusals();

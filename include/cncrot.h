@@ -2290,13 +2290,50 @@ int32_t cncrot_rotate_vector_inverse(const double *matrix, const double *vector,
  * cncrot_tool_path_line(&t, CNCROT_DIALECT_SINUMERIK, "TRAORI", 6);
  * const char *l = "G1 X10 Y20 Z5 A3=0 B3=-1 C3=1";
  * cncrot_tool_path_line(&t, CNCROT_DIALECT_SINUMERIK, l, strlen(l));
- * /* t.point == 1, t.tip = (10, 20, 5), t.direction = (0, -0.7071, 0.7071) */
+ * // t.point == 1, t.tip = (10, 20, 5), t.direction = (0, -0.7071, 0.7071)
  * ```
  */
 int32_t cncrot_tool_path_line(struct cncrot_tool_path *path,
                               int32_t dialect,
                               const char *line,
                               size_t len);
+
+/**
+ * The machine's axes for the CL point `*path` holds (after a block read with status 0 and
+ * `point` 1), as `cncrot_machine_tcp_inverse_rule` computes them (`axes`, `previous`,
+ * `tool_length`, `rule` and `reference_axis` as there): for a tool direction the rotary
+ * solution the rule picks; for rotary positions stated by letter, those positions (each
+ * machine axis takes the letter its direction is nearest: A for X, B for Y, C for Z
+ * \[choice: a description carries no axis names\]; `rule` is then not used); with no
+ * orientation stated, the rotary axes where `previous` has them. The linear axes put the
+ * tip on the point.
+ *
+ * Returns 0, `CNCROT_STATUS_FREE_AXIS`, `CNCROT_STATUS_SNAPPED`, or with `axes` untouched:
+ * `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a state the library does not
+ * write), `CNCROT_STATUS_BAD_ARGUMENT` (a rule or reference axis that is not one, an unused
+ * previous rotary position not 0, a nonzero position for a letter the machine lacks),
+ * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_UNREACHABLE`,
+ * `CNCROT_STATUS_OUT_OF_TRAVEL`, `CNCROT_STATUS_OUT_OF_RANGE`, and the statuses of a
+ * description that is not a machine (`CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NAME_TOO_LONG`:
+ * see `cncrot_machine`).
+ *
+ * # Safety
+ * `path` points to a readable `cncrot_tool_path`, `machine` to a `cncrot_machine`,
+ * `previous` and `axes` to 6 doubles (`axes` may be `previous`).
+ *
+ * ```c
+ * double prev[6] = {0}, ax[6];
+ * if (cncrot_tool_path_line(&t, CNCROT_DIALECT_FANUC, l, n) == 0 && t.point)
+ *   cncrot_tool_path_axes(&t, &m, 50.0, prev, CNCROT_CHOOSE_CLOSEST, 0, ax);
+ * ```
+ */
+int32_t cncrot_tool_path_axes(const struct cncrot_tool_path *path,
+                              const struct cncrot_machine *machine,
+                              double tool_length,
+                              const double *previous,
+                              int32_t rule,
+                              int32_t reference_axis,
+                              double *axes);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -14,6 +14,7 @@
 %
 % Part programs
 %   cncrot_program_lines   - What program lines do to the active frame, as the controller does.
+%   cncrot_tool_path_lines - A five-axis program's motion blocks as CL points or machine axes.
 %   cncrot_program_write   - The program line that programs a frame in a controller's language.
 %   cncrot_program_translate - A part program in another controller's language, block by block.
 %   cncrot_program_axes    - The rotary-axis positions a program's active tilt moves a machine to.

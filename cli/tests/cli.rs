@@ -990,6 +990,67 @@ fn path_json() {
     );
 }
 
+/// `path --dialect`: five-axis programs of three dialects give the worked example's axes
+/// on their point blocks, blank lines elsewhere, a not-followed arc marked in place.
+#[test]
+fn path_reads_five_axis_programs() {
+    let s3 = 3f64.sqrt();
+    let want = [0.0, 50.0 + 5.0 * s3, 155.0 - 50.0 * s3, 30.0, 90.0];
+    let programs = [
+        (
+            "sinumerik",
+            "N10 G0 X0 Y0 Z100\nN20 TRAORI\nN30 G1 X10 Y0 Z0 A3=0.5 B3=0 C3=0.8660254037844386\n\
+             N40 G2 X0 Y10 CR=10\nN50 TRAFOOF\n",
+            2,
+        ),
+        (
+            "heidenhain",
+            "0 BEGIN PGM P MM\n1 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\n\
+             2 L X+10 Y+0 Z+0 A+30 C+90 R0 FMAX\n3 C X+0 Y+10 DR+\n4 FUNCTION RESET TCPM\n",
+            2,
+        ),
+        (
+            "fanuc",
+            "G90 G54\nG43.4 H1\nG1 X10. Y0. Z0. A30. C90.\nG2 X0 Y10. R10.\nG49\n",
+            2,
+        ),
+    ];
+    for (dialect, text, point) in programs {
+        let mut args = vec![
+            "path",
+            "-",
+            "--dialect",
+            dialect,
+            "--current",
+            "20,80",
+            "--decimals",
+            "exact",
+        ];
+        args.extend(AC);
+        let r = cncrot(&args, text);
+        assert_eq!(r.code, 0, "{dialect}: {}", r.stderr);
+        let lines: Vec<&str> = r.stdout.lines().collect();
+        assert_eq!(lines.len(), 5, "{dialect}: {}", r.stdout);
+        for (k, line) in lines.iter().enumerate() {
+            if k == point {
+                close(&numbers(line), &want, 1e-9);
+            } else if k == point + 1 {
+                assert!(line.contains("not followed"), "{dialect}: {line}");
+            } else {
+                assert_eq!(*line, "", "{dialect}, line {k}");
+            }
+        }
+    }
+    // A block that is not a five-axis program's: an error line in place, the exit status 1.
+    let mut args = vec!["path", "-", "--dialect", "fanuc"];
+    args.extend(AC);
+    let r = cncrot(&args, "G43.5 H1\nG1 X1. I0 J0 K0\nG1 X1. I0 J0 K1.\n");
+    assert_eq!(r.code, 1);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert!(lines[1].starts_with("error: line 2"), "{}", r.stdout);
+    assert_eq!(numbers(lines[2]).len(), 5, "{}", r.stdout);
+}
+
 /// An SVG picture as written: its XML root checked, its projection read off the root.
 struct Picture {
     text: String,

@@ -105,10 +105,12 @@ fuzz_target!(|data: &[u8]| {
             (d, form, has_origin, q)
         })
         .collect();
+    let mut path: cncrot_tool_path = unsafe { std::mem::zeroed() };
     for line in text.split(|&b| b == b'\n') {
         // Each block in a heap buffer of exactly its length: AddressSanitizer sees any
         // over-read.
         let line: Box<[u8]> = line.to_vec().into_boxed_slice();
+        tool_path(&mut path, dialect, &line);
         let again = p;
         let before = as_bytes(&p);
         // SAFETY: the line holds len bytes; p is valid.
@@ -199,6 +201,57 @@ $TC_CARR31[1]=-100 $TC_CARR33[1]=100
 /// gives at the stated positions (by letter: C is axis 1, B axis 2, an A other than 0
 /// refused; by place: axes 1 and 2), about the state's origin, and `cncrot_program_axes`
 /// positions that give the same rotation.
+/// The same block read as a five-axis program's: refusals, passed and not followed blocks
+/// leave the state byte for byte; a state written holds finite numbers and a unit
+/// direction; a CL point's axes on the fork head are finite or refused with them untouched,
+/// and put the tip back on the point.
+fn tool_path(path: &mut cncrot_tool_path, dialect: i32, line: &[u8]) {
+    let before = *path;
+    // SAFETY: valid pointers; the line holds len bytes.
+    let s = unsafe { cncrot_tool_path_line(path, dialect, line.as_ptr().cast(), line.len()) };
+    input::assert_known(s);
+    if s != 0 {
+        assert_eq!(
+            as_bytes(path),
+            as_bytes(&before),
+            "status {s} changed the state"
+        );
+        return;
+    }
+    assert!(path.tip.iter().chain(&path.axes).all(|x| x.is_finite()));
+    if path.orientation == CNCROT_ORIENTATION_DIRECTION {
+        let d = path.direction;
+        assert!((d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - 1.0).abs() < 1e-12);
+    }
+    if path.point != 1 {
+        return;
+    }
+    let m = fork_head();
+    let prev = [0.0; 6];
+    let mut axes = [input::SENTINEL; 6];
+    // SAFETY: valid pointers.
+    let r =
+        unsafe { cncrot_tool_path_axes(path, &m, 50.0, prev.as_ptr(), 0, 0, axes.as_mut_ptr()) };
+    input::check_outputs(r, &[&axes]);
+    if r < 0 {
+        return;
+    }
+    let mut pose = [0.0; 16];
+    // SAFETY: valid pointers.
+    let f = unsafe { cncrot_machine_tcp_forward(&m, axes.as_ptr(), 50.0, pose.as_mut_ptr()) };
+    assert!(f >= 0);
+    let scale = 1.0
+        + path
+            .tip
+            .iter()
+            .chain(&axes[..3])
+            .fold(0.0f64, |a, x| a.max(x.abs()));
+    for i in 0..3 {
+        let e = (pose[4 * i + 3] - path.tip[i]).abs();
+        assert!(e <= 1e-9 * scale, "tip {i}: {e}");
+    }
+}
+
 fn direct_on_machine(p: &cncrot_program, line: &[u8]) {
     let mut f = [input::SENTINEL; 16];
     // SAFETY: valid pointers.

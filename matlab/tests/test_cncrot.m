@@ -520,6 +520,27 @@ function test_cncrot(cases_file)
   expect_error('cncrot:badSize', @() cncrot_machine_tcp_inverse(ac, [1 2 3 0 0 1], 50, [0 0 0]), 'tcp: previous of 3');
   expect_error('cncrot:outOfTravel', @() cncrot_machine_tcp_inverse([1 1 0 0 0 0 100 -10 10 0 0 0; 1 0 0 1 0 0 0 0 0 0 0 0], ...
                                                                   [10 0 0 0.5 0 sqrt(3)/2], 50), 'tcp: travel');
+  % Five-axis programs: the same worked example from each dialect's blocks, equal to the
+  % transformation of the CL row bit for bit (the same library calls).
+  progs = {{'sinumerik', {'TRAORI', 'G1 X10 Y0 Z0 A3=0.5 B3=0 C3=0.8660254037844386', 'G2 X0 Y10 CR=10'}}, ...
+           {'heidenhain', {'1 M128', '2 LN X+10 Y+0 Z+0 TX+0.5 TY+0 TZ+0.8660254037844386', '3 CC X+0 Y+0'}}, ...
+           {'fanuc', {'G43.5 H1', 'G1 X10. Y0. Z0. I0.5 J0. K0.8660254037844386', 'M30'}}};
+  for k = 1:numel(progs)
+    [Pp, kinds] = cncrot_tool_path_lines(progs{k}{1}, progs{k}{2});
+    check(isequal(size(Pp), [3 9]) && all(isnan(Pp(1, :))) && isequal(Pp(2, 1:3), [10 0 0]) ...
+          && max(abs(Pp(2, 4:6) - [0.5 0 sqrt(3)/2])) < 1e-15 && all(isnan(Pp(2, 7:9))), ['tool path: CL of ' progs{k}{1}]);
+    check(isequal(kinds{2}, 'point') && isequal(kinds{1}, 'applied'), ['tool path: kinds of ' progs{k}{1}]);
+    Ap = cncrot_tool_path_lines(progs{k}{1}, progs{k}{2}, ac, 50, [0 0 0 20 80 0]);
+    check(isequal(Ap(2, :), cncrot_machine_tcp_inverse(ac, Pp(2, 1:6), 50, [0 0 0 20 80 0])) && all(isnan(Ap(3, :))), ...
+          ['tool path: axes of ' progs{k}{1}]);
+  end
+  Ax = cncrot_tool_path_lines('fanuc', {'G43.4 H1', 'G1 X10. Y0. Z0. A30. C90.'}, ac, 50);
+  check(max(abs(Ax(2, :) - want)) < 1e-9, 'tool path: rotary positions by letter');
+  [~, kinds] = cncrot_tool_path_lines('heidenhain', {'1 C X+5 Y+0 DR+', '2 TOOL CALL 1 Z'});
+  check(isequal(kinds, {'not followed'; 'passed'}), 'tool path: not followed, passed');
+  expect_message('cncrot:badArgument', @() cncrot_tool_path_lines('fanuc', {'G43.5 H1', 'G1 I0 J0 K0'}), 'tool path: zero direction', ...
+                 'cncrot_tool_path_lines', 'line 2');
+  expect_error('cncrot:notAvailable', @() cncrot_tool_path_lines('twincat', 'G1 X1'), 'tool path: TwinCAT');
   fid = fopen(cases_file, 'r');
   check(fid >= 0, 'cases file');
   n = 0;

@@ -63,8 +63,8 @@ fn load(c: &cncrot_tool_path) -> Result<ToolPath, cncrot_status> {
         CNCROT_ORIENTATION_DIRECTION => {
             let d = c.direction;
             let n = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            // Written so that NaN (refused above) would refuse.
-            if !((n - 1.0).abs() <= 1e-12) {
+            // NaN is refused above: a plain comparison decides.
+            if (n - 1.0).abs() > 1e-12 {
                 return Err(bad);
             }
             Orientation::Direction(d)
@@ -127,7 +127,7 @@ fn store(p: &ToolPath, point: bool) -> cncrot_tool_path {
 /// cncrot_tool_path_line(&t, CNCROT_DIALECT_SINUMERIK, "TRAORI", 6);
 /// const char *l = "G1 X10 Y20 Z5 A3=0 B3=-1 C3=1";
 /// cncrot_tool_path_line(&t, CNCROT_DIALECT_SINUMERIK, l, strlen(l));
-/// /* t.point == 1, t.tip = (10, 20, 5), t.direction = (0, -0.7071, 0.7071) */
+/// // t.point == 1, t.tip = (10, 20, 5), t.direction = (0, -0.7071, 0.7071)
 /// ```
 #[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]

@@ -646,6 +646,84 @@ fn probing() -> Vec<Call> {
 /// Program lines: read, column, frame, init, write.
 fn programs() -> Vec<Call> {
     vec![
+        ("cncrot_tool_path_line", |t| unsafe {
+            // A five-axis program of each kind, a refusal (a zero direction) and a state the
+            // library does not write.
+            let lines: [(i32, &[u8]); 9] = [
+                (CNCROT_DIALECT_SINUMERIK, b"TRAORI"),
+                (
+                    CNCROT_DIALECT_SINUMERIK,
+                    b"N30 G1 X10 Y0 Z5 A3=0 B3=-1 C3=1",
+                ),
+                (CNCROT_DIALECT_SINUMERIK, b"N40 G2 X0 Y10 CR=10"),
+                (
+                    CNCROT_DIALECT_HEIDENHAIN,
+                    b"3 L X+1 Y+2 Z+3 B+30 C-90 FMAX M128",
+                ),
+                (CNCROT_DIALECT_HEIDENHAIN, b"4 LN X+1 TX+0 TY+0.6 TZ+0.8"),
+                (CNCROT_DIALECT_FANUC, b"G43.5 H1 X1. I1. J0. K1."),
+                (CNCROT_DIALECT_FANUC, b"G1 X1. I0 J0 K0"),
+                (CNCROT_DIALECT_TWINCAT, b"G1 X1"),
+                (CNCROT_DIALECT_FANUC, b"M30"),
+            ];
+            let mut p: cncrot_tool_path = std::mem::zeroed();
+            for (d, l) in lines {
+                t.status(cncrot_tool_path_line(&mut p, d, l.as_ptr().cast(), l.len()));
+                t.bytes(&p);
+            }
+            let mut bad = p;
+            bad.orientation = 7;
+            t.status(cncrot_tool_path_line(
+                &mut bad,
+                CNCROT_DIALECT_FANUC,
+                c"X1".as_ptr(),
+                2,
+            ));
+            t.bytes(&bad);
+        }),
+        ("cncrot_tool_path_axes", |t| unsafe {
+            // The AC table of the five-axis worked example, from a direction, from rotary
+            // positions, and refused (a rule that is not one).
+            let mut m: cncrot_machine = std::mem::zeroed();
+            let (x, z, pa, pc) = (
+                [1.0, 0.0, 0.0],
+                [0.0, 0.0, 1.0],
+                [0.0, 0.0, 100.0],
+                [0.0; 3],
+            );
+            cncrot_machine_add_axis(&mut m, 1, x.as_ptr(), pa.as_ptr(), 0.0, 0.0);
+            cncrot_machine_add_axis(&mut m, 1, z.as_ptr(), pc.as_ptr(), 0.0, 0.0);
+            let prev = [0.0, 0.0, 0.0, 20.0, 80.0, 0.0];
+            let mut out = [0.0; 6];
+            let mut p: cncrot_tool_path = std::mem::zeroed();
+            for l in [
+                &b"G43.5 H1"[..],
+                b"G1 X10. I0.5 J0 K0.8660254037844386",
+                b"G43.4 A30. C90.",
+            ] {
+                cncrot_tool_path_line(&mut p, CNCROT_DIALECT_FANUC, l.as_ptr().cast(), l.len());
+                t.status(cncrot_tool_path_axes(
+                    &p,
+                    &m,
+                    50.0,
+                    prev.as_ptr(),
+                    0,
+                    0,
+                    out.as_mut_ptr(),
+                ));
+                t.f64s(&out);
+            }
+            t.status(cncrot_tool_path_axes(
+                &p,
+                &m,
+                50.0,
+                prev.as_ptr(),
+                9,
+                0,
+                out.as_mut_ptr(),
+            ));
+            t.f64s(&out);
+        }),
         ("cncrot_program_line", |t| unsafe {
             let mut p = cncrot_program::default();
             let lines: [(i32, &[u8]); 8] = [

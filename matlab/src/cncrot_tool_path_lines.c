@@ -1,0 +1,75 @@
+/* [P, kinds] = cncrot_tool_path_lines(dialect, lines)
+ * [axes, kinds] = cncrot_tool_path_lines(dialect, lines, machine, L, previous, rule, ref):
+ * see cncrot_tool_path_lines.m. */
+#include "program_state.h"
+
+void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
+  check_nargs(nrhs, 2, 7, nlhs, 2);
+  if (nrhs == 3) fail("cncrot:nargin", "a machine needs the tool length L as well (see help %s)", mexFunctionName());
+  int32_t dialect = dialect_arg(prhs[0], 1, "dialect");
+  cncrot_machine m;
+  int on_machine = nrhs >= 4;
+  double len = 0, prev[6] = {0, 0, 0, 0, 0, 0};
+  int32_t rule = CNCROT_CHOOSE_CLOSEST, ref = 0;
+  if (on_machine) {
+    machine_arg(prhs[2], 3, &m);
+    len = scalar_arg(prhs[3], 4, "L");
+    if (nrhs > 4) {
+      const double *q = real_data(prhs[4], 5, "previous");
+      if (mxGetNumberOfElements(prhs[4]) != 6)
+        fail("cncrot:badSize", "%s must have 6 elements (X Y Z and 3 rotary axes); got %s", label(5, "previous"),
+             described(prhs[4]));
+      memcpy(prev, q, sizeof prev);
+    }
+    if (nrhs > 5) rule = rule_arg(prhs[5], 6, "rule");
+    if (nrhs > 6) ref = integer_arg(prhs[6], 7, "ref");
+  }
+  const mxArray *lines = lines_arg(prhs[1], 2);
+  int cell = mxIsCell(lines);
+  size_t n = cell ? mxGetNumberOfElements(lines) : 1;
+  /* Off the machine: x y z, i j k (a direction), a b c (positions by letter); on it: the axes. */
+  mxArray *out = mxCreateDoubleMatrix(n, on_machine ? 6 : 9, mxREAL);
+  mxArray *kinds = mxCreateCellMatrix(n, 1);
+  double *o = mxGetDoubles(out);
+  size_t cols = on_machine ? 6 : 9;
+  for (size_t k = 0; k < n * cols; k++) o[k] = mxGetNaN();
+  cncrot_tool_path t;
+  memset(&t, 0, sizeof t);
+  for (size_t k = 0; k < n; k++) {
+    const mxArray *a = cell ? mxGetCell(lines, k) : lines;
+    if (!a) a = mxCreateString("");
+    char buf[CNCROT_PROGRAM_LINE_MAX + 3];
+    size_t bytes = line_bytes(a, 2, buf, sizeof buf);
+    int32_t s = cncrot_tool_path_line(&t, dialect, buf, bytes);
+    if (s < 0) {
+      mxDestroyArray(out);
+      mxDestroyArray(kinds);
+      raise_at(s, label(2, "lines"), "line", (long)k, n > 1 ? n : 2);
+    }
+    const char *kind = s == CNCROT_STATUS_PASSED         ? "passed"
+                       : s == CNCROT_STATUS_NOT_FOLLOWED ? "not followed"
+                       : t.point                         ? "point"
+                                                         : "applied";
+    mxSetCell(kinds, k, mxCreateString(kind));
+    if (s != 0 || !t.point) continue;
+    if (on_machine) {
+      double ax[6];
+      s = cncrot_tool_path_axes(&t, &m, len, prev, rule, ref, ax);
+      if (s < 0) {
+        mxDestroyArray(out);
+        mxDestroyArray(kinds);
+        raise_at(s, label(2, "lines"), "line", (long)k, n > 1 ? n : 2);
+      }
+      for (int j = 0; j < 6; j++) o[k + n * j] = ax[j];
+      memcpy(prev, ax, sizeof prev);
+    } else {
+      for (int j = 0; j < 3; j++) o[k + n * j] = t.tip[j];
+      if (t.orientation == CNCROT_ORIENTATION_DIRECTION)
+        for (int j = 0; j < 3; j++) o[k + n * (3 + j)] = t.direction[j];
+      if (t.orientation == CNCROT_ORIENTATION_AXES)
+        for (int j = 0; j < 3; j++) o[k + n * (6 + j)] = t.axes[j];
+    }
+  }
+  plhs[0] = out;
+  if (nlhs > 1) plhs[1] = kinds; else mxDestroyArray(kinds);
+}
