@@ -431,8 +431,8 @@ pub(crate) struct Heidenhain;
 
 /// Heidenhain's five-axis programs: `M128` or `FUNCTION TCPM …` on, `M129` or
 /// `FUNCTION RESET TCPM` off \[doc\]; `L` blocks with rotary positions `A B C`, `LN` blocks with
-/// the tool vector `TX TY TZ` \[doc\]; `IX`… incremental; circles (`C`, `CR`, `CT`, `CP`) not
-/// followed.
+/// the tool vector `TX TY TZ` \[doc\]; `IX`… incremental; circles (`C`, `CR`, `CT`, `CP`) and
+/// moves in machine coordinates (`M91`, `M92`) not followed.
 pub(crate) const HEIDENHAIN_PATH: super::family::PathWords = {
     use super::family::PathCommand::{Code, Name, Phrase};
     super::family::PathWords {
@@ -447,7 +447,14 @@ pub(crate) const HEIDENHAIN_PATH: super::family::PathWords = {
         absolute: &[],
         i_prefix: true,
         moves: &[b"L", b"LN"],
-        arcs: &[Name(b"C"), Name(b"CR"), Name(b"CT"), Name(b"CP")],
+        arcs: &[
+            Name(b"C"),
+            Name(b"CR"),
+            Name(b"CT"),
+            Name(b"CP"),
+            Code(b'M', 910),
+            Code(b'M', 920),
+        ],
     }
 };
 

@@ -3,7 +3,7 @@
 //! (SINUMERIK `TRAORI`, Heidenhain `M128` / `FUNCTION TCPM`, Fanuc and Syntec `G43.4` /
 //! `G43.5`, Haas `G234`), read block by block into CL points: the tip, and the tool
 //! direction or the rotary-axis positions the block states. What each dialect writes is in
-//! its family file ([`PathWords`]); this module holds the modal state and the reading that is
+//! its family file (`PathWords`); this module holds the modal state and the reading that is
 //! the same for all.
 //!
 //! ```
@@ -85,6 +85,9 @@ struct Word<'a> {
     name: &'a [u8],
     value: &'a [u8],
     column: usize,
+    /// SINUMERIK's `IC(…)` (`Some(true)`: the value adds to the last position) and `AC(…)`
+    /// (`Some(false)`), whatever `G90`/`G91` say; `None`: as they say.
+    incremental: Option<bool>,
 }
 
 /// The words of a block, comments, strings and parenthesised arguments skipped; a
@@ -139,8 +142,27 @@ impl<'a> Iterator for Words<'a> {
                 }
             }
             let name = self.text.get(start..self.pos).unwrap_or(&[]);
+            let mut incremental = None;
+            let mut close = false;
             if !self.iso && self.at(self.pos) == b'=' {
                 self.pos += 1;
+                // SINUMERIK's value functions: `IC(v)` incremental; `AC(v)`, and for rotary
+                // axes `DC(v)`, `ACP(v)`, `ACN(v)` (which way the axis turns to it), absolute.
+                for (f, inc) in [
+                    (&b"IC("[..], true),
+                    (b"AC(", false),
+                    (b"DC(", false),
+                    (b"ACP(", false),
+                    (b"ACN(", false),
+                ] {
+                    let here = self.text.get(self.pos..self.pos + f.len());
+                    if here.is_some_and(|h| h.eq_ignore_ascii_case(f)) {
+                        self.pos += f.len();
+                        incremental = Some(inc);
+                        close = true;
+                        break;
+                    }
+                }
             }
             let from = self.pos;
             let mut k = from;
@@ -156,8 +178,10 @@ impl<'a> Iterator for Words<'a> {
                 .text
                 .get(from..k)
                 .is_some_and(|v| v.iter().any(u8::is_ascii_digit));
-            let value = if has_digits {
-                self.pos = k;
+            // A function's argument must be the whole of it: `IC(5)`, not `IC(5+R1)`.
+            let closed = !close || self.at(k) == b')';
+            let value = if has_digits && closed {
+                self.pos = if close { k + 1 } else { k };
                 self.text.get(from..k).unwrap_or(&[])
             } else {
                 &[]
@@ -166,6 +190,7 @@ impl<'a> Iterator for Words<'a> {
                 name,
                 value,
                 column: start + 1,
+                incremental,
             });
         }
     }
@@ -251,6 +276,7 @@ impl ToolPath {
             name: &[],
             value: &[],
             column: 0,
+            incremental: None,
         }; MAX_WORDS];
         let mut n = 0;
         let mut iter = Words {
@@ -387,10 +413,12 @@ impl ToolPath {
         let mut first_column = 0;
         let mut unreadable = false;
         for w in words {
-            let (name, inc) = match w.name {
+            let (name, prefixed) = match w.name {
                 [b'I' | b'i', rest @ ..] if pw.i_prefix && rest.len() == 1 => (rest, true),
                 _ => (w.name, false),
             };
+            // An explicit `AC`/`IC` decides; else the `I` prefix or the modal G91.
+            let inc = w.incremental.unwrap_or(prefixed || next.incremental);
             let letter = |set: &[u8; 3]| {
                 set.iter()
                     .position(|l| name.len() == 1 && name.eq_ignore_ascii_case(&[*l]))
@@ -402,9 +430,9 @@ impl ToolPath {
             } else if let Some(k) = letter(b"ABC").filter(|_| !pw.vector.contains(&name)) {
                 axes_inc[k] = inc;
                 axes.get_mut(k)
-            } else if let Some(k) = named(&pw.vector).filter(|_| !inc) {
+            } else if let Some(k) = named(&pw.vector).filter(|_| !prefixed) {
                 vector.get_mut(k)
-            } else if let Some(k) = pw.angles.and_then(|a| named(&a)).filter(|_| !inc) {
+            } else if let Some(k) = pw.angles.and_then(|a| named(&a)).filter(|_| !prefixed) {
                 angles.get_mut(k)
             } else {
                 None
@@ -448,13 +476,13 @@ impl ToolPath {
             if let (Some(t), Some(&(v, _))) =
                 (next.tip.get_mut(k), tip.get(k).and_then(|v| v.as_ref()))
             {
-                let inc = next.incremental || tip_inc.get(k).copied().unwrap_or(false);
+                let inc = tip_inc.get(k).copied().unwrap_or(false);
                 *t = if inc { *t + v } else { v };
             }
             if let (Some(a), Some(&(v, _))) =
                 (next.axes.get_mut(k), axes.get(k).and_then(|v| v.as_ref()))
             {
-                let inc = next.incremental || axes_inc.get(k).copied().unwrap_or(false);
+                let inc = axes_inc.get(k).copied().unwrap_or(false);
                 *a = if inc { *a + v } else { v };
             }
         }
@@ -534,7 +562,7 @@ mod tests {
                 "N80 A2=90 B2=90",
                 "N90 A=30 C=-45.5",
                 "N100 G2 X5 Y5 CR=5",
-                "N110 X=IC(5)",
+                "N110 X=IC(5+R1)",
                 "N120 TRAFOOF",
                 "; a comment",
             ],
@@ -578,6 +606,29 @@ mod tests {
     }
 
     #[test]
+    fn sinumerik_value_functions() {
+        let out = run(
+            Dialect::Sinumerik,
+            &[
+                "TRAORI",
+                "G1 X=AC(10) Y20 Z5 A=30 C=ACP(90)",
+                "X=IC(5) C=DC(-90)",
+                "G91 X1 A=AC(0)",
+                "X=IC(R1)",
+            ],
+        );
+        use PathRemark::*;
+        let r: Vec<_> = out.iter().map(|o| o.1).collect();
+        assert_eq!(r, [Applied, Point, Point, Point, NotFollowed]);
+        assert_eq!(out[1].0.tip, [10.0, 20.0, 5.0]);
+        assert_eq!(out[2].0.tip, [15.0, 20.0, 5.0]);
+        assert_eq!(out[2].0.orientation, Orientation::Axes([30.0, 0.0, -90.0]));
+        // G91 makes the words incremental, but AC(…) is absolute whatever G90/G91 say.
+        assert_eq!(out[3].0.tip, [16.0, 20.0, 5.0]);
+        assert_eq!(out[3].0.orientation, Orientation::Axes([0.0, 0.0, -90.0]));
+    }
+
+    #[test]
     fn heidenhain_l_and_ln_blocks() {
         let out = run(
             Dialect::Heidenhain,
@@ -594,6 +645,7 @@ mod tests {
                 "9 FUNCTION RESET TCPM",
                 "10 L Z+100 M128",
                 "11 L Z+50 M129",
+                "12 L Z+500 R0 FMAX M91",
             ],
         );
         use PathRemark::*;
@@ -612,7 +664,8 @@ mod tests {
                 NotFollowed,
                 Applied,
                 Point,
-                Applied
+                Applied,
+                NotFollowed
             ]
         );
         assert_eq!(out[4].0.orientation, Orientation::Axes([0.0, 30.0, -90.0]));
