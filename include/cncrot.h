@@ -2278,8 +2278,7 @@ int32_t cncrot_rotate_vector_inverse(const double *matrix, const double *vector,
  * library does not write), `CNCROT_STATUS_NOT_AVAILABLE` (TwinCAT: its five-axis
  * programs are not read), `CNCROT_STATUS_LINE_TOO_LONG`, `CNCROT_STATUS_BAD_ARGUMENT` (a
  * dialect that is not one, a zero tool direction, a direction and rotary positions in one
- * block), `CNCROT_STATUS_TABLE_FULL` (more than 32 words), `CNCROT_STATUS_OUT_OF_RANGE`
- * (a position that overflows).
+ * block), `CNCROT_STATUS_OUT_OF_RANGE` (a position that overflows).
  *
  * # Safety
  * `path` points to a writable `cncrot_tool_path`, `line` to `len` readable bytes.

@@ -90,8 +90,9 @@ struct Word<'a> {
     incremental: Option<bool>,
 }
 
-/// The words of a block, comments, strings and parenthesised arguments skipped; a
-/// leading block number (`N10`, Heidenhain's `15`) skipped too.
+/// The words of a block, comments, strings and parenthesised arguments skipped. Read
+/// again for each question rather than kept in a table (stack bound).
+#[derive(Clone)]
 struct Words<'a> {
     text: &'a [u8],
     pos: usize,
@@ -224,34 +225,45 @@ fn same(a: &[u8], b: &[u8]) -> bool {
     a.eq_ignore_ascii_case(b)
 }
 
-/// Whether the words from `k` on start with the command `c`.
-fn is_command(words: &[Word], k: usize, c: &PathCommand) -> bool {
+/// Whether word `w`, followed by the words of `rest`, is the command `c`.
+fn is_command(w: &Word, rest: &Words, c: &PathCommand) -> bool {
+    let plain = |w: &Word, name: &[u8]| same(w.name, name) && w.value.is_empty();
     match c {
-        PathCommand::Code(letter, tenths) => words.get(k).is_some_and(|w| {
+        PathCommand::Code(letter, tenths) => {
             w.name.len() == 1
                 && w.name.eq_ignore_ascii_case(&[*letter])
                 && code(w.value) == Some(*tenths)
-        }),
-        PathCommand::Name(name) => words
-            .get(k)
-            .is_some_and(|w| same(w.name, name) && w.value.is_empty()),
-        PathCommand::Phrase(names) => names.iter().enumerate().all(|(j, name)| {
-            words
-                .get(k + j)
-                .is_some_and(|w| same(w.name, name) && w.value.is_empty())
-        }),
+        }
+        PathCommand::Name(name) => plain(w, name),
+        PathCommand::Phrase(names) => {
+            let mut after = rest.clone();
+            names.split_first().is_some_and(|(first, others)| {
+                plain(w, first)
+                    && others
+                        .iter()
+                        .all(|n| after.next().is_some_and(|x| plain(&x, n)))
+            })
+        }
     }
 }
 
-/// The most words a block of a five-axis program has that this reader looks at.
-const MAX_WORDS: usize = 32;
+/// Whether any word of `words` starts one of `commands`.
+fn any_command(words: &Words, commands: &[PathCommand]) -> bool {
+    let mut it = words.clone();
+    while let Some(w) = it.next() {
+        if commands.iter().any(|c| is_command(&w, &it, c)) {
+            return true;
+        }
+    }
+    false
+}
 
 impl ToolPath {
     /// The state after block `text` of a program in `dialect`, and what the block did. A
     /// refused block leaves the caller's state as it was: [`Error::NotAvailable`] for a
     /// dialect whose five-axis programs are not read (TwinCAT), [`Error::LineTooLong`],
     /// [`Error::BadArgument`] (a zero tool direction, a direction and rotary positions in
-    /// one block), [`Error::TableFull`] (more than 32 words), with the column.
+    /// one block), [`Error::OutOfRange`] (a position that overflows), with the column.
     pub fn line(&self, dialect: Dialect, text: &[u8]) -> Result<(ToolPath, PathRemark), LineError> {
         let Some(pw) = dialect.tool_path() else {
             return Err(LineError {
@@ -272,34 +284,19 @@ impl ToolPath {
                 expected: None,
             });
         }
-        let mut list = [Word {
-            name: &[],
-            value: &[],
-            column: 0,
-            incremental: None,
-        }; MAX_WORDS];
-        let mut n = 0;
-        let mut iter = Words {
+        let mut words = Words {
             text,
             pos: 0,
             iso: pw.iso,
         };
-        // A leading block number: `N10`, or Heidenhain's bare digits (skipped as non-words).
-        for w in &mut iter {
-            if n == 0 && w.name.eq_ignore_ascii_case(b"N") && !w.value.is_empty() {
-                continue;
-            }
-            let Some(slot) = list.get_mut(n) else {
-                return Err(LineError {
-                    error: Error::TableFull,
-                    column: w.column,
-                    expected: None,
-                });
-            };
-            *slot = w;
-            n += 1;
+        // A leading block number `N10` (Heidenhain's bare digits are no word).
+        let mut peek = words.clone();
+        if peek
+            .next()
+            .is_some_and(|w| w.name.eq_ignore_ascii_case(b"N") && !w.value.is_empty())
+        {
+            words = peek;
         }
-        let words = list.get(..n).unwrap_or(&[]);
         self.apply(pw, words)
     }
 
@@ -371,35 +368,35 @@ impl ToolPath {
         machine.tcp_inverse_with(&pose, tool_length, previous, rule)
     }
 
-    fn apply(&self, pw: &PathWords, words: &[Word]) -> Result<(ToolPath, PathRemark), LineError> {
+    fn apply(&self, pw: &PathWords, words: Words) -> Result<(ToolPath, PathRemark), LineError> {
         let mut next = *self;
         let mut changed = false;
         // Commands first: the transformation, the angle mode, absolute or incremental.
-        for k in 0..words.len() {
-            if pw.on.iter().any(|c| is_command(words, k, c)) {
+        // The last of each kind counts (`G91 … G90`).
+        let mut it = words.clone();
+        while let Some(w) = it.next() {
+            let hit = |list: &[PathCommand]| list.iter().any(|c| is_command(&w, &it, c));
+            if hit(pw.on) {
                 next.on = true;
-                changed = true;
-            } else if pw.off.iter().any(|c| is_command(words, k, c)) {
+            } else if hit(pw.off) {
                 next.on = false;
-                changed = true;
-            } else if pw.rpy.iter().any(|c| is_command(words, k, c)) {
+            } else if hit(pw.rpy) {
                 next.rpy = true;
-                changed = true;
-            } else if pw.euler.iter().any(|c| is_command(words, k, c)) {
+            } else if hit(pw.euler) {
                 next.rpy = false;
-                changed = true;
-            } else if pw.incremental.iter().any(|c| is_command(words, k, c)) {
+            } else if hit(pw.incremental) {
                 next.incremental = true;
-                changed = true;
-            } else if pw.absolute.iter().any(|c| is_command(words, k, c)) {
+            } else if hit(pw.absolute) {
                 next.incremental = false;
-                changed = true;
+            } else {
+                continue;
             }
+            changed = true;
         }
         // A block that is not a straight move: an arc, or a block whose first word the
         // dialect does not move with (Heidenhain's `L`/`LN`).
-        let first = words.first();
-        let arc = (0..words.len()).any(|k| pw.arcs.iter().any(|c| is_command(words, k, c)));
+        let first = words.clone().next();
+        let arc = any_command(&words, pw.arcs);
         let moves =
             pw.moves.is_empty() || first.is_some_and(|w| pw.moves.iter().any(|m| same(w.name, m)));
         // The motion words: tip, rotary positions (absolute, or Heidenhain's `I` prefix),
@@ -441,7 +438,7 @@ impl ToolPath {
                 if first_column == 0 {
                     first_column = w.column;
                 }
-                match number(w) {
+                match number(&w) {
                     Some(v) if v.is_finite() => *slot = Some((v, w.column)),
                     _ => unreadable = true,
                 }
