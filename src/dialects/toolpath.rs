@@ -179,8 +179,13 @@ impl<'a> Iterator for Words<'a> {
                 .text
                 .get(from..k)
                 .is_some_and(|v| v.iter().any(u8::is_ascii_digit));
-            // A function's argument must be the whole of it: `IC(5)`, not `IC(5+R1)`.
-            let closed = !close || self.at(k) == b')';
+            // A function's argument must be the whole of it: `IC(5)`, not `IC(5+R1)`; and a
+            // number must not go on as an expression (`X=10*R2`, `X10-R1`).
+            let closed = if close {
+                self.at(k) == b')'
+            } else {
+                !matches!(self.at(k), b'*' | b'/' | b'+' | b'-')
+            };
             let value = if has_digits && closed {
                 self.pos = if close { k + 1 } else { k };
                 self.text.get(from..k).unwrap_or(&[])
@@ -612,11 +617,24 @@ mod tests {
                 "X=IC(5) C=DC(-90)",
                 "G91 X1 A=AC(0)",
                 "X=IC(R1)",
+                "X=10*R2",
+                "Y20-R1",
             ],
         );
         use PathRemark::*;
         let r: Vec<_> = out.iter().map(|o| o.1).collect();
-        assert_eq!(r, [Applied, Point, Point, Point, NotFollowed]);
+        assert_eq!(
+            r,
+            [
+                Applied,
+                Point,
+                Point,
+                Point,
+                NotFollowed,
+                NotFollowed,
+                NotFollowed
+            ]
+        );
         assert_eq!(out[1].0.tip, [10.0, 20.0, 5.0]);
         assert_eq!(out[2].0.tip, [15.0, 20.0, 5.0]);
         assert_eq!(out[2].0.orientation, Orientation::Axes([30.0, 0.0, -90.0]));
