@@ -1187,6 +1187,31 @@ fn every_status_of_a_kinematics_export_is_named_in_its_header_doc() {
             );
             let mut to_seal = m;
             note("cncrot_machine_seal", cncrot_machine_seal(&mut to_seal));
+            // A five-axis program's point: the frame's direction, or rotary positions by
+            // letter (some beyond what the machine has), on the hostile machine.
+            let mut tp: cncrot_tool_path = std::mem::zeroed();
+            tp.on = 1;
+            tp.point = 1;
+            tp.tip = [lin[0], 1.0, 2.0];
+            if round % 2 == 0 {
+                tp.orientation = CNCROT_ORIENTATION_DIRECTION;
+                tp.direction = [frame[2], frame[6], frame[10]];
+            } else {
+                tp.orientation = CNCROT_ORIENTATION_AXES;
+                tp.axes = current;
+            }
+            note(
+                "cncrot_tool_path_axes",
+                cncrot_tool_path_axes(
+                    &tp,
+                    &m,
+                    length,
+                    six.as_ptr(),
+                    rule,
+                    reference,
+                    six_out.as_mut_ptr(),
+                ),
+            );
             note(
                 "cncrot_machine_add_axis",
                 cncrot_machine_add_axis(
