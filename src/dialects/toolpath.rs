@@ -202,9 +202,15 @@ impl<'a> Iterator for Words<'a> {
     }
 }
 
-/// The number of a word's value, or `None` for a word without one.
+/// The number of a word's value (correctly rounded, by the program readers' own reader),
+/// or `None` for a word without one or a value that is not a number (`1.2.3`).
 fn number(w: &Word) -> Option<f64> {
-    core::str::from_utf8(w.value).ok()?.parse::<f64>().ok()
+    let (negative, digits) = match w.value {
+        [b'-', rest @ ..] => (true, rest),
+        [b'+', rest @ ..] => (false, rest),
+        v => (false, v),
+    };
+    crate::text::number::parse(negative, digits, 0).ok()
 }
 
 /// A G or M code in tenths (`43.4` → 434), as the program readers count them.
@@ -427,10 +433,14 @@ impl ToolPath {
             };
             let named = |set: &[&[u8]; 3]| set.iter().position(|s| same(name, s));
             let slot = if let Some(k) = letter(b"XYZ") {
-                tip_inc[k] = inc;
+                if let Some(i) = tip_inc.get_mut(k) {
+                    *i = inc;
+                }
                 tip.get_mut(k)
             } else if let Some(k) = letter(b"ABC").filter(|_| !pw.vector.contains(&name)) {
-                axes_inc[k] = inc;
+                if let Some(i) = axes_inc.get_mut(k) {
+                    *i = inc;
+                }
                 axes.get_mut(k)
             } else if let Some(k) = named(&pw.vector).filter(|_| !prefixed) {
                 vector.get_mut(k)

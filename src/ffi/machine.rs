@@ -269,9 +269,10 @@ const _: () = {
 
 /// The C description of a machine: its image, sealed.
 fn c_of(m: &Machine) -> cncrot_machine {
+    let sealed = m.sealed();
     // SAFETY: the same size, alignment and fields (asserted above), every bit pattern of
     // both valid (integers, doubles, `c_char`s).
-    unsafe { core::ptr::read((m as *const Machine).cast::<cncrot_machine>()) }
+    unsafe { core::ptr::read((&sealed as *const Machine).cast::<cncrot_machine>()) }
 }
 
 /// Runs `f` on the machine at `p`: in place when the description carries its seal (the
@@ -304,7 +305,11 @@ unsafe fn built<R>(
     f: impl FnOnce(&Machine) -> Result<R, cncrot_status>,
 ) -> Result<R, cncrot_status> {
     let mut m = Machine::EMPTY;
-    load_into(p, &mut m)?;
+    // SAFETY: non-NULL and aligned (checked by the caller), readable.
+    match p.as_ref() {
+        Some(d) => machine_of(d, &mut m)?,
+        None => return Err(cncrot_status::NullPointer),
+    }
     f(&m)
 }
 

@@ -247,8 +247,10 @@ impl Stored {
 /// always usable.
 ///
 /// Its layout is the C description's (`cncrot_machine`), plain numbers only, with a seal
-/// over the rest: a description the library wrote is read in place, its seal checked
-/// instead of every field (the five-axis transformation runs in the interpolation cycle).
+/// over the rest (0 in a machine built here; the C boundary writes it into the
+/// descriptions it hands out): a description the library wrote is read in place, its seal
+/// checked instead of every field (the five-axis transformation runs in the interpolation
+/// cycle).
 ///
 /// ```
 /// use cncrot::kinematics::{Machine, RotaryAxis, Side};
@@ -356,7 +358,6 @@ impl Machine {
         let b = direction_of(tool_direction)?;
         *self = Machine::EMPTY;
         self.tool_direction = b;
-        self.seal();
         Ok(())
     }
 
@@ -411,7 +412,6 @@ impl Machine {
             *slot = Stored::of(&checked);
             self.count = n as i32 + 1;
         }
-        self.seal();
         Ok(())
     }
 
@@ -434,7 +434,6 @@ impl Machine {
         if let Some(dst) = self.name.get_mut(..name.len()) {
             dst.copy_from_slice(name);
         }
-        self.seal();
         Ok(())
     }
 
@@ -512,8 +511,13 @@ impl Machine {
         (h as u32).max(1)
     }
 
-    fn seal(&mut self) {
-        self.seal = self.seal_of();
+    /// The machine with its seal written: its image as the C boundary hands it out (the
+    /// Rust builders leave the seal 0; only an image in the caller's memory needs one).
+    pub(crate) fn sealed(&self) -> Machine {
+        Machine {
+            seal: self.seal_of(),
+            ..*self
+        }
     }
 
     /// Whether the image carries its seal: written by the library and not changed since.
