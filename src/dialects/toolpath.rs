@@ -258,17 +258,6 @@ fn is_command(w: &Word, rest: &Words, c: &PathCommand) -> bool {
     }
 }
 
-/// Whether any word of `words` starts one of `commands`.
-fn any_command(words: &Words, commands: &[PathCommand]) -> bool {
-    let mut it = words.clone();
-    while let Some(w) = it.next() {
-        if commands.iter().any(|c| is_command(&w, &it, c)) {
-            return true;
-        }
-    }
-    false
-}
-
 impl ToolPath {
     /// The state after block `text` of a program in `dialect`, and what the block did. A
     /// refused block leaves the caller's state as it was: [`Error::NotAvailable`] for a
@@ -384,9 +373,12 @@ impl ToolPath {
         let mut changed = false;
         // Commands first: the transformation, the angle mode, absolute or incremental.
         // The last of each kind counts (`G91 … G90`).
+        // In the same pass: whether the block is an arc or another move not followed.
+        let mut arc = false;
         let mut it = words.clone();
         while let Some(w) = it.next() {
             let hit = |list: &[PathCommand]| list.iter().any(|c| is_command(&w, &it, c));
+            arc |= hit(pw.arcs);
             if hit(pw.on) {
                 next.on = true;
             } else if hit(pw.off) {
@@ -407,7 +399,6 @@ impl ToolPath {
         // A block that is not a straight move: an arc, or a block whose first word the
         // dialect does not move with (Heidenhain's `L`/`LN`).
         let first = words.clone().next();
-        let arc = any_command(&words, pw.arcs);
         let moves =
             pw.moves.is_empty() || first.is_some_and(|w| pw.moves.iter().any(|m| same(w.name, m)));
         // The motion words: tip, rotary positions (absolute, or Heidenhain's `I` prefix),
