@@ -94,18 +94,7 @@ impl Program {
                 expected: None,
             });
         }
-        // The line end is not part of the block.
-        let text = match text {
-            [rest @ .., b'\r', b'\n'] | [rest @ .., b'\n'] | [rest @ .., b'\r'] => rest,
-            _ => text,
-        };
-        if text.len() > dialect.max_line() {
-            return Err(LineError {
-                error: Error::LineTooLong,
-                column: dialect.max_line() + 1,
-                expected: None,
-            });
-        }
+        let text = block_of(dialect, text)?;
         let next = match dialect.read_line(&self.modal(), text)? {
             Block::Frame(next) => next,
             Block::Passed => return Ok((*self, Remark::Passed)),
@@ -285,6 +274,23 @@ impl Program {
             Err(Error::BadArgument)
         }
     }
+}
+
+/// A program line without its line end (`\n`, `\r\n`, `\r`: not part of the block), or
+/// [`Error::LineTooLong`] beyond the dialect's longest block.
+pub(crate) fn block_of(dialect: Dialect, text: &[u8]) -> Result<&[u8], LineError> {
+    let text = match text {
+        [rest @ .., b'\r', b'\n'] | [rest @ .., b'\n'] | [rest @ .., b'\r'] => rest,
+        _ => text,
+    };
+    if text.len() > dialect.max_line() {
+        return Err(LineError {
+            error: Error::LineTooLong,
+            column: dialect.max_line() + 1,
+            expected: None,
+        });
+    }
+    Ok(text)
 }
 
 /// The positions of `machine`'s rotary axes that a direct mode states: by place, or by

@@ -19,11 +19,11 @@
 //! ```
 
 use super::family::{Direct, DirectAxes, PathCommand, PathWords};
-use super::program::direct_positions;
+use super::program::{block_of, direct_positions};
 use super::registry::Dialect;
 use super::sinumerik::{orieuler_vector, orirpy_vector};
 use crate::kinematics::{Machine, Rule, Tcp};
-use crate::text::scan::LineError;
+use crate::text::scan::{code_of, LineError};
 use crate::{rotation_from_z_x, Frame};
 use crate::{Error, Vector};
 
@@ -213,25 +213,6 @@ fn number(w: &Word) -> Option<f64> {
     crate::text::number::parse(negative, digits, 0).ok()
 }
 
-/// A G or M code in tenths (`43.4` → 434), as the program readers count them.
-fn code(value: &[u8]) -> Option<u32> {
-    let (int, frac) = match value.iter().position(|&b| b == b'.') {
-        Some(k) => (value.get(..k)?, value.get(k + 1..)?),
-        None => (value, &[][..]),
-    };
-    if int.is_empty() || int.len() > 6 || frac.len() > 1 {
-        return None;
-    }
-    let mut v = 0u32;
-    for &b in int.iter().chain(frac) {
-        if !b.is_ascii_digit() {
-            return None;
-        }
-        v = v * 10 + u32::from(b - b'0');
-    }
-    Some(if frac.is_empty() { v * 10 } else { v })
-}
-
 fn same(a: &[u8], b: &[u8]) -> bool {
     a.eq_ignore_ascii_case(b)
 }
@@ -243,7 +224,7 @@ fn is_command(w: &Word, rest: &Words, c: &PathCommand) -> bool {
         PathCommand::Code(letter, tenths) => {
             w.name.len() == 1
                 && w.name.eq_ignore_ascii_case(&[*letter])
-                && code(w.value) == Some(*tenths)
+                && code_of(w.value) == Some(*tenths)
         }
         PathCommand::Name(name) => plain(w, name),
         PathCommand::Phrase(names) => {
@@ -272,18 +253,7 @@ impl ToolPath {
                 expected: None,
             });
         };
-        // A line end is not part of the block.
-        let text = match text {
-            [rest @ .., b'\r', b'\n'] | [rest @ .., b'\n'] => rest,
-            _ => text,
-        };
-        if text.len() > dialect.max_line() {
-            return Err(LineError {
-                error: Error::LineTooLong,
-                column: dialect.max_line() + 1,
-                expected: None,
-            });
-        }
+        let text = block_of(dialect, text)?;
         let mut words = Words {
             text,
             pos: 0,

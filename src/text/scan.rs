@@ -457,6 +457,26 @@ pub struct Comments {
     pub parens: bool,
 }
 
+/// A number as written as a G- or M-code in tenths (`54.1` → 541, `69` → 690, `068.2` →
+/// 682), if it is a plain number with at most one decimal.
+pub fn code_of(value: &[u8]) -> Option<u32> {
+    let (int, frac) = match value.iter().position(|&b| b == b'.') {
+        Some(k) => (value.get(..k)?, value.get(k + 1..)?),
+        None => (value, &[][..]),
+    };
+    if int.is_empty() || int.len() > 6 || frac.len() > 1 {
+        return None;
+    }
+    let mut v = 0u32;
+    for &b in int.iter().chain(frac) {
+        if !b.is_ascii_digit() {
+            return None;
+        }
+        v = v * 10 + u32::from(b - b'0');
+    }
+    Some(if frac.is_empty() { v * 10 } else { v })
+}
+
 /// One token of a block, for telling what a block does without reading it: an address
 /// word (`G54.1`, `X-10.`, `#5221`: `letter` upper-cased, `#` for a variable, `value` the
 /// number as written) or a name (`MIRROR`, `$P_UIFR`, `CYCL`, `7.0`: `letter` 0, `value`
@@ -477,21 +497,7 @@ impl Token<'_> {
     /// The value of an address word as a G- or M-code in tenths (`54.1` → 541, `69` → 690,
     /// `068.2` → 682), if it is a plain number with at most one decimal.
     pub fn code(&self) -> Option<u32> {
-        let (int, frac) = match self.value.iter().position(|&b| b == b'.') {
-            Some(k) => (self.value.get(..k)?, self.value.get(k + 1..)?),
-            None => (self.value, &[][..]),
-        };
-        if int.is_empty() || int.len() > 6 || frac.len() > 1 {
-            return None;
-        }
-        let mut v = 0u32;
-        for &b in int.iter().chain(frac) {
-            if !b.is_ascii_digit() {
-                return None;
-            }
-            v = v * 10 + u32::from(b - b'0');
-        }
-        Some(if frac.is_empty() { v * 10 } else { v })
+        code_of(self.value)
     }
 
     /// A name `G<code>` (`G505`, `g54.1`) as its code in tenths, as [`Token::code`]: the
