@@ -1437,28 +1437,6 @@ pub struct PathArgs<'a> {
     pub dialect: Option<&'a str>,
 }
 
-/// A frame whose third column is the unit vector `k`: X' the component of the machine's X
-/// (or, for `k` near X, of Y) perpendicular to it, Y' = Z' × X'. Only the direction counts
-/// for machines of fewer than three rotary axes; with three, the turn about the tool is
-/// this frame's.
-fn frame_along(k: Vector) -> Matrix {
-    let helper = if k[0].abs() < 0.9 {
-        [1.0, 0.0, 0.0]
-    } else {
-        [0.0, 1.0, 0.0]
-    };
-    let along = helper[0] * k[0] + helper[1] * k[1] + helper[2] * k[2];
-    let x0: Vector = std::array::from_fn(|i| helper[i] - along * k[i]);
-    let len = (x0[0] * x0[0] + x0[1] * x0[1] + x0[2] * x0[2]).sqrt();
-    let x: Vector = x0.map(|v| v / len);
-    let y = [
-        k[1] * x[2] - k[2] * x[1],
-        k[2] * x[0] - k[0] * x[2],
-        k[0] * x[1] - k[1] * x[0],
-    ];
-    [[x[0], y[0], k[0]], [x[1], y[1], k[1]], [x[2], y[2], k[2]]]
-}
-
 /// The five-axis transformation along a path of CL points (tool tip and direction): the
 /// machine's linear and rotary axes for each, continuous with the row before.
 pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Failure> {
@@ -1534,10 +1512,7 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
         if len <= 1e-9 {
             return Err(Failure::new("the tool direction i j k is zero"));
         }
-        let pose = Frame {
-            rotation: frame_along(k.map(|x| x / len)),
-            translation: [v[0], v[1], v[2]],
-        };
+        let pose = cncrot::kinematics::cl_pose([v[0], v[1], v[2]], k)?;
         let t = machine.tcp_inverse_with(&pose, a.tool_length, previous, rule)?;
         previous = t.axes;
         Ok(path_row(&t, n, d))

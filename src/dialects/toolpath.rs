@@ -22,9 +22,9 @@ use super::family::{Direct, DirectAxes, PathCommand, PathWords};
 use super::program::{block_of, direct_positions};
 use super::registry::Dialect;
 use super::sinumerik::{orieuler_vector, orirpy_vector};
-use crate::kinematics::{Machine, Rule, Tcp};
+use crate::kinematics::{cl_pose, Machine, Rule, Tcp};
 use crate::text::scan::{code_of, LineError};
-use crate::{rotation_from_z_x, Frame};
+use crate::Frame;
 use crate::{Error, Vector};
 
 /// The tool's orientation a program last stated.
@@ -304,16 +304,7 @@ impl ToolPath {
     ) -> Result<Tcp, Error> {
         let [_, _, _, r1, r2, r3] = previous;
         let (rotation, previous, rule) = match self.orientation {
-            Orientation::Direction(d) => {
-                // X' from the workpiece's X, or Y for a direction near X: with fewer than
-                // three rotary axes only the direction counts.
-                let hint = if crate::math::abs(d[0]) < 0.9 {
-                    [1.0, 0.0, 0.0]
-                } else {
-                    [0.0, 1.0, 0.0]
-                };
-                (rotation_from_z_x(d, hint)?, previous, rule)
-            }
+            Orientation::Direction(d) => (cl_pose(self.tip, d)?.rotation, previous, rule),
             Orientation::Axes(stated) => {
                 let by = Direct {
                     by: DirectAxes::Letters,

@@ -33,7 +33,7 @@ mod tcp;
 
 pub use choose::{Choice, Rule};
 pub use solve::{Solutions, POLE_SINE};
-pub use tcp::{Tcp, TCP_AXES};
+pub use tcp::{cl_pose, Tcp, TCP_AXES};
 
 use crate::math::{abs, sin_cos_deg, sin_cos_deg4};
 use crate::vector::{cross, dot};

@@ -47,6 +47,33 @@ pub struct Tcp {
     pub free: bool,
 }
 
+/// The pose of a CL point (a tool tip and a tool direction in workpiece coordinates, as
+/// CAM systems write them and [`Machine::tcp_inverse`] takes them): the translation `tip`,
+/// the third column `direction` made a unit vector, X' the workpiece's X made
+/// perpendicular to it, or Y for a direction with an X component of 0.9 or more
+/// \[choice: only the direction counts for a machine of fewer than three rotary axes; with
+/// three, the turn about the tool is this frame's\], Y' = Z' × X'. A zero or non-finite
+/// direction: [`Error::Degenerate`].
+///
+/// ```
+/// let p = cncrot::kinematics::cl_pose([10.0, 0.0, 0.0], [0.0, 0.0, 2.0]).unwrap();
+/// assert_eq!(p.rotation, cncrot::IDENTITY);
+/// assert_eq!(p.translation, [10.0, 0.0, 0.0]);
+/// ```
+pub fn cl_pose(tip: Vector, direction: Vector) -> Result<Frame, Error> {
+    let d = crate::unit_vector(direction)?;
+    let hint = if abs(d[0]) < 0.9 {
+        [1.0, 0.0, 0.0]
+    } else {
+        [0.0, 1.0, 0.0]
+    };
+    Ok(Frame {
+        // From `direction` as given: `rotation_from_z_x` makes it a unit vector itself.
+        rotation: crate::rotation_from_z_x(direction, hint)?,
+        translation: tip,
+    })
+}
+
 /// The isolated solutions' positions, one row per solution.
 type Positions = [[f64; MAX_AXES]; MAX_SOLUTIONS];
 
