@@ -302,6 +302,20 @@ impl ToolPath {
         previous: [f64; 6],
         rule: Rule,
     ) -> Result<Tcp, Error> {
+        let (pose, previous, rule) = self.pose_on(machine, previous, rule)?;
+        machine.tcp_inverse_with(&pose, tool_length, previous, rule)
+    }
+
+    /// The pose [`ToolPath::machine_axes`] inverts, with the start and the rule it inverts
+    /// from. Not inlined: its temporaries are gone when the transformation runs (stack
+    /// bound).
+    #[inline(never)]
+    fn pose_on(
+        &self,
+        machine: &Machine,
+        previous: [f64; 6],
+        rule: Rule,
+    ) -> Result<(Frame, [f64; 6], Rule), Error> {
         let [_, _, _, r1, r2, r3] = previous;
         let (rotation, previous, rule) = match self.orientation {
             Orientation::Direction(d) => (cl_pose(self.tip, d)?.rotation, previous, rule),
@@ -326,7 +340,7 @@ impl ToolPath {
             rotation,
             translation: self.tip,
         };
-        machine.tcp_inverse_with(&pose, tool_length, previous, rule)
+        Ok((pose, previous, rule))
     }
 
     fn apply(&self, pw: &PathWords, words: Words) -> Result<(ToolPath, PathRemark), LineError> {
