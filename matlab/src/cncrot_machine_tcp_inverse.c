@@ -40,13 +40,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   const double *pd = real_data(p, 2, "P");
   double len = scalar_arg(prhs[2], 3, "L");
   double prev[6] = {0, 0, 0, 0, 0, 0};
-  if (nrhs > 3) {
-    const double *q = real_data(prhs[3], 4, "previous");
-    if (mxGetNumberOfElements(prhs[3]) != 6)
-      fail("cncrot:badSize", "%s must have 6 elements (X Y Z and 3 rotary axes); got %s", label(4, "previous"),
-           described(prhs[3]));
-    memcpy(prev, q, sizeof prev);
-  }
+  if (nrhs > 3) previous_arg(prhs[3], 4, prev);
   int32_t rule = nrhs > 4 ? rule_arg(prhs[4], 5, "rule") : CNCROT_CHOOSE_CLOSEST;
   int32_t ref = nrhs > 5 ? integer_arg(prhs[5], 6, "ref") : 0;
   int sided = rule == CNCROT_CHOOSE_MINUS || rule == CNCROT_CHOOSE_PLUS;

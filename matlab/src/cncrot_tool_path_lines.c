@@ -14,13 +14,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   if (on_machine) {
     machine_arg(prhs[2], 3, &m);
     len = scalar_arg(prhs[3], 4, "L");
-    if (nrhs > 4) {
-      const double *q = real_data(prhs[4], 5, "previous");
-      if (mxGetNumberOfElements(prhs[4]) != 6)
-        fail("cncrot:badSize", "%s must have 6 elements (X Y Z and 3 rotary axes); got %s", label(5, "previous"),
-             described(prhs[4]));
-      memcpy(prev, q, sizeof prev);
-    }
+    if (nrhs > 4) previous_arg(prhs[4], 5, prev);
     if (nrhs > 5) rule = rule_arg(prhs[5], 6, "rule");
     if (nrhs > 6) ref = integer_arg(prhs[6], 7, "ref");
   }

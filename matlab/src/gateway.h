@@ -641,6 +641,16 @@ static void frame_arg(const mxArray *a, int pos, const char *name, double row_ma
   frame_to_row_major(real_data(a, pos, name), row_major);
 }
 
+/* The previous machine axes of the five-axis transformation: 6 elements (X Y Z and 3 rotary
+ * axes). */
+static void previous_arg(const mxArray *a, int pos, double prev[6]) {
+  const double *q = real_data(a, pos, "previous");
+  if (mxGetNumberOfElements(a) != 6)
+    fail("cncrot:badSize", "%s must have 6 elements (X Y Z and 3 rotary axes); got %s", label(pos, "previous"),
+         described(a));
+  memcpy(prev, q, 6 * sizeof(double));
+}
+
 /* A machine: SINUMERIK swivel-data text (data set 1), or a K-by-12 matrix, one row per
  * axis outermost first: [work_side vx vy vz px py pz min max offset hirth_offset hirth_step].
  * Errors are raised here, after the library has returned. */
