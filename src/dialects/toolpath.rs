@@ -23,7 +23,7 @@ use super::program::{block_of, direct_positions};
 use super::registry::Dialect;
 use super::sinumerik::{orieuler_vector, orirpy_vector};
 use crate::kinematics::{cl_pose, Machine, Rule, Tcp};
-use crate::text::scan::{code_of, LineError};
+use crate::text::scan::{code_of, past_closing, LineError};
 use crate::Frame;
 use crate::{Error, Vector};
 
@@ -115,12 +115,7 @@ impl<'a> Iterator for Words<'a> {
                 return None;
             }
             if b == b'(' || b == b'"' {
-                let close = if b == b'(' { b')' } else { b'"' };
-                self.pos += 1;
-                while self.pos < self.text.len() && self.at(self.pos) != close {
-                    self.pos += 1;
-                }
-                self.pos += 1;
+                self.pos = past_closing(self.text, self.pos);
                 continue;
             }
             if !b.is_ascii_alphabetic() && b != b'_' {

@@ -477,6 +477,18 @@ pub fn code_of(value: &[u8]) -> Option<u32> {
     Some(if frac.is_empty() { v * 10 } else { v })
 }
 
+/// Where the text after the `( … )` or `" … "` that opens at `pos` goes on: one past its
+/// closing character, or one past the end when it is not closed.
+pub fn past_closing(text: &[u8], pos: usize) -> usize {
+    let close = if text.get(pos) == Some(&b'(') {
+        b')'
+    } else {
+        b'"'
+    };
+    let rest = text.get(pos + 1..).unwrap_or(&[]);
+    pos + 2 + rest.iter().position(|&c| c == close).unwrap_or(rest.len())
+}
+
 /// One token of a block, for telling what a block does without reading it: an address
 /// word (`G54.1`, `X-10.`, `#5221`: `letter` upper-cased, `#` for a variable, `value` the
 /// number as written) or a name (`MIRROR`, `$P_UIFR`, `CYCL`, `7.0`: `letter` 0, `value`
@@ -576,12 +588,7 @@ impl<'a> Iterator for Tokens<'a> {
                 return None;
             }
             if (self.comments.parens && b == b'(') || b == b'"' {
-                let close = if b == b'(' { b')' } else { b'"' };
-                self.pos += 1;
-                while self.pos < self.text.len() && self.at(self.pos) != close {
-                    self.pos += 1;
-                }
-                self.pos += 1;
+                self.pos = past_closing(self.text, self.pos);
                 continue;
             }
             if self.words && (b.is_ascii_alphabetic() || b == b'#') {
