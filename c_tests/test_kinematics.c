@@ -86,6 +86,18 @@ static void fork_head(void) {
   CHECK_NEAR(out, want_m, 3, 1e-9);
   /* The other branch turns the tool half a turn about itself: the frame keeps Rz(180). */
   CHECK(fabs(rem[0] + 1) < 1e-14 && fabs(rem[5] + 1) < 1e-14 && fabs(rem[10] - 1) < 1e-14, "remaining");
+  /* Directions of travel of C from 0: turning up, C 30 comes after 30 degrees and -150
+   * after 210; turning down, -150 after 150 and 30 after 330. */
+  double want_p[3] = {30, 40, 0};
+  CHECK_STATUS(cncrot_machine_choose(&m, f, cur2, CNCROT_CHOOSE_POSITIVE_TURN, 1, out, res, rem), CNCROT_STATUS_OK);
+  CHECK_NEAR(out, want_p, 3, 1e-9);
+  CHECK_STATUS(cncrot_machine_choose(&m, f, cur2, CNCROT_CHOOSE_NEGATIVE_TURN, 1, out, res, rem), CNCROT_STATUS_OK);
+  CHECK_NEAR(out, want_m, 3, 1e-9);
+  fill_sentinel(out, 3);
+  CHECK_STATUS(cncrot_machine_choose(&m, f, cur2, CNCROT_CHOOSE_POSITIVE_TURN, 0, out, res, rem), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_machine_choose(&m, f, cur2, CNCROT_CHOOSE_NEGATIVE_TURN, 3, out, res, rem), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_machine_choose(&m, f, cur2, CNCROT_CHOOSE_NEGATIVE_TURN + 1, 1, out, res, rem), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK(is_sentinel(out, 3), "untouched");
 
   /* Limits: B within 0..100 leaves only B = +40 even for "minus". */
   cncrot_machine lim = m;
@@ -472,6 +484,13 @@ static void five_axis_transformation(void) {
   CHECK_STATUS(cncrot_machine_tcp_inverse_rule(&m, pose, 50, prev2, CNCROT_CHOOSE_PLUS, 1, high), CNCROT_STATUS_OK);
   CHECK_NEAR(high, want, 6, 1e-12);
   CHECK_STATUS(cncrot_machine_tcp_inverse_rule(&m, pose, 50, prev2, CNCROT_CHOOSE_MINUS, 3, high), CNCROT_STATUS_BAD_ARGUMENT);
+  /* C's direction of travel from 80: up, C 90 is 10 degrees ahead (-90 only 190); down,
+   * -90 comes after 170 degrees (90 after 350): the other solution. */
+  double up[6], down[6];
+  CHECK_STATUS(cncrot_machine_tcp_inverse_rule(&m, pose, 50, prev2, CNCROT_CHOOSE_POSITIVE_TURN, 2, up), CNCROT_STATUS_OK);
+  CHECK_NEAR(up, want, 6, 1e-12);
+  CHECK_STATUS(cncrot_machine_tcp_inverse_rule(&m, pose, 50, prev2, CNCROT_CHOOSE_NEGATIVE_TURN, 2, down), CNCROT_STATUS_OK);
+  CHECK_NEAR(down, low, 6, 1e-12);
   /* The tip is the same from either solution. */
   double tl[16];
   CHECK_STATUS(cncrot_machine_tcp_forward(&m, low, 50, tl), CNCROT_STATUS_OK);

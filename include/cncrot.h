@@ -157,6 +157,20 @@
 #define CNCROT_CHOOSE_INVERSE 3
 
 /**
+ * `cncrot_machine_choose`: the reference axis turns in its positive direction only, the
+ * least it must (LinuxCNC's `G53.1 P1`, "positive rotation only" of the priority axis);
+ * the other axes take the turn nearest their current positions. On an axis with travel
+ * limits only positions from the current one up to the upper end qualify.
+ */
+#define CNCROT_CHOOSE_POSITIVE_TURN 4
+
+/**
+ * `cncrot_machine_choose`: the reference axis turns in its negative direction only
+ * (`G53.1 P2`), as `CNCROT_CHOOSE_POSITIVE_TURN`.
+ */
+#define CNCROT_CHOOSE_NEGATIVE_TURN 5
+
+/**
  * A computed position at most this far (degrees) beyond an end of its axis' travel is
  * taken exactly at that end \[choice\]: the inverse computes a position at an end a few
  * ulp off; moving by this much turns the tool by 1.7e-11 rad, within the 1e-10 rad to
@@ -711,8 +725,9 @@ typedef struct cncrot_program {
   /**
    * The solution the active tilt's own words choose for the rotary axes
    * (`CNCROT_CHOOSE_CLOSEST` when they choose none, `CNCROT_CHOOSE_MINUS` for `SEQ-`,
-   * `_DIR = -1`, `CNCROT_CHOOSE_PLUS` for `SEQ+`, `_DIR = +1`); `cncrot_program_axes`
-   * follows it.
+   * `_DIR = -1`, `CNCROT_CHOOSE_PLUS` for `SEQ+`, `_DIR = +1`,
+   * `CNCROT_CHOOSE_POSITIVE_TURN` / `_NEGATIVE_TURN` for `G53.1 P1` / `P2`);
+   * `cncrot_program_axes` follows it.
    */
   int32_t choice;
   /**
@@ -1425,7 +1440,10 @@ int32_t cncrot_machine_inverse(const struct cncrot_machine *machine,
  * / `_PLUS` (the lower / higher position of axis `reference_axis`, 1-based: CYCLE800's
  * direction reference, Heidenhain `SEQ-` / `SEQ+` on the master axis; the other solution
  * when one lies outside the travel), `CNCROT_CHOOSE_INVERSE` (`reference_axis` 0; the
- * other solution of the pair: CYCLE600 `_ROT_INV`). `CNCROT_CHOOSE_INVERSE` returns the
+ * other solution of the pair: CYCLE600 `_ROT_INV`), `CNCROT_CHOOSE_POSITIVE_TURN` /
+ * `_NEGATIVE_TURN` (axis `reference_axis` turns only up / only down from its current
+ * position, the least it must: `G53.1 P1` / `P2`; `CNCROT_STATUS_OUT_OF_TRAVEL` when the
+ * travel ends before either solution). `CNCROT_CHOOSE_INVERSE` returns the
  * closest solution, with status 0, when the other one lies outside the travel or the
  * orientation has only one (a free axis, the edge of a nutating head's cone): compare
  * `axes_deg` with the current positions to tell. A free axis (singular pose) stays at its
@@ -1582,10 +1600,13 @@ int32_t cncrot_machine_tcp_inverse(const struct cncrot_machine *machine,
  * `cncrot_machine_tcp_inverse` with the rotary solution picked by `rule` and
  * `reference_axis` as in `cncrot_machine_choose`: `CNCROT_CHOOSE_CLOSEST` (`reference_axis`
  * 0; the same as `cncrot_machine_tcp_inverse`), `CNCROT_CHOOSE_MINUS` / `_PLUS` (a priority
- * axis, 1-based, and its direction: the solution with its lower / higher position, as
- * `G53.1 P1/P2` or `SEQ-`/`SEQ+` ask; the other one when that lies outside the travel),
+ * axis, 1-based: the solution with its lower / higher position, as `SEQ-`/`SEQ+` or
+ * CYCLE800's `_DIR` ask; the other one when that lies outside the travel),
+ * `CNCROT_CHOOSE_POSITIVE_TURN` / `_NEGATIVE_TURN` (a priority axis and its direction of
+ * travel: it turns only up / only down, the least it must, as `G53.1 P1` / `P2` ask),
  * `CNCROT_CHOOSE_INVERSE` (`reference_axis` 0; the other solution of the pair). Whole turns
- * are unwound toward `previous` in every case.
+ * are unwound toward `previous` in every case (the turning axis: the first turn met its
+ * way).
  *
  * Returns 0, `CNCROT_STATUS_FREE_AXIS`, `CNCROT_STATUS_SNAPPED`, or with `axes`
  * untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_ARGUMENT` (a rule or

@@ -4,10 +4,12 @@
 %   current 750 -> 730) or within the travel limits, snaps Hirth axes to their grid, skips
 %   solutions outside the travel, and picks one by RULE: 0 the closest (default), 1 the
 %   lower and 2 the higher position of axis REF (1-based; CYCLE800 minus/plus, Heidenhain
-%   SEQ-/SEQ+ on the master axis), 3 the other solution of the pair (CYCLE600 _ROT_INV).
+%   SEQ-/SEQ+ on the master axis), 3 the other solution of the pair (CYCLE600 _ROT_INV),
+%   4 / 5 axis REF turning only up / only down from its current position, the least it
+%   must (G53.1 P1 / P2; the other axes the nearest turn).
 %   RULE may be given by name, in any case, char or string: 'closest' (0), 'minus' (1),
-%   'plus' (2), 'inverse' (3); RULE and REF may be of any numeric class. REF is 0 (or left
-%   out) for 'closest' and 'inverse'.
+%   'plus' (2), 'inverse' (3), 'positive_turn' (4), 'negative_turn' (5); RULE and REF may
+%   be of any numeric class. REF is 0 (or left out) for 'closest' and 'inverse'.
 %   REMAINING is the 4-by-4 rotation the axes leave to the frame (about the tool axis with
 %   fewer than three axes, plus the Hirth residual), RESIDUAL the Hirth snapping per axis,
 %   STATUS 0, 2 (a free axis kept at its current position) or 3 (snapped).

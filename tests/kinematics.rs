@@ -422,6 +422,57 @@ fn choice_rules_limits_and_hirth() {
 }
 
 #[test]
+fn direction_of_travel_rules() {
+    // Fork head C on B (C modulo, B limited to -100..100); Rz(10)·Ry(30) has the solutions
+    // (C 10, B 30) and (C -170, B -30).
+    let mut b = axis(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3]);
+    b.limits = Some([-100.0, 100.0]);
+    let m = machine(&[axis(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]), b]);
+    let target = mul(&elementary(Axis::Z, 10.0), &elementary(Axis::Y, 30.0));
+    let close = |got: [f64; 3], want: [f64; 2]| {
+        (got[0] - want[0]).abs() < 1e-9 && (got[1] - want[1]).abs() < 1e-9
+    };
+    // From C 20: C turning up reaches -170 at 190 (a turn of 170°) and 10 at 370 (350°):
+    // 190. Turning down: 10 (10°) before -170 (190°). The closest is 10 either way.
+    let from = [20.0, 0.0, 0.0];
+    let up = m.choose(&target, from, Rule::PositiveTurn(0)).unwrap();
+    assert!(close(up.axes, [190.0, -30.0]), "{up:?}");
+    let down = m.choose(&target, from, Rule::NegativeTurn(0)).unwrap();
+    assert!(close(down.axes, [10.0, 30.0]), "{down:?}");
+    // At the position already: no turn is the least turn, either way.
+    let here = [10.0, 30.0, 0.0];
+    for rule in [Rule::PositiveTurn(0), Rule::NegativeTurn(0)] {
+        assert!(close(
+            m.choose(&target, here, rule).unwrap().axes,
+            [10.0, 30.0]
+        ));
+    }
+    // A rounding below the current position is no turn (not a whole one): from C 10 + 1e-12.
+    let ch = m
+        .choose(&target, [10.0 + 1e-12, 30.0, 0.0], Rule::PositiveTurn(0))
+        .unwrap();
+    assert!(close(ch.axes, [10.0, 30.0]), "{ch:?}");
+    // B limited: from B 40 turning up, neither 30 nor -30 lies ahead within the travel;
+    // turning down, 30 comes first (10°), with C at its closest, 10.
+    let from = [0.0, 40.0, 0.0];
+    assert_eq!(
+        m.choose(&target, from, Rule::PositiveTurn(1)),
+        Err(Error::OutOfTravel)
+    );
+    let down = m.choose(&target, from, Rule::NegativeTurn(1)).unwrap();
+    assert!(close(down.axes, [10.0, 30.0]), "{down:?}");
+    // From B -50 turning up: -30 (20°) before 30 (80°).
+    let up = m
+        .choose(&target, [0.0, -50.0, 0.0], Rule::PositiveTurn(1))
+        .unwrap();
+    assert!(close(up.axes, [-170.0, -30.0]), "{up:?}");
+    assert_eq!(
+        m.choose(&target, [0.0; 3], Rule::NegativeTurn(2)),
+        Err(Error::BadArgument)
+    );
+}
+
+#[test]
 fn follow_up_keeps_the_tip_on_the_workpiece() {
     let mut rng = Rng::new(13);
     for _ in 0..500 {

@@ -984,8 +984,10 @@ fn rule(text: &str, n: usize) -> Result<Rule, Failure> {
         None if lower == "inverse" => Ok(Rule::Inverse),
         Some(("minus", k)) => Ok(Rule::Minus(axis(k)?)),
         Some(("plus", k)) => Ok(Rule::Plus(axis(k)?)),
+        Some(("up", k)) => Ok(Rule::PositiveTurn(axis(k)?)),
+        Some(("down", k)) => Ok(Rule::NegativeTurn(axis(k)?)),
         _ => Err(Failure::new(format!(
-            "--rule: '{text}': closest, inverse, minus:K or plus:K"
+            "--rule: '{text}': closest, inverse, minus:K, plus:K, up:K or down:K"
         ))),
     }
 }

@@ -274,7 +274,8 @@ enum Command {
         #[arg(long, value_name = "[X,Y,Z,]A,B,C")]
         current: Option<String>,
         /// Which solution: closest (continuous with the row before), or a priority axis
-        /// minus:K / plus:K (its lower / higher position), or inverse.
+        /// minus:K / plus:K (its lower / higher position), up:K / down:K (it turns only
+        /// up / only down, as G53.1 P1 / P2 ask), or inverse.
         #[arg(long, default_value = "closest")]
         rule: String,
         /// FILE is a five-axis part program in this dialect, not CL points.
@@ -313,7 +314,8 @@ enum Command {
         #[arg(long, value_name = "A,B,C")]
         current: Option<String>,
         /// Which solution: closest (to --current), minus:K or plus:K (the lower or higher
-        /// position of axis K, 1-based), inverse (the other one).
+        /// position of axis K, 1-based), up:K or down:K (axis K turns only up or only down
+        /// from --current, the least it must), inverse (the other one).
         #[arg(long, default_value = "closest")]
         rule: String,
         /// Every solution, not only the chosen one.

@@ -541,6 +541,18 @@ fn axes_of_a_swivel_head() {
         (got[0].abs() - 180.0).abs() < 1e-9 && (got[1] + 30.0).abs() < 1e-9,
         "{got:?}"
     );
+    // C turning only up from 20: C 0 lies 340° ahead, C 180 160°: C 180, B -30 (the half
+    // turn about the tool left to the frame). Down: C 0 (20° away), B 30.
+    for (rule, want) in [
+        ("up:1", [1.0, 180.0, 2.0, -30.0]),
+        ("down:1", [1.0, 0.0, 2.0, 30.0]),
+    ] {
+        let mut args = vec!["axes"];
+        args.extend(HEAD);
+        args.extend(["--rule", rule, "--current", "20,0", "0", "30", "0"]);
+        let out = ok(&args);
+        close(&numbers(out.lines().next().unwrap_or("")), &want, 1e-9);
+    }
     // Every solution.
     let mut args = vec!["axes"];
     args.extend(HEAD);

@@ -81,7 +81,7 @@ fn tcp(m: &cncrot_machine, n: usize, pos: &[f64; 3], current: &[f64; 3], t: &[u8
     };
     // Every rule and reference axis the bytes give: untouched on refusal, finite otherwise.
     let (rule, reference) = (
-        i32::from(t.first().copied().unwrap_or(0) % 5),
+        i32::from(t.first().copied().unwrap_or(0) % 7),
         i32::from(t.get(1).copied().unwrap_or(0) % 4),
     );
     let mut ruled = [6.0; 6];
@@ -350,7 +350,7 @@ fuzz_target!(|data: &[u8]| {
     let cur = [f64_at(t, 3), f64_at(t, 4), f64_at(t, 5)];
     let mut current = [0.0; 3];
     current[..n].copy_from_slice(&cur[..n]);
-    let rule = (f64_at(t, 6).abs() as i32) % 5;
+    let rule = (f64_at(t, 6).abs() as i32) % 7;
     let refax = (f64_at(t, 7).abs() as i32) % 4;
     let (mut out, mut res, mut rem) = ([5.0; 3], [5.0; 3], [5.0; 16]);
     let s = unsafe {
@@ -372,6 +372,23 @@ fuzz_target!(|data: &[u8]| {
             }
         }
         assert!(out.iter().chain(&res).chain(&rem).all(|x| x.is_finite()));
+        // A direction of travel: the axis moved that way, or stayed (a rounding of the
+        // tolerance the other way; a Hirth snap may stop half a tooth short).
+        let k = (refax as usize).wrapping_sub(1);
+        if let (CNCROT_CHOOSE_POSITIVE_TURN | CNCROT_CHOOSE_NEGATIVE_TURN, Some(&x), Some(&r)) =
+            (rule, out.get(k), res.get(k))
+        {
+            let sign = if rule == CNCROT_CHOOSE_POSITIVE_TURN {
+                1.0
+            } else {
+                -1.0
+            };
+            let moved = sign * (x - r - current[k]);
+            assert!(
+                moved >= -1e-9 && moved < 360.0 + 1e-9,
+                "{rule} {out:?} {current:?}"
+            );
+        }
     } else {
         assert!(out == [5.0; 3] && res == [5.0; 3] && rem == [5.0; 16]);
     }

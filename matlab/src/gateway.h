@@ -466,6 +466,8 @@ static const named_code RULES[] = {
     {"minus", CNCROT_CHOOSE_MINUS},
     {"plus", CNCROT_CHOOSE_PLUS},
     {"inverse", CNCROT_CHOOSE_INVERSE},
+    {"positive_turn", CNCROT_CHOOSE_POSITIVE_TURN},
+    {"negative_turn", CNCROT_CHOOSE_NEGATIVE_TURN},
 };
 static const named_code FORMS[] = {
     {"cycle800", CNCROT_FORM_CYCLE800},

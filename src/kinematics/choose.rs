@@ -19,6 +19,16 @@ pub enum Rule {
     /// The other one of the pair: the paper's `_ROT_INV = 1` (the same orientation with the
     /// axes in the inverse position). The closest when there is no other.
     Inverse,
+    /// The given axis turns in its positive direction only, the least it must (a
+    /// direction-of-travel rule: LinuxCNC's `G53.1 P1`, "positive rotation only" of the
+    /// priority axis); the other axes take the turn nearest their current positions. Of
+    /// the solutions so reached, the one with the smallest turn of that axis (then the
+    /// closest). On an axis with travel limits only positions from the current one up to
+    /// the upper end qualify.
+    PositiveTurn(usize),
+    /// The given axis turns in its negative direction only (`G53.1 P2`), as
+    /// [`Rule::PositiveTurn`].
+    NegativeTurn(usize),
 }
 
 /// The positions [`Machine::choose`] chose.
@@ -70,6 +80,35 @@ pub(crate) fn place(axis: &Stored, angle: f64, current: f64) -> Option<(f64, f64
     }
     let fits = limits.map_or(true, |[lo, hi]| x >= lo && x <= hi);
     fits.then_some((x, x - exact + 0.0))
+}
+
+/// Where an axis goes when it may turn only in the direction `sign` (+1 or −1) from
+/// `current`: the first turn of `angle` met that way (a turn within [`TRAVEL_TOLERANCE`]
+/// of the current position is no turn, so a rounding never costs a whole turn), within
+/// the travel, then snapped to the Hirth grid as [`place`] snaps (the nearest tooth: a
+/// snap may stop a tooth short of the exact position, never turns back past `current`
+/// by more than half a tooth). `None` when that turn lies beyond the travel. Not inlined,
+/// like [`place`] (stack bound).
+#[inline(never)]
+pub(crate) fn place_turning(
+    axis: &Stored,
+    angle: f64,
+    current: f64,
+    sign: f64,
+) -> Option<(f64, f64)> {
+    // The whole turns that bring `angle` to the current position or past it, the way
+    // the axis turns.
+    let n = ceil((sign * (current - angle) - TRAVEL_TOLERANCE) / 360.0);
+    let x = angle + sign * 360.0 * n + 0.0;
+    if let Some([lo, hi]) = axis.limits() {
+        // Written so that NaN refuses: a position beyond the travel the way the axis
+        // turns is never reached (the next turn lies further out).
+        if !(x >= lo - TRAVEL_TOLERANCE && x <= hi + TRAVEL_TOLERANCE) {
+            return None;
+        }
+    }
+    // On the travel now: `place` only snaps it (the nearest turn of `x` is `x`).
+    place(axis, x, x)
 }
 
 /// `x`, or the end of `[lo, hi]` it lies within [`TRAVEL_TOLERANCE`] beyond: so that the
@@ -208,11 +247,15 @@ impl Machine {
             return Err(Error::OutOfRange);
         }
         let n = self.axis_count();
-        if let Rule::Minus(k) | Rule::Plus(k) = rule {
-            if k >= n {
-                return Err(Error::BadArgument);
+        let turning = match rule {
+            Rule::Minus(k) | Rule::Plus(k) if k >= n => return Err(Error::BadArgument),
+            Rule::PositiveTurn(k) | Rule::NegativeTurn(k) if k >= n => {
+                return Err(Error::BadArgument)
             }
-        }
+            Rule::PositiveTurn(k) => Some((k, 1.0)),
+            Rule::NegativeTurn(k) => Some((k, -1.0)),
+            _ => None,
+        };
         let solutions = self.solve(target, current, verify)?;
         let mut placed = [([0.0; MAX_AXES], [0.0; MAX_AXES], 0.0f64); MAX_SOLUTIONS];
         let mut count = 0;
@@ -224,7 +267,11 @@ impl Machine {
                 let (Some(&angle), Some(&cur)) = (s.get(k), current.get(k)) else {
                     continue;
                 };
-                let Some((x, r)) = place(a, angle, cur) else {
+                let at = match turning {
+                    Some((j, sign)) if j == k => place_turning(a, angle, cur, sign),
+                    _ => place(a, angle, cur),
+                };
+                let Some((x, r)) = at else {
                     continue 'solutions;
                 };
                 if let (Some(ax), Some(re)) = (axes.get_mut(k), residual.get_mut(k)) {
@@ -272,11 +319,31 @@ impl Machine {
             }
             best
         };
+        // The least turn of the axis that may turn one way only, then the closest.
+        let least_turn = |k: usize| {
+            let mut best: Option<usize> = None;
+            for (i, p) in placed.iter().enumerate() {
+                let turn = |q: &([f64; MAX_AXES], [f64; MAX_AXES], f64)| {
+                    let (x, c) = (q.0.get(k).copied(), current.get(k).copied());
+                    abs(x.unwrap_or(0.0) - c.unwrap_or(0.0))
+                };
+                let better = match best.and_then(|b| placed.get(b)) {
+                    None => true,
+                    Some(q) if turn(p) == turn(q) => p.2 < q.2,
+                    Some(q) => turn(p) < turn(q),
+                };
+                if better {
+                    best = Some(i);
+                }
+            }
+            best
+        };
         let pick = match rule {
             Rule::Closest => closest(None),
             Rule::Minus(k) => by_axis(k, false),
             Rule::Plus(k) => by_axis(k, true),
             Rule::Inverse => closest(closest(None)).or(closest(None)),
+            Rule::PositiveTurn(k) | Rule::NegativeTurn(k) => least_turn(k),
         };
         let Some(&(axes, residual, _)) = pick.and_then(|i| placed.get(i)) else {
             return Err(Error::OutOfTravel);
