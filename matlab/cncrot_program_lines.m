@@ -11,8 +11,9 @@
 %   struct('options', 1) to read SINUMERIK frame angles in Euler mode; options of any
 %   numeric class), frames the frame after each line (4-by-4-by-N). The state keeps the
 %   datum shift apart from the tilt (state.shift: CYCL DEF 7, TRANS DATUM, G52) and the
-%   tilt's own choice words (state.choice 1 minus, 2 plus for SEQ-/SEQ+ and _DIR, with
-%   state.reference_axis; cncrot_program_axes follows them) and how the program moves the
+%   tilt's own choice words (state.choice 1 minus, 2 plus for SEQ-/SEQ+ and _DIR, 4 / 5
+%   positive / negative turn for G53.1 P1 / P2, with state.reference_axis;
+%   cncrot_program_axes follows them) and how the program moves the
 %   machine to the tilt (state.positioning 0 stay, 1 turn for TURN, G53.1, G253, CYCLE800,
 %   2 move for MOVE, G53.6). A direct mode (PLANE AXIAL, G158 mode 2, a CYCLE800 with
 %   _MODE 192) keeps the rotary-axis positions (state.angles; state.active 2 by letter A,

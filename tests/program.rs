@@ -1319,7 +1319,7 @@ fn datum_shifts_compose_with_the_tilt() {
 /// the higher position; a new tilt without words takes the closest again.
 #[test]
 fn choice_words_are_kept_and_followed() {
-    use cncrot::kinematics::{Machine, RotaryAxis, Side};
+    use cncrot::kinematics::{Machine, RotaryAxis, Rule, Side};
     // A head C about Z carrying B about Y: the tool at (sin 30°, 0, cos 30°) is C 0, B 30 or
     // C ±180, B -30.
     let head = Machine::new([0.0, 0.0, 1.0])
@@ -1370,6 +1370,57 @@ fn choice_words_are_kept_and_followed() {
         .unwrap()
         .0;
     assert_eq!(p.choice, AxisChoice::Closest);
+
+    // G53.1 P (LinuxCNC's remap): P0 the shortest way, P1 the master axis (B here) turning
+    // up only, P2 down only. From B -25: up reaches 30 after 55°, -30 only after 355°;
+    // down reaches -30 after 5° (C then ±180).
+    let g53 = |p: &str| read(Dialect::Fanuc, &["G68.2 X0 Y0 Z0 I90 J30 K-90", p]);
+    let from = [0.0, -25.0, 0.0];
+    let at = |p: &Program| p.axes(&head, from).unwrap().axes;
+    assert_eq!(g53("G53.1 P1").choice, AxisChoice::PositiveTurn(0));
+    assert_eq!(g53("G53.6 P2").choice, AxisChoice::NegativeTurn(0));
+    assert_eq!(g53("G53.1 P0").choice, AxisChoice::Closest);
+    assert_eq!(g53("G53.1").choice, AxisChoice::Closest);
+    let up = at(&g53("G53.1 P1"));
+    assert!(
+        (up[0] - 0.0).abs() < 1e-9 && (up[1] - 30.0).abs() < 1e-9,
+        "{up:?}"
+    );
+    let down = at(&g53("G53.1 P2"));
+    assert!(
+        (down[0].abs() - 180.0).abs() < 1e-9 && (down[1] + 30.0).abs() < 1e-9,
+        "{down:?}"
+    );
+    // The same as the machine's own choice under that rule.
+    let f = g53("G53.1 P2").frame.rotation;
+    let want = head.choose(&f, from, Rule::NegativeTurn(1)).unwrap().axes;
+    assert_eq!(down, want);
+    let e = Program::default()
+        .line(Dialect::Fanuc, b"G53.1 P3")
+        .unwrap_err();
+    // Reported at the value.
+    assert_eq!((e.error, e.column), (Error::BadArgument, 8));
+    // Written back as Fanuc and Syntec write it; Heidenhain's SEQ is a side, not a way
+    // to turn: TURN alone.
+    let src = ["G68.2 J30", "G53.1 P2", "G68.2 J30", "G53.6 P1"];
+    assert_eq!(
+        translate(Dialect::Fanuc, &src, Dialect::Syntec, "G68.2"),
+        [
+            "G68.2 X0. Y0. Z0. I0. J30. K0.",
+            "G68.2 X0. Y0. Z0. I0. J30. K0.\nG53.1 P2",
+            "G68.2 X0. Y0. Z0. I0. J30. K0.",
+            "G68.2 X0. Y0. Z0. I0. J30. K0.\nG53.6 P1"
+        ]
+    );
+    assert_eq!(
+        translate(
+            Dialect::Fanuc,
+            &src[..2],
+            Dialect::Heidenhain,
+            "PLANE SPATIAL"
+        )[1],
+        "PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN FMAX"
+    );
 }
 
 /// A program translated block by block: what `write_change` writes for the state before and

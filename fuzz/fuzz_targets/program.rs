@@ -457,6 +457,20 @@ fn translated(
                 "{form:?} in dialect {dialect}: {text}"
             );
         }
+        // The choice words read back where the target has them: Heidenhain's SEQ for a
+        // side of the master axis, G68.2's G53.1 P for its direction of travel.
+        let sided = [CNCROT_CHOOSE_MINUS, CNCROT_CHOOSE_PLUS].contains(&after.choice);
+        let turning =
+            [CNCROT_CHOOSE_POSITIVE_TURN, CNCROT_CHOOSE_NEGATIVE_TURN].contains(&after.choice);
+        let worded = (*dialect == 2 && sided)
+            || (says && *dialect != 2 && turning && after.positioning != 0);
+        if worded && after.reference_axis == 0 && rotated(after) && rotated(state) {
+            assert_eq!(
+                (state.choice, state.reference_axis),
+                (after.choice, 0),
+                "{form:?} in dialect {dialect}: {text}"
+            );
+        }
         let d = g
             .iter()
             .zip(&f)

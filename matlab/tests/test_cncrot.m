@@ -256,6 +256,11 @@ function test_cncrot(cases_file)
   check(abs(ax(1) - 720) < 1e-9 && abs(ax(2) - 30) < 1e-9 && ax(3) == 0 && sx == 0, 'program_axes');
   Fp30 = cncrot_program_lines('heidenhain', 'PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY');
   check(isequal(ax, cncrot_machine_choose(hd, Fp30, [730 0 0], 'closest')), 'program_axes is the closest choice');
+  % G53.1 P2: the master axis (B, nearest the tool) turns down only: from B -25, -30.
+  [Fg, stg] = cncrot_program_lines('fanuc', {'G68.2 I90 J30 K-90', 'G53.1 P2'});
+  axg = cncrot_program_axes(stg, hd, [0 -25 0]);
+  check(stg.choice == 5 && stg.reference_axis == 0 && abs(axg(2) + 30) < 1e-9 && ...
+        isequal(axg, cncrot_machine_choose(hd, Fg, [0 -25 0], 'negative_turn', 2)), 'program_axes under G53.1 P2');
   [ax0, s0] = cncrot_program_axes([], hd, [730 0 0]);
   check(isequal(ax0, [730 0 0]) && s0 == 2, 'program_axes with nothing active');
   % Direct modes: PLANE AXIAL keeps the positions; its frame needs the machine: NaN without
@@ -300,7 +305,7 @@ function test_cncrot(cases_file)
   end
   head = [0 0 0 1 0 0 0 0 0 0 0 0; 0 0 1 0 0 0 150 -100 100 0 0 0];
   F = cncrot_machine_forward(head, [30 40 0]);
-  rules = {'closest', 0, 0; 'minus', 1, 2; 'plus', 2, 2; 'inverse', 3, 0};
+  rules = {'closest', 0, 0; 'minus', 1, 2; 'plus', 2, 2; 'inverse', 3, 0; 'positive_turn', 4, 1; 'negative_turn', 5, 2};
   for k = 1:size(rules, 1)
     [x1, r1, e1, s1] = cncrot_machine_choose(head, F, [10 0 0], rules{k, 2}, rules{k, 3});
     [x2, r2, e2, s2] = cncrot_machine_choose(head, F, [10 0 0], rules{k, 1}, int8(rules{k, 3}));
@@ -368,7 +373,7 @@ function test_cncrot(cases_file)
   expect_message('cncrot:badState', @() cncrot_program_lines('fanuc', 'G69', struct('active', 2)), 'bad state', 'cncrot_program_lines', 'argument 3 (state)');
   expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 'sideways'), 'unknown rule', 'cncrot_machine_choose', ...
                  'argument 4 (rule) must be a rule', '''minus''', 'got ''sideways''');
-  expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 4), 'rule 4', 'cncrot_machine_choose', 'argument 4 (rule)', 'got 4');
+  expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 6), 'rule 6', 'cncrot_machine_choose', 'argument 4 (rule)', 'got 6');
   expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 'minus'), 'minus without an axis', 'cncrot_machine_choose', 'argument 5 (ref)', 'got 0');
   expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 'plus', 3), 'plus on a missing axis', 'cncrot_machine_choose', 'argument 5 (ref)', 'got 3');
   expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 'closest', 1), 'closest with an axis', 'cncrot_machine_choose', 'argument 5 (ref)', 'got 1');

@@ -100,7 +100,8 @@ pub enum Positioning {
 }
 
 /// The solution a block's own words choose for the rotary axes, where a tilt has two:
-/// Heidenhain `SEQ+`/`SEQ-`, SINUMERIK `CYCLE800` `_DIR` +1/−1, Fanuc-style `G53.1 P`.
+/// Heidenhain `SEQ+`/`SEQ-`, SINUMERIK `CYCLE800` `_DIR` +1/−1 (a side of an axis), the
+/// `P` of a Fanuc-style `G53.1`/`G53.6` (a direction of travel).
 ///
 /// ```
 /// use cncrot::dialects::program::AxisChoice;
@@ -116,6 +117,12 @@ pub enum AxisChoice {
     Minus(u8),
     /// The higher position of an axis (numbered as for `Minus`).
     Plus(u8),
+    /// The axis turns only in its positive direction, the least it must (`G53.1 P1`
+    /// \[3rd: LinuxCNC's tilted-work-plane remap, "positive rotation only" of the primary
+    /// axis\]; numbered as for `Minus`).
+    PositiveTurn(u8),
+    /// The axis turns only in its negative direction (`G53.1 P2`).
+    NegativeTurn(u8),
 }
 
 impl Modal {
@@ -361,11 +368,11 @@ pub(crate) trait Family {
     /// `MOVE`/`TURN`/`STAY`).
     const POSITIONING_IN_BLOCK: bool = false;
 
-    /// The block after a tilt of `spec` that moves the machine to it as `positioning` says
-    /// (`G53.1`, `G53.6`, `G253`), where the family has one; `None` where the tilt block says
-    /// it or nothing can.
-    fn positioning_block(spec: &FormSpec, positioning: Positioning) -> Option<&'static [u8]> {
-        let _ = (spec, positioning);
+    /// The block after a tilt of `spec` that moves the machine to it as `how` says
+    /// (`G53.1`, `G53.6 P1`, `G253`), where the family has one; `None` where the tilt block
+    /// says it or nothing can.
+    fn positioning_block(spec: &FormSpec, how: Motion) -> Option<&'static [u8]> {
+        let _ = (spec, how);
         None
     }
 

@@ -118,8 +118,8 @@ pub const G69: Frame = Frame::IDENTITY;
 // Program lines.
 
 use super::family::{
-    no_selector, put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, Motion, Positioning,
-    MAX_VALUES,
+    no_selector, put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, Motion,
+    Positioning, MAX_VALUES,
 };
 use crate::text::number::{write_word, Out, Style};
 use crate::text::scan::{address_words, whole, Comments, Cursor, LineError, Syntax, Tokens};
@@ -148,7 +148,8 @@ pub(crate) struct Fanuc;
 /// and whether the axes turn with the rotations is in no public text), `P2` (three points),
 /// `P3` (two vectors), `P4` (projection angles) and LinuxCNC's `R` are forms whose words the
 /// library does not read: such a block is [`Block::NotFollowed`], never a guessed frame.
-/// `G53.1`/`G53.6` take a `P` (how the rotary axes turn), not kept yet.
+/// `G53.1`/`G53.6 P`: the direction the priority (master) axis turns, kept as the
+/// state's choice ([`g53_choice`]).
 pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineError>> {
     let column = c.column();
     let incremental = if c.code(b"G68.2") {
@@ -167,8 +168,16 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
         // Turns the tool to the plane: no frame change.
         let p = address_words(c, *b"P", SYNTAX, false, (true, true));
         return Some(p.and_then(|w| {
-            whole(w.values[0], w.column(0))?;
-            Ok(Block::Frame(Modal { positioning, ..*m }))
+            let choice = g53_choice(whole(w.values[0], w.column(0))?).ok_or(LineError {
+                error: Error::BadArgument,
+                column: w.column(0),
+                expected: Some("P: 0 (shortest), 1 (positive turn) or 2 (negative turn)"),
+            })?;
+            Ok(Block::Frame(Modal {
+                positioning,
+                choice,
+                ..*m
+            }))
         }));
     } else if c.code(b"G52") {
         return Some(read_g52(m, c));
@@ -226,13 +235,34 @@ fn turn_code(c: &mut Cursor) -> Option<Positioning> {
     }
 }
 
-/// `G53.1` or `G53.6` after a tilt, as `positioning` says (nothing for [`Positioning::Stay`]).
-pub(crate) fn g53(positioning: Positioning) -> Option<&'static [u8]> {
-    match positioning {
-        Positioning::Stay => None,
-        Positioning::Turn => Some(b"G53.1"),
-        Positioning::Move => Some(b"G53.6"),
+/// The choice of `G53.1 P<p>` / `G53.6 P<p>` \[3rd: LinuxCNC's tilted-work-plane remap,
+/// the one public text with a meaning for `P`: "0 (default) shortest distance, 1 positive
+/// rotation only, 2 negative rotation only", of the primary rotary axis, the other axis the
+/// shortest way\]: the primary axis taken as the master axis \[choice\]. `None`: another
+/// value.
+fn g53_choice(p: i32) -> Option<AxisChoice> {
+    match p {
+        0 => Some(AxisChoice::Closest),
+        1 => Some(AxisChoice::PositiveTurn(0)),
+        2 => Some(AxisChoice::NegativeTurn(0)),
+        _ => None,
     }
+}
+
+/// `G53.1` or `G53.6` after a tilt, as `how` says (nothing for [`Positioning::Stay`]), with
+/// `P1`/`P2` for a direction of travel of the master axis; the other choices have no word
+/// here (not written).
+pub(crate) fn g53(how: Motion) -> Option<&'static [u8]> {
+    let turn: &[&'static [u8]; 3] = match how.positioning {
+        Positioning::Stay => return None,
+        Positioning::Turn => &[b"G53.1", b"G53.1 P1", b"G53.1 P2"],
+        Positioning::Move => &[b"G53.6", b"G53.6 P1", b"G53.6 P2"],
+    };
+    Some(match how.choice {
+        AxisChoice::PositiveTurn(0) => turn[1],
+        AxisChoice::NegativeTurn(0) => turn[2],
+        _ => turn[0],
+    })
 }
 
 /// `G52 X Y Z` after its code: the local coordinate system, a datum shift along the
@@ -450,8 +480,8 @@ impl Family for Fanuc {
         write_g52(shift, decimals, out)
     }
 
-    fn positioning_block(_: &FormSpec, positioning: Positioning) -> Option<&'static [u8]> {
-        g53(positioning)
+    fn positioning_block(_: &FormSpec, how: Motion) -> Option<&'static [u8]> {
+        g53(how)
     }
 
     fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error> {

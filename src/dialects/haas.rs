@@ -212,8 +212,8 @@ impl Family for Haas {
 
     /// `G253` (the spindle turned normal to the plane) for either way of turning: Haas has no
     /// code that keeps the tool tip \[choice\].
-    fn positioning_block(_: &FormSpec, positioning: Positioning) -> Option<&'static [u8]> {
-        match positioning {
+    fn positioning_block(_: &FormSpec, how: Motion) -> Option<&'static [u8]> {
+        match how.positioning {
             Positioning::Stay => None,
             Positioning::Turn | Positioning::Move => Some(b"G253"),
         }

@@ -646,9 +646,11 @@ impl Family for Heidenhain {
             write_word(out, name, v, decimals, style)?;
         }
         write_positioning(how.positioning, out);
-        // `SEQ±` names the master axis' sign; another axis cannot be named on the block.
+        // `SEQ±` names the master axis' sign; another axis cannot be named on the block. A
+        // direction of travel (`G53.1 P1`) has no word here: not written, as `SEQ` is not
+        // on a `G68.2` [choice].
         match how.choice {
-            AxisChoice::Closest => {}
+            AxisChoice::Closest | AxisChoice::PositiveTurn(0) | AxisChoice::NegativeTurn(0) => {}
             AxisChoice::Minus(0) => out.text(b" SEQ-"),
             AxisChoice::Plus(0) => out.text(b" SEQ+"),
             _ => return Err(Error::NotAvailable),

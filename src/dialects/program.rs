@@ -169,6 +169,8 @@ impl Program {
             _ if machine.axes().is_empty() => Rule::Closest,
             AxisChoice::Minus(k) => Rule::Minus(axis(k)?),
             AxisChoice::Plus(k) => Rule::Plus(axis(k)?),
+            AxisChoice::PositiveTurn(k) => Rule::PositiveTurn(axis(k)?),
+            AxisChoice::NegativeTurn(k) => Rule::NegativeTurn(axis(k)?),
         };
         machine.choose(&self.frame.rotation, current, rule)
     }
@@ -616,7 +618,13 @@ fn change(
     // stays where it is after one that turned is the tilt block again, without it.
     let unsaid = after.positioning == Positioning::Stay
         && dialect
-            .positioning_block(&spec, Positioning::Turn)
+            .positioning_block(
+                &spec,
+                Motion {
+                    choice: AxisChoice::Closest,
+                    positioning: Positioning::Turn,
+                },
+            )
             .is_some();
     let rewrite =
         active && (words_changed || (moved && (dialect.positioning_in_block() || unsaid)));
@@ -662,7 +670,7 @@ fn change(
     // Where a block of its own moves the machine (`G53.1`): after a new tilt, or alone (a
     // direct mode's block moves the axes itself).
     if active && d1.is_none() && (tilt_written || moved) {
-        if let Some(text) = dialect.positioning_block(&spec, after.positioning) {
+        if let Some(text) = dialect.positioning_block(&spec, how) {
             next(out);
             out.text(text);
         }

@@ -7,8 +7,7 @@
 //! dispatch, no function pointers, so the no-panic proof sees every path.
 
 use super::family::{
-    Block, Direct, Family, Form, FormInfo, FormSpec, Modal, Motion, PathWords, Positioning,
-    MAX_VALUES,
+    Block, Direct, Family, Form, FormInfo, FormSpec, Modal, Motion, PathWords, MAX_VALUES,
 };
 use super::{fanuc, haas, heidenhain, sinumerik, syntec, twincat};
 use crate::text::number::Out;
@@ -98,10 +97,10 @@ macro_rules! families {
             pub(crate) fn positioning_block(
                 self,
                 spec: &FormSpec,
-                positioning: Positioning,
+                how: Motion,
             ) -> Option<&'static [u8]> {
                 match self {
-                    $(Dialect::$name => <$family>::positioning_block(spec, positioning),)*
+                    $(Dialect::$name => <$family>::positioning_block(spec, how),)*
                 }
             }
 

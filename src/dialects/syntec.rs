@@ -329,9 +329,9 @@ impl Family for Syntec {
     }
 
     /// `G53.1`/`G53.6` in the `G68.2` mode; `G158` has none in any public text.
-    fn positioning_block(spec: &FormSpec, positioning: Positioning) -> Option<&'static [u8]> {
+    fn positioning_block(spec: &FormSpec, how: Motion) -> Option<&'static [u8]> {
         match spec.form {
-            Form::G68_2 => fanuc::g53(positioning),
+            Form::G68_2 => fanuc::g53(how),
             _ => None,
         }
     }

@@ -3,7 +3,8 @@
 
 use super::frame::{read_frame, write_frame};
 use super::machine::{
-    cncrot_machine, CNCROT_CHOOSE_CLOSEST, CNCROT_CHOOSE_MINUS, CNCROT_CHOOSE_PLUS,
+    cncrot_machine, CNCROT_CHOOSE_CLOSEST, CNCROT_CHOOSE_MINUS, CNCROT_CHOOSE_NEGATIVE_TURN,
+    CNCROT_CHOOSE_PLUS, CNCROT_CHOOSE_POSITIVE_TURN,
 };
 use super::{cncrot_status, guard, non_null, read_finite, write};
 use crate::dialects::program::{
@@ -94,8 +95,9 @@ pub struct cncrot_program {
     pub options: u32,
     /// The solution the active tilt's own words choose for the rotary axes
     /// (`CNCROT_CHOOSE_CLOSEST` when they choose none, `CNCROT_CHOOSE_MINUS` for `SEQ-`,
-    /// `_DIR = -1`, `CNCROT_CHOOSE_PLUS` for `SEQ+`, `_DIR = +1`); `cncrot_program_axes`
-    /// follows it.
+    /// `_DIR = -1`, `CNCROT_CHOOSE_PLUS` for `SEQ+`, `_DIR = +1`,
+    /// `CNCROT_CHOOSE_POSITIVE_TURN` / `_NEGATIVE_TURN` for `G53.1 P1` / `P2`);
+    /// `cncrot_program_axes` follows it.
     pub choice: i32,
     /// The axis the choice refers to: 1..3 in chain order, or 0 for the machine's master
     /// axis (for a head the axis nearest the tool, else the one nearest the machine base);
@@ -187,6 +189,8 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
         CNCROT_CHOOSE_CLOSEST if axis == 0 => AxisChoice::Closest,
         CNCROT_CHOOSE_MINUS => AxisChoice::Minus(axis),
         CNCROT_CHOOSE_PLUS => AxisChoice::Plus(axis),
+        CNCROT_CHOOSE_POSITIVE_TURN => AxisChoice::PositiveTurn(axis),
+        CNCROT_CHOOSE_NEGATIVE_TURN => AxisChoice::NegativeTurn(axis),
         _ => return Err(Error::BadState),
     };
     let positioning = match c.positioning {
@@ -244,6 +248,8 @@ fn store(p: &Program, options: u32) -> cncrot_program {
         AxisChoice::Closest => (CNCROT_CHOOSE_CLOSEST, 0),
         AxisChoice::Minus(k) => (CNCROT_CHOOSE_MINUS, i32::from(k)),
         AxisChoice::Plus(k) => (CNCROT_CHOOSE_PLUS, i32::from(k)),
+        AxisChoice::PositiveTurn(k) => (CNCROT_CHOOSE_POSITIVE_TURN, i32::from(k)),
+        AxisChoice::NegativeTurn(k) => (CNCROT_CHOOSE_NEGATIVE_TURN, i32::from(k)),
     };
     let positioning = match p.positioning {
         Positioning::Stay => CNCROT_POSITIONING_STAY,

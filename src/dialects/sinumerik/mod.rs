@@ -946,7 +946,11 @@ impl Family for Sinumerik {
                 // `_DIR`: "minus" unless the plus direction is asked for [choice: CYCLE800
                 // always names a direction]; the direction-reference axis is machine data.
                 out.text(match how.choice {
-                    AxisChoice::Closest | AxisChoice::Minus(0) => b",-1,0,0)",
+                    // A direction of travel has no parameter: as no choice [choice].
+                    AxisChoice::Closest
+                    | AxisChoice::Minus(0)
+                    | AxisChoice::PositiveTurn(0)
+                    | AxisChoice::NegativeTurn(0) => b",-1,0,0)",
                     AxisChoice::Plus(0) => b",1,0,0)",
                     _ => return Err(Error::NotAvailable),
                 });
