@@ -385,7 +385,7 @@ fuzz_target!(|data: &[u8]| {
             };
             let moved = sign * (x - r - current[k]);
             assert!(
-                moved >= -1e-9 && moved < 360.0 + 1e-9,
+                (-1e-9..360.0 + 1e-9).contains(&moved),
                 "{rule} {out:?} {current:?}"
             );
         }
