@@ -322,6 +322,26 @@ static void whole_programs(void) {
     cncrot_program before = g;
     CHECK_STATUS(cncrot_program_line(&g, CNCROT_DIALECT_FANUC, "G53.1 P3", 8), CNCROT_STATUS_BAD_ARGUMENT);
     CHECK(memcmp(&g, &before, sizeof g) == 0, "untouched");
+    /* The retraction and feed of the turn: MB 50 along the tool axis at 2000 mm/min; in
+     * CYCLE800 terms _FR 5 with _FR_I 50 (the feed has no parameter there). */
+    cncrot_program h, none;
+    memset(&h, 0, sizeof h);
+    memset(&none, 0, sizeof none);
+    static const char mb[] = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB50 F2000 SEQ-";
+    CHECK_STATUS(cncrot_program_line(&h, CNCROT_DIALECT_HEIDENHAIN, mb, sizeof mb - 1), CNCROT_STATUS_OK);
+    CHECK(h.retract == CNCROT_RETRACT_TOOL && h.retract_mm == 50 && h.feed == CNCROT_FEED_RATE && h.feed_mm_min == 2000,
+          "MB50 F2000: %d %g %d %g", h.retract, h.retract_mm, h.feed, h.feed_mm_min);
+    char text[CNCROT_PROGRAM_CHANGE_MAX + 1];
+    CHECK_STATUS(cncrot_program_write_change(&none, &h, CNCROT_DIALECT_SINUMERIK, "CYCLE800", 4, text, sizeof text),
+                 CNCROT_STATUS_OK);
+    CHECK(strcmp(text, "CYCLE800(5,\"\",0,57,0,0,0,0,30,0,0,0,0,-1,50,0)") == 0, "%s", text);
+    CHECK_STATUS(cncrot_program_write_change(&none, &h, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", 4, text, sizeof text),
+                 CNCROT_STATUS_OK);
+    CHECK(strcmp(text, mb) == 0, "%s", text);
+    /* A retraction by hand without a length: refused. */
+    cncrot_program edited2 = h;
+    edited2.retract_mm = 0;
+    CHECK_STATUS(cncrot_program_line(&edited2, CNCROT_DIALECT_HEIDENHAIN, "PLANE RESET", 11), CNCROT_STATUS_BAD_STATE);
   }
   /* A passed block on a fresh state leaves it all zero: not even the dialect is recorded. */
   cncrot_program fresh, zero;

@@ -246,7 +246,7 @@
  * Mixed into the seal of every `cncrot_program` this version writes: a state of a version
  * with another meaning of the same bytes gets another constant, and is refused.
  */
-#define CNCROT_PROGRAM_FORMAT 1347569459
+#define CNCROT_PROGRAM_FORMAT 1347569460
 
 /**
  * `cncrot_program.positioning`: the tilt command moves no axis (`STAY`, `G68.2` alone).
@@ -264,6 +264,48 @@
  * `G53.6`).
  */
 #define CNCROT_POSITIONING_MOVE 2
+
+/**
+ * `cncrot_program.retract`: no retraction (no `MB`; `_FR` 0).
+ */
+#define CNCROT_RETRACT_NONE 0
+
+/**
+ * `cncrot_program.retract`: as far as the travel allows along the tool axis (`MB MAX`;
+ * `_FR` 4).
+ */
+#define CNCROT_RETRACT_TOOL_MAX 1
+
+/**
+ * `cncrot_program.retract`: `retract_mm` along the tool axis (`MB n`; `_FR` 5 with
+ * `_FR_I`).
+ */
+#define CNCROT_RETRACT_TOOL 2
+
+/**
+ * `cncrot_program.retract`: along the machine's Z axis (`_FR` 1).
+ */
+#define CNCROT_RETRACT_MACHINE_Z 3
+
+/**
+ * `cncrot_program.retract`: along the machine's Z axis, then in X and Y (`_FR` 2).
+ */
+#define CNCROT_RETRACT_MACHINE_Z_XY 4
+
+/**
+ * `cncrot_program.feed`: the rotary axes turn at rapid (`FMAX`).
+ */
+#define CNCROT_FEED_RAPID 0
+
+/**
+ * `cncrot_program.feed`: at `feed_mm_min` (`F n`).
+ */
+#define CNCROT_FEED_RATE 1
+
+/**
+ * `cncrot_program.feed`: at the feed rate programmed before (`F AUTO`).
+ */
+#define CNCROT_FEED_AUTO 2
 
 /**
  * The room `cncrot_program_expected` needs: the longest text it writes and its NUL.
@@ -679,10 +721,11 @@ typedef struct cncrot_machine {
  * hand, a bit flipped in storage, a state of another version — is refused with
  * `CNCROT_STATUS_BAD_STATE`.
  *
- * Layout (176 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
+ * Layout (200 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
  * `angles` 96, `shift` 120, `active` 144, `dialect` 148, `options` 152, `choice` 156,
- * `reference_axis` 160, `positioning` 164, `direct_given` 168, `reserved` 172. Accepted on entry:
- * all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..172
+ * `reference_axis` 160, `positioning` 164, `direct_given` 168, `retract` 172,
+ * `retract_mm` 176, `feed_mm_min` 184, `feed` 192, `reserved` 196. Accepted on entry: all
+ * zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..196
  * exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
  */
 typedef struct cncrot_program {
@@ -748,6 +791,27 @@ typedef struct cncrot_program {
    * (1..7 while `active` is 2 or 3; 0 otherwise).
    */
   uint32_t direct_given;
+  /**
+   * How the tool retracts before the rotary axes turn, as the tilt block says
+   * (`CNCROT_RETRACT_*`: Heidenhain `MB`, CYCLE800 `_FR`); `CNCROT_RETRACT_NONE` while
+   * `positioning` is stay.
+   */
+  int32_t retract;
+  /**
+   * The retraction along the tool axis in mm for `CNCROT_RETRACT_TOOL` (`MB n`,
+   * `_FR_I`), positive; 0 otherwise.
+   */
+  double retract_mm;
+  /**
+   * The feed rate in mm/min for `CNCROT_FEED_RATE` (`F n`), positive; 0 otherwise.
+   */
+  double feed_mm_min;
+  /**
+   * How fast the rotary axes turn (`CNCROT_FEED_*`: Heidenhain `FMAX`, `F n`,
+   * `F AUTO`); `CNCROT_FEED_RAPID` while `positioning` is stay and in every dialect
+   * without a feed word in its tilt.
+   */
+  int32_t feed;
   /**
    * The seal: 0 in the all-zero initial state, else the checksum described above (the
    * field keeps the name it had when it was reserved, so that the layout is unchanged).

@@ -351,11 +351,11 @@ fn valid_state() -> cncrot_cycle600_gud {
     g
 }
 
-/// The program state's documented layout (176 bytes; ABI 0.2).
+/// The program state's documented layout (200 bytes; ABI 0.2).
 #[test]
 fn the_program_states_documented_layout() {
     use std::mem::offset_of;
-    assert_eq!(size_of::<cncrot_program>(), 176);
+    assert_eq!(size_of::<cncrot_program>(), 200);
     let offsets = [
         offset_of!(cncrot_program, rotation),
         offset_of!(cncrot_program, origin),
@@ -368,11 +368,15 @@ fn the_program_states_documented_layout() {
         offset_of!(cncrot_program, reference_axis),
         offset_of!(cncrot_program, positioning),
         offset_of!(cncrot_program, direct_given),
+        offset_of!(cncrot_program, retract),
+        offset_of!(cncrot_program, retract_mm),
+        offset_of!(cncrot_program, feed_mm_min),
+        offset_of!(cncrot_program, feed),
         offset_of!(cncrot_program, reserved),
     ];
     assert_eq!(
         offsets,
-        [0, 72, 96, 120, 144, 148, 152, 156, 160, 164, 168, 172]
+        [0, 72, 96, 120, 144, 148, 152, 156, 160, 164, 168, 172, 176, 184, 192, 196]
     );
 }
 

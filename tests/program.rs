@@ -6,8 +6,8 @@
 mod common;
 
 use cncrot::dialects::program::{
-    write_change, write_line, AxisChoice, Dialect, Direct, DirectAxes, LineError, Positioning,
-    Program, Remark, MAX_CHANGE,
+    write_change, write_line, AxisChoice, Dialect, Direct, DirectAxes, Feed, LineError,
+    Positioning, Program, Remark, Retract, MAX_CHANGE,
 };
 use cncrot::{elementary, mul, Axis, Error, Frame, Matrix};
 use common::Rng;
@@ -1423,6 +1423,109 @@ fn choice_words_are_kept_and_followed() {
     );
 }
 
+#[test]
+fn retraction_and_feed_words_are_kept_and_written() {
+    let plane = |words: &str| {
+        let l = format!("PLANE SPATIAL SPA+0 SPB+30 SPC+0 {words}");
+        Program::default().line(Dialect::Heidenhain, l.as_bytes())
+    };
+    let kept = |words: &str| {
+        let p = plane(words).unwrap().0;
+        (p.retract, p.retract_mm, p.feed, p.feed_mm_min)
+    };
+    assert_eq!(
+        kept("TURN MB50 FMAX SEQ-"),
+        (Retract::Tool, 50.0, Feed::Rapid, 0.0)
+    );
+    assert_eq!(
+        kept("MOVE DIST20 MB MAX F2000"),
+        (Retract::ToolMax, 0.0, Feed::Rate, 2000.0)
+    );
+    assert_eq!(kept("TURN F AUTO"), (Retract::None, 0.0, Feed::Auto, 0.0));
+    assert_eq!(
+        kept("TURN MB0 FMAX"),
+        (Retract::None, 0.0, Feed::Rapid, 0.0)
+    );
+    // STAY moves nothing: no retraction, no feed.
+    assert_eq!(
+        kept("STAY MB MAX F500"),
+        (Retract::None, 0.0, Feed::Rapid, 0.0)
+    );
+    // Refused where the value stands.
+    let head = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN ".len();
+    for (words, at) in [("TURN MB-5", head + 3), ("TURN F0", head + 2)] {
+        let e = plane(words).unwrap_err();
+        assert_eq!((e.error, e.column), (Error::BadArgument, at), "{words}");
+    }
+    // CYCLE800's _FR (first) and _FR_I (15th).
+    let c800 = |fr: &str, fr_i: &str| {
+        let l = format!("CYCLE800({fr},\"TC1\",0,57,0,0,0,0,30,0,0,0,0,-1,{fr_i},0)");
+        Program::default().line(Dialect::Sinumerik, l.as_bytes())
+    };
+    let r = |fr: &str, fr_i: &str| {
+        let p = c800(fr, fr_i).unwrap().0;
+        (p.retract, p.retract_mm)
+    };
+    assert_eq!(r("0", "7"), (Retract::None, 0.0));
+    assert_eq!(r("1", "1"), (Retract::MachineZ, 0.0));
+    assert_eq!(r("2", "0"), (Retract::MachineZThenXy, 0.0));
+    assert_eq!(r("4", "0"), (Retract::ToolMax, 0.0));
+    assert_eq!(r("5", "50"), (Retract::Tool, 50.0));
+    assert_eq!(r("3", "0"), (Retract::None, 0.0));
+    assert_eq!(c800("-1", "0").unwrap_err().column, "CYCLE800(".len() + 1);
+    let e = c800("5", "-2").unwrap_err();
+    let at = "CYCLE800(5,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,-1,".len() + 1;
+    assert_eq!((e.error, e.column), (Error::BadArgument, at));
+    // Written in each dialect's terms: MB n <-> _FR 5 with _FR_I, MB MAX <-> _FR 4; the
+    // machine-Z retractions as MB MAX; the G-code dialects retract in blocks of their own.
+    let src = ["PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB50 FMAX SEQ-"];
+    assert_eq!(
+        translate(
+            Dialect::Heidenhain,
+            &src,
+            Dialect::Heidenhain,
+            "PLANE SPATIAL"
+        ),
+        src
+    );
+    assert_eq!(
+        translate(Dialect::Heidenhain, &src, Dialect::Sinumerik, "CYCLE800"),
+        ["CYCLE800(5,\"\",0,57,0,0,0,0,30,0,0,0,0,-1,50,0)"]
+    );
+    assert_eq!(
+        translate(Dialect::Heidenhain, &src, Dialect::Fanuc, "G68.2"),
+        ["G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1"]
+    );
+    let src = ["CYCLE800(1,\"TC1\",200000,57,0,0,0,0,30,0,0,0,0,1,1)"];
+    assert_eq!(
+        translate(
+            Dialect::Sinumerik,
+            &src,
+            Dialect::Heidenhain,
+            "PLANE SPATIAL"
+        ),
+        ["PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ+"]
+    );
+    assert_eq!(
+        translate(Dialect::Sinumerik, &src, Dialect::Sinumerik, "CYCLE800"),
+        ["CYCLE800(1,\"\",0,57,0,0,0,0,30,0,0,0,0,1,0,0)"]
+    );
+    // A new retraction for the same plane is the tilt block again.
+    let src = [
+        "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX",
+        "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB20 F1000",
+    ];
+    assert_eq!(
+        translate(
+            Dialect::Heidenhain,
+            &src,
+            Dialect::Heidenhain,
+            "PLANE SPATIAL"
+        ),
+        src
+    );
+}
+
 /// A program translated block by block: what `write_change` writes for the state before and
 /// after each source block.
 fn translate(from: Dialect, lines: &[&str], to: Dialect, form: &str) -> Vec<String> {
@@ -1473,9 +1576,10 @@ fn changes_are_written_with_the_targets_own_blocks() {
     );
     let cycle800 = translate(Dialect::Heidenhain, &hyper, Dialect::Sinumerik, "CYCLE800");
     assert_eq!(cycle800[4], "TRANS X=10 Y=20 Z=-5");
+    // MB MAX: the maximum retraction in the tool direction, _FR 4.
     assert_eq!(
         cycle800[5],
-        "CYCLE800(0,\"\",0,57,10,20,-5,0,30,0,0,0,0,-1,0,0)"
+        "CYCLE800(4,\"\",0,57,10,20,-5,0,30,0,0,0,0,-1,0,0)"
     );
     assert_eq!(cycle800[7], "TRANS X=10 Y=20 Z=-5");
     // The plus direction in SINUMERIK is SEQ+ in Heidenhain, and back.

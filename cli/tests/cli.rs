@@ -1485,7 +1485,7 @@ fn program_to_writes_datum_shifts() {
         [
             "TRANS X=10 Y=0 Z=0",
             "TRANS X=10 Y=20 Z=0",
-            "CYCLE800(0,\"\",0,57,10,20,0,0,30,0,0,0,0,-1,0,0)"
+            "CYCLE800(4,\"\",0,57,10,20,0,0,30,0,0,0,0,-1,0,0)"
         ]
     );
     assert_eq!(lines[7], "TRANS X=10 Y=20 Z=0");

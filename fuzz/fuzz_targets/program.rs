@@ -471,6 +471,30 @@ fn translated(
                 "{form:?} in dialect {dialect}: {text}"
             );
         }
+        // The retraction reads back where the tilt block has words for it (PLANE's MB,
+        // CYCLE800's _FR and _FR_I; a retraction along machine Z is MB MAX in a PLANE), the
+        // feed in a PLANE.
+        let cycle800 = form.to_bytes().starts_with(b"CYCLE800");
+        if (*dialect == 2 || cycle800) && rotated(after) && rotated(state) {
+            let machine_z = [CNCROT_RETRACT_MACHINE_Z, CNCROT_RETRACT_MACHINE_Z_XY];
+            let want = if *dialect == 2 && machine_z.contains(&after.retract) {
+                CNCROT_RETRACT_TOOL_MAX
+            } else {
+                after.retract
+            };
+            assert_eq!(
+                (state.retract, state.retract_mm.to_bits()),
+                (want, after.retract_mm.to_bits()),
+                "{form:?} in dialect {dialect}: {text}"
+            );
+            if *dialect == 2 {
+                assert_eq!(
+                    (state.feed, state.feed_mm_min.to_bits()),
+                    (after.feed, after.feed_mm_min.to_bits()),
+                    "{form:?} in dialect {dialect}: {text}"
+                );
+            }
+        }
         let d = g
             .iter()
             .zip(&f)

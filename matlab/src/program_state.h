@@ -1,12 +1,14 @@
 /* The program state as a MATLAB struct (rotation, origin, angles, shift, active, dialect,
- * options, choice, reference_axis, positioning, direct_given, seal) and back, and the reading of program lines: shared by
+ * options, choice, reference_axis, positioning, direct_given, retract, retract_mm,
+ * feed_mm_min, feed, seal) and back, and the reading of program lines: shared by
  * cncrot_program_lines, cncrot_program_translate and cncrot_program_axes. */
 #ifndef CNCROT_PROGRAM_STATE_H
 #define CNCROT_PROGRAM_STATE_H
 #include "gateway.h"
 
 static const char *FIELDS[] = {"rotation", "origin", "angles", "shift", "active", "dialect",
-                               "options", "choice", "reference_axis", "positioning", "direct_given", "seal"};
+                               "options", "choice", "reference_axis", "positioning", "direct_given",
+                               "retract", "retract_mm", "feed_mm_min", "feed", "seal"};
 
 /* A field of the state struct as n doubles (absent: zeros; wrong size: an error). */
 static void field(const mxArray *s, int arg, const char *name, double *out, size_t n) {
@@ -58,6 +60,12 @@ static void from_struct(const mxArray *s, int arg, cncrot_program *p) {
   p->options = as_u32(v[0]);
   field(s, arg, "direct_given", v, 1);
   p->direct_given = as_u32(v[0]);
+  field(s, arg, "retract", v, 1);
+  p->retract = as_int(v[0]);
+  field(s, arg, "retract_mm", &p->retract_mm, 1);
+  field(s, arg, "feed_mm_min", &p->feed_mm_min, 1);
+  field(s, arg, "feed", v, 1);
+  p->feed = as_int(v[0]);
   if (mxGetField(s, 0, "seal")) {
     field(s, arg, "seal", v, 1);
     p->reserved = as_u32(v[0]);
@@ -71,7 +79,7 @@ static void from_struct(const mxArray *s, int arg, cncrot_program *p) {
 }
 
 static mxArray *to_struct(const cncrot_program *p) {
-  mxArray *s = mxCreateStructMatrix(1, 1, 12, FIELDS);
+  mxArray *s = mxCreateStructMatrix(1, 1, (int)COUNT_OF(FIELDS), FIELDS);
   mxArray *r = mxCreateDoubleMatrix(3, 3, mxREAL);
   to_col_major(p->rotation, mxGetDoubles(r));
   mxSetField(s, 0, "rotation", r);
@@ -90,6 +98,10 @@ static mxArray *to_struct(const cncrot_program *p) {
   mxSetField(s, 0, "dialect", mxCreateDoubleScalar(p->dialect));
   mxSetField(s, 0, "options", mxCreateDoubleScalar(p->options));
   mxSetField(s, 0, "direct_given", mxCreateDoubleScalar(p->direct_given));
+  mxSetField(s, 0, "retract", mxCreateDoubleScalar(p->retract));
+  mxSetField(s, 0, "retract_mm", mxCreateDoubleScalar(p->retract_mm));
+  mxSetField(s, 0, "feed_mm_min", mxCreateDoubleScalar(p->feed_mm_min));
+  mxSetField(s, 0, "feed", mxCreateDoubleScalar(p->feed));
   mxSetField(s, 0, "seal", mxCreateDoubleScalar(p->reserved));
   return s;
 }

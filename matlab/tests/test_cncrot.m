@@ -261,6 +261,12 @@ function test_cncrot(cases_file)
   axg = cncrot_program_axes(stg, hd, [0 -25 0]);
   check(stg.choice == 5 && stg.reference_axis == 0 && abs(axg(2) + 30) < 1e-9 && ...
         isequal(axg, cncrot_machine_choose(hd, Fg, [0 -25 0], 'negative_turn', 2)), 'program_axes under G53.1 P2');
+  % The retraction and feed of the turn: MB50 along the tool axis (2), F2000 (1); CYCLE800's
+  % _FR 4 is the maximum retraction (1).
+  [~, stm] = cncrot_program_lines('heidenhain', 'PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB50 F2000');
+  check(stm.retract == 2 && stm.retract_mm == 50 && stm.feed == 1 && stm.feed_mm_min == 2000, 'retraction and feed kept');
+  [~, stc] = cncrot_program_lines('sinumerik', 'CYCLE800(4,"TC1",0,57,0,0,0,0,30,0,0,0,0,-1)');
+  check(stc.retract == 1 && stc.retract_mm == 0 && stc.feed == 0, 'CYCLE800 _FR 4');
   [ax0, s0] = cncrot_program_axes([], hd, [730 0 0]);
   check(isequal(ax0, [730 0 0]) && s0 == 2, 'program_axes with nothing active');
   % Direct modes: PLANE AXIAL keeps the positions; its frame needs the machine: NaN without

@@ -38,6 +38,14 @@ pub struct Modal {
     pub choice: AxisChoice,
     /// How the program moves the machine to the active tilt (`TURN`, `G53.1`, …).
     pub positioning: Positioning,
+    /// How the tool retracts before the axes turn (`MB`, `_FR`).
+    pub retract: Retract,
+    /// The retraction's length in mm for [`Retract::Tool`], else 0.
+    pub retract_mm: f64,
+    /// How fast the axes turn (`FMAX`, `F`).
+    pub feed: Feed,
+    /// The feed rate in mm/min for [`Feed::Rate`], else 0.
+    pub feed_mm_min: f64,
     /// An active direct mode (`PLANE AXIAL`, `CYCLE800` direct, `G158` mode 2), its
     /// positions in `angles`: the rotation follows from the machine, so `frame` holds only
     /// the origin (its rotation the identity).
@@ -125,6 +133,71 @@ pub enum AxisChoice {
     NegativeTurn(u8),
 }
 
+/// The tilt of `frame` without the datum shift `shift` before it.
+pub(crate) fn tilt_of(frame: &Frame, shift: Vector) -> Frame {
+    let t = frame.translation;
+    Frame {
+        rotation: frame.rotation,
+        translation: [t[0] - shift[0], t[1] - shift[1], t[2] - shift[2]],
+    }
+}
+
+/// How the tool retracts before the rotary axes turn to a plane, as the tilt block says:
+/// Heidenhain's `MB` in a `PLANE`, SINUMERIK's `_FR` (with `_FR_I`) in a `CYCLE800`. The
+/// other dialects retract in blocks of their own (`G53 Z…`, `G28`), not in the tilt.
+///
+/// ```
+/// use cncrot::dialects::program::{Dialect, Program, Retract};
+/// let (p, _) = Program::default()
+///     .line(Dialect::Heidenhain, b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB50 FMAX")
+///     .unwrap();
+/// assert_eq!((p.retract, p.retract_mm), (Retract::Tool, 50.0));
+/// ```
+///
+/// The length of [`Retract::Tool`] is kept beside it (`retract_mm`), as in the C state: a
+/// state is copied often while a block is read (stack bound).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Retract {
+    /// No retraction (no `MB`, `MB0`; `_FR` 0).
+    #[default]
+    None,
+    /// As far as the travel allows along the tool axis (`MB MAX`: "just before the software
+    /// limit switch" \[doc\]; `_FR` 4, "maximum retraction in tool direction" \[choice:
+    /// the dialog's mode, its number from the order of the modes\]).
+    ToolMax,
+    /// A length (`retract_mm`) along the tool axis, incrementally (`MB n` \[doc\]; `_FR` 5
+    /// with `_FR_I` = n, "incremental retraction in tool direction" \[choice, as
+    /// `ToolMax`\]).
+    Tool,
+    /// Along the machine's Z axis (`_FR` 1 \[3rd: CAM posts\]).
+    MachineZ,
+    /// Along the machine's Z axis, then in X and Y (`_FR` 2 \[3rd: CAM posts\]).
+    MachineZThenXy,
+}
+
+/// How fast the rotary axes turn to a plane, as a Heidenhain `PLANE` says it: at rapid
+/// (`FMAX`, and every dialect without a feed word in its tilt), at a feed rate (`F n`,
+/// mm/min), or at the feed programmed before (`F AUTO` \[choice: the manuals' wording not
+/// found\]).
+///
+/// ```
+/// use cncrot::dialects::program::{Dialect, Feed, Program};
+/// let (p, _) = Program::default()
+///     .line(Dialect::Heidenhain, b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN F2000")
+///     .unwrap();
+/// assert_eq!((p.feed, p.feed_mm_min), (Feed::Rate, 2000.0));
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Feed {
+    /// At rapid.
+    #[default]
+    Rapid,
+    /// At a feed rate (`feed_mm_min`).
+    Rate,
+    /// At the feed rate programmed before (`F AUTO`).
+    Auto,
+}
+
 impl Modal {
     /// This state with `tilt` active after the datum shift (TwinCAT's angles cleared: they
     /// belong to `ROT`; the choice and positioning words cleared: a tilt states its own).
@@ -139,6 +212,10 @@ impl Modal {
             angles: [0.0; 3],
             choice: AxisChoice::Closest,
             positioning: Positioning::Stay,
+            retract: Retract::None,
+            retract_mm: 0.0,
+            feed: Feed::Rapid,
+            feed_mm_min: 0.0,
             direct: None,
             ..*self
         }
@@ -167,11 +244,7 @@ impl Modal {
 
     /// The tilt alone: the frame without the datum shift before it.
     pub fn tilt(&self) -> Frame {
-        let (t, s) = (self.frame.translation, self.shift);
-        Frame {
-            rotation: self.frame.rotation,
-            translation: [t[0] - s[0], t[1] - s[1], t[2] - s[2]],
-        }
+        tilt_of(&self.frame, self.shift)
     }
 
     /// This state with the datum shift `shift` instead of the one active (the tilt kept).
@@ -433,12 +506,20 @@ pub(crate) trait Family {
 }
 
 /// What a tilt block's words say beside the plane: the solution and how to move there.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Motion {
     /// The solution of the rotary axes.
     pub choice: AxisChoice,
     /// How the machine moves to the plane.
     pub positioning: Positioning,
+    /// The retraction before the axes turn.
+    pub retract: Retract,
+    /// Its length (mm) for [`Retract::Tool`].
+    pub retract_mm: f64,
+    /// How fast they turn.
+    pub feed: Feed,
+    /// The feed rate (mm/min) for [`Feed::Rate`].
+    pub feed_mm_min: f64,
 }
 
 /// A command of a five-axis program (see [`PathWords`]).

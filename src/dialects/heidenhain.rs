@@ -136,8 +136,8 @@ pub const RESET: Frame = Frame::IDENTITY;
 // Program lines.
 
 use super::family::{
-    no_selector, put, v3, AxisChoice, Block, Direct, DirectAxes, Family, Form, FormInfo, FormSpec,
-    Modal, Motion, Positioning, MAX_VALUES,
+    no_selector, put, v3, AxisChoice, Block, Direct, DirectAxes, Family, Feed, Form, FormInfo,
+    FormSpec, Modal, Motion, Positioning, Retract, MAX_VALUES,
 };
 use crate::text::number::{write_word, Out, Style};
 use crate::text::scan::{Comments, Cursor, Exponent, LineError, Syntax, Token, Tokens};
@@ -191,6 +191,15 @@ fn named_words<const N: usize>(
     }
 }
 
+/// A value refused where it stands, with what it may be.
+fn refused_at(column: usize, expected: &'static str) -> LineError {
+    LineError {
+        error: Error::BadArgument,
+        column,
+        expected: Some(expected),
+    }
+}
+
 /// A word `what` is missing at the cursor if what follows is the line's end or the
 /// positioning options; anything else standing there is a word the command does not have
 /// (`SPX+10`).
@@ -202,14 +211,34 @@ fn not_there(c: &Cursor, what: &'static str) -> LineError {
     }
 }
 
-/// How a `PLANE` moves the machine: `STAY` tilts the plane without moving; `TURN FMAX`,
-/// `MOVE FMAX` turn the rotary axes at rapid, `MOVE` keeping the tool tip.
-fn write_positioning(p: Positioning, out: &mut Out) {
-    out.text(match p {
-        Positioning::Stay => &b" STAY"[..],
-        Positioning::Turn => b" TURN FMAX",
-        Positioning::Move => b" MOVE FMAX",
+/// How a `PLANE` moves the machine: `STAY` tilts the plane without moving; `TURN`, `MOVE`
+/// turn the rotary axes (`MOVE` keeping the tool tip), after the retraction (`MB MAX`,
+/// `MB n`; CYCLE800's retraction along the machine's Z as `MB MAX` \[choice: the nearest
+/// `PLANE` has\]), at rapid (`FMAX`) or a feed (`F n`, `F AUTO`).
+fn write_positioning(how: Motion, decimals: i32, out: &mut Out) -> Result<(), Error> {
+    out.text(match how.positioning {
+        Positioning::Stay => {
+            out.text(b" STAY");
+            return Ok(());
+        }
+        Positioning::Turn => b" TURN",
+        Positioning::Move => b" MOVE",
     });
+    let style = Style {
+        plus: false,
+        point: false,
+    };
+    match how.retract {
+        Retract::None => {}
+        Retract::Tool => write_word(out, b" MB", how.retract_mm, decimals, style)?,
+        Retract::ToolMax | Retract::MachineZ | Retract::MachineZThenXy => out.text(b" MB MAX"),
+    }
+    match how.feed {
+        Feed::Rapid => out.text(b" FMAX"),
+        Feed::Rate => write_word(out, b" F", how.feed_mm_min, decimals, style)?,
+        Feed::Auto => out.text(b" F AUTO"),
+    }
+    Ok(())
 }
 
 /// The rest of a `PLANE AXIAL` block. Not inlined: its state stays out of the reader's
@@ -221,6 +250,10 @@ fn axial(m: &Modal, c: &mut Cursor) -> Result<Block, LineError> {
     // The positions are the solution: `SEQ` has nothing to choose.
     Ok(Block::Frame(Modal {
         positioning: how.positioning,
+        retract: how.retract,
+        retract_mm: how.retract_mm,
+        feed: how.feed,
+        feed_mm_min: how.feed_mm_min,
         ..m.with_direct([0.0; 3], direct, positions)
     }))
 }
@@ -249,7 +282,10 @@ fn axial_words(c: &mut Cursor) -> Result<(Direct, [f64; 3]), LineError> {
 /// the positioning (`STAY` when none is written \[choice: the control asks for one\]) and
 /// the solution `SEQ±` chooses: the master axis at a positive (`+`) or negative angle, as
 /// the higher or lower of the pair \[doc\]; `SYM±`, the master axis on that side of its
-/// symmetry point, the same for a symmetry point at 0 \[choice\].
+/// symmetry point, the same for a symmetry point at 0 \[choice\]. `MB MAX` / `MB n` (n > 0
+/// mm; `MB0` none) and `FMAX` / `F n` (n > 0 mm/min) / `F AUTO` are kept (the program
+/// state drops them with `STAY`, which moves nothing); `DIST n` (the pivot's distance from
+/// the tool tip for `MOVE`) is read and not kept.
 fn options(c: &mut Cursor) -> Result<Motion, LineError> {
     let mut how = Motion::default();
     loop {
@@ -268,6 +304,7 @@ fn options(c: &mut Cursor) -> Result<Motion, LineError> {
             continue;
         }
         if c.keyword(b"FMAX") {
+            (how.feed, how.feed_mm_min) = (Feed::Rapid, 0.0);
             continue;
         }
         if c.keyword(b"TABLE") || c.keyword(b"COORD") {
@@ -286,11 +323,36 @@ fn options(c: &mut Cursor) -> Result<Motion, LineError> {
             c.bump();
             continue;
         }
-        if c.word(b"MB") || c.word(b"F") || c.word(b"DIST") {
+        if c.word(b"MB") {
             c.spaces();
-            if c.keyword(b"MAX") || c.keyword(b"AUTO") {
+            if c.keyword(b"MAX") {
+                (how.retract, how.retract_mm) = (Retract::ToolMax, 0.0);
                 continue;
             }
+            let (column, mb) = (c.column(), c.number(SYNTAX)?);
+            (how.retract, how.retract_mm) = match mb {
+                0.0 => (Retract::None, 0.0),
+                d if d > 0.0 => (Retract::Tool, d),
+                _ => return Err(refused_at(column, "MB: MAX or a length >= 0")),
+            };
+            continue;
+        }
+        if c.word(b"F") {
+            c.spaces();
+            if c.keyword(b"AUTO") {
+                (how.feed, how.feed_mm_min) = (Feed::Auto, 0.0);
+                continue;
+            }
+            let (column, f) = (c.column(), c.number(SYNTAX)?);
+            // Written so that NaN refuses.
+            (how.feed, how.feed_mm_min) = match f {
+                f if f > 0.0 => (Feed::Rate, f),
+                _ => return Err(refused_at(column, "F: AUTO or a feed rate > 0")),
+            };
+            continue;
+        }
+        if c.word(b"DIST") {
+            c.spaces();
             c.number(SYNTAX)?;
             continue;
         }
@@ -574,6 +636,10 @@ impl Family for Heidenhain {
         Ok(Block::Frame(Modal {
             choice: how.choice,
             positioning,
+            retract: how.retract,
+            retract_mm: how.retract_mm,
+            feed: how.feed,
+            feed_mm_min: how.feed_mm_min,
             ..m.with_frame(frame)
         }))
     }
@@ -645,7 +711,7 @@ impl Family for Heidenhain {
         for (name, &v) in names.iter().zip(words) {
             write_word(out, name, v, decimals, style)?;
         }
-        write_positioning(how.positioning, out);
+        write_positioning(how, decimals, out)?;
         // `SEQ±` names the master axis' sign; another axis cannot be named on the block. A
         // direction of travel (`G53.1 P1`) has no word here: not written, as `SEQ` is not
         // on a `G68.2` [choice].
@@ -685,7 +751,7 @@ impl Family for Heidenhain {
                 write_word(out, *name, v, decimals, style)?;
             }
         }
-        write_positioning(how.positioning, out);
+        write_positioning(how, decimals, out)?;
         Ok(())
     }
 

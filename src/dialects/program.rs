@@ -9,7 +9,7 @@
 //! this module holds what is the same for all: the state, line ends and lengths, the checks
 //! of a restored state and of a written line.
 
-pub use super::family::{AxisChoice, Direct, DirectAxes, Positioning};
+pub use super::family::{AxisChoice, Direct, DirectAxes, Feed, Positioning, Retract};
 use super::family::{Block, FormSpec, Modal, Motion, MAX_VALUES};
 use super::form;
 pub use super::registry::Dialect;
@@ -55,6 +55,15 @@ pub struct Program {
     /// How the program moves the machine to the active tilt (`STAY`, `TURN`, `MOVE`,
     /// `G53.1`, `G53.6`, `G253`; a `CYCLE800` swivels); stay when no tilt is active.
     pub positioning: Positioning,
+    /// How the tool retracts before the rotary axes turn (`MB`, `_FR`); none while the
+    /// positioning is stay.
+    pub retract: Retract,
+    /// The retraction's length in mm for [`Retract::Tool`] (positive), else 0.
+    pub retract_mm: f64,
+    /// How fast the rotary axes turn (`FMAX`, `F`); rapid while the positioning is stay.
+    pub feed: Feed,
+    /// The feed rate in mm/min for [`Feed::Rate`] (positive), else 0.
+    pub feed_mm_min: f64,
     /// An active direct mode (`PLANE AXIAL`, `CYCLE800` direct, `G158` mode 2), its
     /// rotary-axis positions in `angles`. Its rotation follows from the machine: `frame`
     /// then holds the origin with the identity rotation, and [`Program::frame_on`] gives
@@ -100,6 +109,12 @@ impl Program {
             Block::Passed => return Ok((*self, Remark::Passed)),
             Block::NotFollowed => return Ok((*self, Remark::NotFollowed)),
         };
+        let positioning = if next.frame == Frame::IDENTITY && next.direct.is_none() {
+            Positioning::Stay
+        } else {
+            next.positioning
+        };
+        let stay = positioning == Positioning::Stay;
         let h = next.frame.to_homogeneous();
         if !h.iter().flatten().all(|x| x.is_finite()) {
             return Err(LineError {
@@ -116,12 +131,13 @@ impl Program {
                 euler: next.euler,
                 shift: next.shift,
                 choice: next.choice,
-                // Nothing active: nothing to move to (a `G53.1` without a tilt).
-                positioning: if next.frame == Frame::IDENTITY && next.direct.is_none() {
-                    Positioning::Stay
-                } else {
-                    next.positioning
-                },
+                // Nothing active: nothing to move to (a `G53.1` without a tilt); staying:
+                // no retraction, no feed.
+                positioning,
+                retract: if stay { Retract::None } else { next.retract },
+                retract_mm: if stay { 0.0 } else { next.retract_mm },
+                feed: if stay { Feed::Rapid } else { next.feed },
+                feed_mm_min: if stay { 0.0 } else { next.feed_mm_min },
                 direct: next.direct,
             },
             Remark::Applied,
@@ -184,6 +200,10 @@ impl Program {
             shift: self.shift,
             choice: self.choice,
             positioning: self.positioning,
+            retract: self.retract,
+            retract_mm: self.retract_mm,
+            feed: self.feed,
+            feed_mm_min: self.feed_mm_min,
             direct: self.direct,
         }
     }
@@ -269,12 +289,33 @@ impl Program {
                 Some(d) => d.consistent(&self.modal()),
                 None => self.angles == [0.0; 3],
             }
-            && (self.is_active() || self.positioning == Positioning::Stay);
+            && (self.is_active() || self.positioning == Positioning::Stay)
+            && self.motion_consistent();
         if consistent {
             Ok(())
         } else {
             Err(Error::BadArgument)
         }
+    }
+}
+
+impl Program {
+    /// Retraction and feed as a reader leaves them: none while staying, a retraction
+    /// distance and a feed rate positive and finite.
+    fn motion_consistent(&self) -> bool {
+        let stay = self.positioning == Positioning::Stay;
+        let (d, f) = (self.retract_mm, self.feed_mm_min);
+        let retract = match self.retract {
+            Retract::None => d == 0.0,
+            Retract::Tool => !stay && d > 0.0 && d.is_finite(),
+            _ => !stay && d == 0.0,
+        };
+        let feed = match self.feed {
+            Feed::Rapid => f == 0.0,
+            Feed::Rate => !stay && f > 0.0 && f.is_finite(),
+            Feed::Auto => !stay && f == 0.0,
+        };
+        retract && feed
     }
 }
 
@@ -466,7 +507,8 @@ fn split(dialect: Dialect, spec: &FormSpec, p: &Program) -> (Vector, Frame) {
         // The whole origin is a datum shift: a form without origin words tilts about it.
         (f.translation, rotation_only)
     } else if dialect.keeps_shift() {
-        (p.shift, p.modal().tilt())
+        // Not through `modal()`: a whole state in this frame for three numbers (stack bound).
+        (p.shift, super::family::tilt_of(&f, p.shift))
     } else {
         // One frame holds everything: the tilt block writes it whole.
         ([0.0; 3], f)
@@ -527,9 +569,23 @@ pub fn write_change(
     decimals: i32,
     buf: &mut [u8],
 ) -> Result<(usize, bool), Error> {
+    let spec = dialect.parse_form(form_text)?;
+    write_change_with(dialect, &spec, before, after, decimals, buf)
+}
+
+/// [`write_change`] with the form already read (the C boundary reads the caller's form
+/// name before it touches the output, which may be the same memory).
+pub(crate) fn write_change_with(
+    dialect: Dialect,
+    spec: &FormSpec,
+    before: &Program,
+    after: &Program,
+    decimals: i32,
+    buf: &mut [u8],
+) -> Result<(usize, bool), Error> {
     let room = buf.len();
     let mut out = Out::new(buf);
-    let singular = change(dialect, form_text, before, after, decimals, &mut out)?;
+    let singular = change(dialect, spec, before, after, decimals, &mut out)?;
     let len = match out.finish() {
         Some(len) => len,
         None if room >= MAX_CHANGE => return Err(Error::OutOfRange),
@@ -564,8 +620,20 @@ pub fn change_length(
     after: &Program,
     decimals: i32,
 ) -> Result<(usize, bool), Error> {
+    let spec = dialect.parse_form(form_text)?;
+    change_length_with(dialect, &spec, before, after, decimals)
+}
+
+/// [`change_length`] with the form already read.
+pub(crate) fn change_length_with(
+    dialect: Dialect,
+    spec: &FormSpec,
+    before: &Program,
+    after: &Program,
+    decimals: i32,
+) -> Result<(usize, bool), Error> {
     let mut out = Out::counter();
-    let singular = change(dialect, form_text, before, after, decimals, &mut out)?;
+    let singular = change(dialect, spec, before, after, decimals, &mut out)?;
     let len = out.finish().unwrap_or(usize::MAX);
     if len > MAX_CHANGE || out.longest_line() > dialect.max_line() {
         return Err(Error::OutOfRange);
@@ -578,20 +646,19 @@ pub fn change_length(
 #[inline(never)]
 fn change(
     dialect: Dialect,
-    form_text: &[u8],
+    spec: &FormSpec,
     before: &Program,
     after: &Program,
     decimals: i32,
     out: &mut Out,
 ) -> Result<bool, Error> {
-    let spec = dialect.parse_form(form_text)?;
     if decimals > crate::text::number::MAX_DECIMALS {
         return Err(Error::BadArgument);
     }
     before.check()?;
     after.check()?;
-    let (s0, mut t0) = split(dialect, &spec, before);
-    let (s1, t1) = split(dialect, &spec, after);
+    let (s0, mut t0) = split(dialect, spec, before);
+    let (s1, t1) = split(dialect, spec, after);
     let mut blocks = 0;
     let mut next = |out: &mut Out| {
         if blocks > 0 {
@@ -604,6 +671,10 @@ fn change(
     let how = Motion {
         choice: after.choice,
         positioning: after.positioning,
+        retract: after.retract,
+        retract_mm: after.retract_mm,
+        feed: after.feed,
+        feed_mm_min: after.feed_mm_min,
     };
     // A direct mode's tilt is its positions (its rotation only the machine knows).
     let (mut d0, d1) = (
@@ -611,7 +682,10 @@ fn change(
         after.direct.map(|d| (d, after.angles)),
     );
     let active = t1 != Frame::IDENTITY || d1.is_some();
-    let words_changed = before.choice != after.choice;
+    let words_changed = before.choice != after.choice
+        || (before.retract, before.retract_mm.to_bits())
+            != (after.retract, after.retract_mm.to_bits())
+        || (before.feed, before.feed_mm_min.to_bits()) != (after.feed, after.feed_mm_min.to_bits());
     let moved = before.positioning != after.positioning;
     // Where the tilt block says how to move, a new way of moving is a new tilt block; where a
     // block of its own moves the machine (`G53.1`), no block takes that back: a tilt that
@@ -619,10 +693,10 @@ fn change(
     let unsaid = after.positioning == Positioning::Stay
         && dialect
             .positioning_block(
-                &spec,
+                spec,
                 Motion {
-                    choice: AxisChoice::Closest,
                     positioning: Positioning::Turn,
+                    ..Motion::default()
                 },
             )
             .is_some();
@@ -631,15 +705,15 @@ fn change(
     let mut tilt_written = false;
     let tilt = |out: &mut Out| match d1 {
         Some(d) => dialect
-            .write_direct(&spec, t1.translation, d, how, decimals, out)
+            .write_direct(spec, t1.translation, d, how, decimals, out)
             .map(|()| false),
-        None => tilt_block(dialect, &spec, &t1, how, decimals, out),
+        None => tilt_block(dialect, spec, &t1, how, decimals, out),
     };
     if dialect.keeps_shift() {
         if s0 != s1 {
             if t0 != Frame::IDENTITY || d0.is_some() {
                 next(out);
-                tilt_block(dialect, &spec, &Frame::IDENTITY, stay, decimals, out)?;
+                tilt_block(dialect, spec, &Frame::IDENTITY, stay, decimals, out)?;
                 (t0, d0) = (Frame::IDENTITY, None);
             }
             next(out);
@@ -658,7 +732,7 @@ fn change(
             match dialect.write_shift(s1, decimals, out) {
                 Err(Error::NotAvailable) => {
                     let f = Frame::with_translations(s1, crate::IDENTITY, [0.0; 3]);
-                    tilt_block(dialect, &spec, &f, how, decimals, out)?;
+                    tilt_block(dialect, spec, &f, how, decimals, out)?;
                 }
                 r => r?,
             }
@@ -670,7 +744,7 @@ fn change(
     // Where a block of its own moves the machine (`G53.1`): after a new tilt, or alone (a
     // direct mode's block moves the axes itself).
     if active && d1.is_none() && (tilt_written || moved) {
-        if let Some(text) = dialect.positioning_block(&spec, how) {
+        if let Some(text) = dialect.positioning_block(spec, how) {
             next(out);
             out.text(text);
         }

@@ -8,7 +8,7 @@ use super::machine::{
 };
 use super::{cncrot_status, guard, non_null, read_finite, write};
 use crate::dialects::program::{
-    self, AxisChoice, Dialect, Direct, DirectAxes, Positioning, Program, Remark,
+    self, AxisChoice, Dialect, Direct, DirectAxes, Feed, Positioning, Program, Remark, Retract,
 };
 use crate::{crc32, Error, Frame};
 use core::ffi::c_char;
@@ -63,10 +63,11 @@ const FORM_MAX: usize = 64;
 /// hand, a bit flipped in storage, a state of another version — is refused with
 /// `CNCROT_STATUS_BAD_STATE`.
 ///
-/// Layout (176 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
+/// Layout (200 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
 /// `angles` 96, `shift` 120, `active` 144, `dialect` 148, `options` 152, `choice` 156,
-/// `reference_axis` 160, `positioning` 164, `direct_given` 168, `reserved` 172. Accepted on entry:
-/// all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..172
+/// `reference_axis` 160, `positioning` 164, `direct_given` 168, `retract` 172,
+/// `retract_mm` 176, `feed_mm_min` 184, `feed` 192, `reserved` 196. Accepted on entry: all
+/// zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..196
 /// exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -111,6 +112,19 @@ pub struct cncrot_program {
     /// Which rotary-axis positions an active direct mode gave: bit k for `angles[k]`
     /// (1..7 while `active` is 2 or 3; 0 otherwise).
     pub direct_given: u32,
+    /// How the tool retracts before the rotary axes turn, as the tilt block says
+    /// (`CNCROT_RETRACT_*`: Heidenhain `MB`, CYCLE800 `_FR`); `CNCROT_RETRACT_NONE` while
+    /// `positioning` is stay.
+    pub retract: i32,
+    /// The retraction along the tool axis in mm for `CNCROT_RETRACT_TOOL` (`MB n`,
+    /// `_FR_I`), positive; 0 otherwise.
+    pub retract_mm: f64,
+    /// The feed rate in mm/min for `CNCROT_FEED_RATE` (`F n`), positive; 0 otherwise.
+    pub feed_mm_min: f64,
+    /// How fast the rotary axes turn (`CNCROT_FEED_*`: Heidenhain `FMAX`, `F n`,
+    /// `F AUTO`); `CNCROT_FEED_RAPID` while `positioning` is stay and in every dialect
+    /// without a feed word in its tilt.
+    pub feed: i32,
     /// The seal: 0 in the all-zero initial state, else the checksum described above (the
     /// field keeps the name it had when it was reserved, so that the layout is unchanged).
     pub reserved: u32,
@@ -118,7 +132,7 @@ pub struct cncrot_program {
 
 /// Mixed into the seal of every `cncrot_program` this version writes: a state of a version
 /// with another meaning of the same bytes gets another constant, and is refused.
-pub const CNCROT_PROGRAM_FORMAT: u32 = 0x5052_4733;
+pub const CNCROT_PROGRAM_FORMAT: u32 = 0x5052_4734;
 
 /// `cncrot_program.positioning`: the tilt command moves no axis (`STAY`, `G68.2` alone).
 pub const CNCROT_POSITIONING_STAY: i32 = 0;
@@ -129,11 +143,31 @@ pub const CNCROT_POSITIONING_TURN: i32 = 1;
 /// `G53.6`).
 pub const CNCROT_POSITIONING_MOVE: i32 = 2;
 
+/// `cncrot_program.retract`: no retraction (no `MB`; `_FR` 0).
+pub const CNCROT_RETRACT_NONE: i32 = 0;
+/// `cncrot_program.retract`: as far as the travel allows along the tool axis (`MB MAX`;
+/// `_FR` 4).
+pub const CNCROT_RETRACT_TOOL_MAX: i32 = 1;
+/// `cncrot_program.retract`: `retract_mm` along the tool axis (`MB n`; `_FR` 5 with
+/// `_FR_I`).
+pub const CNCROT_RETRACT_TOOL: i32 = 2;
+/// `cncrot_program.retract`: along the machine's Z axis (`_FR` 1).
+pub const CNCROT_RETRACT_MACHINE_Z: i32 = 3;
+/// `cncrot_program.retract`: along the machine's Z axis, then in X and Y (`_FR` 2).
+pub const CNCROT_RETRACT_MACHINE_Z_XY: i32 = 4;
+
+/// `cncrot_program.feed`: the rotary axes turn at rapid (`FMAX`).
+pub const CNCROT_FEED_RAPID: i32 = 0;
+/// `cncrot_program.feed`: at `feed_mm_min` (`F n`).
+pub const CNCROT_FEED_RATE: i32 = 1;
+/// `cncrot_program.feed`: at the feed rate programmed before (`F AUTO`).
+pub const CNCROT_FEED_AUTO: i32 = 2;
+
 const PROGRAM_SIZE: usize = core::mem::size_of::<cncrot_program>();
 /// The bytes the seal covers: everything before it.
 const SEALED: usize = core::mem::offset_of!(cncrot_program, reserved);
 // No padding (every byte is a field's, so every byte is covered), and the documented layout.
-const _: () = assert!(SEALED == 172 && PROGRAM_SIZE == 176);
+const _: () = assert!(SEALED == 196 && PROGRAM_SIZE == 200);
 
 fn program_bytes(c: &cncrot_program) -> &[u8; PROGRAM_SIZE] {
     // SAFETY: a plain repr(C) struct of integers and doubles without padding (asserted
@@ -199,7 +233,26 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
         CNCROT_POSITIONING_MOVE if c.active != 0 => Positioning::Move,
         _ => return Err(Error::BadState),
     };
+    // The lengths are checked with the rest (`Program::check`).
+    let retract = match c.retract {
+        CNCROT_RETRACT_NONE => Retract::None,
+        CNCROT_RETRACT_TOOL_MAX => Retract::ToolMax,
+        CNCROT_RETRACT_TOOL => Retract::Tool,
+        CNCROT_RETRACT_MACHINE_Z => Retract::MachineZ,
+        CNCROT_RETRACT_MACHINE_Z_XY => Retract::MachineZThenXy,
+        _ => return Err(Error::BadState),
+    };
+    let feed = match c.feed {
+        CNCROT_FEED_RAPID => Feed::Rapid,
+        CNCROT_FEED_RATE => Feed::Rate,
+        CNCROT_FEED_AUTO => Feed::Auto,
+        _ => return Err(Error::BadState),
+    };
     let p = Program {
+        retract,
+        retract_mm: c.retract_mm,
+        feed,
+        feed_mm_min: c.feed_mm_min,
         frame,
         angles: c.angles,
         direct,
@@ -256,6 +309,18 @@ fn store(p: &Program, options: u32) -> cncrot_program {
         Positioning::Turn => CNCROT_POSITIONING_TURN,
         Positioning::Move => CNCROT_POSITIONING_MOVE,
     };
+    let retract = match p.retract {
+        Retract::None => CNCROT_RETRACT_NONE,
+        Retract::ToolMax => CNCROT_RETRACT_TOOL_MAX,
+        Retract::Tool => CNCROT_RETRACT_TOOL,
+        Retract::MachineZ => CNCROT_RETRACT_MACHINE_Z,
+        Retract::MachineZThenXy => CNCROT_RETRACT_MACHINE_Z_XY,
+    };
+    let feed = match p.feed {
+        Feed::Rapid => CNCROT_FEED_RAPID,
+        Feed::Rate => CNCROT_FEED_RATE,
+        Feed::Auto => CNCROT_FEED_AUTO,
+    };
     let mut c = cncrot_program {
         rotation,
         origin,
@@ -268,6 +333,10 @@ fn store(p: &Program, options: u32) -> cncrot_program {
         reference_axis,
         positioning,
         direct_given: p.direct.map_or(0, |d| u32::from(d.given)),
+        retract,
+        retract_mm: p.retract_mm + 0.0,
+        feed_mm_min: p.feed_mm_min + 0.0,
+        feed,
         reserved: 0,
     };
     c.reserved = seal_of(&c);
@@ -337,7 +406,7 @@ unsafe fn read(
         Remark::Applied => {
             // Written here, once: a state carried out in the result took stack.
             if write {
-                program.write_unaligned(store(&next, c.options));
+                write_state(program, &next, c.options);
             }
             cncrot_status::Ok
         }
@@ -345,6 +414,16 @@ unsafe fn read(
         Remark::Passed => cncrot_status::Passed,
         Remark::NotFollowed => cncrot_status::NotFollowed,
     })
+}
+
+/// Writes `p` sealed to `program`. Not inlined: the 200-byte state it builds is not in the
+/// reader's frame, under the block's reader (stack bound).
+///
+/// # Safety
+/// `program` points to a writable `cncrot_program` (any alignment).
+#[inline(never)]
+unsafe fn write_state(program: *mut cncrot_program, p: &Program, options: u32) {
+    program.write_unaligned(store(p, options));
 }
 
 /// Applies one block of a part program (`len` bytes, no NUL needed; a trailing line end is
@@ -715,6 +794,23 @@ unsafe fn read_form(
     name.get(..n).ok_or(cncrot_status::BadArgument)
 }
 
+/// The caller's NUL-terminated form name in place (at most `FORM_MAX` bytes are read): for
+/// a call that reads it whole before it writes anything.
+///
+/// # Safety
+/// `form` is NUL-terminated or has at least `FORM_MAX` readable bytes, and nothing writes
+/// to them while the result is used.
+unsafe fn form_of<'a>(form: *const c_char) -> Result<&'a [u8], cncrot_status> {
+    let mut n = 0;
+    while form.add(n).cast::<u8>().read() != 0 {
+        n += 1;
+        if n == FORM_MAX {
+            return Err(cncrot_status::BadArgument);
+        }
+    }
+    Ok(core::slice::from_raw_parts(form.cast::<u8>(), n))
+}
+
 /// `text` and a NUL into `out`, or `NO_ROOM` with `out` untouched.
 ///
 /// # Safety
@@ -802,17 +898,17 @@ pub unsafe extern "C" fn cncrot_program_write_change(
         let p0 = load_at(before)?;
         let p1 = load_at(after)?;
         let d = Dialect::from_code(dialect)?;
-        let mut name = [0u8; FORM_MAX];
-        let name = read_form(form, &mut name)?;
+        // The form is read whole before `out` is touched (they may be the same memory).
+        let spec = d.parse_form(form_of(form)?)?;
         // Measured first, then written straight into `out` (no text buffer on the stack):
         // a refusal leaves it untouched.
-        let (len, singular) = program::change_length(d, name, &p0, &p1, decimals)?;
+        let (len, singular) = program::change_length_with(d, &spec, &p0, &p1, decimals)?;
         if cap <= len {
             return Err(cncrot_status::NoRoom);
         }
         let dst = core::slice::from_raw_parts_mut(out.cast::<u8>(), len + 1);
         let (body, nul) = dst.split_at_mut(len);
-        let (written, again) = program::write_change(d, name, &p0, &p1, decimals, body)?;
+        let (written, again) = program::write_change_with(d, &spec, &p0, &p1, decimals, body)?;
         if (written, again) != (len, singular) {
             return Err(cncrot_status::Internal);
         }
@@ -897,7 +993,7 @@ mod tests {
         assert_eq!(load(&hand), Err(Error::BadState));
     }
 
-    /// The seal is what the header documents: the CRC-32 of bytes 0..172 exclusive-or
+    /// The seal is what the header documents: the CRC-32 of bytes 0..196 exclusive-or
     /// `CNCROT_PROGRAM_FORMAT`; a state sealed without the format (another version's) is
     /// refused.
     #[test]
@@ -908,9 +1004,9 @@ mod tests {
             .0;
         let c = store(&p, 0);
         let bytes = program_bytes(&c);
-        assert_eq!(c.reserved, crc32(&bytes[..172]) ^ 0x5052_4733);
+        assert_eq!(c.reserved, crc32(&bytes[..196]) ^ 0x5052_4734);
         let mut other = c;
-        other.reserved = crc32(&bytes[..172]);
+        other.reserved = crc32(&bytes[..196]);
         assert_eq!(load(&other), Err(Error::BadState));
     }
 

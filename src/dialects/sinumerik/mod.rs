@@ -372,7 +372,7 @@ pub fn orirpy_angles(v: Vector) -> Result<([f64; 3], bool), Error> {
 
 use super::family::{
     put, v3, AxisChoice, Block, Direct, DirectAxes, Family, Form, FormInfo, FormSpec, Modal,
-    Motion, Positioning, MAX_VALUES,
+    Motion, Positioning, Retract, MAX_VALUES,
 };
 use crate::text::number::{write, write_integer, write_word, Out, Style};
 use crate::text::scan::{
@@ -497,6 +497,66 @@ fn at(column: usize) -> impl Fn(Error) -> LineError {
     }
 }
 
+/// `_FR` and `_FR_I` for a retraction (see `cycle800_retract`).
+fn retract_words(how: &Motion) -> (i32, f64) {
+    match how.retract {
+        Retract::None => (0, 0.0),
+        Retract::MachineZ => (1, 0.0),
+        Retract::MachineZThenXy => (2, 0.0),
+        Retract::ToolMax => (4, 0.0),
+        Retract::Tool => (5, how.retract_mm),
+    }
+}
+
+/// A frame command's words after its name (`ROT`, `AROT`, `ROTS`, `TRANS`, …: `kind` R, S or
+/// T), the frame it leaves. Not inlined: a `CYCLE800`, the deepest block, does not carry
+/// this command's temporaries in the reader's frame (stack bound).
+#[inline(never)]
+fn frame_command(
+    m: &Modal,
+    c: &mut Cursor,
+    column: usize,
+    additive: bool,
+    kind: u8,
+) -> Result<Block, LineError> {
+    let words = address_words(c, *b"XYZ", WORDS, true, (true, false))?;
+    let (xyz, given) = (words.values, words.given);
+    let count = given.iter().filter(|&&g| g).count();
+    if count == 0 {
+        return if additive {
+            Err(c.missing("X, Y or Z"))
+        } else {
+            Ok(Block::Frame(m.with_frame(Frame::IDENTITY)))
+        };
+    }
+    let step = match kind {
+        b'R' => {
+            let mode = if m.euler {
+                AngleMode::Euler
+            } else {
+                AngleMode::Rpy
+            };
+            Frame::from_rotation(rot(mode, xyz))
+        }
+        b'S' => {
+            let [x, y, z] = xyz;
+            let (plane, a, b) = match given {
+                [true, true, true] => return Err(at(column)(Error::UnknownWord)),
+                [_, true, true] => (RotsPlane::YZ, y, z),
+                [true, false, true] => (RotsPlane::ZX, z, x),
+                _ => (RotsPlane::XY, x, y),
+            };
+            Frame::from_rotation(rots(plane, a, b))
+        }
+        _ => Frame::with_translations(xyz, crate::IDENTITY, [0.0; 3]),
+    };
+    Ok(Block::Frame(m.with_frame(if additive {
+        m.tilt_base().map_err(at(column))?.compose(&step)
+    } else {
+        step
+    })))
+}
+
 /// A refused value at `column`, with what the parameter may be.
 fn refused(column: usize, allowed: &'static str) -> impl Fn(Error) -> LineError {
     move |error| LineError {
@@ -522,7 +582,7 @@ fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
     if args.n < 4 {
         return Err(c.missing("CYCLE800's parameters up to _MODE (4)"));
     }
-    args.int(0)?;
+    let (retract, retract_mm) = cycle800_retract(&args)?;
     let tc = args.name(1)?;
     let st = args.int(2)?;
     let mode = args.int(3)?;
@@ -565,7 +625,36 @@ fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
     Ok(Modal {
         choice,
         positioning: Positioning::Turn,
+        retract,
+        retract_mm,
         ..m.with_frame(cycle800_apply(&base, st % 10 == 1, &call))
+    })
+}
+
+/// `CYCLE800`'s retraction before it swivels, `_FR` (with `_FR_I`): 0 none, 1 along the
+/// machine's Z, 2 along Z then X, Y \[3rd: CAM posts name these three\]; 4 as far as the
+/// travel allows in the tool direction, 5 by `_FR_I` mm in the tool direction \[choice: the
+/// cycle's dialog has these two modes after the first three, their numbers are in no public
+/// text; `_FR_I` is read only for 5, where posts that write `_DMODE` in its place leave
+/// it\]. Another `_FR` (3, 6, …) is read as no retraction \[choice: the plane is read, the
+/// retraction is not guessed\]; a negative one or `_FR_I`, refused.
+fn cycle800_retract(args: &Args<16>) -> Result<(Retract, f64), LineError> {
+    let fr = args.int(0)?;
+    let allowed = "_FR: 0 (none), 1 (Z), 2 (Z, then X Y), 4 (maximum), 5 (by _FR_I)";
+    Ok(match fr {
+        1 => (Retract::MachineZ, 0.0),
+        2 => (Retract::MachineZThenXy, 0.0),
+        4 => (Retract::ToolMax, 0.0),
+        5 => match args.real(14)? {
+            0.0 => (Retract::None, 0.0),
+            d if d > 0.0 => (Retract::Tool, d),
+            _ => {
+                let allowed = "_FR_I: a length >= 0";
+                return Err(refused(args.column(14), allowed)(Error::BadArgument));
+            }
+        },
+        f if f < 0 => return Err(refused(args.column(0), allowed)(Error::BadArgument)),
+        _ => (Retract::None, 0.0),
     })
 }
 
@@ -594,8 +683,11 @@ fn cycle800_direct(
         by: DirectAxes::Numbered,
         given: 0b011,
     };
+    let (retract, retract_mm) = cycle800_retract(args)?;
     Ok(Modal {
         positioning: Positioning::Turn,
+        retract,
+        retract_mm,
         ..m.with_direct(v3(w, 0), direct, [w[3], w[4], 0.0])
     })
 }
@@ -846,42 +938,7 @@ impl Family for Sinumerik {
         else {
             return other_block(text.get(column - 1..).unwrap_or(&[]), column - 1);
         };
-        let words = address_words(&mut c, *b"XYZ", WORDS, true, (true, false))?;
-        let (xyz, given) = (words.values, words.given);
-        let count = given.iter().filter(|&&g| g).count();
-        if count == 0 {
-            return if additive {
-                Err(c.missing("X, Y or Z"))
-            } else {
-                Ok(Block::Frame(m.with_frame(Frame::IDENTITY)))
-            };
-        }
-        let step = match kind {
-            b'R' => {
-                let mode = if m.euler {
-                    AngleMode::Euler
-                } else {
-                    AngleMode::Rpy
-                };
-                Frame::from_rotation(rot(mode, xyz))
-            }
-            b'S' => {
-                let [x, y, z] = xyz;
-                let (plane, a, b) = match given {
-                    [true, true, true] => return Err(at(column)(Error::UnknownWord)),
-                    [_, true, true] => (RotsPlane::YZ, y, z),
-                    [true, false, true] => (RotsPlane::ZX, z, x),
-                    _ => (RotsPlane::XY, x, y),
-                };
-                Frame::from_rotation(rots(plane, a, b))
-            }
-            _ => Frame::with_translations(xyz, crate::IDENTITY, [0.0; 3]),
-        };
-        Ok(Block::Frame(m.with_frame(if additive {
-            m.tilt_base().map_err(at(column))?.compose(&step)
-        } else {
-            step
-        })))
+        frame_command(m, &mut c, column, additive, kind)
     }
 
     /// `CYCLE800` (`_MODE` 57), `CYCLE800 <_MODE>`, `ROT` (RPY), `ROT EULER`.
@@ -937,7 +994,10 @@ impl Family for Sinumerik {
         };
         match spec.form {
             Form::Cycle800 => {
-                out.text(b"CYCLE800(0,\"\",0,");
+                let (fr, fr_i) = retract_words(&how);
+                out.text(b"CYCLE800(");
+                write_integer(out, fr);
+                out.text(b",\"\",0,");
                 write_integer(out, spec.selector);
                 for &v in words {
                     out.byte(b',');
@@ -950,10 +1010,12 @@ impl Family for Sinumerik {
                     AxisChoice::Closest
                     | AxisChoice::Minus(0)
                     | AxisChoice::PositiveTurn(0)
-                    | AxisChoice::NegativeTurn(0) => b",-1,0,0)",
-                    AxisChoice::Plus(0) => b",1,0,0)",
+                    | AxisChoice::NegativeTurn(0) => b",-1,",
+                    AxisChoice::Plus(0) => b",1,",
                     _ => return Err(Error::NotAvailable),
                 });
+                write(out, fr_i, decimals, style)?;
+                out.text(b",0)");
             }
             Form::SinumerikRot => {
                 out.text(b"ROT");
@@ -974,7 +1036,7 @@ impl Family for Sinumerik {
         _: &FormSpec,
         origin: Vector,
         (direct, positions): (Direct, [f64; 3]),
-        _: Motion,
+        how: Motion,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {
@@ -985,14 +1047,19 @@ impl Family for Sinumerik {
             plus: false,
             point: false,
         };
-        out.text(b"CYCLE800(0,\"\",0,192");
+        let (fr, fr_i) = retract_words(&how);
+        out.text(b"CYCLE800(");
+        write_integer(out, fr);
+        out.text(b",\"\",0,192");
         let [a, b, _] = positions;
         for v in [origin[0], origin[1], origin[2], a, b, 0.0, 0.0, 0.0, 0.0] {
             out.byte(b',');
             write(out, v, decimals, style)?;
         }
         // `_DIR` names no choice: the positions are the solution.
-        out.text(b",0,0,0)");
+        out.text(b",0,");
+        write(out, fr_i, decimals, style)?;
+        out.text(b",0)");
         Ok(())
     }
 
