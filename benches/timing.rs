@@ -826,6 +826,10 @@ $TC_CARR34[1]=\"HEAD_CB\"
             b.time("cncrot_tool_path_axes", class, &[()], &mut |_| unsafe {
                 cncrot_tool_path_axes(&point, m, 120.0, prev6.as_ptr(), 0, 0, out6.as_mut_ptr())
             });
+            let mut pose16 = [0.0; 16];
+            b.time("cncrot_cl_pose", class, &pos, &mut |p| unsafe {
+                cncrot_cl_pose([1.0, 2.0, 3.0].as_ptr(), p.as_ptr(), pose16.as_mut_ptr())
+            });
             let mut copy = edited;
             b.time("cncrot_machine_seal", class, &[()], &mut |_| unsafe {
                 copy.reserved ^= 1;

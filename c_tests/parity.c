@@ -240,6 +240,17 @@ int main(void) {
           printf("KT %d", k), hexes(six, 6), hexes(&len, 1), hexes(pose, 16), hexes(prev6, 6), hexes(back, 6);
           printf(" %d\n", t);
         }
+        /* The same point as a CL row (its direction scaled): the library's pose of it, and
+         * the axes for it, as MATLAB's CL rows take them. */
+        double sc = rnd(0.5, 3), tip[3] = {pose[3], pose[7], pose[11]};
+        double dir[3] = {pose[2] * sc, pose[6] * sc, pose[10] * sc}, cl[16], cl_back[6];
+        if (cncrot_cl_pose(tip, dir, cl) == 0) {
+          int32_t u = cncrot_machine_tcp_inverse(&m, cl, len, prev6, cl_back);
+          if (u >= 0) {
+            printf("KL %d", k), hexes(tip, 3), hexes(dir, 3), hexes(&len, 1), hexes(cl, 16), hexes(prev6, 6);
+            hexes(cl_back, 6), printf(" %d\n", u);
+          }
+        }
       }
       int32_t rule = j % 4, ref = rule == 1 || rule == 2 ? 2 : 0;
       s = cncrot_machine_choose(&m, f, cur, rule, ref, out, res, rem);

@@ -326,6 +326,11 @@ static void tool_path_axes(void) {
   sink += cncrot_tool_path_line(&t, CNCROT_DIALECT_FANUC, b, sizeof b - 1);
   sink += cncrot_tool_path_axes(&t, &head3, 100, prev, CNCROT_CHOOSE_CLOSEST, 0, ax);
 }
+static void cl_pose(void) {
+  static const double tip[3] = {1, 2, 3}, dir[3] = {0.3, -0.4, 0.8}, along_x[3] = {-1, 0, 0.1};
+  static double pose[16];
+  sink += cncrot_cl_pose(tip, dir, pose) + cncrot_cl_pose(tip, along_x, pose);
+}
 static void machine_seal(void) {
   static cncrot_machine a;
   a = edited(&head3);
@@ -366,7 +371,7 @@ static const struct entry ENTRIES[] = {
     E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
     E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),
     E(program_axes, 1),      E(program_frame_on, 1),   E(machine_tcp_forward, 0), E(machine_tcp_inverse, 1),
-    E(machine_tcp_inverse_rule, 1), E(machine_seal, 1), E(tool_path_line, 1), E(tool_path_axes, 1),
+    E(machine_tcp_inverse_rule, 1), E(machine_seal, 1), E(cl_pose, 0), E(tool_path_line, 1), E(tool_path_axes, 1),
     E(matrices_from_angles, 0), E(angles_from_matrices, 0), E(convert_many, 0),
 };
 

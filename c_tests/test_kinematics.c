@@ -484,6 +484,23 @@ static void five_axis_transformation(void) {
   CHECK_STATUS(cncrot_machine_tcp_inverse_rule(&m, pose, 50, prev2, CNCROT_CHOOSE_PLUS, 1, high), CNCROT_STATUS_OK);
   CHECK_NEAR(high, want, 6, 1e-12);
   CHECK_STATUS(cncrot_machine_tcp_inverse_rule(&m, pose, 50, prev2, CNCROT_CHOOSE_MINUS, 3, high), CNCROT_STATUS_BAD_ARGUMENT);
+  /* The CL point (10, 0, 0) along (0.5, 0, sqrt 3 / 2), given twice as long: the pose of
+   * the worked example (X' the part of X perpendicular to the direction), hence its axes. */
+  double tip10[3] = {10, 0, 0}, dir2[3] = {1, 0, s3}, clp[16], clx[6];
+  CHECK_STATUS(cncrot_cl_pose(tip10, dir2, clp), CNCROT_STATUS_OK);
+  double clz[3] = {clp[2], clp[6], clp[10]}, clt[3] = {clp[3], clp[7], clp[11]}, clxx[3] = {clp[0], clp[4], clp[8]};
+  double xw[3] = {s3 / 2, 0, -0.5};
+  CHECK_NEAR(clz, dir0, 3, 1e-15);
+  CHECK_NEAR(clt, tip10, 3, 0);
+  CHECK_NEAR(clxx, xw, 3, 1e-15);
+  CHECK_STATUS(cncrot_machine_tcp_inverse(&m, clp, 50, prev2, clx), CNCROT_STATUS_OK);
+  CHECK_NEAR(clx, want, 6, 1e-12);
+  double zero3[3] = {0, 0, 0}, nan3[3] = {0, NAN, 1};
+  fill_sentinel(clp, 16);
+  CHECK_STATUS(cncrot_cl_pose(tip10, zero3, clp), CNCROT_STATUS_DEGENERATE);
+  CHECK_STATUS(cncrot_cl_pose(tip10, nan3, clp), CNCROT_STATUS_NOT_FINITE);
+  CHECK_STATUS(cncrot_cl_pose(NULL, dir2, clp), CNCROT_STATUS_NULL_POINTER);
+  CHECK(is_sentinel(clp, 16), "untouched");
   /* C's direction of travel from 80: up, C 90 is 10 degrees ahead (-90 only 190); down,
    * -90 comes after 170 degrees (90 after 350): the other solution. */
   double up[6], down[6];

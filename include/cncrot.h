@@ -1701,6 +1701,28 @@ int32_t cncrot_machine_tcp_inverse_rule(const struct cncrot_machine *machine,
                                         double *axes);
 
 /**
+ * The pose of a CL point, as the five-axis transformation takes it: a 4x4 frame,
+ * row-major, whose translation is the tool tip `tip` and whose third column is `direction`
+ * made a unit vector (any length but zero), X' the component of the workpiece X axis
+ * perpendicular to it (of Y when the direction's x component is 0.9 or more in magnitude),
+ * Y' = Z' x X'. With fewer than three rotary axes a machine matches the direction only, so
+ * this X' does not matter; with three it chooses the turn about the tool. The pose
+ * `cncrot path`, the five-axis program reader and MATLAB's CL rows use.
+ *
+ * Returns 0, or with `pose` untouched: `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_DEGENERATE` (a zero direction).
+ *
+ * # Safety
+ * `tip` and `direction` point to 3 doubles, `pose` to 16 writable doubles.
+ *
+ * ```c
+ * double tip[3] = {10, 20, 5}, dir[3] = {0, 0, 2}, pose[16];
+ * cncrot_cl_pose(tip, dir, pose);   // the identity rotation, translation (10, 20, 5)
+ * ```
+ */
+int32_t cncrot_cl_pose(const double *tip, const double *direction, double *pose);
+
+/**
  * The paper's flange probing: two points along the machine's X (`a1`, `a2`) and two along
  * Y (`b1`, `b2`), probed on the flange in machine coordinates, give the flange's tilt as
  * extrinsic angles about X, Y, Z (for CYCLE600 with `_INEXIN = 0`, `_BIN_IN = 57`; the

@@ -30,6 +30,7 @@
 %   cncrot_machine_inverse - Every set of rotary-axis positions for an orientation.
 %   cncrot_machine_choose  - The rotary-axis positions to move to for an orientation.
 %   cncrot_machine_tcp_forward - Tool tip and direction from every machine axis.
+%   cncrot_cl_pose             - The pose of CL points (tool tip and direction).
 %   cncrot_machine_tcp_inverse - Every machine axis for tool tips and directions (a path).
 %
 % Building

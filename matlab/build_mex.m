@@ -31,7 +31,7 @@ function build_mex(prefix, outdir)
   else
     syslibs = {'-lm', '-lpthread', '-ldl'};
   end
-  names = {'cncrot_matrix', 'cncrot_angles', 'cncrot_convert', 'cycle600', 'cncrot_form_frame', 'cncrot_form_values', 'cncrot_probe_flange', 'cncrot_probe_plane', 'cncrot_probe_edge', 'cncrot_program_lines', 'cncrot_program_write', 'cncrot_program_translate', 'cncrot_program_axes', 'cncrot_machine_forward', 'cncrot_machine_inverse', 'cncrot_machine_choose', 'cncrot_machine_tcp_forward', 'cncrot_machine_tcp_inverse', 'cncrot_tool_path_lines'};
+  names = {'cncrot_matrix', 'cncrot_angles', 'cncrot_convert', 'cycle600', 'cncrot_form_frame', 'cncrot_form_values', 'cncrot_probe_flange', 'cncrot_probe_plane', 'cncrot_probe_edge', 'cncrot_program_lines', 'cncrot_program_write', 'cncrot_program_translate', 'cncrot_program_axes', 'cncrot_machine_forward', 'cncrot_machine_inverse', 'cncrot_machine_choose', 'cncrot_machine_tcp_forward', 'cncrot_machine_tcp_inverse', 'cncrot_cl_pose', 'cncrot_tool_path_lines'};
   octave = exist('OCTAVE_VERSION', 'builtin') ~= 0;
   if octave
     ext = 'mex';

@@ -74,6 +74,41 @@ fn tcp(m: &cncrot_machine, n: usize, pos: &[f64; 3], current: &[f64; 3], t: &[u8
         return;
     }
     assert!(pose.iter().all(|x| x.is_finite()));
+    // The CL point of that pose (its tip, its direction scaled by the bytes): the same tip
+    // and direction, an orthonormal frame; the bytes' direction as given, untouched on
+    // refusal, finite otherwise.
+    let tip = [pose[3], pose[7], pose[11]];
+    let scale = f64_at(t, 12);
+    let dir = [pose[2] * scale, pose[6] * scale, pose[10] * scale];
+    let mut cl = [8.0; 16];
+    let c = unsafe { cncrot_cl_pose(tip.as_ptr(), dir.as_ptr(), cl.as_mut_ptr()) };
+    if c < 0 {
+        assert_eq!(cl, [8.0; 16]);
+    } else {
+        assert!(cl.iter().all(|x| x.is_finite()));
+        assert_eq!([cl[3], cl[7], cl[11]], tip);
+        let s = scale.signum();
+        for (k, i) in [2, 6, 10].into_iter().enumerate() {
+            // A scale that leaves the components their precision (no underflow).
+            if (1e-100..1e100).contains(&scale.abs()) {
+                assert!(
+                    (cl[i] - s * pose[i]).abs() < 1e-12,
+                    "{cl:?} {pose:?} {scale}"
+                );
+            }
+            let row = [cl[4 * k], cl[4 * k + 1], cl[4 * k + 2]];
+            let n = row.iter().map(|x| x * x).sum::<f64>();
+            assert!((n - 1.0).abs() < 1e-12, "{cl:?}");
+        }
+    }
+    let mut junk = [8.0; 16];
+    let free = [f64_at(t, 13), f64_at(t, 14), f64_at(t, 15)];
+    let c = unsafe { cncrot_cl_pose(tip.as_ptr(), free.as_ptr(), junk.as_mut_ptr()) };
+    if c < 0 {
+        assert_eq!(junk, [8.0; 16]);
+    } else {
+        assert!(junk.iter().all(|x| x.is_finite()));
+    }
     let prev = [0.0, 0.0, 0.0, current[0], current[1], current[2]];
     let mut out = [4.0; 6];
     let s = unsafe {
@@ -101,8 +136,26 @@ fn tcp(m: &cncrot_machine, n: usize, pos: &[f64; 3], current: &[f64; 3], t: &[u8
     } else {
         assert!(ruled.iter().all(|x| x.is_finite()));
     }
+    // A description read unchecked because its seal matches contents that are not a
+    // machine's as the check leaves it (raw bytes whose hash the fuzzer's comparison tracing
+    // computed: a forged seal) only has to stay finite, checked above: the same description
+    // with no seal (checked whole) computes otherwise or is refused, and sealing, which
+    // checks whole, either refuses it untouched or makes it what the check makes it.
+    let mut whole = *m;
+    whole.reserved = 0;
+    let mut w = [4.0; 6];
+    let ws = unsafe {
+        cncrot_machine_tcp_inverse(&whole, pose.as_ptr(), length, prev.as_ptr(), w.as_mut_ptr())
+    };
+    if (ws, as_bytes(&w)) != (s, as_bytes(&out)) {
+        let mut sealed = *m;
+        if unsafe { cncrot_machine_seal(&mut sealed) } != 0 {
+            assert_eq!(as_bytes(&sealed), as_bytes(m));
+        }
+        return;
+    }
     // The description sealed and the same without a seal compute exactly alike (a machine
-    // tcp_forward accepted is one, so sealing it succeeds).
+    // tcp_forward accepted and the whole check agrees with is one, so sealing it succeeds).
     let mut sealed = *m;
     assert_eq!(unsafe { cncrot_machine_seal(&mut sealed) }, 0);
     let mut unsealed = sealed;

@@ -3,30 +3,6 @@
 #include <math.h>
 #include "gateway.h"
 
-/* A frame (row-major) whose third column is the direction (i, j, k) made a unit vector,
- * X' the component of the machine's X (of Y for a direction near X) perpendicular to it:
- * the frame `cncrot path` builds for a CL point. 0 when the direction is zero. */
-static int frame_along(const double tip[3], const double dir[3], double f[16]) {
-  double len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-  if (!(len > 1e-9)) return 0;
-  double k[3] = {dir[0] / len, dir[1] / len, dir[2] / len};
-  double h[3] = {fabs(k[0]) < 0.9 ? 1.0 : 0.0, fabs(k[0]) < 0.9 ? 0.0 : 1.0, 0.0};
-  double along = h[0] * k[0] + h[1] * k[1] + h[2] * k[2];
-  double x[3] = {h[0] - along * k[0], h[1] - along * k[1], h[2] - along * k[2]};
-  double xl = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-  for (int i = 0; i < 3; i++) x[i] /= xl;
-  double y[3] = {k[1] * x[2] - k[2] * x[1], k[2] * x[0] - k[0] * x[2], k[0] * x[1] - k[1] * x[0]};
-  for (int i = 0; i < 3; i++) {
-    f[4 * i] = x[i];
-    f[4 * i + 1] = y[i];
-    f[4 * i + 2] = k[i];
-    f[4 * i + 3] = tip[i];
-  }
-  f[12] = f[13] = f[14] = 0;
-  f[15] = 1;
-  return 1;
-}
-
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   check_nargs(nrhs, 3, 6, nlhs, 2);
   cncrot_machine m;
@@ -56,12 +32,19 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     double f[16], ax[6];
     if (cl) {
       double tip[3] = {pd[r], pd[r + n], pd[r + 2 * n]}, dir[3] = {pd[r + 3 * n], pd[r + 4 * n], pd[r + 5 * n]};
-      if (!frame_along(tip, dir, f)) {
+      /* The library's pose of a CL point, as `cncrot path` takes it. */
+      int32_t c = cncrot_cl_pose(tip, dir, f);
+      if (c == CNCROT_STATUS_DEGENERATE) {
         mxDestroyArray(out);
         mxDestroyArray(st);
         if (n > 1)
           fail("cncrot:badArgument", "%s, row %d: the tool direction (i, j, k) must not be zero", label(2, "P"), (int)r + 1);
         fail("cncrot:badArgument", "%s: the tool direction (i, j, k) must not be zero", label(2, "P"));
+      }
+      if (c < 0) {
+        mxDestroyArray(out);
+        mxDestroyArray(st);
+        raise_status(c, label(2, "P"), "row", (long)r, n);
       }
     } else {
       frame_to_row_major(pd + 16 * r, f);

@@ -526,6 +526,10 @@ function test_cncrot(cases_file)
   low = cncrot_machine_tcp_inverse(ac, [10 0 0 0.5 0 sqrt(3)/2], 50, [0 0 0 20 80 0], 'minus', 1);
   check(abs(low(4) + 30) < 1e-12 && abs(low(5) + 90) < 1e-12, 'tcp: A the priority axis, its lower position');
   expect_error('cncrot:badArgument', @() cncrot_machine_tcp_inverse(ac, [10 0 0 0.5 0 sqrt(3)/2], 50, zeros(1, 6), 'minus', 3), 'tcp: ref beyond the axes');
+  Pc = cncrot_cl_pose([10 20 5 0 0 2; 1 2 3 -3 0 0]);
+  check(isequal(Pc(:, :, 1), [eye(3) [10; 20; 5]; 0 0 0 1]) && isequal(Pc(1:3, 3, 2), [-1; 0; 0]) && isequal(Pc(1:3, 1, 2), [0; 1; 0]), ...
+        'cl_pose: along Z, and along -X (X'' from Y)');
+  expect_message('cncrot:badArgument', @() cncrot_cl_pose([1 2 3 0 0 0]), 'cl_pose: zero direction', 'cncrot_cl_pose', 'must not be zero');
   expect_message('cncrot:badArgument', @() cncrot_machine_tcp_inverse(ac, [1 2 3 0 0 0; 1 2 3 0 0 0], 50), 'tcp: zero direction', ...
                  'cncrot_machine_tcp_inverse', 'row 1', 'must not be zero');
   expect_error('cncrot:badSize', @() cncrot_machine_tcp_inverse(ac, [1 2 3 0 0 1], 50, [0 0 0]), 'tcp: previous of 3');
@@ -629,6 +633,11 @@ function test_cncrot(cases_file)
       case 'KT'
         P = cncrot_machine_tcp_forward(machines{str2double(t{2}) + 1}, hv(3, 6), h(9));
         [A, st] = cncrot_machine_tcp_inverse(machines{str2double(t{2}) + 1}, reshape(hv(10, 16), 4, 4).', h(9), hv(26, 6));
+        check(same(reshape(P.', 1, 16), 10) && same(A, 32) && st == str2double(t{38}), ['parity ' line]);
+      case 'KL'
+        cl = [hv(3, 3), hv(6, 3)];
+        P = cncrot_cl_pose(cl);
+        [A, st] = cncrot_machine_tcp_inverse(machines{str2double(t{2}) + 1}, cl, h(9), hv(26, 6));
         check(same(reshape(P.', 1, 16), 10) && same(A, 32) && st == str2double(t{38}), ['parity ' line]);
       case 'PE'
         [a, F2] = cncrot_probe_edge(reshape(hv(2, 16), 4, 4).', hv(18, 3), hv(21, 3));

@@ -544,8 +544,16 @@ pub unsafe extern "C" fn cncrot_machine_from_head(
 pub unsafe extern "C" fn cncrot_machine_seal(machine: *mut cncrot_machine) -> i32 {
     guard(|| {
         non_null(&[machine.is_null()])?;
+        if machine.align_offset(core::mem::align_of::<cncrot_machine>()) != 0 {
+            return Err(cncrot_status::BadArgument);
+        }
+        // Checked whole whatever its seal says: a seal that matches contents it should not
+        // (forged, or matched by chance) is not passed on.
         let mut m = Machine::EMPTY;
-        load_into(machine, &mut m)?;
+        match machine.as_ref() {
+            Some(d) => machine_of(d, &mut m)?,
+            None => return Err(cncrot_status::NullPointer),
+        }
         machine.write(c_of(&m));
         Ok(cncrot_status::Ok)
     })
@@ -1053,6 +1061,41 @@ pub unsafe extern "C" fn cncrot_machine_tcp_inverse_rule(
             let t = m.tcp_inverse_with(&target, tool_length, prev, rule)?;
             write_tcp(axes, &t)
         })
+    })
+}
+
+/// The pose of a CL point, as the five-axis transformation takes it: a 4x4 frame,
+/// row-major, whose translation is the tool tip `tip` and whose third column is `direction`
+/// made a unit vector (any length but zero), X' the component of the workpiece X axis
+/// perpendicular to it (of Y when the direction's x component is 0.9 or more in magnitude),
+/// Y' = Z' x X'. With fewer than three rotary axes a machine matches the direction only, so
+/// this X' does not matter; with three it chooses the turn about the tool. The pose
+/// `cncrot path`, the five-axis program reader and MATLAB's CL rows use.
+///
+/// Returns 0, or with `pose` untouched: `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_DEGENERATE` (a zero direction).
+///
+/// # Safety
+/// `tip` and `direction` point to 3 doubles, `pose` to 16 writable doubles.
+///
+/// ```c
+/// double tip[3] = {10, 20, 5}, dir[3] = {0, 0, 2}, pose[16];
+/// cncrot_cl_pose(tip, dir, pose);   // the identity rotation, translation (10, 20, 5)
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_cl_pose(
+    tip: *const f64,
+    direction: *const f64,
+    pose: *mut f64,
+) -> i32 {
+    guard(|| {
+        non_null(&[tip.is_null(), direction.is_null(), pose.is_null()])?;
+        let t = read_finite::<3>(tip)?;
+        let d = read_finite::<3>(direction)?;
+        let f = crate::kinematics::cl_pose(t, d)?;
+        write_frame(pose, &f)?;
+        Ok(cncrot_status::Ok)
     })
 }
 

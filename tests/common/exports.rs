@@ -1521,6 +1521,38 @@ fn machines() -> Vec<Call> {
             ));
             t.f64s(&pose);
         }),
+        ("cncrot_cl_pose", |t| unsafe {
+            let mut pose = [0.0; 16];
+            for dir in [
+                [0.0, 0.0, 2.0],
+                [1.0, 1.0, 1.0],
+                [0.95, 0.1, 0.3],
+                [-1.0, 0.0, 0.0],
+            ] {
+                t.status(cncrot_cl_pose(
+                    [10.0, 20.0, 5.0].as_ptr(),
+                    dir.as_ptr(),
+                    pose.as_mut_ptr(),
+                ));
+                t.f64s(&pose);
+            }
+            t.status(cncrot_cl_pose(
+                [0.0; 3].as_ptr(),
+                [0.0; 3].as_ptr(),
+                pose.as_mut_ptr(),
+            ));
+            t.status(cncrot_cl_pose(
+                [f64::NAN, 0.0, 0.0].as_ptr(),
+                [0.0, 0.0, 1.0].as_ptr(),
+                pose.as_mut_ptr(),
+            ));
+            t.status(cncrot_cl_pose(
+                null(),
+                [0.0, 0.0, 1.0].as_ptr(),
+                pose.as_mut_ptr(),
+            ));
+            t.f64s(&pose);
+        }),
         ("cncrot_machine_tcp_inverse", |t| unsafe {
             let m = head();
             let mut pose = [0.0; 16];
