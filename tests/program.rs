@@ -1478,52 +1478,51 @@ fn retraction_and_feed_words_are_kept_and_written() {
     assert_eq!((e.error, e.column), (Error::BadArgument, at));
     // Written in each dialect's terms: MB n <-> _FR 5 with _FR_I, MB MAX <-> _FR 4; the
     // machine-Z retractions as MB MAX; the G-code dialects retract in blocks of their own.
-    let src = ["PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB50 FMAX SEQ-"];
-    assert_eq!(
-        translate(
-            Dialect::Heidenhain,
-            &src,
-            Dialect::Heidenhain,
-            "PLANE SPATIAL"
-        ),
-        src
-    );
-    assert_eq!(
-        translate(Dialect::Heidenhain, &src, Dialect::Sinumerik, "CYCLE800"),
-        ["CYCLE800(5,\"\",0,57,0,0,0,0,30,0,0,0,0,-1,50,0)"]
-    );
-    assert_eq!(
-        translate(Dialect::Heidenhain, &src, Dialect::Fanuc, "G68.2"),
-        ["G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1"]
-    );
-    let src = ["CYCLE800(1,\"TC1\",200000,57,0,0,0,0,30,0,0,0,0,1,1)"];
-    assert_eq!(
-        translate(
-            Dialect::Sinumerik,
-            &src,
-            Dialect::Heidenhain,
-            "PLANE SPATIAL"
-        ),
-        ["PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ+"]
-    );
-    assert_eq!(
-        translate(Dialect::Sinumerik, &src, Dialect::Sinumerik, "CYCLE800"),
-        ["CYCLE800(1,\"\",0,57,0,0,0,0,30,0,0,0,0,1,0,0)"]
-    );
+    let mb50 = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB50 FMAX SEQ-";
+    let fr1 = "CYCLE800(1,\"TC1\",200000,57,0,0,0,0,30,0,0,0,0,1,1)";
     // A new retraction for the same plane is the tilt block again.
-    let src = [
+    let again = [
         "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX",
         "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB20 F1000",
     ];
-    assert_eq!(
-        translate(
-            Dialect::Heidenhain,
-            &src,
-            Dialect::Heidenhain,
-            "PLANE SPATIAL"
+    let (h, s, f) = (Dialect::Heidenhain, Dialect::Sinumerik, Dialect::Fanuc);
+    // Source dialect and blocks, target dialect and form, what is written.
+    type Case<'a> = (Dialect, &'a [&'a str], Dialect, &'a str, &'a [&'a str]);
+    let cases: [Case; 6] = [
+        (h, &[mb50], h, "PLANE SPATIAL", &[mb50]),
+        (
+            h,
+            &[mb50],
+            s,
+            "CYCLE800",
+            &["CYCLE800(5,\"\",0,57,0,0,0,0,30,0,0,0,0,-1,50,0)"],
         ),
-        src
-    );
+        (
+            h,
+            &[mb50],
+            f,
+            "G68.2",
+            &["G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1"],
+        ),
+        (
+            s,
+            &[fr1],
+            h,
+            "PLANE SPATIAL",
+            &["PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ+"],
+        ),
+        (
+            s,
+            &[fr1],
+            s,
+            "CYCLE800",
+            &["CYCLE800(1,\"\",0,57,0,0,0,0,30,0,0,0,0,1,0,0)"],
+        ),
+        (h, &again, h, "PLANE SPATIAL", &again),
+    ];
+    for (from, src, to, form, want) in cases {
+        assert_eq!(translate(from, src, to, form), want, "{src:?} into {form}");
+    }
 }
 
 /// A program translated block by block: what `write_change` writes for the state before and
