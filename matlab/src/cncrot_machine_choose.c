@@ -15,12 +15,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   if (s == CNCROT_STATUS_BAD_ARGUMENT) {
     /* Of the library's reasons, the one that holds (header: rule, reference axis, an
      * unused current position not 0). */
-    int sided = rule != CNCROT_CHOOSE_CLOSEST && rule != CNCROT_CHOOSE_INVERSE;
-    if (sided && (ref < 1 || ref > m.count))
-      fail("cncrot:badArgument", "%s must be an axis of the machine, 1..%d, for rule 'minus', 'plus', 'positive_turn' or 'negative_turn'; got %d", label(5, "ref"),
-           (int)m.count, (int)ref);
-    if (!sided && ref != 0)
-      fail("cncrot:badArgument", "%s must be 0 (or left out) for rule 'closest' or 'inverse'; got %d", label(5, "ref"), (int)ref);
+    rule_ref_check(rule, ref, m.count, 5);
     for (int k = m.count; k < 3; k++)
       if (cur[k] != 0)
         fail("cncrot:badArgument", "%s: the position of axis %d, which the machine does not have, must be 0; got %s",

@@ -19,12 +19,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   if (nrhs > 3) previous_arg(prhs[3], 4, prev);
   int32_t rule = nrhs > 4 ? rule_arg(prhs[4], 5, "rule") : CNCROT_CHOOSE_CLOSEST;
   int32_t ref = nrhs > 5 ? integer_arg(prhs[5], 6, "ref") : 0;
-  int sided = rule != CNCROT_CHOOSE_CLOSEST && rule != CNCROT_CHOOSE_INVERSE;
-  if (sided && (ref < 1 || ref > m.count))
-    fail("cncrot:badArgument", "%s must be an axis of the machine, 1..%d, for rule 'minus', 'plus', 'positive_turn' or 'negative_turn'; got %d", label(6, "ref"),
-         (int)m.count, (int)ref);
-  if (!sided && ref != 0)
-    fail("cncrot:badArgument", "%s must be 0 (or left out) for rule 'closest' or 'inverse'; got %d", label(6, "ref"), (int)ref);
+  rule_ref_check(rule, ref, m.count, 6);
   mxArray *out = mxCreateDoubleMatrix(n, 6, mxREAL);
   mxArray *st = mxCreateDoubleMatrix(n, 1, mxREAL);
   double *o = mxGetDoubles(out), *so = mxGetDoubles(st);

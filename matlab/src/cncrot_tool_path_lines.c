@@ -17,6 +17,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     if (nrhs > 4) previous_arg(prhs[4], 5, prev);
     if (nrhs > 5) rule = rule_arg(prhs[5], 6, "rule");
     if (nrhs > 6) ref = integer_arg(prhs[6], 7, "ref");
+    rule_ref_check(rule, ref, m.count, 7);
   }
   const mxArray *lines = lines_arg(prhs[1], 2);
   int cell = mxIsCell(lines);

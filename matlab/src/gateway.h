@@ -548,6 +548,18 @@ static int32_t rule_arg(const mxArray *a, int pos, const char *name) {
   return named_arg(a, pos, name, RULES, COUNT_OF(RULES), "a rule", "cncrot:badArgument", 0, NULL);
 }
 
+/* The reference axis argument (at `pos`) against its rule: an axis of the machine (1..count)
+ * for the rules that name one, 0 for 'closest' and 'inverse' (what the library refuses as a
+ * bad argument, said in the caller's terms). */
+static void rule_ref_check(int32_t rule, int32_t ref, int count, int pos) {
+  int sided = rule != CNCROT_CHOOSE_CLOSEST && rule != CNCROT_CHOOSE_INVERSE;
+  if (sided && (ref < 1 || ref > count))
+    fail("cncrot:badArgument", "%s must be an axis of the machine, 1..%d, for rule 'minus', 'plus', 'positive_turn' or 'negative_turn'; got %d",
+         label(pos, "ref"), count, (int)ref);
+  if (!sided && ref != 0)
+    fail("cncrot:badArgument", "%s must be 0 (or left out) for rule 'closest' or 'inverse'; got %d", label(pos, "ref"), (int)ref);
+}
+
 static int32_t form_arg(const mxArray *a, int pos, const char *name) {
   return named_arg(a, pos, name, FORMS, COUNT_OF(FORMS), "a form", "cncrot:badArgument", 1, library_form);
 }

@@ -551,6 +551,8 @@ function test_cncrot(cases_file)
   end
   Ax = cncrot_tool_path_lines('fanuc', {'G43.4 H1', 'G1 X10. Y0. Z0. A30. C90.'}, ac, 50);
   check(max(abs(Ax(2, :) - want)) < 1e-9, 'tool path: rotary positions by letter');
+  expect_message('cncrot:badArgument', @() cncrot_tool_path_lines('fanuc', {'G43.4 H1'}, ac, 50, zeros(1, 6), 'minus', 3), ...
+                 'tool_path_lines: ref beyond the axes', 'cncrot_tool_path_lines', 'argument 7 (ref)', 'got 3');
   [~, kinds] = cncrot_tool_path_lines('heidenhain', {'1 C X+5 Y+0 DR+', '2 TOOL CALL 1 Z'});
   check(isequal(kinds, {'not followed'; 'passed'}), 'tool path: not followed, passed');
   expect_message('cncrot:badArgument', @() cncrot_tool_path_lines('fanuc', {'G43.5 H1', 'G1 I0 J0 K0'}), 'tool path: zero direction', ...

@@ -168,11 +168,9 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
         // Turns the tool to the plane: no frame change.
         let p = address_words(c, *b"P", SYNTAX, false, (true, true));
         return Some(p.and_then(|w| {
-            let choice = g53_choice(whole(w.values[0], w.column(0))?).ok_or(LineError {
-                error: Error::BadArgument,
-                column: w.column(0),
-                expected: Some("P: 0 (shortest), 1 (positive turn) or 2 (negative turn)"),
-            })?;
+            let allowed = "P: 0 (shortest), 1 (positive turn) or 2 (negative turn)";
+            let choice = g53_choice(whole(w.values[0], w.column(0))?)
+                .ok_or(LineError::bad_value(w.column(0), allowed))?;
             Ok(Block::Frame(Modal {
                 positioning,
                 choice,

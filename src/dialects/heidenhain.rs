@@ -191,15 +191,6 @@ fn named_words<const N: usize>(
     }
 }
 
-/// A value refused where it stands, with what it may be.
-fn refused_at(column: usize, expected: &'static str) -> LineError {
-    LineError {
-        error: Error::BadArgument,
-        column,
-        expected: Some(expected),
-    }
-}
-
 /// A word `what` is missing at the cursor if what follows is the line's end or the
 /// positioning options; anything else standing there is a word the command does not have
 /// (`SPX+10`).
@@ -333,7 +324,7 @@ fn options(c: &mut Cursor) -> Result<Motion, LineError> {
             (how.retract, how.retract_mm) = match mb {
                 0.0 => (Retract::None, 0.0),
                 d if d > 0.0 => (Retract::Tool, d),
-                _ => return Err(refused_at(column, "MB: MAX or a length >= 0")),
+                _ => return Err(LineError::bad_value(column, "MB: MAX or a length >= 0")),
             };
             continue;
         }
@@ -347,7 +338,7 @@ fn options(c: &mut Cursor) -> Result<Motion, LineError> {
             // Written so that NaN refuses.
             (how.feed, how.feed_mm_min) = match f {
                 f if f > 0.0 => (Feed::Rate, f),
-                _ => return Err(refused_at(column, "F: AUTO or a feed rate > 0")),
+                _ => return Err(LineError::bad_value(column, "F: AUTO or a feed rate > 0")),
             };
             continue;
         }

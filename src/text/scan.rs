@@ -22,6 +22,16 @@ pub struct LineError {
 }
 
 impl LineError {
+    /// A value the command does not take ([`Error::BadArgument`]) at `column`, with what
+    /// may stand there.
+    pub(crate) fn bad_value(column: usize, expected: &'static str) -> LineError {
+        LineError {
+            error: Error::BadArgument,
+            column,
+            expected: Some(expected),
+        }
+    }
+
     /// `result`, its error reported at `column`.
     pub fn at<T>(column: usize, result: Result<T, Error>) -> Result<T, LineError> {
         result.map_err(|error| LineError {
