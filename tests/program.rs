@@ -1400,6 +1400,17 @@ fn choice_words_are_kept_and_followed() {
         .unwrap_err();
     // Reported at the value.
     assert_eq!((e.error, e.column), (Error::BadArgument, 8));
+    // After Syntec's direct mode the positions are stated: P is checked, not kept, and the
+    // state stays one the library reads back (the fuzz target found it kept, a state then
+    // refused as BAD_STATE).
+    let direct = read(Dialect::Syntec, &["G158 P10200 X0 Y0 Z10 A0 B20 C45", "G53.1 P1"]);
+    assert_eq!(direct.choice, AxisChoice::Closest);
+    assert_eq!(direct.positioning, Positioning::Turn);
+    assert_eq!(direct.check(), Ok(()));
+    let e = read(Dialect::Syntec, &["G158 P10200 B20"])
+        .line(Dialect::Syntec, b"G53.1 P7")
+        .unwrap_err();
+    assert_eq!((e.error, e.column), (Error::BadArgument, 8));
     // Written back as Fanuc and Syntec write it; Heidenhain's SEQ is a side, not a way
     // to turn: TURN alone.
     let src = ["G68.2 J30", "G53.1 P2", "G68.2 J30", "G53.6 P1"];

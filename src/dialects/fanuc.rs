@@ -171,6 +171,9 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
             let allowed = "P: 0 (shortest), 1 (positive turn) or 2 (negative turn)";
             let choice = g53_choice(whole(w.values[0], w.column(0))?)
                 .ok_or(LineError::bad_value(w.column(0), allowed))?;
+            // A direct mode (Syntec's `G158` mode 2) states the positions themselves: `P`
+            // names no solution there; checked, not kept [choice].
+            let choice = if m.direct.is_some() { m.choice } else { choice };
             Ok(Block::Frame(Modal {
                 positioning,
                 choice,
