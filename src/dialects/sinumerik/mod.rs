@@ -557,6 +557,17 @@ fn frame_command(
     })))
 }
 
+/// Whether the words of a `ROT`/`AROT`/`CROT` name `RPL`: a rotation in the active plane
+/// (G17, G18 or G19 \[doc\]), which the state does not keep. Such a block is not followed,
+/// never refused and never guessed as G17 \[choice\].
+fn plane_rotation(words: &[u8]) -> bool {
+    let comments = Comments {
+        semicolon: true,
+        parens: false,
+    };
+    Tokens::new(words, comments, false).any(|t| t.is(b"RPL"))
+}
+
 /// A refused value at `column`, with what the parameter may be.
 fn refused(column: usize, allowed: &'static str) -> impl Fn(Error) -> LineError {
     move |error| LineError {
@@ -938,6 +949,9 @@ impl Family for Sinumerik {
         else {
             return other_block(text.get(column - 1..).unwrap_or(&[]), column - 1);
         };
+        if kind == b'R' && plane_rotation(text.get(c.column() - 1..).unwrap_or(&[])) {
+            return Ok(Block::NotFollowed);
+        }
         frame_command(m, &mut c, column, additive, kind)
     }
 
