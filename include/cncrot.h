@@ -212,7 +212,8 @@
 #define CNCROT_DIALECT_HEIDENHAIN 2
 
 /**
- * Fanuc-style: `G68.2`, `G68.4`, `G69`, `G53.1`; blocks of at most 256 bytes.
+ * Fanuc-style: `G68.2`, `G68.4`, `G69`, `G53.1`, the 3-D coordinate conversion
+ * `G68 X Y Z I J K R`; blocks of at most 256 bytes.
  */
 #define CNCROT_DIALECT_FANUC 3
 
@@ -1863,9 +1864,10 @@ int32_t cncrot_program_init(struct cncrot_program *program, uint32_t options);
  * a way the library does not follow (work-offset or preset selections such as `G54`,
  * `G54.1 P`, `G154 P`, `G505`, `CYCL DEF 247`, `PRESET SELECT`; `G92`; writes to offset
  * tables and frame variables such as `G10 L2`, `#5221=`, `$P_UIFR[1]=`, `FN 17`; datum
- * shifts not yet followed such as `G52`, `CYCL DEF 7`, `TRANS DATUM`; mirroring, scaling
- * and plane rotations such as `MIRROR`, `G51.1`, `CYCL DEF 10`, `G68`; a tilt through the
- * machine's axes such as `CYCL DEF 19`, `TOROT`). A program speaks one dialect.
+ * shifts from tables such as `CYCL DEF 7.1 #5`, `TRANS DATUM TABLE`; mirroring, scaling
+ * and rotations in the working plane such as `MIRROR`, `G51.1`, `CYCL DEF 10`, `G68 X Y R`,
+ * `AROT RPL=`; a tilt through the machine's axes such as `CYCL DEF 19`, `TOROT`). A
+ * program speaks one dialect.
  *
  * Returns 0, `CNCROT_STATUS_PASSED`, `CNCROT_STATUS_NOT_FOLLOWED`, or a negative status
  * with `*program` byte-identical:

@@ -794,6 +794,37 @@ pub fn from_nalgebra(m: &nalgebra::Matrix3<f64>) -> Matrix {
     core::array::from_fn(|i| core::array::from_fn(|j| m[(i, j)]))
 }
 
+/// The rotation by `deg` about the unit vector `u` (Rodrigues): exact for multiples of 90°
+/// about the coordinate axes.
+pub(crate) fn about_axis(u: Vector, deg: f64) -> Matrix {
+    let (s, c) = sin_cos_deg(deg);
+    about_axis_sc(u, s, c)
+}
+
+/// [`about_axis`] for an angle given by its sine `s` and cosine `c`.
+#[inline(always)]
+pub(crate) fn about_axis_sc(u: Vector, s: f64, c: f64) -> Matrix {
+    let t = 1.0 - c;
+    let [x, y, z] = u;
+    [
+        [
+            c + t * x * x + 0.0,
+            t * x * y - s * z + 0.0,
+            t * x * z + s * y + 0.0,
+        ],
+        [
+            t * x * y + s * z + 0.0,
+            c + t * y * y + 0.0,
+            t * y * z - s * x + 0.0,
+        ],
+        [
+            t * x * z - s * y + 0.0,
+            t * y * z + s * x + 0.0,
+            c + t * z * z + 0.0,
+        ],
+    ]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -310,6 +310,56 @@ fn syntec_the_manuals_examples() {
     assert_eq!(read(d, &["G158 P10157 A30", "G158"]).frame, Frame::IDENTITY);
 }
 
+/// Fanuc's three-dimensional coordinate conversion, against hand derivation: `R` about
+/// `I J K` through `X Y Z`, right-handed, a second one in the converted system.
+#[test]
+fn fanuc_coordinate_conversion() {
+    let d = Dialect::Fanuc;
+    // Ry(45°) about (10, 0, 0): the origin moves to c − Ry(45°)·c = (10 − 5√2, 0, 5√2).
+    let p = read(d, &["N10 G90 G68 X10. Y0 Z0 I0. J1. K0. R45."]);
+    assert!(dist(&p.frame.rotation, &r(Axis::Y, 45.0)) < 1e-15);
+    let h = 5.0 * 2f64.sqrt();
+    let want = [10.0 - h, 0.0, h];
+    assert!((0..3).all(|k| (p.frame.translation[k] - want[k]).abs() < 1e-13));
+    // Right-handed about +Z (X turns onto Y), whatever the length of I J K; the second
+    // conversion about the converted X: Rz(90°)·Rx(30°).
+    let f = rot(
+        d,
+        &["G68 X0 Y0 Z0 I0 J0 K5 R90.", "G68 X0 Y0 Z0 I1. J0 K0 R30."],
+    );
+    assert!(dist(&f, &mul(&r(Axis::Z, 90.0), &r(Axis::X, 30.0))) < 1e-15);
+    assert_eq!(
+        read(d, &["G68 X0 Y0 Z0 I0 J0 K1 R90.", "G69"]).frame,
+        Frame::IDENTITY
+    );
+    // After a local shift: about the shifted datum.
+    let p = read(d, &["G52 X10.", "G68 X0 Y0 Z0 I0 J0 K1 R90."]);
+    assert_eq!(p.frame.translation, [10.0, 0.0, 0.0]);
+    assert!(dist(&p.frame.rotation, &r(Axis::Z, 90.0)) < 1e-15);
+    // The control's alarms: I J K all 0, no R.
+    let e = Program::default()
+        .line(d, b"G68 X0 Y0 Z0 I0 J0 K0 R3.")
+        .unwrap_err();
+    assert_eq!((e.error, e.column), (Error::BadArgument, 15)); // at the value of I
+    let e = Program::default()
+        .line(d, b"G68 X0 Y0 Z0 I0 J1 K0")
+        .unwrap_err();
+    assert_eq!(e.error, Error::MissingWord);
+    // What the state cannot know: the plane of a rotation in the plane, the tool's
+    // position as the centre. Haas and Syntec have no such conversion.
+    for (d, line) in [
+        (Dialect::Fanuc, "G68 X0 Y0 R30."),
+        (Dialect::Fanuc, "G17 G68 X5. Y5. R30."),
+        (Dialect::Fanuc, "G68 I0 J1. K0 R30."),
+        (Dialect::Fanuc, "G68 X0 Y0 I0 J1. K0 R30."),
+        (Dialect::Haas, "G68 X0 Y0 Z0 I0 J0 K1 R90."),
+        (Dialect::Syntec, "G68 X0 Y0 Z0 I0 J0 K1 R90."),
+    ] {
+        let (_, remark) = Program::default().line(d, line.as_bytes()).unwrap();
+        assert_eq!(remark, Remark::NotFollowed, "{line}");
+    }
+}
+
 #[test]
 fn fanuc_and_haas() {
     let d = Dialect::Fanuc;
@@ -1047,12 +1097,19 @@ fn every_block_of_a_program() {
             ("N110 G505", N),
             ("N120 G500", N),
             ("N130 SCALE X2", N),
+            // A rotation in the active plane, which the state does not keep: not followed
+            // (it was refused as an unknown word).
+            ("N132 AROT RPL=30", N),
+            ("N134 ROT RPL = -45.5 ; in the plane", N),
             ("N140 G153 G0 Z0", P),
             ("N150 M30", P),
         ],
     );
     let want = r(Axis::Y, 45.0);
     assert!(dist(&p.frame.rotation, &want) < 1e-12);
+    // RPL is no word of ROTS: still refused there.
+    let e = p.line(Dialect::Sinumerik, b"ROTS RPL=3").unwrap_err();
+    assert_eq!((e.error, e.column), (Error::UnknownWord, 6));
     assert_eq!(
         p.line(Dialect::Sinumerik, b"CYCLE800()").unwrap().0.frame,
         Frame::IDENTITY
@@ -1403,7 +1460,10 @@ fn choice_words_are_kept_and_followed() {
     // After Syntec's direct mode the positions are stated: P is checked, not kept, and the
     // state stays one the library reads back (the fuzz target found it kept, a state then
     // refused as BAD_STATE).
-    let direct = read(Dialect::Syntec, &["G158 P10200 X0 Y0 Z10 A0 B20 C45", "G53.1 P1"]);
+    let direct = read(
+        Dialect::Syntec,
+        &["G158 P10200 X0 Y0 Z10 A0 B20 C45", "G53.1 P1"],
+    );
     assert_eq!(direct.choice, AxisChoice::Closest);
     assert_eq!(direct.positioning, Positioning::Turn);
     assert_eq!(direct.check(), Ok(()));

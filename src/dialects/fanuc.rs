@@ -223,6 +223,50 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
     }))
 }
 
+/// `G68 X Y Z I J K R` at the cursor in a Fanuc program (`rest`: the block from the
+/// cursor): the three-dimensional coordinate conversion \[doc: Fanuc 16i/18i/30i-MB
+/// "three-dimensional coordinate conversion"\]: the program's coordinates turn by `R`
+/// degrees about the direction `I J K` (any length; right-handed, "clockwise looking along
+/// the axis of rotation") through the centre `X Y Z`. A second `G68` converts again in the
+/// converted system \[doc\]: here every `G68` composes on the active tilt, also on a `G68.2`
+/// \[choice\]. `I J K` all 0 is `BAD_ARGUMENT` at `I`, a missing `R` a missing word (the
+/// control's alarm 5044). A centre not wholly given is the tool's position or the previous
+/// conversion's centre, which the state does not keep: not followed \[choice\]. Without
+/// `I J K` the block is the rotation in the plane (`G17`–`G19`), which the state does not
+/// keep either: `None`, and the block is not followed ([`ISO_NOT_FOLLOWED`]).
+fn read_conversion(m: &Modal, c: &mut Cursor, rest: &[u8]) -> Option<Result<Block, LineError>> {
+    let comments = Comments {
+        semicolon: true,
+        parens: true,
+    };
+    let spatial = Tokens::new(rest, comments, true).any(|t| matches!(t.letter, b'I' | b'J' | b'K'));
+    let column = c.column();
+    if !spatial || !c.code(b"G68") {
+        return None;
+    }
+    Some(conversion(m, c, column))
+}
+
+/// [`read_conversion`] after its code.
+fn conversion(m: &Modal, c: &mut Cursor, column: usize) -> Result<Block, LineError> {
+    let w = address_words(c, *b"XYZIJKR", SYNTAX, false, (true, true))?;
+    if !w.given[6] {
+        return Err(c.missing("R"));
+    }
+    let first = (3..6).find(|&k| w.given[k]).unwrap_or(3);
+    let axis = crate::unit_vector(v3(&w.values, 3))
+        .map_err(|_| LineError::bad_value(w.column(first), "I J K: a direction, not all 0"))?;
+    if !w.given[..3].iter().all(|&g| g) {
+        return Ok(Block::NotFollowed);
+    }
+    let step = Frame::about_point(
+        crate::rotation::about_axis(axis, w.values[6]),
+        v3(&w.values, 0),
+    );
+    let base = LineError::at(column, m.tilt_base())?;
+    Ok(Block::Frame(m.with_frame(base.compose(&step))))
+}
+
 /// `G53.1` (the rotary axes turn the tool to the plane) or `G53.6` (the same, the tool tip
 /// kept in place \[3rd: LinuxCNC's remap, "with TCP"; Fanuc's tool center point
 /// retention\]) at the cursor.
@@ -305,8 +349,9 @@ pub(crate) fn skip_leading(c: &mut Cursor) -> bool {
 /// follow, in every ISO-style dialect: `G10` (offset tables), `G50`/`G51` (scaling),
 /// `G50.1`/`G51.1` (mirroring), `G52` (the local coordinate system, followed where it stands
 /// alone: `read_g52`), `G54`–`G59`,
-/// `G54.1`, `G54.2` (work offsets, fixture offsets), `G68`/`G69.1` (rotation in the plane,
-/// 3-D coordinate conversion), `G92`, `G92.1` (coordinate system setting).
+/// `G54.1`, `G54.2` (work offsets, fixture offsets), `G68`/`G69.1` (rotation in the plane;
+/// Fanuc's 3-D coordinate conversion is followed where it starts the block:
+/// `read_conversion`), `G92`, `G92.1` (coordinate system setting).
 pub(crate) const ISO_NOT_FOLLOWED: &[u32] = &[
     100, 500, 501, 510, 511, 520, 540, 541, 542, 550, 560, 570, 580, 590, 680, 691, 920, 921,
 ];
@@ -414,7 +459,7 @@ impl Family for Fanuc {
 
     /// One block of a Fanuc-style program: `G68.2 X Y Z I J K` (omitted words are 0; a new
     /// `G68.2` replaces the active plane \[choice\]), `G68.4` (the same, on the active
-    /// plane), `G69` (cancel), `G53.1`/`G53.6` (no frame change), `G68.3` (needs the tool
+    /// plane), `G68 X Y Z I J K R` (the 3-D coordinate conversion), `G69` (cancel), `G53.1`/`G53.6` (no frame change), `G68.3` (needs the tool
     /// direction from the machine: [`Error::NotAvailable`]), with a block number, `/`,
     /// `( … )` and `;`. Numbers without a point are whole units (calculator-type input
     /// \[choice: a parameter of the control; write the point to be safe\]). These commands
@@ -431,8 +476,16 @@ impl Family for Fanuc {
         if let Some(result) = read_g68(m, &mut c) {
             return result;
         }
+        let rest = text.get(c.column() - 1..).unwrap_or(&[]);
+        if let Some(result) = read_conversion(m, &mut c, rest) {
+            return result;
+        }
         if skip_leading(&mut c) {
             if let Some(result) = read_g68(m, &mut c) {
+                return result;
+            }
+            let rest = text.get(c.column() - 1..).unwrap_or(&[]);
+            if let Some(result) = read_conversion(m, &mut c, rest) {
                 return result;
             }
         }

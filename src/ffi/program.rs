@@ -19,7 +19,8 @@ pub const CNCROT_DIALECT_SINUMERIK: i32 = 1;
 /// Heidenhain plain language: `PLANE SPATIAL|PROJECTED|EULER|VECTOR|POINTS|RELATIV|RESET`;
 /// blocks of at most 254 bytes.
 pub const CNCROT_DIALECT_HEIDENHAIN: i32 = 2;
-/// Fanuc-style: `G68.2`, `G68.4`, `G69`, `G53.1`; blocks of at most 256 bytes.
+/// Fanuc-style: `G68.2`, `G68.4`, `G69`, `G53.1`, the 3-D coordinate conversion
+/// `G68 X Y Z I J K R`; blocks of at most 256 bytes.
 pub const CNCROT_DIALECT_FANUC: i32 = 3;
 /// Syntec: `G158` and its Fanuc-style `G68.2` mode; blocks of at most 256 bytes.
 pub const CNCROT_DIALECT_SYNTEC: i32 = 4;
@@ -437,9 +438,10 @@ unsafe fn write_state(program: *mut cncrot_program, p: &Program, options: u32) {
 /// a way the library does not follow (work-offset or preset selections such as `G54`,
 /// `G54.1 P`, `G154 P`, `G505`, `CYCL DEF 247`, `PRESET SELECT`; `G92`; writes to offset
 /// tables and frame variables such as `G10 L2`, `#5221=`, `$P_UIFR[1]=`, `FN 17`; datum
-/// shifts not yet followed such as `G52`, `CYCL DEF 7`, `TRANS DATUM`; mirroring, scaling
-/// and plane rotations such as `MIRROR`, `G51.1`, `CYCL DEF 10`, `G68`; a tilt through the
-/// machine's axes such as `CYCL DEF 19`, `TOROT`). A program speaks one dialect.
+/// shifts from tables such as `CYCL DEF 7.1 #5`, `TRANS DATUM TABLE`; mirroring, scaling
+/// and rotations in the working plane such as `MIRROR`, `G51.1`, `CYCL DEF 10`, `G68 X Y R`,
+/// `AROT RPL=`; a tilt through the machine's axes such as `CYCL DEF 19`, `TOROT`). A
+/// program speaks one dialect.
 ///
 /// Returns 0, `CNCROT_STATUS_PASSED`, `CNCROT_STATUS_NOT_FOLLOWED`, or a negative status
 /// with `*program` byte-identical:

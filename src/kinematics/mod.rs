@@ -35,7 +35,8 @@ pub use choose::{Choice, Rule};
 pub use solve::{Solutions, POLE_SINE};
 pub use tcp::{cl_pose, Tcp, TCP_AXES};
 
-use crate::math::{abs, sin_cos_deg, sin_cos_deg4};
+use crate::math::{abs, sin_cos_deg4};
+pub(crate) use crate::rotation::{about_axis, about_axis_sc};
 use crate::vector::{cross, dot};
 use crate::{mul, unit_vector, Error, Frame, Matrix, Vector, CLOSEST_MAX, IDENTITY};
 
@@ -739,35 +740,4 @@ fn finite(v: Vector) -> Result<Vector, Error> {
     } else {
         Err(Error::OutOfRange)
     }
-}
-
-/// The rotation by `deg` about the unit vector `u` (Rodrigues): exact for multiples of 90°
-/// about the coordinate axes.
-pub(crate) fn about_axis(u: Vector, deg: f64) -> Matrix {
-    let (s, c) = sin_cos_deg(deg);
-    about_axis_sc(u, s, c)
-}
-
-/// [`about_axis`] for an angle given by its sine `s` and cosine `c`.
-#[inline(always)]
-pub(crate) fn about_axis_sc(u: Vector, s: f64, c: f64) -> Matrix {
-    let t = 1.0 - c;
-    let [x, y, z] = u;
-    [
-        [
-            c + t * x * x + 0.0,
-            t * x * y - s * z + 0.0,
-            t * x * z + s * y + 0.0,
-        ],
-        [
-            t * x * y + s * z + 0.0,
-            c + t * y * y + 0.0,
-            t * y * z - s * x + 0.0,
-        ],
-        [
-            t * x * z - s * y + 0.0,
-            t * y * z + s * x + 0.0,
-            c + t * z * z + 0.0,
-        ],
-    ]
 }
