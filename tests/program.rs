@@ -84,6 +84,13 @@ fn heidenhain_reads_the_worked_numbers_with_real_line_words() {
         &["PLANE EULER EULPR45 EULNU20 EULROT22 MOVE DIST50 F1000 SYM+ COORD ROT"],
     );
     assert!(dist(&f, &EULER_45_20_22) < 1e-6);
+    // ABST: the same word in the German dialog (it was refused as unknown).
+    let p = read(
+        d,
+        &["PLANE EULER EULPR45 EULNU20 EULROT22 MOVE ABST50 F1000 SYM+ COORD ROT"],
+    );
+    assert!(dist(&p.frame.rotation, &EULER_45_20_22) < 1e-6);
+    assert_eq!((p.positioning, p.feed_mm_min), (Positioning::Move, 1000.0));
     // PROJECTED: PROPR in ZX, PROMIN in YZ, as ROTS Y=PROPR X=PROMIN.
     let f = rot(
         d,

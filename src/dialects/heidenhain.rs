@@ -275,8 +275,8 @@ fn axial_words(c: &mut Cursor) -> Result<(Direct, [f64; 3]), LineError> {
 /// the higher or lower of the pair \[doc\]; `SYM±`, the master axis on that side of its
 /// symmetry point, the same for a symmetry point at 0 \[choice\]. `MB MAX` / `MB n` (n > 0
 /// mm; `MB0` none) and `FMAX` / `F n` (n > 0 mm/min) / `F AUTO` are kept (the program
-/// state drops them with `STAY`, which moves nothing); `DIST n` (the pivot's distance from
-/// the tool tip for `MOVE`) is read and not kept.
+/// state drops them with `STAY`, which moves nothing); `DIST n` (also `ABST n`: the pivot's
+/// distance from the tool tip for `MOVE`) is read and not kept.
 fn options(c: &mut Cursor) -> Result<Motion, LineError> {
     let mut how = Motion::default();
     loop {
@@ -342,7 +342,8 @@ fn options(c: &mut Cursor) -> Result<Motion, LineError> {
             };
             continue;
         }
-        if c.word(b"DIST") {
+        // `ABST` is the same word as the German dialog writes it (and posts copy) [doc].
+        if c.word(b"DIST") || c.word(b"ABST") {
             c.spaces();
             c.number(SYNTAX)?;
             continue;
