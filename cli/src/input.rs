@@ -306,7 +306,7 @@ pub fn batch_lines(source: &str) -> Result<Vec<(usize, String)>, Failure> {
         .collect())
 }
 
-/// The whole text of a file, or of standard input for `-`.
+/// The whole text of a file, or of standard input for `-`: UTF-8, or else Latin-1.
 pub fn read_source(source: &str) -> Result<String, Failure> {
     let bytes = if source == "-" {
         let mut v = Vec::new();
@@ -316,11 +316,13 @@ pub fn read_source(source: &str) -> Result<String, Failure> {
     } else {
         std::fs::read(source).map_err(|e| Failure::new(format!("{source}: {e}")))?
     };
-    String::from_utf8(bytes).map_err(|e| {
-        Failure::new(format!(
-            "{source}: not UTF-8 text (byte {})",
-            e.utf8_error().valid_up_to() + 1
-        ))
+    // Controls and their editors write comments in Latin-1 (ISO 8859-1: a hyperMILL
+    // program for a Heidenhain control has "letörés" in one byte per letter): such a file
+    // is read byte for byte as Latin-1, so that every block is read (the commands are
+    // ASCII either way) instead of the whole file refused.
+    Ok(match String::from_utf8(bytes) {
+        Ok(text) => text,
+        Err(e) => e.into_bytes().into_iter().map(char::from).collect(),
     })
 }
 

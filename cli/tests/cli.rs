@@ -724,9 +724,10 @@ fn hostile_input_never_panics() {
             );
         }
     }
-    // Bytes that are not UTF-8 in a batch file.
+    // Bytes that are not UTF-8 in a batch file: read as Latin-1, so only their line fails
+    // (the file was refused whole).
     let file = std::env::temp_dir().join(format!("cncrot_bytes_{}.txt", std::process::id()));
-    std::fs::write(&file, b"1 2 3\n\xff\xfe 2 3\n").expect("written");
+    std::fs::write(&file, b"1 2 3\n\xff\xfe 2 3\n4 5 6\n").expect("written");
     let path = file.to_str().expect("UTF-8 path");
     let r = cncrot(
         &[
@@ -735,8 +736,29 @@ fn hostile_input_never_panics() {
         "",
     );
     assert!(
-        r.code == 2 && r.stderr.contains("not UTF-8 text (byte 7)"),
+        r.code == 1
+            && r.stderr
+                .contains("line 2, column 1: '\u{ff}\u{fe}' is not a number"),
         "{}",
+        r.stderr
+    );
+    assert_eq!(r.stdout.lines().count(), 3, "{}", r.stdout);
+    std::fs::remove_file(&file).ok();
+    // A Heidenhain program with a Latin-1 comment (as hyperMILL writes them) is read whole.
+    let file = std::env::temp_dir().join(format!("cncrot_latin1_{}.h", std::process::id()));
+    std::fs::write(
+        &file,
+        b"0 BEGIN PGM T MM\n1 ; JOB: M12 - let\xf6r\xe9s\n2 PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY\n3 END PGM T MM\n",
+    )
+    .expect("written");
+    let path = file.to_str().expect("UTF-8 path");
+    let r = cncrot(&["program", path, "--dialect", "heidenhain"], "");
+    assert!(
+        r.code == 0
+            && r.stdout
+                .contains("4 blocks: 1 concerning the frame, 3 passed over"),
+        "{}{}",
+        r.stdout,
         r.stderr
     );
     std::fs::remove_file(&file).ok();
