@@ -204,6 +204,33 @@ static void tilted(int32_t dialect, cncrot_program *p) {
   CHECK_STATUS(cncrot_program_line(p, dialect, start, strlen(start)), CNCROT_STATUS_OK);
 }
 
+/* The working plane: G18 is kept (the frame unchanged), ROT RPL=30 then turns about Y;
+ * Fanuc's G18 G68 Z X R about Y through the centre: Ry(30) about (10, 0, 0) moves the
+ * origin to (10 - 5*sqrt(3), 0, 5). */
+static void planes(void) {
+  cncrot_program p;
+  memset(&p, 0, sizeof p);
+  CHECK(p.plane == CNCROT_PLANE_XY, "plane %d", (int)p.plane);
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_SINUMERIK, "N10 G18 G0 X0", 13), CNCROT_STATUS_OK);
+  CHECK(p.plane == CNCROT_PLANE_ZX && p.active == 0, "plane %d, active %d", (int)p.plane, (int)p.active);
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_SINUMERIK, "ROT RPL=30", 10), CNCROT_STATUS_OK);
+  double f[16], want[9];
+  CHECK_STATUS(cncrot_program_frame(&p, f), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_matrix_from_angles(0, 57, (double[3]){0, 30, 0}, want), CNCROT_STATUS_OK);
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) CHECK(fabs(f[4 * i + j] - want[3 * i + j]) < 1e-15, "RPL in G18: f[%d][%d] %g", i, j, f[4 * i + j]);
+  memset(&p, 0, sizeof p);
+  const char *g68 = "G18 G68 Z0 X10. R30.";
+  CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_FANUC, g68, strlen(g68)), CNCROT_STATUS_OK);
+  CHECK(p.plane == CNCROT_PLANE_ZX, "plane %d", (int)p.plane);
+  CHECK(fabs(p.origin[0] - (10 - 5 * sqrt(3.0))) < 1e-13 && p.origin[1] == 0 && fabs(p.origin[2] - 5) < 1e-13,
+        "origin %g %g %g", p.origin[0], p.origin[1], p.origin[2]);
+  /* A plane that is not one: refused as a state the library did not write. */
+  cncrot_program bad = p;
+  bad.plane = 3;
+  CHECK_STATUS(cncrot_program_frame(&bad, f), CNCROT_STATUS_BAD_STATE);
+}
+
 /* Every block of a program: blocks that do not concern the frame are passed over, blocks
  * that change it in ways the library does not follow say so; both leave the state
  * byte-identical and are successes. */
@@ -780,6 +807,7 @@ static void translated_programs(void) {
 }
 
 int main(void) {
+  planes();
   vendors();
   readback_and_rules();
   every_pair_converts();

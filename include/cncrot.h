@@ -213,7 +213,8 @@
 
 /**
  * Fanuc-style: `G68.2`, `G68.4`, `G69`, `G53.1`, the 3-D coordinate conversion
- * `G68 X Y Z I J K R`; blocks of at most 256 bytes.
+ * `G68 X Y Z I J K R` and the rotation in the plane `G68 X Y R`; blocks of at most 256
+ * bytes.
  */
 #define CNCROT_DIALECT_FANUC 3
 
@@ -247,7 +248,7 @@
  * Mixed into the seal of every `cncrot_program` this version writes: a state of a version
  * with another meaning of the same bytes gets another constant, and is refused.
  */
-#define CNCROT_PROGRAM_FORMAT 1347569460
+#define CNCROT_PROGRAM_FORMAT 1347569461
 
 /**
  * `cncrot_program.positioning`: the tilt command moves no axis (`STAY`, `G68.2` alone).
@@ -307,6 +308,21 @@
  * `cncrot_program.feed`: at the feed rate programmed before (`F AUTO`).
  */
 #define CNCROT_FEED_AUTO 2
+
+/**
+ * `cncrot_program.plane`: `G17`, X and Y (rotations in the plane about Z); the default.
+ */
+#define CNCROT_PLANE_XY 0
+
+/**
+ * `cncrot_program.plane`: `G18`, Z and X (about Y).
+ */
+#define CNCROT_PLANE_ZX 1
+
+/**
+ * `cncrot_program.plane`: `G19`, Y and Z (about X).
+ */
+#define CNCROT_PLANE_YZ 2
 
 /**
  * The room `cncrot_program_expected` needs: the longest text it writes and its NUL.
@@ -722,12 +738,12 @@ typedef struct cncrot_machine {
  * hand, a bit flipped in storage, a state of another version — is refused with
  * `CNCROT_STATUS_BAD_STATE`.
  *
- * Layout (200 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
+ * Layout (208 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
  * `angles` 96, `shift` 120, `active` 144, `dialect` 148, `options` 152, `choice` 156,
  * `reference_axis` 160, `positioning` 164, `direct_given` 168, `retract` 172,
- * `retract_mm` 176, `feed_mm_min` 184, `feed` 192, `reserved` 196. Accepted on entry: all
- * zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..196
- * exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
+ * `retract_mm` 176, `feed_mm_min` 184, `feed` 192, `plane` 196, `unused` 200, `reserved`
+ * 204. Accepted on entry: all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's
+ * `crc32`) of bytes 0..204 exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
  */
 typedef struct cncrot_program {
   /**
@@ -813,6 +829,16 @@ typedef struct cncrot_program {
    * without a feed word in its tilt.
    */
   int32_t feed;
+  /**
+   * The working plane the program selected (`CNCROT_PLANE_*`: `G17`, `G18`, `G19`;
+   * `CNCROT_PLANE_XY` until one is): the plane of the rotations that name no axis
+   * (`ROT RPL=`, `G68 X Y R`).
+   */
+  int32_t plane;
+  /**
+   * 0 (room for a later field in the same layout).
+   */
+  uint32_t unused;
   /**
    * The seal: 0 in the all-zero initial state, else the checksum described above (the
    * field keeps the name it had when it was reserved, so that the layout is unchanged).
@@ -1865,9 +1891,10 @@ int32_t cncrot_program_init(struct cncrot_program *program, uint32_t options);
  * `G54.1 P`, `G154 P`, `G505`, `CYCL DEF 247`, `PRESET SELECT`; `G92`; writes to offset
  * tables and frame variables such as `G10 L2`, `#5221=`, `$P_UIFR[1]=`, `FN 17`; datum
  * shifts from tables such as `CYCL DEF 7.1 #5`, `TRANS DATUM TABLE`; mirroring, scaling
- * and rotations in the working plane such as `MIRROR`, `G51.1`, `CYCL DEF 10`, `G68 X Y R`,
- * `AROT RPL=`; a tilt through the machine's axes such as `CYCL DEF 19`, `TOROT`). A
- * program speaks one dialect.
+ * and rotations that need more than the state keeps such as `MIRROR`, `G51.1`,
+ * `CYCL DEF 10`, Haas's `G68`; a tilt through the machine's axes such as `CYCL DEF 19`,
+ * `TOROT`). A block that selects another working plane (`G17`–`G19`, for `ROT RPL=` and
+ * `G68 X Y R`) is applied with the frame unchanged. A program speaks one dialect.
  *
  * Returns 0, `CNCROT_STATUS_PASSED`, `CNCROT_STATUS_NOT_FOLLOWED`, or a negative status
  * with `*program` byte-identical:

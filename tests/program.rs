@@ -352,11 +352,9 @@ fn fanuc_coordinate_conversion() {
         .line(d, b"G68 X0 Y0 Z0 I0 J1 K0")
         .unwrap_err();
     assert_eq!(e.error, Error::MissingWord);
-    // What the state cannot know: the plane of a rotation in the plane, the tool's
-    // position as the centre. Haas and Syntec have no such conversion.
+    // What the state cannot know: the tool's position as the centre. Haas and Syntec have
+    // no such conversion.
     for (d, line) in [
-        (Dialect::Fanuc, "G68 X0 Y0 R30."),
-        (Dialect::Fanuc, "G17 G68 X5. Y5. R30."),
         (Dialect::Fanuc, "G68 I0 J1. K0 R30."),
         (Dialect::Fanuc, "G68 X0 Y0 I0 J1. K0 R30."),
         (Dialect::Haas, "G68 X0 Y0 Z0 I0 J0 K1 R90."),
@@ -364,6 +362,67 @@ fn fanuc_coordinate_conversion() {
     ] {
         let (_, remark) = Program::default().line(d, line.as_bytes()).unwrap();
         assert_eq!(remark, Remark::NotFollowed, "{line}");
+    }
+}
+
+/// Rotations in the working plane, against hand derivation: about Z, Y, X for G17, G18,
+/// G19, the plane kept by the state.
+#[test]
+fn rotations_in_the_plane() {
+    use cncrot::dialects::program::Plane;
+    let d = Dialect::Sinumerik;
+    // ROT replaces, AROT adds: 30 + 10 about Z.
+    let p = read(d, &["ROT RPL=30", "AROT RPL=10"]);
+    assert!(dist(&p.frame.rotation, &r(Axis::Z, 40.0)) < 1e-15);
+    // G18 (a plane selection: applied, the frame unchanged), then about Y.
+    let (q, remark) = p.line(d, b"N20 G18 G0 X0").unwrap();
+    assert_eq!(
+        (remark, q.plane, q.frame),
+        (Remark::Applied, Plane::Zx, p.frame)
+    );
+    let q = q.line(d, b"AROT RPL = -45.5 ; in the plane").unwrap().0;
+    let want = mul(&r(Axis::Z, 40.0), &r(Axis::Y, -45.5));
+    assert!(dist(&q.frame.rotation, &want) < 1e-15);
+    // G19: ROT RPL=90 alone, Rx(90°): the tool (0, -1, 0).
+    let q = read(d, &["G19", "ROT RPL=90"]);
+    assert_eq!(q.frame.rotation, r(Axis::X, 90.0));
+    // The plane a passed block leaves: a selection of the same plane is passed over.
+    assert_eq!(q.line(d, b"G19 G1 Y10").unwrap().1, Remark::Passed);
+
+    // Fanuc-style G68 X Y R: about the plane's normal through the centre its words give.
+    let d = Dialect::Fanuc;
+    // Rz(90°) about (10, 0): the origin c − Rz·c = (10, −10, 0).
+    let p = read(d, &["G68 X10. Y0 R90."]);
+    assert_eq!(p.frame.translation, [10.0, -10.0, 0.0]);
+    assert_eq!(p.frame.rotation, r(Axis::Z, 90.0));
+    // A G68 again changes centre and angle; G69 cancels.
+    let p = read(d, &["G68 X10. Y0 R90.", "G68 X0 Y0 R30."]);
+    assert_eq!(p.frame.translation, [0.0; 3]);
+    assert!(dist(&p.frame.rotation, &r(Axis::Z, 30.0)) < 1e-15);
+    assert_eq!(read(d, &["G68 X0 Y0 R30.", "G69"]).frame, Frame::IDENTITY);
+    // G18 G68 Z X R on one block: Ry(30°) about (10, 0, 0): c − Ry·c = (10 − 5√3, 0, 5).
+    let p = read(d, &["N10 G18 G68 Z0 X10. R30."]);
+    assert_eq!(p.plane, Plane::Zx);
+    assert!(dist(&p.frame.rotation, &r(Axis::Y, 30.0)) < 1e-15);
+    let want = [10.0 - 5.0 * 3f64.sqrt(), 0.0, 5.0];
+    assert!((0..3).all(|k| (p.frame.translation[k] - want[k]).abs() < 1e-13));
+    // Syntec writes the same form.
+    let s = read(Dialect::Syntec, &["G68 X10. Y0 R90."]);
+    assert_eq!(s.frame, read(d, &["G68 X10. Y0 R90."]).frame);
+    // Not followed: a centre word missing, no R, the third axis, G91, a tilt not in the
+    // plane; Haas (its G69 cancels only G68, which the state cannot tell from a G268).
+    for (d, lines) in [
+        (d, &["G68 X0 R30."][..]),
+        (d, &["G68 X0 Y0"]),
+        (d, &["G68 X0 Y0 Z0 R30."]),
+        (d, &["G91 G68 X0 Y0 R30."]),
+        (d, &["G68.2 X0 Y0 Z0 I0 J30. K0", "G68 X0 Y0 R30."]),
+        (Dialect::Haas, &["G68 X0 Y0 R30."]),
+    ] {
+        let (last, before) = lines.split_last().unwrap();
+        let p = read(d, before);
+        let (q, remark) = p.line(d, last.as_bytes()).unwrap();
+        assert_eq!((remark, q), (Remark::NotFollowed, p), "{lines:?}");
     }
 }
 
@@ -1104,10 +1163,8 @@ fn every_block_of_a_program() {
             ("N110 G505", N),
             ("N120 G500", N),
             ("N130 SCALE X2", N),
-            // A rotation in the active plane, which the state does not keep: not followed
-            // (it was refused as an unknown word).
-            ("N132 AROT RPL=30", N),
-            ("N134 ROT RPL = -45.5 ; in the plane", N),
+            // RPL with an axis' angle: in no manual's syntax.
+            ("N132 AROT X10 RPL=30", N),
             ("N140 G153 G0 Z0", P),
             ("N150 M30", P),
         ],

@@ -1269,7 +1269,11 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                 if let Some(t) = &target {
                     let mut buf = [0u8; MAX_CHANGE];
                     match write_change(t.dialect, t.form.as_bytes(), &before, &p, d, &mut buf) {
-                        Ok((0, _)) if t.dialect == dialect => Some(block.to_string()),
+                        // The same dialect, or a plane selected (`G18`, perhaps with a
+                        // move): the block as it stands (no writer says a plane).
+                        Ok((0, _)) if t.dialect == dialect || before.plane != p.plane => {
+                            Some(block.to_string())
+                        }
                         // Nothing changes in the target (cycle 7's first line, a
                         // command repeated): nothing to write.
                         Ok((0, _)) => None,

@@ -878,6 +878,28 @@ fn program_reads_a_whole_program_on_a_machine() {
     assert_eq!(lines[2], "G68.2 X0. Y0. Z0. I90. J30. K-90.");
     assert_eq!(lines[3], "G53.1");
     assert_eq!(lines[7], "G69");
+    // A plane selection is carried across as it stands (no writer says a plane): the
+    // rotation in the G18 plane that follows is written as the target's tilt.
+    let r = cncrot(
+        &[
+            "program",
+            "-",
+            "--dialect",
+            "fanuc",
+            "--to",
+            "sinumerik:CYCLE800",
+        ],
+        "G18 G1 X10.\nG68 Z0 X0 R30.\nG69\n",
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(lines[0], "G18 G1 X10.", "{}", r.stdout);
+    assert!(
+        lines[1].starts_with("CYCLE800(0,\"\",0,57,0,0,0,0,30,0,"),
+        "{}",
+        r.stdout
+    );
+    assert_eq!(lines[2], "CYCLE800()", "{}", r.stdout);
     let r = cncrot(
         &["program", p, "--dialect", "heidenhain", "--current", "0,0"],
         "",

@@ -53,7 +53,13 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
       snprintf(where, sizeof where, "%s, line %d", label(2, "lines"), (int)(k + 1));
       raise_at(w, where, NULL, -1, 0);
     }
-    mxSetCell(text, k, mxCreateString(out));
+    /* A plane selected (G18, perhaps with a move) writes nothing: the block as it stands. */
+    if (out[0] == '\0' && before.plane != p.plane) {
+      buf[len] = '\0';
+      mxSetCell(text, k, mxIsChar(a) ? mxDuplicateArray(a) : mxCreateString(buf));
+    } else {
+      mxSetCell(text, k, mxCreateString(out));
+    }
     mxSetCell(remarks, k, mxCreateString("applied"));
   }
   plhs[0] = text;

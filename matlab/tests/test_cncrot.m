@@ -267,6 +267,14 @@ function test_cncrot(cases_file)
   check(stm.retract == 2 && stm.retract_mm == 50 && stm.feed == 1 && stm.feed_mm_min == 2000, 'retraction and feed kept');
   [~, stc] = cncrot_program_lines('sinumerik', 'CYCLE800(4,"TC1",0,57,0,0,0,0,30,0,0,0,0,-1)');
   check(stc.retract == 1 && stc.retract_mm == 0 && stc.feed == 0, 'CYCLE800 _FR 4');
+  % The working plane: G18 kept (1), ROT RPL=30 then about Y; translated, the G18 block as
+  % it stands.
+  [Fr, str, ~, rmr] = cncrot_program_lines('sinumerik', {'G18 G0 X0', 'ROT RPL=30'});
+  c30 = cosd(30); s30 = sind(30);
+  check(str.plane == 1 && isequal(rmr, {'applied'; 'applied'}) && ...
+        max(max(abs(Fr(1:3, 1:3) - [c30 0 s30; 0 1 0; -s30 0 c30]))) < 1e-15, 'ROT RPL in G18');
+  tr = cncrot_program_translate('fanuc', {'G18 G1 X10.', 'G68 Z0 X0 R30.', 'G69'}, 'sinumerik', 'CYCLE800');
+  check(strcmp(tr{1}, 'G18 G1 X10.') && strcmp(tr{3}, 'CYCLE800()'), 'a plane selection carried across');
   [ax0, s0] = cncrot_program_axes([], hd, [730 0 0]);
   check(isequal(ax0, [730 0 0]) && s0 == 2, 'program_axes with nothing active');
   % Direct modes: PLANE AXIAL keeps the positions; its frame needs the machine: NaN without

@@ -13,7 +13,7 @@
 
 use crate::text::number::Out;
 use crate::text::scan::LineError;
-use crate::{Error, Frame, Vector};
+use crate::{Axis, Error, Frame, Vector};
 
 /// The most words a form has.
 pub const MAX_VALUES: usize = 9;
@@ -50,6 +50,8 @@ pub struct Modal {
     /// positions in `angles`: the rotation follows from the machine, so `frame` holds only
     /// the origin (its rotation the identity).
     pub direct: Option<Direct>,
+    /// The working plane (`G17`–`G19`).
+    pub plane: Plane,
 }
 
 /// A direct mode: a block that states rotary-axis positions (`PLANE AXIAL B+30 C+45`, a
@@ -84,6 +86,60 @@ pub enum DirectAxes {
     /// By place in the machine's kinematics: rotary axis 1, 2, 3 (a `CYCLE800` direct:
     /// `_A` the swivel data set's first axis, `_B` its second).
     Numbered,
+}
+
+/// The working plane a program selected (`G17`, `G18`, `G19`): the plane of the rotations
+/// that name no axis (SINUMERIK `ROT RPL=`, Fanuc-style `G68 X Y R`), which turn about its
+/// normal. `G17` is the default \[choice: the power-on setting of milling machines; a
+/// program that needs another selects it\].
+///
+/// ```
+/// use cncrot::dialects::program::{Dialect, Plane, Program};
+/// let (p, _) = Program::default().line(Dialect::Fanuc, b"G18 G90").unwrap();
+/// assert_eq!(p.plane, Plane::Zx);
+/// assert_eq!(p.plane.normal(), cncrot::Axis::Y);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Plane {
+    /// `G17`: X and Y, rotations about Z.
+    #[default]
+    Xy,
+    /// `G18`: Z and X, rotations about Y.
+    Zx,
+    /// `G19`: Y and Z, rotations about X.
+    Yz,
+}
+
+impl Plane {
+    /// The axis the plane's rotations turn about (a positive angle turns its first axis
+    /// toward its second: X to Y, Z to X, Y to Z).
+    pub fn normal(self) -> Axis {
+        match self {
+            Plane::Xy => Axis::Z,
+            Plane::Zx => Axis::Y,
+            Plane::Yz => Axis::X,
+        }
+    }
+
+    /// The plane a G-code selects (its code in tenths: `G17` is 170), if it selects one.
+    pub(crate) fn of_code(code: u32) -> Option<Plane> {
+        match code {
+            170 => Some(Plane::Xy),
+            180 => Some(Plane::Zx),
+            190 => Some(Plane::Yz),
+            _ => None,
+        }
+    }
+
+    /// The indices (0 X, 1 Y, 2 Z) of the plane's first and second axes, whose words give
+    /// the centre of a rotation in it.
+    pub(crate) fn axes(self) -> [usize; 2] {
+        match self {
+            Plane::Xy => [0, 1],
+            Plane::Zx => [2, 0],
+            Plane::Yz => [1, 2],
+        }
+    }
 }
 
 /// How a program moves the machine to its tilted plane, as its blocks say: Heidenhain's

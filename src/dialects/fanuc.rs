@@ -119,7 +119,7 @@ pub const G69: Frame = Frame::IDENTITY;
 
 use super::family::{
     no_selector, put, v3, AxisChoice, Block, Family, Form, FormInfo, FormSpec, Modal, Motion,
-    Positioning, MAX_VALUES,
+    Plane, Positioning, MAX_VALUES,
 };
 use crate::text::number::{write_word, Out, Style};
 use crate::text::scan::{address_words, whole, Comments, Cursor, LineError, Syntax, Tokens};
@@ -223,31 +223,86 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
     }))
 }
 
-/// `G68 X Y Z I J K R` at the cursor in a Fanuc program (`rest`: the block from the
-/// cursor): the three-dimensional coordinate conversion \[doc: Fanuc 16i/18i/30i-MB
-/// "three-dimensional coordinate conversion"\]: the program's coordinates turn by `R`
-/// degrees about the direction `I J K` (any length; right-handed, "clockwise looking along
-/// the axis of rotation") through the centre `X Y Z`. A second `G68` converts again in the
-/// converted system \[doc\]: here every `G68` composes on the active tilt, also on a `G68.2`
-/// \[choice\]. `I J K` all 0 is `BAD_ARGUMENT` at `I`, a missing `R` a missing word (the
-/// control's alarm 5044). A centre not wholly given is the tool's position or the previous
-/// conversion's centre, which the state does not keep: not followed \[choice\]. Without
-/// `I J K` the block is the rotation in the plane (`G17`–`G19`), which the state does not
-/// keep either: `None`, and the block is not followed ([`ISO_NOT_FOLLOWED`]).
-fn read_conversion(m: &Modal, c: &mut Cursor, rest: &[u8]) -> Option<Result<Block, LineError>> {
+/// `G68` at the cursor (`rest`: the block from the cursor, `block`: the whole block):
+///
+/// - With `I J K` (Fanuc only, `spatial`): the three-dimensional coordinate conversion
+///   \[doc: Fanuc 16i/18i/30i "three-dimensional coordinate conversion"\]: the program's
+///   coordinates turn by `R` degrees about the direction `I J K` (any length; right-handed,
+///   "clockwise looking along the axis of rotation") through the centre `X Y Z`. A second
+///   `G68` converts again in the converted system \[doc\]: here every such `G68` composes on
+///   the active tilt, also on a `G68.2` \[choice\]. `I J K` all 0 is `BAD_ARGUMENT` at `I`,
+///   a missing `R` a missing word (the control's alarm 5044). A centre not wholly given is
+///   the tool's position or the previous conversion's centre, which the state does not
+///   keep: not followed \[choice\].
+/// - Without: the rotation in the working plane \[doc: "α β: two of X, Y, Z that correspond
+///   to the current plane; a positive R is counterclockwise"\]: by `R` about the plane's
+///   normal through the centre its two words give (`G17 G68 X Y R`, `G18 G68 Z X R`,
+///   `G19 G68 Y Z R`; a plane word on the block selects the plane first). It replaces the
+///   rotation in the plane before it (a `G68` again changes centre and angle). Not followed
+///   \[choice\]: a centre word missing (the tool's position), no `R` (a parameter's angle), the
+///   third axis' word, `G91` on the block (an incremental angle, by a parameter), and an
+///   active tilt that is not a rotation in the same plane (how the control composes them is
+///   in no text found).
+///
+/// `None` when no `G68` stands here or (not `spatial`) it has `I J K`: the block is then
+/// not followed ([`ISO_NOT_FOLLOWED`]).
+pub(crate) fn read_rotation(
+    m: &Modal,
+    c: &mut Cursor,
+    rest: &[u8],
+    block: &[u8],
+    spatial: bool,
+) -> Option<Result<Block, LineError>> {
     let comments = Comments {
         semicolon: true,
         parens: true,
     };
-    let spatial = Tokens::new(rest, comments, true).any(|t| matches!(t.letter, b'I' | b'J' | b'K'));
+    let ijk = Tokens::new(rest, comments, true).any(|t| matches!(t.letter, b'I' | b'J' | b'K'));
     let column = c.column();
-    if !spatial || !c.code(b"G68") {
+    if (ijk && !spatial) || !c.code(b"G68") {
         return None;
     }
-    Some(conversion(m, c, column))
+    let (plane, incremental) = plane_words(m, block);
+    Some(if ijk {
+        conversion(m, c, column)
+    } else {
+        in_plane(m, c, column, plane, incremental)
+    })
 }
 
-/// [`read_conversion`] after its code.
+/// The plane a block selects (its last plane word, else `m`'s) and whether it names `G91`.
+fn plane_words(m: &Modal, block: &[u8]) -> (Plane, bool) {
+    let comments = Comments {
+        semicolon: true,
+        parens: true,
+    };
+    let (mut plane, mut incremental) = (m.plane, false);
+    for t in Tokens::new(block, comments, true) {
+        if let (b'G', Some(code)) = (t.letter, t.code()) {
+            plane = Plane::of_code(code).unwrap_or(plane);
+            incremental |= code == 910;
+        }
+    }
+    (plane, incremental)
+}
+
+/// A block's result with the plane its words select (`G18 G68.2 …`, `G17 G68 X Y R`): the
+/// readers of the commands that start a block take the plane words before them.
+pub(crate) fn in_block_plane(
+    m: &Modal,
+    block: &[u8],
+    result: Result<Block, LineError>,
+) -> Result<Block, LineError> {
+    result.map(|b| match b {
+        Block::Frame(next) => Block::Frame(Modal {
+            plane: plane_words(m, block).0,
+            ..next
+        }),
+        other => other,
+    })
+}
+
+/// The three-dimensional conversion of [`read_rotation`] after its code.
 fn conversion(m: &Modal, c: &mut Cursor, column: usize) -> Result<Block, LineError> {
     let w = address_words(c, *b"XYZIJKR", SYNTAX, false, (true, true))?;
     if !w.given[6] {
@@ -265,6 +320,35 @@ fn conversion(m: &Modal, c: &mut Cursor, column: usize) -> Result<Block, LineErr
     );
     let base = LineError::at(column, m.tilt_base())?;
     Ok(Block::Frame(m.with_frame(base.compose(&step))))
+}
+
+/// The rotation in `plane` of [`read_rotation`] after its code.
+fn in_plane(
+    m: &Modal,
+    c: &mut Cursor,
+    column: usize,
+    plane: Plane,
+    incremental: bool,
+) -> Result<Block, LineError> {
+    let w = address_words(c, *b"XYZR", SYNTAX, false, (true, true))?;
+    let [first, second] = plane.axes();
+    let normal = 3 - first - second;
+    let tilt = LineError::at(column, m.tilt_base())?;
+    let mut n = [0.0; 3];
+    n[normal] = 1.0;
+    let in_the_plane = crate::rotate(&tilt.rotation, n) == n;
+    if !(w.given[first] && w.given[second] && w.given[3])
+        || w.given[normal]
+        || incremental
+        || !in_the_plane
+    {
+        return Ok(Block::NotFollowed);
+    }
+    let mut centre = [0.0; 3];
+    centre[first] = w.values[first];
+    centre[second] = w.values[second];
+    let turn = crate::elementary(plane.normal(), w.values[3]);
+    Ok(Block::Frame(m.with_frame(Frame::about_point(turn, centre))))
 }
 
 /// `G53.1` (the rotary axes turn the tool to the plane) or `G53.6` (the same, the tool tip
@@ -330,12 +414,12 @@ pub(crate) fn read_g52(m: &Modal, c: &mut Cursor) -> Result<Block, LineError> {
 }
 
 /// Skips the modal words a post may write before the tilt on its block (`N50 G90 G68.2 …`):
-/// plane selection, absolute positions, the cancels of cutter and length compensation and
-/// of canned cycles, units, feed per minute. None of them changes the frame.
-/// Whether any was skipped.
+/// plane selection (kept by [`in_block_plane`]), absolute positions, the cancels of cutter
+/// and length compensation and of canned cycles, units, feed per minute. None of them
+/// changes the frame. Whether any was skipped.
 pub(crate) fn skip_leading(c: &mut Cursor) -> bool {
-    const LEADING: [&[u8]; 9] = [
-        b"G17", b"G90", b"G40", b"G49", b"G80", b"G94", b"G20", b"G21", b"G15",
+    const LEADING: [&[u8]; 11] = [
+        b"G17", b"G18", b"G19", b"G90", b"G40", b"G49", b"G80", b"G94", b"G20", b"G21", b"G15",
     ];
     let mut any = false;
     while LEADING.iter().any(|k| c.code(k)) {
@@ -364,8 +448,9 @@ fn offset_variable(code: u32) -> bool {
 }
 
 /// What a block of an ISO-style program (Fanuc, Haas, Syntec) does when it does not start
-/// with a command its family reads: a cancel among other words (`cancels`) applies; a
-/// command the family reads standing elsewhere (`commands`) is refused at its column; a
+/// with a command its family reads: a plane selection (`G17`–`G19`) and a cancel among
+/// other words (`cancels`) apply; a command the family reads standing elsewhere
+/// (`commands`) is refused at its column; a
 /// G-code of [`ISO_NOT_FOLLOWED`] or `more`, or a write to a work-offset variable, is
 /// [`Block::NotFollowed`] (it wins over a cancel on the same block: the library's state is
 /// then not the control's either way); anything else is [`Block::Passed`].
@@ -382,9 +467,13 @@ pub(crate) fn iso_block(
         parens: true,
     };
     let (mut cancel, mut not_followed) = (false, false);
+    let mut plane = m.plane;
     for t in Tokens::new(text, comments, true) {
         match (t.letter, t.code()) {
             (b'G', Some(code)) if cancels.contains(&code) => cancel = true,
+            (b'G', Some(code)) if Plane::of_code(code).is_some() => {
+                plane = Plane::of_code(code).unwrap_or(plane)
+            }
             (b'G', Some(code)) if commands.contains(&code) => {
                 return Err(LineError {
                     error: Error::UnknownWord,
@@ -402,7 +491,13 @@ pub(crate) fn iso_block(
     Ok(if not_followed {
         Block::NotFollowed
     } else if cancel {
-        Block::Frame(m.with_frame(Frame::IDENTITY))
+        Block::Frame(Modal {
+            plane,
+            ..m.with_frame(Frame::IDENTITY)
+        })
+    } else if plane != m.plane {
+        // A plane selection: the frame stays, the rotations in the plane turn otherwise.
+        Block::Frame(Modal { plane, ..*m })
     } else {
         Block::Passed
     })
@@ -477,16 +572,16 @@ impl Family for Fanuc {
             return result;
         }
         let rest = text.get(c.column() - 1..).unwrap_or(&[]);
-        if let Some(result) = read_conversion(m, &mut c, rest) {
+        if let Some(result) = read_rotation(m, &mut c, rest, text, true) {
             return result;
         }
         if skip_leading(&mut c) {
             if let Some(result) = read_g68(m, &mut c) {
-                return result;
+                return in_block_plane(m, text, result);
             }
             let rest = text.get(c.column() - 1..).unwrap_or(&[]);
-            if let Some(result) = read_conversion(m, &mut c, rest) {
-                return result;
+            if let Some(result) = read_rotation(m, &mut c, rest, text, true) {
+                return in_block_plane(m, text, result);
             }
         }
         iso_block(m, text, &[682, 683, 684, 531, 536], &[690], &[])

@@ -9,7 +9,7 @@
 //! this module holds what is the same for all: the state, line ends and lengths, the checks
 //! of a restored state and of a written line.
 
-pub use super::family::{AxisChoice, Direct, DirectAxes, Feed, Positioning, Retract};
+pub use super::family::{AxisChoice, Direct, DirectAxes, Feed, Plane, Positioning, Retract};
 use super::family::{Block, FormSpec, Modal, Motion, MAX_VALUES};
 use super::form;
 pub use super::registry::Dialect;
@@ -69,6 +69,8 @@ pub struct Program {
     /// then holds the origin with the identity rotation, and [`Program::frame_on`] gives
     /// the frame.
     pub direct: Option<Direct>,
+    /// The working plane the program selected (`G17`–`G19`; `G17` until one is).
+    pub plane: Plane,
 }
 
 /// What a block did, beside the state it leaves (`CNCROT_STATUS_PASSED` and
@@ -139,6 +141,7 @@ impl Program {
                 feed: if stay { Feed::Rapid } else { next.feed },
                 feed_mm_min: if stay { 0.0 } else { next.feed_mm_min },
                 direct: next.direct,
+                plane: next.plane,
             },
             Remark::Applied,
         ))
@@ -205,6 +208,7 @@ impl Program {
             feed: self.feed,
             feed_mm_min: self.feed_mm_min,
             direct: self.direct,
+            plane: self.plane,
         }
     }
 

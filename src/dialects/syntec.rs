@@ -223,9 +223,17 @@ impl Family for Syntec {
         if let Some(result) = fanuc::read_g68(m, &mut c) {
             return result;
         }
+        let rest = text.get(c.column() - 1..).unwrap_or(&[]);
+        if let Some(result) = fanuc::read_rotation(m, &mut c, rest, text, false) {
+            return result;
+        }
         if fanuc::skip_leading(&mut c) {
             if let Some(result) = fanuc::read_g68(m, &mut c) {
-                return result;
+                return fanuc::in_block_plane(m, text, result);
+            }
+            let rest = text.get(c.column() - 1..).unwrap_or(&[]);
+            if let Some(result) = fanuc::read_rotation(m, &mut c, rest, text, false) {
+                return fanuc::in_block_plane(m, text, result);
             }
         }
         fanuc::iso_block(m, text, &[1580, 682, 683, 684, 531, 536], &[690], &[])

@@ -8,7 +8,8 @@ use super::machine::{
 };
 use super::{cncrot_status, guard, non_null, read_finite, write};
 use crate::dialects::program::{
-    self, AxisChoice, Dialect, Direct, DirectAxes, Feed, Positioning, Program, Remark, Retract,
+    self, AxisChoice, Dialect, Direct, DirectAxes, Feed, Plane, Positioning, Program, Remark,
+    Retract,
 };
 use crate::{crc32, Error, Frame};
 use core::ffi::c_char;
@@ -20,7 +21,8 @@ pub const CNCROT_DIALECT_SINUMERIK: i32 = 1;
 /// blocks of at most 254 bytes.
 pub const CNCROT_DIALECT_HEIDENHAIN: i32 = 2;
 /// Fanuc-style: `G68.2`, `G68.4`, `G69`, `G53.1`, the 3-D coordinate conversion
-/// `G68 X Y Z I J K R`; blocks of at most 256 bytes.
+/// `G68 X Y Z I J K R` and the rotation in the plane `G68 X Y R`; blocks of at most 256
+/// bytes.
 pub const CNCROT_DIALECT_FANUC: i32 = 3;
 /// Syntec: `G158` and its Fanuc-style `G68.2` mode; blocks of at most 256 bytes.
 pub const CNCROT_DIALECT_SYNTEC: i32 = 4;
@@ -64,12 +66,12 @@ const FORM_MAX: usize = 64;
 /// hand, a bit flipped in storage, a state of another version — is refused with
 /// `CNCROT_STATUS_BAD_STATE`.
 ///
-/// Layout (200 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
+/// Layout (208 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
 /// `angles` 96, `shift` 120, `active` 144, `dialect` 148, `options` 152, `choice` 156,
 /// `reference_axis` 160, `positioning` 164, `direct_given` 168, `retract` 172,
-/// `retract_mm` 176, `feed_mm_min` 184, `feed` 192, `reserved` 196. Accepted on entry: all
-/// zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..196
-/// exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
+/// `retract_mm` 176, `feed_mm_min` 184, `feed` 192, `plane` 196, `unused` 200, `reserved`
+/// 204. Accepted on entry: all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's
+/// `crc32`) of bytes 0..204 exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct cncrot_program {
@@ -126,6 +128,12 @@ pub struct cncrot_program {
     /// `F AUTO`); `CNCROT_FEED_RAPID` while `positioning` is stay and in every dialect
     /// without a feed word in its tilt.
     pub feed: i32,
+    /// The working plane the program selected (`CNCROT_PLANE_*`: `G17`, `G18`, `G19`;
+    /// `CNCROT_PLANE_XY` until one is): the plane of the rotations that name no axis
+    /// (`ROT RPL=`, `G68 X Y R`).
+    pub plane: i32,
+    /// 0 (room for a later field in the same layout).
+    pub unused: u32,
     /// The seal: 0 in the all-zero initial state, else the checksum described above (the
     /// field keeps the name it had when it was reserved, so that the layout is unchanged).
     pub reserved: u32,
@@ -133,7 +141,7 @@ pub struct cncrot_program {
 
 /// Mixed into the seal of every `cncrot_program` this version writes: a state of a version
 /// with another meaning of the same bytes gets another constant, and is refused.
-pub const CNCROT_PROGRAM_FORMAT: u32 = 0x5052_4734;
+pub const CNCROT_PROGRAM_FORMAT: u32 = 0x5052_4735;
 
 /// `cncrot_program.positioning`: the tilt command moves no axis (`STAY`, `G68.2` alone).
 pub const CNCROT_POSITIONING_STAY: i32 = 0;
@@ -164,11 +172,18 @@ pub const CNCROT_FEED_RATE: i32 = 1;
 /// `cncrot_program.feed`: at the feed rate programmed before (`F AUTO`).
 pub const CNCROT_FEED_AUTO: i32 = 2;
 
+/// `cncrot_program.plane`: `G17`, X and Y (rotations in the plane about Z); the default.
+pub const CNCROT_PLANE_XY: i32 = 0;
+/// `cncrot_program.plane`: `G18`, Z and X (about Y).
+pub const CNCROT_PLANE_ZX: i32 = 1;
+/// `cncrot_program.plane`: `G19`, Y and Z (about X).
+pub const CNCROT_PLANE_YZ: i32 = 2;
+
 const PROGRAM_SIZE: usize = core::mem::size_of::<cncrot_program>();
 /// The bytes the seal covers: everything before it.
 const SEALED: usize = core::mem::offset_of!(cncrot_program, reserved);
 // No padding (every byte is a field's, so every byte is covered), and the documented layout.
-const _: () = assert!(SEALED == 196 && PROGRAM_SIZE == 200);
+const _: () = assert!(SEALED == 204 && PROGRAM_SIZE == 208);
 
 fn program_bytes(c: &cncrot_program) -> &[u8; PROGRAM_SIZE] {
     // SAFETY: a plain repr(C) struct of integers and doubles without padding (asserted
@@ -249,6 +264,12 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
         CNCROT_FEED_AUTO => Feed::Auto,
         _ => return Err(Error::BadState),
     };
+    let plane = match (c.plane, c.unused) {
+        (CNCROT_PLANE_XY, 0) => Plane::Xy,
+        (CNCROT_PLANE_ZX, 0) => Plane::Zx,
+        (CNCROT_PLANE_YZ, 0) => Plane::Yz,
+        _ => return Err(Error::BadState),
+    };
     let p = Program {
         retract,
         retract_mm: c.retract_mm,
@@ -262,6 +283,7 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
         shift: c.shift,
         choice,
         positioning,
+        plane,
     };
     p.check().map_err(|_| Error::BadState)?;
     Ok(p)
@@ -338,6 +360,12 @@ fn store(p: &Program, options: u32) -> cncrot_program {
         retract_mm: p.retract_mm + 0.0,
         feed_mm_min: p.feed_mm_min + 0.0,
         feed,
+        plane: match p.plane {
+            Plane::Xy => CNCROT_PLANE_XY,
+            Plane::Zx => CNCROT_PLANE_ZX,
+            Plane::Yz => CNCROT_PLANE_YZ,
+        },
+        unused: 0,
         reserved: 0,
     };
     c.reserved = seal_of(&c);
@@ -439,9 +467,10 @@ unsafe fn write_state(program: *mut cncrot_program, p: &Program, options: u32) {
 /// `G54.1 P`, `G154 P`, `G505`, `CYCL DEF 247`, `PRESET SELECT`; `G92`; writes to offset
 /// tables and frame variables such as `G10 L2`, `#5221=`, `$P_UIFR[1]=`, `FN 17`; datum
 /// shifts from tables such as `CYCL DEF 7.1 #5`, `TRANS DATUM TABLE`; mirroring, scaling
-/// and rotations in the working plane such as `MIRROR`, `G51.1`, `CYCL DEF 10`, `G68 X Y R`,
-/// `AROT RPL=`; a tilt through the machine's axes such as `CYCL DEF 19`, `TOROT`). A
-/// program speaks one dialect.
+/// and rotations that need more than the state keeps such as `MIRROR`, `G51.1`,
+/// `CYCL DEF 10`, Haas's `G68`; a tilt through the machine's axes such as `CYCL DEF 19`,
+/// `TOROT`). A block that selects another working plane (`G17`–`G19`, for `ROT RPL=` and
+/// `G68 X Y R`) is applied with the frame unchanged. A program speaks one dialect.
 ///
 /// Returns 0, `CNCROT_STATUS_PASSED`, `CNCROT_STATUS_NOT_FOLLOWED`, or a negative status
 /// with `*program` byte-identical:
@@ -995,7 +1024,7 @@ mod tests {
         assert_eq!(load(&hand), Err(Error::BadState));
     }
 
-    /// The seal is what the header documents: the CRC-32 of bytes 0..196 exclusive-or
+    /// The seal is what the header documents: the CRC-32 of bytes 0..204 exclusive-or
     /// `CNCROT_PROGRAM_FORMAT`; a state sealed without the format (another version's) is
     /// refused.
     #[test]
@@ -1006,9 +1035,9 @@ mod tests {
             .0;
         let c = store(&p, 0);
         let bytes = program_bytes(&c);
-        assert_eq!(c.reserved, crc32(&bytes[..196]) ^ 0x5052_4734);
+        assert_eq!(c.reserved, crc32(&bytes[..204]) ^ 0x5052_4735);
         let mut other = c;
-        other.reserved = crc32(&bytes[..196]);
+        other.reserved = crc32(&bytes[..204]);
         assert_eq!(load(&other), Err(Error::BadState));
     }
 

@@ -372,7 +372,7 @@ pub fn orirpy_angles(v: Vector) -> Result<([f64; 3], bool), Error> {
 
 use super::family::{
     put, v3, AxisChoice, Block, Direct, DirectAxes, Family, Form, FormInfo, FormSpec, Modal,
-    Motion, Positioning, Retract, MAX_VALUES,
+    Motion, Plane, Positioning, Retract, MAX_VALUES,
 };
 use crate::text::number::{write, write_integer, write_word, Out, Style};
 use crate::text::scan::{
@@ -557,15 +557,49 @@ fn frame_command(
     })))
 }
 
-/// Whether the words of a `ROT`/`AROT`/`CROT` name `RPL`: a rotation in the active plane
-/// (G17, G18 or G19 \[doc\]), which the state does not keep. Such a block is not followed,
-/// never refused and never guessed as G17 \[choice\].
+/// Whether the words of a `ROT`/`AROT`/`CROT` name `RPL`: a rotation in the working plane.
 fn plane_rotation(words: &[u8]) -> bool {
     let comments = Comments {
         semicolon: true,
         parens: false,
     };
     Tokens::new(words, comments, false).any(|t| t.is(b"RPL"))
+}
+
+/// `ROT RPL=a`, `AROT RPL=a` (`CROT` as `ROT`) after the command: the rotation by `a` in
+/// the working plane, about its normal (`G17` Z, `G18` Y, `G19` X) \[doc: "RPL: rotation in
+/// the plane: the angle by which the coordinate system is rotated (plane set with G17 to
+/// G19)"; the positive sense as `ROT Z=`, `Y=`, `X=`\]; `ROT` replaces the programmable
+/// frame, `AROT` adds to it. `RPL` with `X Y Z` angles on the block, in no manual's
+/// syntax, is not followed \[choice\].
+fn rpl_command(
+    m: &Modal,
+    c: &mut Cursor,
+    column: usize,
+    additive: bool,
+) -> Result<Block, LineError> {
+    c.spaces();
+    if !c.word(b"RPL") {
+        return Ok(Block::NotFollowed);
+    }
+    c.spaces();
+    if c.peek() != Some(b'=') {
+        return Err(c.missing("="));
+    }
+    c.bump();
+    c.spaces();
+    let angle = c.number(WORDS)?;
+    match c.end(true, false) {
+        Ok(()) => {}
+        Err(e) if e.error == Error::Parse => return Err(e),
+        Err(_) => return Ok(Block::NotFollowed),
+    }
+    let step = Frame::from_rotation(crate::elementary(m.plane.normal(), angle));
+    Ok(Block::Frame(m.with_frame(if additive {
+        m.tilt_base().map_err(at(column))?.compose(&step)
+    } else {
+        step
+    })))
 }
 
 /// A refused value at `column`, with what the parameter may be.
@@ -777,7 +811,7 @@ fn angle_mode(selector: i32) -> Result<AngleMode, Error> {
 /// `R` parameters, `DEF`, control structures, calls, `TRAORI`, `G53`/`G153`/`SUPA`, which
 /// suppress frames for their own block only).
 #[inline(never)]
-fn other_block(rest: &[u8], offset: usize) -> Result<Block, LineError> {
+fn other_block(m: &Modal, rest: &[u8], offset: usize) -> Result<Block, LineError> {
     let comments = Comments {
         semicolon: true,
         parens: false,
@@ -819,7 +853,11 @@ fn other_block(rest: &[u8], offset: usize) -> Result<Block, LineError> {
         b"PAROTOF",
     ];
     let mut not_followed = false;
+    let mut plane = m.plane;
     for t in Tokens::new(rest, comments, false) {
+        if let Some(p) = t.g_code().and_then(Plane::of_code) {
+            plane = p;
+        }
         if COMMANDS.iter().any(|name| t.is(name)) {
             return Err(LineError {
                 error: Error::UnknownWord,
@@ -844,6 +882,9 @@ fn other_block(rest: &[u8], offset: usize) -> Result<Block, LineError> {
     }
     Ok(if not_followed {
         Block::NotFollowed
+    } else if plane != m.plane {
+        // A plane selection: the frame stays, `RPL` turns otherwise.
+        Block::Frame(Modal { plane, ..*m })
     } else {
         Block::Passed
     })
@@ -908,10 +949,11 @@ impl Family for Sinumerik {
     /// One block of a SINUMERIK program: `ROT`, `AROT`, `CROT` (`X Y Z`, with or without `=`,
     /// in the program's angle mode; `ROT`/`CROT` without words cancel, and replace the whole
     /// programmable frame as the control's substituting commands do \[doc\]; `CROT` reads like
-    /// `ROT` \[choice\]), `ROTS`/`AROTS`/`CROTS` (two of `X Y Z`), `TRANS`/`ATRANS`, `CYCLE800(…)`
-    /// and `CYCLE600(…)`, after a block number (`N10`, `:10`), a skip mark or a label, with `;`
-    /// comments. "Frame instructions are programmed in their own block" \[doc\]: nothing else may
-    /// stand on the line.
+    /// `ROT` \[choice\]; or `RPL=` in the working plane), `ROTS`/`AROTS`/`CROTS` (two of
+    /// `X Y Z`), `TRANS`/`ATRANS`, `CYCLE800(…)` and `CYCLE600(…)`, after a block number
+    /// (`N10`, `:10`), a skip mark or a label, with `;` comments. "Frame instructions are
+    /// programmed in their own block" \[doc\]: nothing else may stand on the line. `G17`,
+    /// `G18`, `G19` on any other block select the working plane.
     #[inline(never)]
     fn read_line(m: &Modal, text: &[u8]) -> Result<Block, LineError> {
         let mut c = Cursor::new(text);
@@ -947,10 +989,10 @@ impl Family for Sinumerik {
         ];
         let Some(&(_, additive, kind)) = commands.iter().find(|(name, _, _)| c.keyword(name))
         else {
-            return other_block(text.get(column - 1..).unwrap_or(&[]), column - 1);
+            return other_block(m, text.get(column - 1..).unwrap_or(&[]), column - 1);
         };
         if kind == b'R' && plane_rotation(text.get(c.column() - 1..).unwrap_or(&[])) {
-            return Ok(Block::NotFollowed);
+            return rpl_command(m, &mut c, column, additive);
         }
         frame_command(m, &mut c, column, additive, kind)
     }
