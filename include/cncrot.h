@@ -2125,7 +2125,9 @@ int32_t cncrot_program_write(int32_t dialect,
  * `after` (states `cncrot_program_line` wrote, read in any dialect: a translator passes
  * the state before and after each source block), with the tilt command `form` (the names
  * of `cncrot_program_write`), one block per line separated by `\n`, and a NUL; an empty
- * text when nothing changes in the target dialect.
+ * text when nothing changes in the target dialect. No writer says a working plane: a
+ * block that only selects one (`G18`, perhaps with a move) writes nothing, and a
+ * translator keeps it as it stands.
  *
  * - A changed datum shift is written with the dialect's own command: Heidenhain's cycle 7
  *   (`CYCL DEF 7.0 DATUM SHIFT`, `CYCL DEF 7.1 X…`, `7.2 Y…`, `7.3 Z…`), Fanuc, Haas and

@@ -131,13 +131,13 @@ impl Plane {
         }
     }
 
-    /// The indices (0 X, 1 Y, 2 Z) of the plane's first and second axes, whose words give
-    /// the centre of a rotation in it.
-    pub(crate) fn axes(self) -> [usize; 2] {
+    /// The indices (0 X, 1 Y, 2 Z) of the plane's first and second axes (whose words give
+    /// the centre of a rotation in it) and of its normal.
+    pub(crate) fn axes(self) -> [usize; 3] {
         match self {
-            Plane::Xy => [0, 1],
-            Plane::Zx => [2, 0],
-            Plane::Yz => [1, 2],
+            Plane::Xy => [0, 1, 2],
+            Plane::Zx => [2, 0, 1],
+            Plane::Yz => [1, 2, 0],
         }
     }
 }

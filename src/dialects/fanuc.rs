@@ -308,7 +308,7 @@ fn conversion(m: &Modal, c: &mut Cursor, column: usize) -> Result<Block, LineErr
     if !w.given[6] {
         return Err(c.missing("R"));
     }
-    let first = (3..6).find(|&k| w.given[k]).unwrap_or(3);
+    let first = (3..6).find(|&k| w.given.get(k) == Some(&true)).unwrap_or(3);
     let axis = crate::unit_vector(v3(&w.values, 3))
         .map_err(|_| LineError::bad_value(w.column(first), "I J K: a direction, not all 0"))?;
     if !w.given[..3].iter().all(|&g| g) {
@@ -331,22 +331,26 @@ fn in_plane(
     incremental: bool,
 ) -> Result<Block, LineError> {
     let w = address_words(c, *b"XYZR", SYNTAX, false, (true, true))?;
-    let [first, second] = plane.axes();
-    let normal = 3 - first - second;
+    let [first, second, normal] = plane.axes();
+    let given = |k: usize| w.given.get(k) == Some(&true);
     let tilt = LineError::at(column, m.tilt_base())?;
-    let mut n = [0.0; 3];
-    n[normal] = 1.0;
+    // The normal as a vector: a rotation in the same plane leaves it exactly.
+    let n: Vector = core::array::from_fn(|k| if k == normal { 1.0 } else { 0.0 });
     let in_the_plane = crate::rotate(&tilt.rotation, n) == n;
-    if !(w.given[first] && w.given[second] && w.given[3])
-        || w.given[normal]
+    if !(given(first) && given(second) && w.given[3])
+        || given(normal)
         || incremental
         || !in_the_plane
     {
         return Ok(Block::NotFollowed);
     }
-    let mut centre = [0.0; 3];
-    centre[first] = w.values[first];
-    centre[second] = w.values[second];
+    let centre: Vector = core::array::from_fn(|k| {
+        if k == first || k == second {
+            w.values.get(k).copied().unwrap_or(0.0)
+        } else {
+            0.0
+        }
+    });
     let turn = crate::elementary(plane.normal(), w.values[3]);
     Ok(Block::Frame(m.with_frame(Frame::about_point(turn, centre))))
 }

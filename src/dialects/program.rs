@@ -523,7 +523,8 @@ fn split(dialect: Dialect, spec: &FormSpec, p: &Program) -> (Vector, Frame) {
 /// `after` (both as read by [`Program::line`], in any dialect), with the tilt command `form`
 /// (the names of [`write_line`]), one block per line, separated by `\n`, into `buf`; returns
 /// the length (0: nothing changes) and whether the tilt's decomposition was singular. What
-/// a program translator writes for each block that concerns the frame:
+/// a program translator writes for each block that concerns the frame (no writer says a
+/// working plane: a block that only selects one writes nothing and is kept as it stands):
 ///
 /// - A changed datum shift is written with the dialect's own command: Heidenhain's cycle 7
 ///   (`CYCL DEF 7.0 DATUM SHIFT`, `7.1 X…`, `7.2 Y…`, `7.3 Z…`), Fanuc, Haas and Syntec
