@@ -141,13 +141,17 @@ fn tcp(m: &cncrot_machine, n: usize, pos: &[f64; 3], current: &[f64; 3], t: &[u8
     // computed: a forged seal) only has to stay finite, checked above: the same description
     // with no seal (checked whole) computes otherwise or is refused, and sealing, which
     // checks whole, either refuses it untouched or makes it what the check makes it.
+    // Both ways are compared: an inverse refused alike (out of travel, say) would hide a
+    // forward that computes otherwise (the fuzz target found such a forged seal).
     let mut whole = *m;
     whole.reserved = 0;
     let mut w = [4.0; 6];
     let ws = unsafe {
         cncrot_machine_tcp_inverse(&whole, pose.as_ptr(), length, prev.as_ptr(), w.as_mut_ptr())
     };
-    if (ws, as_bytes(&w)) != (s, as_bytes(&out)) {
+    let mut wp = [9.0; 16];
+    let wf = unsafe { cncrot_machine_tcp_forward(&whole, six.as_ptr(), length, wp.as_mut_ptr()) };
+    if (ws, as_bytes(&w)) != (s, as_bytes(&out)) || (wf, as_bytes(&wp)) != (0, as_bytes(&pose)) {
         let mut sealed = *m;
         if unsafe { cncrot_machine_seal(&mut sealed) } != 0 {
             assert_eq!(as_bytes(&sealed), as_bytes(m));
