@@ -807,9 +807,10 @@ fn angle_mode(selector: i32) -> Result<AngleMode, Error> {
 /// mirroring and scaling (`MIRROR`, `AMIRROR`, `SCALE`, `ASCALE`), frames from the tool
 /// orientation (`TOROT`, `TOROTX`/`Y`/`Z`, `TOFRAME`, `TOFRAMEX`/`Y`/`Z`, `TOROTOF`) and from
 /// the workpiece (`PAROT`, `PAROTOF`), and assignments to frame variables (`$P_…FRAME`,
-/// `$P_UIFR[…]`, `$P_UBFR`, `$P_UGFR`). Anything else is passed over (motion, `T`/`D`/`M`,
-/// `R` parameters, `DEF`, control structures, calls, `TRAORI`, `G53`/`G153`/`SUPA`, which
-/// suppress frames for their own block only).
+/// `$P_UIFR[…]`, `$P_UBFR`, `$P_UGFR`). Another working plane (`G17`–`G19`) is kept, the
+/// frame unchanged. Anything else is passed over (motion, `T`/`D`/`M`, `R` parameters,
+/// `DEF`, control structures, calls, `TRAORI`, `G53`/`G153`/`SUPA`, which suppress frames
+/// for their own block only).
 #[inline(never)]
 fn other_block(m: &Modal, rest: &[u8], offset: usize) -> Result<Block, LineError> {
     let comments = Comments {
