@@ -437,9 +437,9 @@ pub(crate) fn skip_leading(c: &mut Cursor) -> bool {
 /// follow, in every ISO-style dialect: `G10` (offset tables), `G50`/`G51` (scaling),
 /// `G50.1`/`G51.1` (mirroring), `G52` (the local coordinate system, followed where it stands
 /// alone: `read_g52`), `G54`–`G59`,
-/// `G54.1`, `G54.2` (work offsets, fixture offsets), `G68`/`G69.1` (rotation in the plane;
-/// Fanuc's 3-D coordinate conversion is followed where it starts the block:
-/// `read_conversion`), `G92`, `G92.1` (coordinate system setting).
+/// `G54.1`, `G54.2` (work offsets, fixture offsets), `G68`/`G69.1` (rotations; Fanuc's and
+/// Syntec's `G68` are followed where they start the block and the state knows enough:
+/// [`read_rotation`]), `G92`, `G92.1` (coordinate system setting).
 pub(crate) const ISO_NOT_FOLLOWED: &[u32] = &[
     100, 500, 501, 510, 511, 520, 540, 541, 542, 550, 560, 570, 580, 590, 680, 691, 920, 921,
 ];

@@ -342,7 +342,8 @@ fn options(c: &mut Cursor) -> Result<Motion, LineError> {
             };
             continue;
         }
-        // `ABST` is the same word as the German dialog writes it (and posts copy) [doc].
+        // `ABST`: the German dialog's word for the same distance [choice: accepting it
+        // refuses nothing the control accepts; no manual page was found for it].
         if c.word(b"DIST") || c.word(b"ABST") {
             c.spaces();
             c.number(SYNTAX)?;
