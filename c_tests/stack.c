@@ -280,6 +280,31 @@ static void machine_tcp_inverse(void) {
   sink += cncrot_machine_tcp_inverse(&head3, TILT, 100, prev, ax) + cncrot_machine_tcp_inverse(&mach, TILT, 100, prev, ax) +
           cncrot_machine_tcp_inverse(&head3, POLE, 100, prev, ax) + cncrot_machine_tcp_inverse(&mach, POLE, 100, prev, ax);
 }
+/* Its two ways apart: the common case (a tilt away from the poles, no Hirth grid: a fork
+ * head and head3) and the general way (the poles of both, the fork with a Hirth grid). */
+static cncrot_machine fork, fork_hirth;
+/* head3's chain is C (table), B, X (head): X along the table's Z is its pole. */
+static const double POLE3[16] = {0, 0, -1, 5, 0, 1, 0, 6, 1, 0, 0, 7, 0, 0, 0, 1};
+static void build_fork(void) {
+  static const double z[3] = {0, 0, 1}, x[3] = {1, 0, 0}, p[3] = {0, 0, 150};
+  memset(&fork, 0, sizeof fork);
+  sink += cncrot_machine_add_axis(&fork, 0, z, p, 0, 0) + cncrot_machine_add_axis(&fork, 0, x, p, -120, 120);
+  fork_hirth = fork;
+  fork_hirth.axes[0].hirth_step_deg = 2.5;
+  sink += cncrot_machine_seal(&fork_hirth);
+}
+static void machine_tcp_inverse_common(void) {
+  static const double prev[6] = {0, 0, 0, 750, 10, -20}, prev2[6] = {0, 0, 0, 750, 10, 0};
+  static double ax[6];
+  sink += cncrot_machine_tcp_inverse(&head3, TILT, 100, prev, ax) + cncrot_machine_tcp_inverse(&fork, TILT, 100, prev2, ax);
+}
+static void machine_tcp_inverse_general(void) {
+  static const double prev[6] = {0, 0, 0, 750, 10, -20}, prev2[6] = {0, 0, 0, 750, 10, 0};
+  static double ax[6];
+  sink += cncrot_machine_tcp_inverse(&head3, POLE3, 100, prev, ax) + cncrot_machine_tcp_inverse(&fork, POLE, 100, prev2, ax) +
+          cncrot_machine_tcp_inverse(&fork_hirth, TILT, 100, prev2, ax) +
+          cncrot_machine_tcp_inverse(&fork_hirth, POLE, 100, prev2, ax);
+}
 /* Unsealed copies (a field edited by hand): every field checked on each call. */
 static cncrot_machine edited(const cncrot_machine *m) {
   cncrot_machine e = *m;
@@ -370,7 +395,7 @@ static const struct entry ENTRIES[] = {
     E(machine_from_carr, 1), E(machine_carr_error_line, 1), E(machine_from_head, 1),
     E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
     E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),
-    E(program_axes, 1),      E(program_frame_on, 1),   E(machine_tcp_forward, 0), E(machine_tcp_inverse, 1),
+    E(program_axes, 1),      E(program_frame_on, 1),   E(machine_tcp_forward, 0), E(machine_tcp_inverse, 0),
     E(machine_tcp_inverse_rule, 1), E(machine_seal, 1), E(cl_pose, 0), E(tool_path_line, 1), E(tool_path_axes, 1),
     E(matrices_from_angles, 0), E(angles_from_matrices, 0), E(convert_many, 0),
 };
@@ -380,6 +405,8 @@ static const struct entry ENTRIES[] = {
 static const struct entry PATHS[] = {
     {"cncrot_machine_tcp_forward, unsealed", machine_tcp_forward_unsealed, 1},
     {"cncrot_machine_tcp_inverse, unsealed", machine_tcp_inverse_unsealed, 1},
+    {"cncrot_machine_tcp_inverse, common case", machine_tcp_inverse_common, 0},
+    {"cncrot_machine_tcp_inverse, general way", machine_tcp_inverse_general, 0},
 };
 
 int main(int argc, char **argv) {
@@ -397,6 +424,7 @@ int main(int argc, char **argv) {
     change_to = change_from;
     if (cncrot_program_line(&change_to, CNCROT_DIALECT_FANUC, b, sizeof b - 1) != 0) abort();
   }
+  build_fork();
   size_t base = used_by(none);
   int failed = 0;
   size_t n = sizeof ENTRIES / sizeof ENTRIES[0];

@@ -825,6 +825,15 @@ pub(crate) fn about_axis_sc(u: Vector, s: f64, c: f64) -> Matrix {
     ]
 }
 
+/// `Rot(u, φ)·v` for the unit vector `u` from `s = sin φ` and `c = cos φ` (Rodrigues'
+/// formula on the vector: a third of the work of [`about_axis_sc`] and a product).
+#[inline(always)]
+pub(crate) fn turn_vector(u: Vector, s: f64, c: f64, v: Vector) -> Vector {
+    let uv = crate::vector::dot(u, v);
+    let w = crate::vector::cross(u, v);
+    core::array::from_fn(|i| v[i] * c + w[i] * s + u[i] * (uv * (1.0 - c)) + 0.0)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

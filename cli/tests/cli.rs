@@ -1038,12 +1038,23 @@ fn path_json() {
     args.extend(AC);
     let r = cncrot(&args, "10 0 0 0.5 0 0.8660254037844386\n");
     assert_eq!(r.code, 0, "{}", r.stderr);
-    assert!(
-        r.stdout
-            .starts_with("{\"linear\":[0,58.66025403784438,68.39745962155614],\"rotary\":[30"),
-        "{}",
-        r.stdout
-    );
+    // Full precision: every digit a double needs (16 or 17 significant ones here), the
+    // values 50 + 5√3 and 155 − 50√3 to a few ulp.
+    let linear = r
+        .stdout
+        .strip_prefix("{\"linear\":[0,")
+        .and_then(|s| s.split(']').next())
+        .unwrap_or_else(|| panic!("{}", r.stdout));
+    let s3 = 3f64.sqrt();
+    for (text, want) in linear.split(',').zip([50.0 + 5.0 * s3, 155.0 - 50.0 * s3]) {
+        let digits = text.chars().filter(char::is_ascii_digit).count();
+        assert!(digits >= 15, "{text}");
+        assert!(
+            (text.parse::<f64>().unwrap() - want).abs() < 1e-12,
+            "{text}"
+        );
+    }
+    assert!(r.stdout.contains("\"rotary\":[30"), "{}", r.stdout);
 }
 
 /// `path --dialect`: five-axis programs of three dialects give the worked example's axes

@@ -1,7 +1,7 @@
 //! The choice among the solutions: travel limits, whole-turn unwinding, Hirth grids, and
 //! the controllers' rules (CYCLE800 minus/plus, Heidenhain `SEQ±`, CYCLE600 `_ROT_INV`).
 
-use super::{Machine, Stored, MAX_AXES, MAX_SOLUTIONS, TRAVEL_TOLERANCE};
+use super::{Machine, Solutions, Stored, MAX_AXES, MAX_SOLUTIONS, TRAVEL_TOLERANCE};
 use crate::math::{abs, ceil, round, turns_toward};
 use crate::{check_rotation, mul, transpose, Error, Matrix, CLOSEST_MAX, IDENTITY};
 
@@ -57,13 +57,8 @@ pub struct Choice {
 #[inline(never)]
 pub(crate) fn place(axis: &Stored, angle: f64, current: f64) -> Option<(f64, f64)> {
     let limits = axis.limits();
-    let mut x = angle + turns_toward(angle, current) + 0.0;
+    let mut x = unwound(limits, angle, current);
     if let Some([lo, hi]) = limits {
-        if x > hi + TRAVEL_TOLERANCE {
-            x -= 360.0 * ceil((x - hi - TRAVEL_TOLERANCE) / 360.0);
-        } else if x < lo - TRAVEL_TOLERANCE {
-            x += 360.0 * ceil((lo - TRAVEL_TOLERANCE - x) / 360.0);
-        }
         x = onto_travel(x, lo, hi);
     }
     let exact = x;
@@ -80,6 +75,22 @@ pub(crate) fn place(axis: &Stored, angle: f64, current: f64) -> Option<(f64, f64
     }
     let fits = limits.map_or(true, |[lo, hi]| x >= lo && x <= hi);
     fits.then_some((x, x - exact + 0.0))
+}
+
+/// The turn of `angle` that [`place`] starts from: the one nearest `current`, on an axis
+/// with travel `limits` the one nearest it within them (or within [`TRAVEL_TOLERANCE`]
+/// beyond an end, not yet taken onto it).
+#[inline(always)]
+pub(crate) fn unwound(limits: Option<[f64; 2]>, angle: f64, current: f64) -> f64 {
+    let mut x = angle + turns_toward(angle, current) + 0.0;
+    if let Some([lo, hi]) = limits {
+        if x > hi + TRAVEL_TOLERANCE {
+            x -= 360.0 * ceil((x - hi - TRAVEL_TOLERANCE) / 360.0);
+        } else if x < lo - TRAVEL_TOLERANCE {
+            x += 360.0 * ceil((lo - TRAVEL_TOLERANCE - x) / 360.0);
+        }
+    }
+    x
 }
 
 /// Where an axis goes when it may turn only in the direction `sign` (+1 or −1) from
@@ -230,6 +241,39 @@ impl Machine {
         })
     }
 
+    /// One solution `theta` placed axis by axis (the axis of `turning` one way only),
+    /// written to `out` with the squared distance from `current` summed in axis order;
+    /// `false` when an axis does not fit its travel. Not inlined (stack bound).
+    #[inline(never)]
+    pub(crate) fn place_solution(
+        &self,
+        theta: &[f64; MAX_AXES],
+        current: &[f64; MAX_AXES],
+        turning: Option<(usize, f64)>,
+        out: &mut ([f64; MAX_AXES], [f64; MAX_AXES], f64),
+    ) -> bool {
+        let (axes, residual, distance) = out;
+        (*axes, *residual, *distance) = ([0.0; MAX_AXES], [0.0; MAX_AXES], 0.0);
+        for (k, a) in self.stored().iter().enumerate() {
+            let (Some(&angle), Some(&cur)) = (theta.get(k), current.get(k)) else {
+                continue;
+            };
+            let at = match turning {
+                Some((j, sign)) if j == k => place_turning(a, angle, cur, sign),
+                _ => place(a, angle, cur),
+            };
+            let Some((x, r)) = at else {
+                return false;
+            };
+            if let (Some(ax), Some(re)) = (axes.get_mut(k), residual.get_mut(k)) {
+                *ax = x;
+                *re = r;
+            }
+            *distance += (x - cur) * (x - cur);
+        }
+        true
+    }
+
     /// [`Machine::choose`] without the remaining rotation (left the identity): what the
     /// five-axis transformation needs, which computes the reached pose itself. `verify`:
     /// as in [`Machine::solve`].
@@ -256,32 +300,19 @@ impl Machine {
             Rule::NegativeTurn(k) => Some((k, -1.0)),
             _ => None,
         };
-        let solutions = self.solve(target, current, verify)?;
+        let mut solutions = Solutions {
+            angles: [[0.0; MAX_AXES]; MAX_SOLUTIONS],
+            count: 0,
+            free: false,
+        };
+        self.solve_into(target, &current, verify, &mut solutions)?;
         let mut placed = [([0.0; MAX_AXES], [0.0; MAX_AXES], 0.0f64); MAX_SOLUTIONS];
         let mut count = 0;
-        'solutions: for s in solutions.as_slice() {
-            let mut axes = [0.0; MAX_AXES];
-            let mut residual = [0.0; MAX_AXES];
-            let mut distance = 0.0;
-            for (k, a) in self.stored().iter().enumerate() {
-                let (Some(&angle), Some(&cur)) = (s.get(k), current.get(k)) else {
-                    continue;
-                };
-                let at = match turning {
-                    Some((j, sign)) if j == k => place_turning(a, angle, cur, sign),
-                    _ => place(a, angle, cur),
-                };
-                let Some((x, r)) = at else {
-                    continue 'solutions;
-                };
-                if let (Some(ax), Some(re)) = (axes.get_mut(k), residual.get_mut(k)) {
-                    *ax = x;
-                    *re = r;
-                }
-                distance += (x - cur) * (x - cur);
-            }
-            if let Some(slot) = placed.get_mut(count) {
-                *slot = (axes, residual, distance);
+        for s in solutions.as_slice() {
+            let Some(slot) = placed.get_mut(count) else {
+                break;
+            };
+            if self.place_solution(s, &current, turning, slot) {
                 count += 1;
             }
         }

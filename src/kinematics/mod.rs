@@ -36,9 +36,9 @@ pub use solve::{Solutions, POLE_SINE};
 pub use tcp::{cl_pose, Tcp, TCP_AXES};
 
 use crate::math::{abs, sin_cos_deg4};
-pub(crate) use crate::rotation::{about_axis, about_axis_sc};
+pub(crate) use crate::rotation::{about_axis, about_axis_sc, turn_vector};
 use crate::vector::{cross, dot};
-use crate::{mul, unit_vector, Error, Frame, Matrix, Vector, CLOSEST_MAX, IDENTITY};
+use crate::{mul, transpose, unit_vector, Error, Frame, Matrix, Vector, CLOSEST_MAX, IDENTITY};
 
 /// The most rotary axes a machine has here (a table with a two-axis head).
 pub const MAX_AXES: usize = 3;
@@ -586,6 +586,16 @@ impl Machine {
         core::array::from_fn(|i| {
             core::array::from_fn(|j| IDENTITY[i][j] + kx[i][j] + kk[i][j] * s + 0.0)
         })
+    }
+
+    /// `target·Bᵀ`: the target without the tool's base rotation, the target itself for a
+    /// tool along +Z (no product computed for nothing).
+    pub(crate) fn without_base(&self, target: &Matrix) -> Matrix {
+        if self.base_is_identity() {
+            *target
+        } else {
+            mul(target, &transpose(&self.base()))
+        }
     }
 
     /// Checks the positions: finite; unused axes must be 0.

@@ -2,10 +2,10 @@
 //! (Paden–Kahan subproblems: a rotation about one axis that takes one direction onto
 //! another, and two rotations about two axes that do).
 
-use super::{about_axis, about_axis_sc, Machine, MAX_AXES, MAX_SOLUTIONS, REACH_TOLERANCE};
+use super::{about_axis, turn_vector, Link, Machine, MAX_AXES, MAX_SOLUTIONS, REACH_TOLERANCE};
 use crate::math::{abs, atan2_deg, atan2_deg4, sin_cos_deg4, sqrt, wrap_deg};
 use crate::vector::{cross, dot};
-use crate::{check_rotation, mul, rotate, transpose, Error, Matrix, Vector};
+use crate::{check_rotation, rotate, Error, Matrix, Vector};
 
 /// The isolated solutions of [`Machine::inverse`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -65,7 +65,8 @@ pub(crate) fn turn_pair(u: Vector, x: Vector, y: Vector) -> Option<[f64; 2]> {
 
 /// Subproblem 1: `Rot(u, φ)·x = y`. The free angle `free` when `x` is along `u`.
 #[inline(never)]
-fn one(u: Vector, x: Vector, y: Vector, free: f64) -> Result<(f64, bool), Error> {
+fn one(u: &Vector, x: &Vector, y: &Vector, free: f64) -> Result<(f64, bool), Error> {
+    let (u, x, y) = (*u, *x, *y);
     if abs(dot(u, x) - dot(u, y)) > REACH_TOLERANCE {
         return Err(Error::Unreachable);
     }
@@ -79,30 +80,42 @@ fn one(u: Vector, x: Vector, y: Vector, free: f64) -> Result<(f64, bool), Error>
 /// Subproblem 2: `Rot(u1, φ1)·Rot(u2, φ2)·b = d` for unit vectors, `u1` not parallel to
 /// `u2`. The intermediate direction `c = Rot(u2, φ2)·b = Rot(u1, −φ1)·d` lies on both
 /// cones: `u1·c = u1·d`, `u2·c = u2·b`, `|c| = 1`; it is `α·u1 + β·u2 ± γ·(u1 × u2)`.
-fn two(u1: Vector, u2: Vector, b: Vector, d: Vector, free: [f64; 2]) -> Result<Phis, Error> {
-    let mut out = Phis {
+/// Written to `out`; the vectors by reference and not inlined (stack bound).
+#[inline(never)]
+fn two(
+    u: [&Vector; 2],
+    b: &Vector,
+    d: &Vector,
+    free: [f64; 2],
+    out: &mut Phis,
+) -> Result<(), Error> {
+    let [u1, u2] = u;
+    *out = Phis {
         phi: [[0.0; 2]; 2],
-        count: 0,
-        free: false,
+        count: 1,
+        free: true,
     };
-    if along(u2, b) {
+    if along(*u2, *b) {
         // The inner axis turns the tool about itself: φ2 is free.
         let (phi1, _) = one(u1, b, d, free[0])?;
         out.phi[0] = [phi1, free[1]];
-        out.count = 1;
-        out.free = true;
-        return Ok(out);
+        return Ok(());
     }
-    if along(u1, d) {
+    if along(*u1, *d) {
         // The target along the outer axis: φ1 is free, φ2 brings b onto d.
-        let d1 = rotate(&about_axis(u1, -free[0]), d);
-        let (phi2, _) = one(u2, b, d1, free[1])?;
+        let d1 = rotate(&about_axis(*u1, -free[0]), *d);
+        let (phi2, _) = one(u2, b, &d1, free[1])?;
         out.phi[0] = [free[0], phi2];
-        out.count = 1;
-        out.free = true;
-        return Ok(out);
+        return Ok(());
     }
-    two_isolated(u1, u2, b, d)
+    let mut a = Args {
+        y: [0.0; 4],
+        x: [1.0; 4],
+        count: 0,
+    };
+    two_args(u1, u2, b, d, &mut a)?;
+    *out = a.phis();
+    Ok(())
 }
 
 /// Whether the unit vectors `u` and `v` are parallel within [`POLE_SINE`]: a free axis.
@@ -111,14 +124,64 @@ pub(crate) fn along(u: Vector, v: Vector) -> bool {
     dot(c, c) <= POLE_SINE * POLE_SINE
 }
 
+/// The `atan2` arguments of subproblem 2's isolated solutions: solution `k`'s two chain
+/// angles in lanes `2k` (the outer axis) and `2k + 1`, its `[sine, cosine]` scaled alike;
+/// unused lanes `(0, 1)`.
+#[derive(Clone, Copy)]
+pub(crate) struct Args {
+    pub(crate) y: [f64; 4],
+    pub(crate) x: [f64; 4],
+    pub(crate) count: usize,
+}
+
+impl Args {
+    /// The chain angles (degrees) of the solutions, in one four-lane `atan2` (the same
+    /// bits as one by one).
+    pub(crate) fn phis(&self) -> Phis {
+        let a = atan2_deg4(self.y, self.x);
+        Phis {
+            phi: [[a[0], a[1]], [a[2], a[3]]],
+            count: self.count,
+            free: false,
+        }
+    }
+
+    /// The sine and cosine of lane `j`'s angle, from its arguments (no turn computed
+    /// twice): `(0, 1)` for arguments of no direction.
+    fn sin_cos(&self, j: usize) -> (f64, f64) {
+        sin_cos_of(
+            self.y.get(j).copied().unwrap_or(0.0),
+            self.x.get(j).copied().unwrap_or(1.0),
+        )
+    }
+}
+
+/// The sine and cosine of `atan2(y, x)` without the angle: `(y, x)` made a unit vector,
+/// `(0, 1)` (the angle 0, as `atan2` gives it) for `(0, 0)`.
+#[inline(always)]
+pub(crate) fn sin_cos_of(y: f64, x: f64) -> (f64, f64) {
+    let r = sqrt(y * y + x * x);
+    // Written so that NaN gives the angle 0 too.
+    if r > 0.0 {
+        (y / r, x / r)
+    } else {
+        (0.0, 1.0)
+    }
+}
+
 /// Subproblem 2 away from its poles (`b` not along `u2`, `d` not along `u1`): the isolated
-/// solutions, one or two.
-pub(crate) fn two_isolated(u1: Vector, u2: Vector, b: Vector, d: Vector) -> Result<Phis, Error> {
-    let mut out = Phis {
-        phi: [[0.0; 2]; 2],
-        count: 0,
-        free: false,
-    };
+/// solutions, one or two, as `atan2` arguments, written to `out`. The vectors by
+/// reference, the result in place and not inlined: a caller keeps no copies for the call
+/// (stack bound).
+#[inline(never)]
+pub(crate) fn two_args(
+    u1: &Vector,
+    u2: &Vector,
+    b: &Vector,
+    d: &Vector,
+    out: &mut Args,
+) -> Result<(), Error> {
+    let (u1, u2, b, d) = (*u1, *u2, *b, *d);
     // In the orthonormal frame u1, e2 (u2 made perpendicular to u1), n = u1 × u2 / |…|:
     // c = a1·u1 + p2·e2 ± g·n. The height g² = r² − q² is formed from a cone radius r
     // computed as a cross product (|u × v|, exact to rounding even when tiny) instead of
@@ -144,40 +207,37 @@ pub(crate) fn two_isolated(u1: Vector, u2: Vector, b: Vector, d: Vector) -> Resu
     }
     let gamma = sqrt(h.max(0.0));
     let p: Vector = core::array::from_fn(|i| a1 * u1[i] + p2 * e2[i]);
-    let signs: &[f64] = if gamma > 0.0 { &[1.0, -1.0] } else { &[1.0] };
-    // Both solutions' four angles in one four-lane atan2 (the same bits as one by one).
-    let (mut ys, mut xs) = ([0.0; 4], [1.0; 4]);
-    let mut found = [false; 2];
-    for (k, &sign) in signs.iter().enumerate() {
-        let c: Vector = core::array::from_fn(|i| p[i] + sign * gamma * n[i]);
-        if let (Some([y2, x2]), Some([y1, x1])) = (turn_pair(u2, b, c), turn_pair(u1, c, d)) {
-            if let (Some(f), Some(y), Some(x)) = (
-                found.get_mut(k),
-                ys.get_mut(2 * k..2 * k + 2),
-                xs.get_mut(2 * k..2 * k + 2),
-            ) {
-                *f = true;
-                y.copy_from_slice(&[y1, y2]);
-                x.copy_from_slice(&[x1, x2]);
-            }
-        }
+    // The turns as `turn_pair` takes them (about u2 from b to c, about u1 from c to d),
+    // with what both solutions share formed once: b and d made perpendicular to the axis
+    // they turn about, and with them c's sines and cosines in two dot products each
+    // (u·(x⊥ × c⊥) = c·(u × x⊥), x⊥·c⊥ = x⊥·c, as x⊥ and u × x⊥ are perpendicular to u).
+    let b2: Vector = core::array::from_fn(|i| b[i] - a2 * u2[i]);
+    let d1: Vector = core::array::from_fn(|i| d[i] - a1 * u1[i]);
+    let (s2, s1) = (cross(u2, b2), cross(d1, u1));
+    *out = Args {
+        y: [0.0; 4],
+        x: [1.0; 4],
+        count: 0,
+    };
+    // A turn of no direction (b along u2, d along u1: a pole, which the callers leave out
+    // before) has no isolated solution.
+    if dot(b2, b2) <= POLE_SINE * POLE_SINE || dot(d1, d1) <= POLE_SINE * POLE_SINE {
+        return Err(Error::Unreachable);
     }
-    let angles = atan2_deg4(ys, xs);
-    for (k, _) in found.iter().enumerate().filter(|(_, &f)| f) {
-        if let (Some(slot), Some(&[phi1, phi2])) = (
-            out.phi.get_mut(out.count),
-            angles
-                .get(2 * k..2 * k + 2)
-                .and_then(|a| <&[f64; 2]>::try_from(a).ok()),
-        ) {
-            *slot = [phi1, phi2];
+    let signs: &[f64] = if gamma > 0.0 { &[1.0, -1.0] } else { &[1.0] };
+    for &sign in signs {
+        let c: Vector = core::array::from_fn(|i| p[i] + sign * gamma * n[i]);
+        let k = 2 * out.count;
+        if let (Some(y), Some(x)) = (out.y.get_mut(k..k + 2), out.x.get_mut(k..k + 2)) {
+            y.copy_from_slice(&[dot(c, s1), dot(c, s2)]);
+            x.copy_from_slice(&[dot(c, d1), dot(c, b2)]);
             out.count += 1;
         }
     }
     if out.count == 0 {
         return Err(Error::Unreachable);
     }
-    Ok(out)
+    Ok(())
 }
 
 impl Machine {
@@ -223,78 +283,158 @@ impl Machine {
         free: [f64; MAX_AXES],
         verify: bool,
     ) -> Result<Solutions, Error> {
+        let mut out = Solutions {
+            angles: [[0.0; MAX_AXES]; MAX_SOLUTIONS],
+            count: 0,
+            free: false,
+        };
+        self.solve_into(target, &free, verify, &mut out)?;
+        Ok(out)
+    }
+
+    /// [`Machine::solve`] written to `out` (which a caller keeps in its own frame: no
+    /// copy on the way, stack bound). Not inlined.
+    #[inline(never)]
+    pub(crate) fn solve_into(
+        &self,
+        target: &Matrix,
+        free: &[f64; MAX_AXES],
+        verify: bool,
+        out: &mut Solutions,
+    ) -> Result<(), Error> {
+        let free = *free;
         if !free.iter().all(|x| x.is_finite()) {
             return Err(Error::NotFinite);
         }
         let (chain, n) = self.chain();
-        let link = |j: usize| chain.get(j).copied();
-        // A free axis kept at `free`, as its chain angle.
-        let free_phi = |j: usize| match link(j) {
-            Some(l) => l.sign * self.turn(l.index, free),
-            None => 0.0,
-        };
-        let b = self.tool_direction();
-        let d = [target[0][2], target[1][2], target[2][2]];
         let mut phis = Phis {
             phi: [[0.0; 2]; 2],
             count: 1,
             free: false,
         };
         let mut third = [0.0f64; MAX_SOLUTIONS];
-        match (n, link(0), link(1), link(2)) {
-            (0, ..) => {
+        self.chain_angles(&chain, n, target, &free, &mut phis, &mut third)?;
+        *out = Solutions {
+            angles: [[0.0; MAX_AXES]; MAX_SOLUTIONS],
+            count: 0,
+            free: phis.free,
+        };
+        for (p, t3) in phis.phi.iter().zip(third).take(phis.count) {
+            self.keep_solution(&chain, n, &[p[0], p[1], t3], target, verify, out);
+        }
+        if out.count == 0 {
+            return Err(Error::Unreachable);
+        }
+        Ok(())
+    }
+
+    /// One solution of [`Machine::solve_into`] from its chain angles `phi`: the positions
+    /// (each within (-180°, 180°]) added to `out` unless `verify` finds them missing
+    /// `target`. Not inlined (stack bound).
+    #[inline(never)]
+    fn keep_solution(
+        &self,
+        chain: &[Link; MAX_AXES],
+        n: usize,
+        phi: &[f64; MAX_AXES],
+        target: &Matrix,
+        verify: bool,
+        out: &mut Solutions,
+    ) {
+        let mut theta = [0.0; MAX_AXES];
+        for (l, &ph) in chain.iter().zip(phi).take(n) {
+            let offset = self.stored().get(l.index).map_or(0.0, |a| a.offset);
+            if let Some(t) = theta.get_mut(l.index) {
+                *t = wrap_deg(offset + l.sign * ph);
+            }
+        }
+        if !verify || self.misses(&theta, target, n) <= VERIFY {
+            if let Some(slot) = out.angles.get_mut(out.count) {
+                *slot = theta;
+                out.count += 1;
+            }
+        }
+    }
+
+    /// The chain angles of [`Machine::solve_into`]'s solutions (degrees), the third
+    /// link's apart; a free axis kept at its position in `free`.
+    #[inline(always)]
+    fn chain_angles(
+        &self,
+        chain: &[Link; MAX_AXES],
+        n: usize,
+        target: &Matrix,
+        free: &[f64; MAX_AXES],
+        phis: &mut Phis,
+        third: &mut [f64; MAX_SOLUTIONS],
+    ) -> Result<(), Error> {
+        let link = |j: usize| chain.get(j).copied();
+        // A free axis kept at `free`, as its chain angle.
+        let free_phi = |j: usize| match link(j) {
+            Some(l) => l.sign * self.turn(l.index, *free),
+            None => 0.0,
+        };
+        let b = self.tool_direction();
+        let d = [target[0][2], target[1][2], target[2][2]];
+        let [l1, l2, l3] = chain;
+        match n {
+            0 => {
                 let e: Vector = core::array::from_fn(|k| d[k] - b[k]);
                 let e2 = dot(e, e);
                 if e2.is_nan() || e2 > REACH_TOLERANCE * REACH_TOLERANCE {
                     return Err(Error::Unreachable);
                 }
             }
-            (1, Some(l1), ..) => {
-                let (phi, free1) = one(l1.axis, b, d, free_phi(0))?;
+            1 => {
+                let (phi, free1) = one(&l1.axis, &b, &d, free_phi(0))?;
                 phis.phi[0] = [phi, 0.0];
                 phis.free = free1;
             }
-            (2, Some(l1), Some(l2), _) => {
-                phis = two(l1.axis, l2.axis, b, d, [free_phi(0), free_phi(1)])?;
+            2 => {
+                let free = [free_phi(0), free_phi(1)];
+                two([&l1.axis, &l2.axis], &b, &d, free, phis)?;
             }
-            (3, Some(l1), Some(l2), Some(l3)) => {
-                // The third axis keeps its own direction: the first two bring it where the
-                // target has it, the third turns about it for the rest.
-                let m = mul(target, &transpose(&self.base()));
-                let u3 = l3.axis;
-                let target_u3 = rotate(&m, u3);
-                phis = two(l1.axis, l2.axis, u3, target_u3, [free_phi(0), free_phi(1)])?;
-                third = third_angles(l1.axis, l2.axis, u3, &m, &phis);
+            3 => {
+                let u = [l1.axis, l2.axis, l3.axis];
+                let free = [free_phi(0), free_phi(1)];
+                self.three(target, &u, free, phis, third)?;
             }
             _ => return Err(Error::BadArgument),
         }
-        let mut out = Solutions {
-            angles: [[0.0; MAX_AXES]; MAX_SOLUTIONS],
-            count: 0,
-            free: phis.free,
-        };
-        for (p, t3) in phis.phi.iter().zip(third).take(phis.count) {
-            let phi = [p[0], p[1], t3];
-            let mut theta = [0.0; MAX_AXES];
-            for (j, &ph) in phi.iter().enumerate().take(n) {
-                if let Some(l) = link(j) {
-                    let offset = self.stored().get(l.index).map_or(0.0, |a| a.offset);
-                    if let Some(t) = theta.get_mut(l.index) {
-                        *t = wrap_deg(offset + l.sign * ph);
-                    }
-                }
-            }
-            if !verify || self.misses(&theta, target, n) <= VERIFY {
-                if let Some(slot) = out.angles.get_mut(out.count) {
-                    *slot = theta;
-                    out.count += 1;
-                }
-            }
+        Ok(())
+    }
+
+    /// Three axes: the third axis keeps its own direction, the first two bring it where
+    /// the target has it, the third turns about it for the rest; a free axis at `free`.
+    /// Not inlined: its matrices are not on the stack when one or two axes are solved
+    /// (stack bound).
+    #[inline(never)]
+    fn three(
+        &self,
+        target: &Matrix,
+        u: &[Vector; 3],
+        free: [f64; 2],
+        phis: &mut Phis,
+        third: &mut [f64; MAX_SOLUTIONS],
+    ) -> Result<(), Error> {
+        let [u1, u2, u3] = u;
+        let m = self.without_base(target);
+        let target_u3 = rotate(&m, *u3);
+        if along(*u2, *u3) || along(*u1, target_u3) {
+            two([u1, u2], u3, &target_u3, free, phis)?;
+            *third = third_angles(u, &m, phis);
+        } else {
+            // Isolated: as the five-axis transformation solves it, bit for bit.
+            let mut args = Args {
+                y: [0.0; 4],
+                x: [1.0; 4],
+                count: 0,
+            };
+            two_args(u1, u2, u3, &target_u3, &mut args)?;
+            *phis = args.phis();
+            *third = third_from_args(u, &m, &args);
         }
-        if out.count == 0 {
-            return Err(Error::Unreachable);
-        }
-        Ok(out)
+        Ok(())
     }
 
     /// How far the orientation at `theta` is from `target`: the largest element difference
@@ -318,41 +458,58 @@ impl Machine {
 
 /// The third angles of a three-axis machine's solutions: the turn about `u3` left once
 /// the first two axes of each solution have turned (`m` the target without the tool
-/// base). Sines and cosines of both solutions' first two angles, then both third angles,
-/// each in one four-lane call (the same bits as one by one). Not inlined: its matrices
-/// would otherwise sit in the frame of `solve` under every subproblem (stack bound).
+/// base): the sines and cosines of both solutions' first two angles in one four-lane
+/// call, then [`third_args`] as for isolated solutions. Not inlined: its lanes would
+/// otherwise sit in the frame of `solve` under every subproblem (stack bound).
 #[inline(never)]
-pub(crate) fn third_angles(
-    u1: Vector,
-    u2: Vector,
-    u3: Vector,
-    m: &Matrix,
-    phis: &Phis,
-) -> [f64; MAX_SOLUTIONS] {
-    let x = perpendicular_to(u3);
+pub(crate) fn third_angles(u: &[Vector; 3], m: &Matrix, phis: &Phis) -> [f64; MAX_SOLUTIONS] {
+    // The first two angles' sines and cosines stand for their `atan2` arguments.
     let [p, q] = phis.phi;
-    let (s, c) = lanes_sin_cos([-p[0], -p[1], -q[0], -q[1]]);
+    let (s, c) = lanes_sin_cos([p[0], p[1], q[0], q[1]]);
+    let mut third = Args {
+        y: s,
+        x: c,
+        count: phis.count.min(MAX_SOLUTIONS),
+    };
+    third_args(u, m, &mut third);
+    let t = lanes_atan2(&third.y, &third.x);
+    [t[0], t[1]]
+}
+
+/// The third angles of a three-axis machine's isolated solutions, as [`third_angles`]
+/// takes them, from the first two angles' `atan2` arguments (their sines and cosines
+/// without a turn computed twice) and with the vector turned rather than the matrix:
+/// `x` turned back by the first two turns from the target `m`, against `x` itself.
+#[inline(never)]
+pub(crate) fn third_from_args(u: &[Vector; 3], m: &Matrix, args: &Args) -> [f64; MAX_SOLUTIONS] {
+    let mut third = *args;
+    third_args(u, m, &mut third);
+    let t = atan2_deg4(third.y, third.x);
+    [t[0], t[1]]
+}
+
+/// The `atan2` arguments of [`third_from_args`], in place of the first two angles' in
+/// `args`: solution `k`'s in lane `k`, unused lanes `(0, 1)`. Not inlined, its inputs by
+/// reference (stack bound).
+#[inline(never)]
+pub(crate) fn third_args(u: &[Vector; 3], m: &Matrix, args: &mut Args) {
+    let [u1, u2, u3] = *u;
+    let x = perpendicular_to(u3);
+    let v = rotate(m, x);
     let (mut ys, mut xs) = ([0.0; 4], [1.0; 4]);
-    for k in 0..phis.count.min(MAX_SOLUTIONS) {
-        let at = |j: usize| (s.get(j).copied(), c.get(j).copied());
-        let (Some(s1), Some(c1)) = at(2 * k) else {
-            continue;
-        };
-        let (Some(s2), Some(c2)) = at(2 * k + 1) else {
-            continue;
-        };
-        // A lane left at (0, 1) gives 0: the angle where x would lie along u3 (never: x is
-        // perpendicular to it).
-        if let (Some([y, xx]), Some(ty), Some(tx)) = (
-            third_pair([u1, u2, u3], [s1, c1, s2, c2], m, x),
-            ys.get_mut(k),
-            xs.get_mut(k),
-        ) {
+    for k in 0..args.count.min(MAX_SOLUTIONS) {
+        let (s1, c1) = args.sin_cos(2 * k);
+        let (s2, c2) = args.sin_cos(2 * k + 1);
+        // Rot(u2, −φ2)·Rot(u1, −φ1)·v.
+        let back = turn_vector(u2, -s2, c2, turn_vector(u1, -s1, c1, v));
+        // A lane left at (0, 1) gives 0 (never: x is perpendicular to u3).
+        if let (Some([y, xx]), Some(ty), Some(tx)) =
+            (turn_pair(u3, x, back), ys.get_mut(k), xs.get_mut(k))
+        {
             (*ty, *tx) = (y, xx);
         }
     }
-    let t = lanes_atan2(ys, xs);
-    [t[0], t[1]]
+    (args.y, args.x) = (ys, xs);
 }
 
 /// [`sin_cos_deg4`] in a frame of its own: its lanes are not on the stack while
@@ -364,23 +521,8 @@ fn lanes_sin_cos(deg: [f64; 4]) -> ([f64; 4], [f64; 4]) {
 
 /// [`atan2_deg4`] in a frame of its own (see [`lanes_sin_cos`]).
 #[inline(never)]
-fn lanes_atan2(y: [f64; 4], x: [f64; 4]) -> [f64; 4] {
-    atan2_deg4(y, x)
-}
-
-/// The `atan2` arguments of one solution's third angle: `x` turned back by the first two
-/// turns (sines and cosines `s1, c1, s2, c2`) from the target `m`, against `x` itself.
-/// Not inlined: its matrices would otherwise sit beside the lanes of `third_angles`
-/// (stack bound).
-#[inline(never)]
-fn third_pair(u: [Vector; 3], sc: [f64; 4], m: &Matrix, x: Vector) -> Option<[f64; 2]> {
-    let [u1, u2, u3] = u;
-    let [s1, c1, s2, c2] = sc;
-    let back = mul(
-        &about_axis_sc(u2, s2, c2),
-        &mul(&about_axis_sc(u1, s1, c1), m),
-    );
-    turn_pair(u3, x, rotate(&back, x))
+pub(crate) fn lanes_atan2(y: &[f64; 4], x: &[f64; 4]) -> [f64; 4] {
+    atan2_deg4(*y, *x)
 }
 
 /// A unit vector perpendicular to the unit vector `u`.

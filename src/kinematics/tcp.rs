@@ -20,10 +20,11 @@
 //! positions (the last cycle's), then the linear axes that put the tip on the target:
 //! `(X, Y, Z) = W·tip − T·(−L·b)`.
 
-use super::choose::place;
-use super::solve::{along, third_angles, turn_onto, two_isolated, Phis, VERIFY};
+use super::choose::unwound;
+use super::solve::{along, lanes_atan2, sin_cos_of, third_args, turn_pair, two_args, Args, VERIFY};
 use super::{
-    about_axis_sc, Choice, Machine, Rule, LENGTH_MAX, MAX_AXES, MAX_SOLUTIONS, REACH_TOLERANCE,
+    about_axis_sc, turn_vector, Link, Machine, Rule, Solutions, LENGTH_MAX, MAX_AXES,
+    MAX_SOLUTIONS, REACH_TOLERANCE, TRAVEL_TOLERANCE,
 };
 use crate::math::{abs, sin_cos_deg4, wrap_deg};
 use crate::vector::dot;
@@ -74,8 +75,11 @@ pub fn cl_pose(tip: Vector, direction: Vector) -> Result<Frame, Error> {
     })
 }
 
-/// The isolated solutions' positions, one row per solution.
-type Positions = [[f64; MAX_AXES]; MAX_SOLUTIONS];
+/// The common case's choice: the rotary positions and each chain link's sine and cosine.
+struct Turned {
+    rotary: [f64; MAX_AXES],
+    sc: [(f64, f64); MAX_AXES],
+}
 
 impl Machine {
     /// The tool's pose in workpiece coordinates at machine axes `axes` (`X, Y, Z` in mm,
@@ -149,6 +153,7 @@ impl Machine {
     /// let want = [10.0, 20.0, 150.0, 30.0, 40.0, 0.0];
     /// assert!(t.axes.iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-9));
     /// ```
+    #[inline(always)]
     pub fn tcp_inverse(
         &self,
         pose: &Frame,
@@ -178,6 +183,7 @@ impl Machine {
     /// let back = m.tcp_forward(t.axes, 50.0).unwrap();
     /// assert!((back.translation[2] - pose.translation[2]).abs() < 1e-12);
     /// ```
+    #[inline(always)]
     pub fn tcp_inverse_with(
         &self,
         pose: &Frame,
@@ -194,33 +200,364 @@ impl Machine {
         }
         length_in_range(tool_length)?;
         let current = [previous[3], previous[4], previous[5]];
+        // Written in place by the way that computes it: no copy of it in each frame between
+        // (stack bound).
+        let mut t = Tcp {
+            axes: [0.0; TCP_AXES],
+            residual: [0.0; MAX_AXES],
+            free: false,
+        };
         if rule == Rule::Closest {
-            if let Some(t) = self.tcp_closest(pose, tool_length, current)? {
-                return Ok(t);
+            if !self.tcp_closest(pose, tool_length, current, &mut t)? {
+                self.closest_general(pose, tool_length, current, &mut t)?;
             }
+        } else {
+            self.tcp_general(pose, tool_length, current, rule, &mut t)?;
         }
-        self.tcp_general(pose, tool_length, current, rule)
+        Ok(t)
     }
 
     /// The common case of [`Machine::tcp_inverse`]: the checks of `settle`, in its order,
-    /// then one or two axes away from a pole in one pass. `None`: the general way decides.
-    /// Not inlined, like the general way: each path's frames stack alone (stack bound).
+    /// then one to three axes away from a pole, without a Hirth grid, in one pass over
+    /// fixed arrays ([`Machine::closest_turns`], then [`Machine::tcp_turned`]). `None`:
+    /// another case (no axis, a pole, a grid, a position taken onto an end of the travel,
+    /// a choice that missed its verification), which the general way decides. Not
+    /// inlined, like the general way: each path's frames stack alone (stack bound).
     #[inline(never)]
     fn tcp_closest(
         &self,
         pose: &Frame,
         tool_length: f64,
         current: [f64; MAX_AXES],
-    ) -> Result<Option<Tcp>, Error> {
+        out: &mut Tcp,
+    ) -> Result<bool, Error> {
         check_rotation(&pose.rotation)?;
         let cur = self.positions(current)?;
         if !cur.iter().all(|x| abs(*x) < CLOSEST_MAX) {
             return Err(Error::OutOfRange);
         }
-        match self.closest_isolated(&pose.rotation, cur) {
-            Some(c) => self.tcp_linear(&c?, pose, tool_length, true),
-            None => Ok(None),
+        // A grid leaves part of the turn to the frame: the general way says how much.
+        if self.stored().iter().any(|a| a.hirth().is_some()) {
+            return Ok(false);
         }
+        let mut args = Args {
+            y: [0.0; 4],
+            x: [1.0; 4],
+            count: 0,
+        };
+        let mut third = args;
+        if !self.closest_args(&pose.rotation, &mut args, &mut third)? {
+            return Ok(false);
+        }
+        let mut t = Turned {
+            rotary: [0.0; MAX_AXES],
+            sc: [(0.0, 1.0); MAX_AXES],
+        };
+        if !self.closest_turns(&args, &third, &cur, &mut t)? {
+            return Ok(false);
+        }
+        self.tcp_turned(&t, pose, tool_length, out)
+    }
+
+    /// The `atan2` arguments of the common case's solutions, as [`Machine::solve`] finds
+    /// them in its order: solution k's first two links in lanes 2k and 2k + 1 of `args`,
+    /// its third link in lane k of `third`. `false`: a pole or no axis. Not inlined: its
+    /// vectors are gone when the solutions are placed (stack bound).
+    #[inline(never)]
+    fn closest_args(
+        &self,
+        target: &Matrix,
+        args: &mut Args,
+        third: &mut Args,
+    ) -> Result<bool, Error> {
+        let (chain, n) = self.chain();
+        let [l1, l2, _] = &chain;
+        let b = self.tool_direction();
+        let d = [target[0][2], target[1][2], target[2][2]];
+        match n {
+            1 => {
+                // Subproblem 1, as `one` solves it; a pole goes the general way.
+                let u = l1.axis;
+                if abs(dot(u, b) - dot(u, d)) > REACH_TOLERANCE {
+                    return Err(Error::Unreachable);
+                }
+                let Some([y, x]) = turn_pair(u, b, d) else {
+                    return Ok(false);
+                };
+                (args.y[0], args.x[0], args.count) = (y, x, 1);
+                Ok(true)
+            }
+            2 => {
+                if along(l2.axis, b) || along(l1.axis, d) {
+                    return Ok(false);
+                }
+                two_args(&l1.axis, &l2.axis, &b, &d, args)?;
+                Ok(true)
+            }
+            3 => self.three_args(&chain, target, args, third),
+            _ => Ok(false),
+        }
+    }
+
+    /// The common case's rotary positions and each link's sine and cosine, written to
+    /// `out`, from the solutions' `atan2` arguments ([`Machine::closest_args`]): placed as
+    /// `place` places them, the distances summed in the same order, the same choice as
+    /// [`Machine::settle`] with [`Rule::Closest`], bit for bit; the sines and cosines from
+    /// the arguments (none computed again). `false`: a position taken onto an end of the
+    /// travel. Not inlined (stack bound).
+    #[inline(never)]
+    fn closest_turns(
+        &self,
+        args: &Args,
+        third: &Args,
+        cur: &[f64; MAX_AXES],
+        out: &mut Turned,
+    ) -> Result<bool, Error> {
+        let (chain, n) = self.chain();
+        // The same bits as `atan2_deg` one by one (lane by lane the same operations).
+        let phi = lanes_atan2(&args.y, &args.x);
+        let phi3 = if n == MAX_AXES {
+            lanes_atan2(&third.y, &third.x)
+        } else {
+            [0.0; 4]
+        };
+        // Placed as `settle` places them (solution by solution, axis by axis).
+        let mut best: Option<(usize, [f64; MAX_AXES], f64)> = None;
+        for k in 0..args.count.min(MAX_SOLUTIONS) {
+            let p = [lane(&phi, 2 * k), lane(&phi, 2 * k + 1), lane(&phi3, k)];
+            let (placed, distance) = match self.placed(&chain, n, &p, cur) {
+                Ok(Some(p)) => p,
+                Ok(None) => continue,
+                Err(()) => return Ok(false),
+            };
+            if best.map_or(true, |q| distance < q.2) {
+                best = Some((k, placed, distance));
+            }
+        }
+        let Some((k, rotary, _)) = best else {
+            return Err(Error::OutOfTravel);
+        };
+        let ys = [
+            lane(&args.y, 2 * k),
+            lane(&args.y, 2 * k + 1),
+            lane(&third.y, k),
+        ];
+        let xs = [
+            lane(&args.x, 2 * k),
+            lane(&args.x, 2 * k + 1),
+            lane(&third.x, k),
+        ];
+        *out = Turned {
+            rotary,
+            sc: core::array::from_fn(|j| sin_cos_of(ys[j], xs[j])),
+        };
+        Ok(true)
+    }
+
+    /// Three axes, as `solve` does it: the first two axes bring the third's direction
+    /// where the target has it (their `atan2` arguments in `args`), the third turns about
+    /// it for the rest (solution k's in lane k of `third`). `false` at a pole. Not
+    /// inlined (stack bound).
+    #[inline(never)]
+    fn three_args(
+        &self,
+        chain: &[Link; MAX_AXES],
+        target: &Matrix,
+        args: &mut Args,
+        third: &mut Args,
+    ) -> Result<bool, Error> {
+        let [l1, l2, l3] = chain;
+        let m = self.without_base(target);
+        let u3 = l3.axis;
+        let t3 = rotate(&m, u3);
+        if along(l2.axis, u3) || along(l1.axis, t3) {
+            return Ok(false);
+        }
+        two_args(&l1.axis, &l2.axis, &u3, &t3, args)?;
+        *third = *args;
+        third_args(&[l1.axis, l2.axis, u3], &m, third);
+        Ok(true)
+    }
+
+    /// One solution's chain angles `phi` placed as [`place`](super::choose::place) places
+    /// them, and the squared distance from `cur` summed in axis order, as `settle` sums it.
+    /// `Ok(None)`: the solution does not fit the travel; `Err(())`: a position was taken
+    /// onto an end of the travel (the turn is no longer the solver's: the general way).
+    /// Not inlined: unrolled over both solutions, its registers would spill into the
+    /// caller's frame (stack bound).
+    #[inline(never)]
+    fn placed(
+        &self,
+        chain: &[Link; MAX_AXES],
+        n: usize,
+        phi: &[f64; MAX_AXES],
+        cur: &[f64; MAX_AXES],
+    ) -> Result<Option<([f64; MAX_AXES], f64)>, ()> {
+        let stored = self.stored();
+        let mut placed = [0.0; MAX_AXES];
+        for (link, &ph) in chain.iter().zip(phi).take(n) {
+            let k = link.index;
+            let (Some(a), Some(&c), Some(slot)) = (stored.get(k), cur.get(k), placed.get_mut(k))
+            else {
+                continue;
+            };
+            let angle = wrap_deg(a.offset + link.sign * ph);
+            let limits = a.limits();
+            let x = unwound(limits, angle, c);
+            if let Some([lo, hi]) = limits {
+                // Written so that NaN skips the solution.
+                if !(x >= lo - TRAVEL_TOLERANCE && x <= hi + TRAVEL_TOLERANCE) {
+                    return Ok(None);
+                }
+                if !(x >= lo && x <= hi) {
+                    return Err(());
+                }
+            }
+            *slot = x;
+        }
+        let mut distance = 0.0;
+        for (x, c) in placed.iter().zip(cur).take(n) {
+            distance += (x - c) * (x - c);
+        }
+        Ok(Some((placed, distance)))
+    }
+
+    /// The common case's linear axes for the turns `t`, verified as `solve` verifies (the
+    /// direction, or the whole rotation with three axes); the turns move vectors, not
+    /// matrices. `None`: missed. Not inlined (stack bound).
+    #[inline(never)]
+    fn tcp_turned(
+        &self,
+        t: &Turned,
+        pose: &Frame,
+        tool_length: f64,
+        out: &mut Tcp,
+    ) -> Result<bool, Error> {
+        let (chain, n) = self.chain();
+        let chain = &chain;
+        let sc = &t.sc;
+        let target = &pose.rotation;
+        let worst = if n == MAX_AXES {
+            // The whole rotation `F = H1·H2·H3·B`.
+            let [l0, l1, l2] = chain;
+            let [(s0, c0), (s1, c1), (s2, c2)] = *sc;
+            let h = mul(
+                &about_axis_sc(l0.axis, s0, c0),
+                &mul(
+                    &about_axis_sc(l1.axis, s1, c1),
+                    &about_axis_sc(l2.axis, s2, c2),
+                ),
+            );
+            let f = if self.base_is_identity() {
+                h
+            } else {
+                mul(&h, &self.base())
+            };
+            let mut worst = 0.0f64;
+            for (row_f, row_t) in f.iter().zip(target) {
+                let e = miss(*row_f, *row_t);
+                worst = if e <= worst { worst } else { e };
+            }
+            worst
+        } else {
+            let got = chain_turn(chain, sc, n, self.tool_direction());
+            miss(got, [target[0][2], target[1][2], target[2][2]])
+        };
+        // Written so that NaN retries.
+        let reached = worst <= VERIFY;
+        if !reached {
+            return Ok(false);
+        }
+        // The machine axes' turns: link j turns its axis by sign·φ.
+        let mut turn = [(0.0, 1.0); MAX_AXES];
+        for (l, &(s, c)) in chain.iter().zip(sc).take(n) {
+            if let Some(t) = turn.get_mut(l.index) {
+                *t = (l.sign * s, c);
+            }
+        }
+        // `T·(−L·b)` and `W·tip`, innermost axis first (by value: a reference to either
+        // would keep both in memory).
+        let (mut at, mut on) = (self.tip_in_tool(tool_length), pose.translation);
+        let stored = self.stored();
+        for k in (0..MAX_AXES).rev() {
+            let (Some(a), Some(&(s, c))) = (stored.get(k), turn.get(k)) else {
+                continue;
+            };
+            let tool = a.work_side == 0;
+            let q = if tool { at } else { on };
+            let d: Vector = core::array::from_fn(|k| q[k] - a.point[k]);
+            let t = turn_vector(a.direction, s, c, d);
+            let q: Vector = core::array::from_fn(|k| t[k] + a.point[k] + 0.0);
+            if tool {
+                at = q;
+            } else {
+                on = q;
+            }
+        }
+        let [x, y, z] = core::array::from_fn(|k| on[k] - at[k] + 0.0);
+        let [a, b, c] = t.rotary;
+        let axes = [x, y, z, a, b, c];
+        if !axes.iter().all(|v| v.is_finite()) {
+            return Err(Error::OutOfRange);
+        }
+        *out = Tcp {
+            axes,
+            residual: [0.0; MAX_AXES],
+            free: false,
+        };
+        Ok(true)
+    }
+
+    /// The general way of [`Rule::Closest`] (a pole, a Hirth grid, a position taken onto
+    /// an end of the travel, a solution that missed its verification): what
+    /// [`Machine::settle`] chooses with that rule (the checks in its order, the verified
+    /// solutions placed alike, the first closest), without its frame for the other rules
+    /// (stack bound).
+    #[inline(never)]
+    fn closest_general(
+        &self,
+        pose: &Frame,
+        tool_length: f64,
+        current: [f64; MAX_AXES],
+        out: &mut Tcp,
+    ) -> Result<(), Error> {
+        check_rotation(&pose.rotation)?;
+        let cur = self.positions(current)?;
+        if !cur.iter().all(|x| abs(*x) < CLOSEST_MAX) {
+            return Err(Error::OutOfRange);
+        }
+        let mut s = Solutions {
+            angles: [[0.0; MAX_AXES]; MAX_SOLUTIONS],
+            count: 0,
+            free: false,
+        };
+        self.solve_into(&pose.rotation, &cur, true, &mut s)?;
+        let mut best = ([0.0; MAX_AXES], [0.0; MAX_AXES], 0.0);
+        if !self.closest_placed(&s, &cur, &mut best) {
+            return Err(Error::OutOfTravel);
+        }
+        self.tcp_linear(best.0, best.1, s.free, pose, tool_length, out)
+    }
+
+    /// The solution of `s` placed closest to `cur` (the first of equals), as `settle`
+    /// picks it with [`Rule::Closest`], written to `best`; `false` when none fits the
+    /// travel. Not inlined: its second placement is not on the solver's stack.
+    #[inline(never)]
+    fn closest_placed(
+        &self,
+        s: &Solutions,
+        cur: &[f64; MAX_AXES],
+        best: &mut ([f64; MAX_AXES], [f64; MAX_AXES], f64),
+    ) -> bool {
+        let mut found = false;
+        let mut placed = *best;
+        for theta in s.as_slice() {
+            if self.place_solution(theta, cur, None, &mut placed) && (!found || placed.2 < best.2) {
+                *best = placed;
+                found = true;
+            }
+        }
+        found
     }
 
     /// The general way (a pole, a rule other than the closest, a choice that
@@ -233,195 +570,42 @@ impl Machine {
         tool_length: f64,
         current: [f64; MAX_AXES],
         rule: Rule,
-    ) -> Result<Tcp, Error> {
+        out: &mut Tcp,
+    ) -> Result<(), Error> {
         // Verified solutions at once: the first-unverified round of the common case would
         // keep a second choice in this frame, on the deepest path (stack bound).
         let c = self.settle(&pose.rotation, current, rule, true)?;
-        self.tcp_linear(&c, pose, tool_length, false)?
-            .ok_or(Error::Unreachable)
+        self.tcp_linear(c.axes, c.residual, c.free, pose, tool_length, out)
     }
 
-    /// The rotary positions [`Machine::settle`] takes for [`Rule::Closest`] (unverified),
-    /// away from the poles, solved and placed in one pass over fixed arrays: the same
-    /// solutions in the same order, the same placement, the distances summed in the same
-    /// order, so the same choice. `None`: another case (no axis, a pole), which the general
-    /// path decides. Not inlined (stack bound).
-    #[inline(never)]
-    fn closest_isolated(
-        &self,
-        target: &Matrix,
-        current: [f64; MAX_AXES],
-    ) -> Option<Result<Choice, Error>> {
-        let (thetas, count) = match self.isolated(target)? {
-            Ok(p) => p,
-            Err(e) => return Some(Err(e)),
-        };
-        let axes = self.stored();
-        let mut best: Option<([f64; MAX_AXES], [f64; MAX_AXES], f64)> = None;
-        'solutions: for theta in thetas.iter().take(count) {
-            // Placed as `settle` places them, the distance summed in axis order.
-            let (mut placed, mut residual, mut distance) = ([0.0; MAX_AXES], [0.0; MAX_AXES], 0.0);
-            for (k, a) in axes.iter().enumerate() {
-                let (Some(&angle), Some(&cur)) = (theta.get(k), current.get(k)) else {
-                    continue;
-                };
-                let Some((x, r)) = place(a, angle, cur) else {
-                    continue 'solutions;
-                };
-                if let (Some(ax), Some(re)) = (placed.get_mut(k), residual.get_mut(k)) {
-                    *ax = x;
-                    *re = r;
-                }
-                distance += (x - cur) * (x - cur);
-            }
-            if best.map_or(true, |q| distance < q.2) {
-                best = Some((placed, residual, distance));
-            }
-        }
-        Some(match best {
-            Some((axes, residual, _)) => Ok(Choice {
-                axes,
-                residual,
-                remaining: IDENTITY,
-                free: false,
-            }),
-            None => Err(Error::OutOfTravel),
-        })
-    }
-
-    /// The isolated solutions of `target` as [`Machine::solve`] computes and writes them
-    /// (positions within (-180°, 180°], in axis order), and their count; `None` at a pole
-    /// or without axes. Not inlined: its matrices are gone from the stack when the
-    /// solutions are placed (stack bound).
-    #[inline(never)]
-    fn isolated(&self, target: &Matrix) -> Option<Result<(Positions, usize), Error>> {
-        let n = self.axis_count();
-        if n == 0 {
-            return None;
-        }
-        let (chain, _) = self.chain();
-        let [l1, l2, l3] = chain;
-        let b = self.tool_direction();
-        let d = [target[0][2], target[1][2], target[2][2]];
-        let mut third = [0.0; MAX_SOLUTIONS];
-        let phis = if n == MAX_AXES {
-            // As `solve` does it: the first two axes bring the third's direction where the
-            // target has it, the third turns about it for the rest.
-            let m = mul(target, &transpose(&self.base()));
-            let u3 = l3.axis;
-            let t3 = rotate(&m, u3);
-            if along(l2.axis, u3) || along(l1.axis, t3) {
-                return None;
-            }
-            let phis = match two_isolated(l1.axis, l2.axis, u3, t3) {
-                Ok(p) => p,
-                Err(e) => return Some(Err(e)),
-            };
-            third = third_angles(l1.axis, l2.axis, u3, &m, &phis);
-            phis
-        } else if n == 1 {
-            // Subproblem 1, as `one` solves it; a pole goes the general way.
-            let u = l1.axis;
-            if abs(dot(u, b) - dot(u, d)) > REACH_TOLERANCE {
-                return Some(Err(Error::Unreachable));
-            }
-            let phi = turn_onto(u, b, d)?;
-            Phis {
-                phi: [[phi, 0.0], [0.0; 2]],
-                count: 1,
-                free: false,
-            }
-        } else {
-            if along(l2.axis, b) || along(l1.axis, d) {
-                return None;
-            }
-            match two_isolated(l1.axis, l2.axis, b, d) {
-                Ok(p) => p,
-                Err(e) => return Some(Err(e)),
-            }
-        };
-        let mut thetas = [[0.0; MAX_AXES]; MAX_SOLUTIONS];
-        let axes = self.stored();
-        for ((p, t3), theta) in phis.phi.iter().zip(third).zip(&mut thetas) {
-            // The positions as `solve` writes them.
-            for (link, ph) in chain.iter().zip([p[0], p[1], t3]).take(n) {
-                let offset = axes.get(link.index).map_or(0.0, |a| a.offset);
-                if let Some(t) = theta.get_mut(link.index) {
-                    *t = wrap_deg(offset + link.sign * ph);
-                }
-            }
-        }
-        Some(Ok((thetas, phis.count.min(MAX_SOLUTIONS))))
-    }
-
-    /// The linear axes for the rotary choice `c`: `None` when `verify` is set and the
-    /// choice misses the pose's rotation or was snapped to a Hirth grid. Not inlined: its
-    /// turns would otherwise sit in the caller's frame under the solver (stack bound).
+    /// The linear axes for the rotary positions `rotary` (with their Hirth `residual` and
+    /// whether an axis was `free`), written to `out`. Not inlined: its turns would
+    /// otherwise sit in the caller's frame under the solver (stack bound).
     #[inline(never)]
     fn tcp_linear(
         &self,
-        c: &Choice,
+        rotary: [f64; MAX_AXES],
+        residual: [f64; MAX_AXES],
+        free: bool,
         pose: &Frame,
         tool_length: f64,
-        verify: bool,
-    ) -> Result<Option<Tcp>, Error> {
-        let r = self.turns(c.axes);
-        if verify {
-            let snapped = c.residual.iter().any(|&x| x != 0.0);
-            // Written so that NaN retries.
-            let reached = self.rotation_misses(&r, &pose.rotation) <= VERIFY;
-            if snapped || !reached {
-                return Ok(None);
-            }
-        }
+        out: &mut Tcp,
+    ) -> Result<(), Error> {
+        let r = self.turns(rotary);
         let at = self.tool_point(&r, self.tip_in_tool(tool_length));
         let on = self.work_point(&r, pose.translation);
         let [x, y, z] = core::array::from_fn(|k| on[k] - at[k] + 0.0);
-        let [a, b, cc] = c.axes;
+        let [a, b, cc] = rotary;
         let axes = [x, y, z, a, b, cc];
         if !axes.iter().all(|v| v.is_finite()) {
             return Err(Error::OutOfRange);
         }
-        Ok(Some(Tcp {
+        *out = Tcp {
             axes,
-            residual: c.residual,
-            free: c.free,
-        }))
-    }
-
-    /// How far the rotation at the turns `r` is from `target`: the largest element
-    /// difference of the whole rotation with three axes, of the tool direction with fewer.
-    fn rotation_misses(&self, r: &[Matrix; MAX_AXES], target: &Matrix) -> f64 {
-        let whole = self.axis_count() == MAX_AXES;
-        if !whole {
-            // The direction alone: the chain applied to `b`, vector by vector.
-            let (chain, n) = self.chain();
-            let mut v = self.tool_direction();
-            for link in chain.iter().take(n).rev() {
-                if let Some(rk) = r.get(link.index) {
-                    v = if link.sign < 0.0 {
-                        rotate(&transpose(rk), v)
-                    } else {
-                        rotate(rk, v)
-                    };
-                }
-            }
-            let e = [0, 1, 2].map(|i| abs(v[i] - target[i][2]));
-            // NaN would make the miss NaN, which the caller refuses.
-            return e[0].max(e[1]).max(e[2]) + (e[0] + e[1] + e[2]) * 0.0;
-        }
-        let reached = self.rotation_of(r);
-        let mut worst = 0.0f64;
-        for (row_r, row_t) in reached.iter().zip(target) {
-            for (j, (a, b)) in row_r.iter().zip(row_t).enumerate() {
-                if whole || j == 2 {
-                    // NaN would make the miss infinite.
-                    let e = abs(a - b);
-                    worst = if e <= worst { worst } else { e };
-                }
-            }
-        }
-        worst
+            residual,
+            free,
+        };
+        Ok(())
     }
 
     /// The tool tip in the tool adapter's system: `−L·b`.
@@ -500,6 +684,43 @@ impl Machine {
             mul(&out, &self.base())
         }
     }
+}
+
+/// The chain's first `n` links turned by their sines and cosines `sc`, applied to `v`
+/// (innermost first).
+#[inline(always)]
+fn chain_turn(
+    chain: &[Link; MAX_AXES],
+    sc: &[(f64, f64); MAX_AXES],
+    n: usize,
+    v: Vector,
+) -> Vector {
+    let [l0, l1, l2] = chain;
+    let [(s0, c0), (s1, c1), (s2, c2)] = *sc;
+    match n {
+        1 => turn_vector(l0.axis, s0, c0, v),
+        2 => turn_vector(l0.axis, s0, c0, turn_vector(l1.axis, s1, c1, v)),
+        _ => turn_vector(
+            l0.axis,
+            s0,
+            c0,
+            turn_vector(l1.axis, s1, c1, turn_vector(l2.axis, s2, c2, v)),
+        ),
+    }
+}
+
+/// The largest element difference of `a` and `b`: NaN when one is NaN (`max` would drop
+/// it).
+#[inline(always)]
+fn miss(a: Vector, b: Vector) -> f64 {
+    let e = [0, 1, 2].map(|i| abs(a[i] - b[i]));
+    e[0].max(e[1]).max(e[2]) + (e[0] + e[1] + e[2]) * 0.0
+}
+
+/// Lane `k` of `v`, 0 beyond it.
+#[inline(always)]
+fn lane(v: &[f64; 4], k: usize) -> f64 {
+    v.get(k).copied().unwrap_or(0.0)
 }
 
 /// `R·(q − p) + p`: the turn `R` about the line through `p`.

@@ -56,7 +56,31 @@ mod imp {
 }
 
 use imp::fmod;
-pub use imp::{ceil, round, sqrt};
+pub use imp::{ceil, sqrt};
+
+/// `x` rounded to the nearest integer, halves away from zero (C's `round`), exactly as the
+/// library's: below 2⁵² in magnitude by truncation through an integer and the exact
+/// remainder (no call: the five-axis transformation rounds on every axis of every
+/// solution), the rest (already integers, infinities, NaN) by the library's.
+#[inline]
+pub fn round(x: f64) -> f64 {
+    if abs(x) < 4_503_599_627_370_496.0 {
+        // Exact: |x| < 2⁵² fits the integer, and x − t is then exact too.
+        let t = x as i64 as f64;
+        let f = x - t;
+        let r = if f >= 0.5 {
+            t + 1.0
+        } else if f <= -0.5 {
+            t - 1.0
+        } else {
+            t
+        };
+        // x's sign on a zero result (round(-0.3) is -0, as in C); a nonzero r has it.
+        f64::from_bits(r.to_bits() | (x.to_bits() & (1 << 63)))
+    } else {
+        imp::round(x)
+    }
+}
 
 /// `|x|` without `std` (clears the sign bit).
 #[inline]
@@ -259,7 +283,8 @@ pub fn rem360(x: f64) -> f64 {
 }
 
 /// [`rem360`] kept out of line: the full-turn reduction is the rare path of
-/// [`sin_cos_deg`], which is inlined three times into every composition.
+/// [`sin_cos_deg`], which is inlined three times into every composition, and of
+/// [`wrap_deg`].
 #[inline(never)]
 fn rem360_cold(x: f64) -> f64 {
     rem360(x)
@@ -273,7 +298,8 @@ pub fn wrap_deg(deg: f64) -> f64 {
     if deg > -180.0 && deg <= 180.0 {
         return deg + 0.0;
     }
-    let mut r = rem360(deg);
+    // Out of line: the rare path, which would otherwise sit in every caller's frame.
+    let mut r = rem360_cold(deg);
     if r > 180.0 {
         r -= 360.0;
     } else if r <= -180.0 {
@@ -322,6 +348,46 @@ fn atan2_deg_lanes<V: Lanes>(y: V, x: V) -> V {
 #[inline]
 pub fn turns_toward(angle: f64, reference: f64) -> f64 {
     360.0 * round((reference - angle) / 360.0)
+}
+
+#[cfg(test)]
+mod round_tests {
+    /// The inline rounding against the library's, bit for bit: halves, their neighbours,
+    /// signed zeros, the 2⁵² boundary, large values, infinities, NaN.
+    #[test]
+    fn round_is_the_library_round() {
+        let mut xs = vec![
+            0.0,
+            -0.0,
+            0.3,
+            -0.3,
+            0.5,
+            -0.5,
+            1.5,
+            -1.5,
+            2.5,
+            -2.5,
+            0.499_999_999_999_999_94,
+            -0.499_999_999_999_999_94,
+            4_503_599_627_370_495.5,
+            -4_503_599_627_370_495.5,
+            4_503_599_627_370_496.0,
+            9_007_199_254_740_993.0,
+            1e300,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        ];
+        let mut rng = super::Xorshift(7);
+        for _ in 0..100_000 {
+            let scale = [1.0, 10.0, 1e3, 1e8, 1e15][(rng.bits() % 5) as usize];
+            let x = (rng.unit() - 0.5) * scale;
+            xs.extend([x, (2.0 * x).round() / 2.0, f64::from_bits(x.to_bits() + 1)]);
+        }
+        for x in xs {
+            assert_eq!(super::round(x).to_bits(), libm::round(x).to_bits(), "{x}");
+        }
+        assert!(super::round(f64::NAN).is_nan());
+    }
 }
 
 /// The xorshift generator the unit tests draw their inputs from.
