@@ -1653,8 +1653,9 @@ int32_t cncrot_machine_tcp_forward(const struct cncrot_machine *machine,
  * linear axes still put the tip on the target; the direction is off by the residual.
  *
  * No allocation, no panic, a bounded number of operations (no loop depends on the
- * values). Stack and time are measured in `docs/kinematics.md`: within the bound of block
- * preparation (3 584 bytes), not yet the interpolation cycle's 2 048.
+ * values). Stack and time are measured in `docs/kinematics.md`: on a sealed description
+ * within the interpolation cycle's 2 048 bytes (about 1.9 KiB), on its common and its
+ * general way.
  *
  * Returns 0, `CNCROT_STATUS_FREE_AXIS`, `CNCROT_STATUS_SNAPPED`, or with `axes`
  * untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE` (the pose,

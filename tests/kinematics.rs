@@ -1420,3 +1420,38 @@ fn tcp_without_rotary_axes() {
         Err(Error::BadArgument)
     );
 }
+
+/// A head axis 2e-10 rad from the tool (found by the fuzz target): the target is 2e-10 off
+/// its pole, so the solver's arguments for its angle are products of short vectors,
+/// (1e-170, 0) and the like, whose squares vanish. The angle came out 90° and the sine and
+/// cosine that turned the tool point those of 0°: the linear axes missed the tip by 264 mm.
+/// By hand: C = 90° about −Z through p = (170.562, 77.568, 272.577) carries the adapter's
+/// origin to p − Rz(−90°)·p = (92.994, 248.13, 0), so a tip at the origin needs the linear
+/// axes at minus that.
+#[test]
+fn tcp_inverse_near_a_pole_keeps_the_turn_it_chose() {
+    let mut c = axis(
+        Side::Tool,
+        [2.0384681981891812e-10, -2.549311695463926e-303, -1.0],
+        [170.562, 77.568, 272.577],
+    );
+    c.limits = Some([16.705, 133.568]);
+    let m = Machine::new(Z)
+        .unwrap()
+        .with_axis(c)
+        .unwrap()
+        .with_axis(axis(Side::Tool, [1.0, 0.0, 0.0], [0.0; 3]))
+        .unwrap();
+    let pose = cncrot::Frame {
+        rotation: cncrot::IDENTITY,
+        translation: [0.0; 3],
+    };
+    let t = m.tcp_inverse(&pose, 0.0, [0.0; 6]).unwrap();
+    assert_eq!(t.axes[3], 90.0);
+    let want = [-92.994, -248.13, 0.0];
+    for (a, w) in t.axes.iter().zip(want) {
+        assert!((a - w).abs() < 1e-6, "{:?}", t.axes);
+    }
+    let back = m.tcp_forward(t.axes, 0.0).unwrap();
+    assert!(back.translation.iter().all(|x| x.abs() < 1e-9), "{back:?}");
+}

@@ -199,7 +199,10 @@ fn tcp(m: &cncrot_machine, n: usize, pos: &[f64; 3], current: &[f64; 3], t: &[u8
             .fold(0.0f64, |a, x| a.max(x.abs()));
     for i in 0..3 {
         let d = (back[4 * i + 3] - pose[4 * i + 3]).abs();
-        assert!(d <= 1e-9 * scale, "tip {i}: {d} {pose:?} {back:?} {out:?}");
+        assert!(
+            d <= 1e-9 * scale,
+            "tip {i}: {d} {pose:?} {back:?} {out:?} {length} {m:?}"
+        );
         let e = (back[4 * i + 2] - pose[4 * i + 2]).abs();
         assert!(hirth || e <= 1e-9, "direction {i}: {e}");
     }

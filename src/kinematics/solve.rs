@@ -108,11 +108,7 @@ fn two(
         out.phi[0] = [free[0], phi2];
         return Ok(());
     }
-    let mut a = Args {
-        y: [0.0; 4],
-        x: [1.0; 4],
-        count: 0,
-    };
+    let mut a = Args::NONE;
     two_args(u1, u2, b, d, &mut a)?;
     *out = a.phis();
     Ok(())
@@ -135,6 +131,13 @@ pub(crate) struct Args {
 }
 
 impl Args {
+    /// No solution yet: every lane the angle 0.
+    pub(crate) const NONE: Args = Args {
+        y: [0.0; 4],
+        x: [1.0; 4],
+        count: 0,
+    };
+
     /// The chain angles (degrees) of the solutions, in one four-lane `atan2` (the same
     /// bits as one by one).
     pub(crate) fn phis(&self) -> Phis {
@@ -157,16 +160,27 @@ impl Args {
 }
 
 /// The sine and cosine of `atan2(y, x)` without the angle: `(y, x)` made a unit vector,
-/// `(0, 1)` (the angle 0, as `atan2` gives it) for `(0, 0)`.
+/// `(0, 1)` (the angle 0, as `atan2` gives it) for `(0, 0)`. Arguments so small (or large)
+/// that their squares leave the range of doubles are scaled first: near a pole they are
+/// products of short vectors (the fuzz target found `(1e-170, 0)`, whose square vanished:
+/// the angle 90° with the sine and cosine of 0°).
 #[inline(always)]
 pub(crate) fn sin_cos_of(y: f64, x: f64) -> (f64, f64) {
     let r = sqrt(y * y + x * x);
-    // Written so that NaN gives the angle 0 too.
-    if r > 0.0 {
-        (y / r, x / r)
-    } else {
-        (0.0, 1.0)
+    // Written so that NaN takes the scaled way. Inline, not a call: a call in the solver's
+    // loops would make every vector register live across it spill (stack bound).
+    if r > 1e-150 && r < 1e150 {
+        return (y / r, x / r);
     }
+    let m = if abs(y) >= abs(x) { abs(y) } else { abs(x) };
+    // Written so that NaN (of both) gives the angle 0, as `atan2` gives it.
+    let some = m > 0.0;
+    if !some {
+        return (0.0, 1.0);
+    }
+    let (y, x) = (y / m, x / m);
+    let r = sqrt(y * y + x * x);
+    (y / r, x / r)
 }
 
 /// Subproblem 2 away from its poles (`b` not along `u2`, `d` not along `u1`): the isolated
@@ -214,11 +228,7 @@ pub(crate) fn two_args(
     let b2: Vector = core::array::from_fn(|i| b[i] - a2 * u2[i]);
     let d1: Vector = core::array::from_fn(|i| d[i] - a1 * u1[i]);
     let (s2, s1) = (cross(u2, b2), cross(d1, u1));
-    *out = Args {
-        y: [0.0; 4],
-        x: [1.0; 4],
-        count: 0,
-    };
+    *out = Args::NONE;
     // A turn of no direction (b along u2, d along u1: a pole, which the callers leave out
     // before) has no isolated solution.
     if dot(b2, b2) <= POLE_SINE * POLE_SINE || dot(d1, d1) <= POLE_SINE * POLE_SINE {
@@ -425,11 +435,7 @@ impl Machine {
             *third = third_angles(u, &m, phis);
         } else {
             // Isolated: as the five-axis transformation solves it, bit for bit.
-            let mut args = Args {
-                y: [0.0; 4],
-                x: [1.0; 4],
-                count: 0,
-            };
+            let mut args = Args::NONE;
             two_args(u1, u2, u3, &target_u3, &mut args)?;
             *phis = args.phis();
             *third = third_from_args(u, &m, &args);
@@ -493,13 +499,26 @@ pub(crate) fn third_from_args(u: &[Vector; 3], m: &Matrix, args: &Args) -> [f64;
 /// reference (stack bound).
 #[inline(never)]
 pub(crate) fn third_args(u: &[Vector; 3], m: &Matrix, args: &mut Args) {
+    // The four lanes' sines and cosines first, in place: the vector work below then has
+    // no branch of their rare scaled way among its values (stack bound).
+    for j in 0..4 {
+        let (s, c) = args.sin_cos(j);
+        if let (Some(y), Some(x)) = (args.y.get_mut(j), args.x.get_mut(j)) {
+            (*y, *x) = (s, c);
+        }
+    }
     let [u1, u2, u3] = *u;
     let x = perpendicular_to(u3);
     let v = rotate(m, x);
     let (mut ys, mut xs) = ([0.0; 4], [1.0; 4]);
     for k in 0..args.count.min(MAX_SOLUTIONS) {
-        let (s1, c1) = args.sin_cos(2 * k);
-        let (s2, c2) = args.sin_cos(2 * k + 1);
+        let at = |j: usize| {
+            (
+                args.y.get(j).copied().unwrap_or(0.0),
+                args.x.get(j).copied().unwrap_or(1.0),
+            )
+        };
+        let ((s1, c1), (s2, c2)) = (at(2 * k), at(2 * k + 1));
         // Rot(u2, −φ2)·Rot(u1, −φ1)·v.
         let back = turn_vector(u2, -s2, c2, turn_vector(u1, -s1, c1, v));
         // A lane left at (0, 1) gives 0 (never: x is perpendicular to u3).

@@ -240,23 +240,21 @@ impl Machine {
         if self.stored().iter().any(|a| a.hirth().is_some()) {
             return Ok(false);
         }
-        let mut args = Args {
-            y: [0.0; 4],
-            x: [1.0; 4],
-            count: 0,
-        };
+        let mut args = Args::NONE;
         let mut third = args;
-        if !self.closest_args(&pose.rotation, &mut args, &mut third)? {
+        // Built once for the three passes.
+        let (chain, n) = self.chain();
+        if !self.closest_args(&chain, n, &pose.rotation, &mut args, &mut third)? {
             return Ok(false);
         }
         let mut t = Turned {
             rotary: [0.0; MAX_AXES],
             sc: [(0.0, 1.0); MAX_AXES],
         };
-        if !self.closest_turns(&args, &third, &cur, &mut t)? {
+        if !self.closest_turns(&chain, n, &args, &third, &cur, &mut t)? {
             return Ok(false);
         }
-        self.tcp_turned(&t, pose, tool_length, out)
+        self.tcp_turned(&chain, n, &t, pose, tool_length, out)
     }
 
     /// The `atan2` arguments of the common case's solutions, as [`Machine::solve`] finds
@@ -266,12 +264,13 @@ impl Machine {
     #[inline(never)]
     fn closest_args(
         &self,
+        chain: &[Link; MAX_AXES],
+        n: usize,
         target: &Matrix,
         args: &mut Args,
         third: &mut Args,
     ) -> Result<bool, Error> {
-        let (chain, n) = self.chain();
-        let [l1, l2, _] = &chain;
+        let [l1, l2, _] = chain;
         let b = self.tool_direction();
         let d = [target[0][2], target[1][2], target[2][2]];
         match n {
@@ -294,7 +293,7 @@ impl Machine {
                 two_args(&l1.axis, &l2.axis, &b, &d, args)?;
                 Ok(true)
             }
-            3 => self.three_args(&chain, target, args, third),
+            3 => self.three_args(chain, target, args, third),
             _ => Ok(false),
         }
     }
@@ -308,12 +307,13 @@ impl Machine {
     #[inline(never)]
     fn closest_turns(
         &self,
+        chain: &[Link; MAX_AXES],
+        n: usize,
         args: &Args,
         third: &Args,
         cur: &[f64; MAX_AXES],
         out: &mut Turned,
     ) -> Result<bool, Error> {
-        let (chain, n) = self.chain();
         // The same bits as `atan2_deg` one by one (lane by lane the same operations).
         let phi = lanes_atan2(&args.y, &args.x);
         let phi3 = if n == MAX_AXES {
@@ -325,7 +325,7 @@ impl Machine {
         let mut best: Option<(usize, [f64; MAX_AXES], f64)> = None;
         for k in 0..args.count.min(MAX_SOLUTIONS) {
             let p = [lane(&phi, 2 * k), lane(&phi, 2 * k + 1), lane(&phi3, k)];
-            let (placed, distance) = match self.placed(&chain, n, &p, cur) {
+            let (placed, distance) = match self.placed(chain, n, &p, cur) {
                 Ok(Some(p)) => p,
                 Ok(None) => continue,
                 Err(()) => return Ok(false),
@@ -428,13 +428,13 @@ impl Machine {
     #[inline(never)]
     fn tcp_turned(
         &self,
+        chain: &[Link; MAX_AXES],
+        n: usize,
         t: &Turned,
         pose: &Frame,
         tool_length: f64,
         out: &mut Tcp,
     ) -> Result<bool, Error> {
-        let (chain, n) = self.chain();
-        let chain = &chain;
         let sc = &t.sc;
         let target = &pose.rotation;
         let worst = if n == MAX_AXES {
@@ -560,9 +560,8 @@ impl Machine {
         found
     }
 
-    /// The general way (a pole, a rule other than the closest, a choice that
-    /// missed its verification or was snapped to a Hirth grid): the choice among verified
-    /// solutions, as `choose` makes it.
+    /// The way of the rules other than the closest: the choice among verified solutions,
+    /// as `choose` makes it.
     #[inline(never)]
     fn tcp_general(
         &self,
@@ -572,8 +571,6 @@ impl Machine {
         rule: Rule,
         out: &mut Tcp,
     ) -> Result<(), Error> {
-        // Verified solutions at once: the first-unverified round of the common case would
-        // keep a second choice in this frame, on the deepest path (stack bound).
         let c = self.settle(&pose.rotation, current, rule, true)?;
         self.tcp_linear(c.axes, c.residual, c.free, pose, tool_length, out)
     }
