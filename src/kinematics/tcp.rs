@@ -218,11 +218,12 @@ impl Machine {
     }
 
     /// The common case of [`Machine::tcp_inverse`]: the checks of `settle`, in its order,
-    /// then one to three axes away from a pole, without a Hirth grid, in one pass over
-    /// fixed arrays ([`Machine::closest_turns`], then [`Machine::tcp_turned`]). `None`:
-    /// another case (no axis, a pole, a grid, a position taken onto an end of the travel,
-    /// a choice that missed its verification), which the general way decides. Not
-    /// inlined, like the general way: each path's frames stack alone (stack bound).
+    /// then one to three axes away from a pole, without a Hirth grid, in three passes over
+    /// fixed arrays ([`Machine::closest_args`], [`Machine::closest_turns`],
+    /// [`Machine::tcp_turned`]), written to `out`. `false`: another case (no axis, a pole,
+    /// a grid, a position taken onto an end of the travel, a choice that missed its
+    /// verification), which the general way decides. Not inlined, like the general way:
+    /// each path's frames stack alone (stack bound).
     #[inline(never)]
     fn tcp_closest(
         &self,
@@ -424,7 +425,7 @@ impl Machine {
 
     /// The common case's linear axes for the turns `t`, verified as `solve` verifies (the
     /// direction, or the whole rotation with three axes); the turns move vectors, not
-    /// matrices. `None`: missed. Not inlined (stack bound).
+    /// matrices. `false`: missed. Not inlined (stack bound).
     #[inline(never)]
     fn tcp_turned(
         &self,
