@@ -1425,15 +1425,18 @@ fn tcp_without_rotary_axes() {
 /// its pole, so the solver's arguments for its angle are products of short vectors,
 /// (1e-170, 0) and the like, whose squares vanish. The angle came out 90° and the sine and
 /// cosine that turned the tool point those of 0°: the linear axes missed the tip by 264 mm.
-/// By hand: C = 90° about −Z through p = (170.562, 77.568, 272.577) carries the adapter's
-/// origin to p − Rz(−90°)·p = (92.994, 248.13, 0), so a tip at the origin needs the linear
-/// axes at minus that.
+/// So near its pole the axis' angle is rounding's (any angle nearly reaches the target);
+/// what must hold is that the linear axes go with the angle chosen. By hand: C about −Z
+/// through p = (170.562, 77.568, 272.577) carries the adapter's origin to p − Rz(−C)·p, so a
+/// tip at the origin needs the linear axes at minus that (the axis' 2e-10 tilt moves it by
+/// less than 1e-7 mm).
 #[test]
 fn tcp_inverse_near_a_pole_keeps_the_turn_it_chose() {
+    let p = [170.562, 77.568, 272.577];
     let mut c = axis(
         Side::Tool,
         [2.0384681981891812e-10, -2.549311695463926e-303, -1.0],
-        [170.562, 77.568, 272.577],
+        p,
     );
     c.limits = Some([16.705, 133.568]);
     let m = Machine::new(Z)
@@ -1447,10 +1450,14 @@ fn tcp_inverse_near_a_pole_keeps_the_turn_it_chose() {
         translation: [0.0; 3],
     };
     let t = m.tcp_inverse(&pose, 0.0, [0.0; 6]).unwrap();
-    assert_eq!(t.axes[3], 90.0);
-    let want = [-92.994, -248.13, 0.0];
-    for (a, w) in t.axes.iter().zip(want) {
-        assert!((a - w).abs() < 1e-6, "{:?}", t.axes);
+    let angle = t.axes[3];
+    assert!((16.705..=133.568).contains(&angle), "{:?}", t.axes);
+    let (s, co) = angle.to_radians().sin_cos();
+    // Rz(−C)·p = (x cos C + y sin C, −x sin C + y cos C, z).
+    let turned = [p[0] * co + p[1] * s, -p[0] * s + p[1] * co, p[2]];
+    for k in 0..3 {
+        let want = -(p[k] - turned[k]);
+        assert!((t.axes[k] - want).abs() < 1e-6, "{:?}", t.axes);
     }
     let back = m.tcp_forward(t.axes, 0.0).unwrap();
     assert!(back.translation.iter().all(|x| x.abs() < 1e-9), "{back:?}");

@@ -300,11 +300,7 @@ impl Machine {
             Rule::NegativeTurn(k) => Some((k, -1.0)),
             _ => None,
         };
-        let mut solutions = Solutions {
-            angles: [[0.0; MAX_AXES]; MAX_SOLUTIONS],
-            count: 0,
-            free: false,
-        };
+        let mut solutions = Solutions::NONE;
         self.solve_into(target, &current, verify, &mut solutions)?;
         let mut placed = [([0.0; MAX_AXES], [0.0; MAX_AXES], 0.0f64); MAX_SOLUTIONS];
         let mut count = 0;

@@ -20,6 +20,13 @@ pub struct Solutions {
 }
 
 impl Solutions {
+    /// None yet: where a solver writes them.
+    pub(crate) const NONE: Solutions = Solutions {
+        angles: [[0.0; MAX_AXES]; MAX_SOLUTIONS],
+        count: 0,
+        free: false,
+    };
+
     /// The used rows.
     pub fn as_slice(&self) -> &[[f64; MAX_AXES]] {
         self.angles.get(..self.count).unwrap_or(&[])
@@ -293,11 +300,7 @@ impl Machine {
         free: [f64; MAX_AXES],
         verify: bool,
     ) -> Result<Solutions, Error> {
-        let mut out = Solutions {
-            angles: [[0.0; MAX_AXES]; MAX_SOLUTIONS],
-            count: 0,
-            free: false,
-        };
+        let mut out = Solutions::NONE;
         self.solve_into(target, &free, verify, &mut out)?;
         Ok(out)
     }
@@ -325,9 +328,8 @@ impl Machine {
         let mut third = [0.0f64; MAX_SOLUTIONS];
         self.chain_angles(&chain, n, target, &free, &mut phis, &mut third)?;
         *out = Solutions {
-            angles: [[0.0; MAX_AXES]; MAX_SOLUTIONS],
-            count: 0,
             free: phis.free,
+            ..Solutions::NONE
         };
         for (p, t3) in phis.phi.iter().zip(third).take(phis.count) {
             self.keep_solution(&chain, n, &[p[0], p[1], t3], target, verify, out);

@@ -511,27 +511,19 @@ impl Machine {
 
     /// The general way of [`Rule::Closest`] (a pole, a Hirth grid, a position taken onto
     /// an end of the travel, a solution that missed its verification): what
-    /// [`Machine::settle`] chooses with that rule (the checks in its order, the verified
-    /// solutions placed alike, the first closest), without its frame for the other rules
-    /// (stack bound).
+    /// [`Machine::settle`] chooses with that rule (the verified solutions placed alike,
+    /// the first closest), without its frame for the other rules (stack bound). Taken
+    /// only after [`Machine::tcp_closest`], which made `settle`'s checks of the pose's
+    /// rotation and of `cur`.
     #[inline(never)]
     fn closest_general(
         &self,
         pose: &Frame,
         tool_length: f64,
-        current: [f64; MAX_AXES],
+        cur: [f64; MAX_AXES],
         out: &mut Tcp,
     ) -> Result<(), Error> {
-        check_rotation(&pose.rotation)?;
-        let cur = self.positions(current)?;
-        if !cur.iter().all(|x| abs(*x) < CLOSEST_MAX) {
-            return Err(Error::OutOfRange);
-        }
-        let mut s = Solutions {
-            angles: [[0.0; MAX_AXES]; MAX_SOLUTIONS],
-            count: 0,
-            free: false,
-        };
+        let mut s = Solutions::NONE;
         self.solve_into(&pose.rotation, &cur, true, &mut s)?;
         let mut best = ([0.0; MAX_AXES], [0.0; MAX_AXES], 0.0);
         if !self.closest_placed(&s, &cur, &mut best) {
