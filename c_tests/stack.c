@@ -165,6 +165,7 @@ static cncrot_program prog, axial;
 static const char AXIAL[] = "PLANE AXIAL B+30 C+45 TURN FMAX";
 static const char C800[] = "N10 CYCLE800(1,\"TC1\",0,57,10,0,0,30,45,60,0,0,0,-1,100,1)";
 static const char C600[] = "N20 CYCLE600(0,\"UFK600\",1,57,0,0,0,30,45,60,0,0,0,1,39,1,0,0) ; paper";
+static const char C19[] = "7 CYCL DEF 19.1 A+10 B+30 C+45 F1000 DIST50 MB MAX";
 static const char PLANE[] = "5 PLANE POINTS P1X+10 P1Y+0 P1Z+0 P2X+10.123456789012345 P2Y+5 P2Z+0 P3X+0 P3Y+0 P3Z+0 STAY";
 static void program_line(void) {
   memset(&prog, 0, sizeof prog);
@@ -175,6 +176,11 @@ static void program_line(void) {
           cncrot_program_line(&prog, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+Q1", 20);
   memset(&axial, 0, sizeof axial);
   sink += cncrot_program_line(&axial, CNCROT_DIALECT_HEIDENHAIN, AXIAL, sizeof AXIAL - 1);
+  /* Cycle 19, spatial and (on a machine set so) axis angles. */
+  sink += cncrot_program_line(&prog, CNCROT_DIALECT_HEIDENHAIN, C19, sizeof C19 - 1);
+  static cncrot_program c19;
+  sink += cncrot_program_init(&c19, CNCROT_PROGRAM_HEIDENHAIN_AXIS_ANGLES) +
+          cncrot_program_line(&c19, CNCROT_DIALECT_HEIDENHAIN, C19, sizeof C19 - 1);
 }
 static void program_column(void) {
   static size_t col;

@@ -599,9 +599,19 @@ static void sealed_states(void) {
   p.options = CNCROT_PROGRAM_SINUMERIK_EULER;
   CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_SINUMERIK, "ROT Z30", 7), CNCROT_STATUS_BAD_STATE);
   cncrot_program before = states[2];
-  CHECK_STATUS(cncrot_program_init(&states[2], 2), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_program_init(&states[2], 4), CNCROT_STATUS_BAD_ARGUMENT);
   CHECK(memcmp(&before, &states[2], sizeof before) == 0, "init wrote on error");
   CHECK_STATUS(cncrot_program_init(NULL, 0), CNCROT_STATUS_NULL_POINTER);
+  /* Cycle 19 on a machine set to axis angles: the positions of B and C, as PLANE AXIAL. */
+  cncrot_program ax;
+  CHECK_STATUS(cncrot_program_init(&ax, CNCROT_PROGRAM_HEIDENHAIN_AXIS_ANGLES), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_program_line(&ax, CNCROT_DIALECT_HEIDENHAIN, "CYCL DEF 19.1 B+30 C+45", 23), CNCROT_STATUS_OK);
+  CHECK(ax.active == 2 && ax.direct_given == 6 && ax.angles[1] == 30 && ax.angles[2] == 45,
+        "cycle 19 axis angles: active %d given %u", ax.active, ax.direct_given);
+  /* By default spatial angles: the rotation of PLANE SPATIAL SPA+0 SPB+30 SPC+0. */
+  memset(&ax, 0, sizeof ax);
+  CHECK_STATUS(cncrot_program_line(&ax, CNCROT_DIALECT_HEIDENHAIN, "CYCL DEF 19.1 B+30", 18), CNCROT_STATUS_OK);
+  CHECK(ax.active == 1 && fabs(ax.rotation[2] - 0.5) < 1e-15, "cycle 19 spatial: %g", ax.rotation[2]);
   /* Euler mode, set by init: ROT Z30 X20 is Rz(30)·Rx(20)·Rz(0), not RPY's Rz·Ry·Rx. */
   p = states[2];
   CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_SINUMERIK, "ROT Z30 X20", 11), CNCROT_STATUS_OK);

@@ -240,6 +240,13 @@
 #define CNCROT_PROGRAM_SINUMERIK_EULER 1
 
 /**
+ * An option of `cncrot_program_init`: Heidenhain's `CYCL DEF 19.1 A B C` are the positions
+ * of the rotary axes named A, B, C (a direct mode, as `PLANE AXIAL`: iTNC 530 machine
+ * parameter 7500 bit 1 = 0) instead of spatial angles (as `PLANE SPATIAL`).
+ */
+#define CNCROT_PROGRAM_HEIDENHAIN_AXIS_ANGLES 2
+
+/**
  * The longest line `cncrot_program_write` writes, without its NUL (SINUMERIK's block limit).
  */
 #define CNCROT_PROGRAM_LINE_MAX 512
@@ -1875,6 +1882,7 @@ int32_t cncrot_probe_edge(const double *frame_in,
  * ```c
  * cncrot_program p;
  * cncrot_program_init(&p, CNCROT_PROGRAM_SINUMERIK_EULER);   // machine data 10600 = 2
+ * cncrot_program_init(&p, CNCROT_PROGRAM_HEIDENHAIN_AXIS_ANGLES);   // MP7500 bit 1 = 0
  * ```
  */
 int32_t cncrot_program_init(struct cncrot_program *program, uint32_t options);
@@ -1893,8 +1901,10 @@ int32_t cncrot_program_init(struct cncrot_program *program, uint32_t options);
  * tables and frame variables such as `G10 L2`, `#5221=`, `$P_UIFR[1]=`, `FN 17`; datum
  * shifts from tables such as `CYCL DEF 7.1 #5`, `TRANS DATUM TABLE`; mirroring, scaling
  * and rotations that need more than the state keeps such as `MIRROR`, `G51.1`,
- * `CYCL DEF 10`, Haas's `G68`; a tilt through the machine's axes such as `CYCL DEF 19`,
- * `TOROT`). A block that selects another working plane (`G17`–`G19`, for `ROT RPL=` and
+ * `CYCL DEF 10`, Haas's `G68`; a tilt through the machine's axes such as `TOROT`).
+ * Heidenhain's `CYCL DEF 19` (WORKING PLANE) is read with spatial angles, as `PLANE
+ * SPATIAL`, or as the rotary axes' positions when the state was initialised with
+ * `CNCROT_PROGRAM_HEIDENHAIN_AXIS_ANGLES`. A block that selects another working plane (`G17`–`G19`, for `ROT RPL=` and
  * `G68 X Y R`) is applied with the frame unchanged. A program speaks one dialect.
  *
  * Returns 0, `CNCROT_STATUS_PASSED`, `CNCROT_STATUS_NOT_FOLLOWED`, or a negative status
@@ -1906,8 +1916,10 @@ int32_t cncrot_program_init(struct cncrot_program *program, uint32_t options);
  * `CNCROT_STATUS_LINE_TOO_LONG`, `CNCROT_STATUS_BAD_ARGUMENT` (unknown dialect, a dialect
  * other than the program's, a value outside its set such as `_ST`, a `P` or `Q` that is no
  * whole number, an invalid `_MIHEAD`), `CNCROT_STATUS_BAD_STATE` (a state this library did
- * not write), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes, `G68.3`, `PLANE AXIAL`: they need
- * the machine's kinematics), `CNCROT_STATUS_OUT_OF_RANGE` (a number of magnitude 1e100 or
+ * not write), `CNCROT_STATUS_NOT_AVAILABLE` (`G68.3`; a direct mode that is
+ * additive, incremental or turns after its rotation, and an incremental command such as
+ * `PLANE RELATIV`, `G68.4`, `AROT` on an active direct mode: they need the machine's
+ * kinematics), `CNCROT_STATUS_OUT_OF_RANGE` (a number of magnitude 1e100 or
  * more, or non-zero below 1e-100; a frame that overflows), and the statuses of the
  * command's mathematics: `CNCROT_STATUS_BAD_FLAG` (a CYCLE600 flag),
  * `CNCROT_STATUS_BAD_SEQUENCE` (an axis order in `_MODE`, `_BIN_IN`/`_BIN_OUT`, `P`, `Q`),

@@ -8,7 +8,8 @@
 %   (a char row or a string) or several (a cell array of them, or a string array), applied
 %   in order. F is the 4-by-4 active frame after the last line (p_old = F * [p_new; 1]),
 %   state the program's modal state to pass to the next call (start from [], or from
-%   struct('options', 1) to read SINUMERIK frame angles in Euler mode; options of any
+%   struct('options', 1) to read SINUMERIK frame angles in Euler mode, 2 to read
+%   Heidenhain's CYCL DEF 19 angles as rotary-axis positions, 3 both; options of any
 %   numeric class), frames the frame after each line (4-by-4-by-N). The state keeps the
 %   datum shift apart from the tilt (state.shift: CYCL DEF 7, TRANS DATUM, G52) and the
 %   tilt's own choice words (state.choice 1 minus, 2 plus for SEQ-/SEQ+ and _DIR, 4 / 5

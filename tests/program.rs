@@ -1035,8 +1035,8 @@ fn every_block_of_a_program() {
             ("12 L Z+100 R0 FMAX", P),
             ("13 TRANS DATUM AXIS X+5 Y+0 Z+0", A),
             ("14 TRANS DATUM RESET", A),
-            ("15 CYCL DEF 19.0 WORKING PLANE", N),
-            ("16 CYCL DEF 19.1 A+0 B+30 C+0", N),
+            ("15 CYCL DEF 19.0 WORKING PLANE", A),
+            ("16 CYCL DEF 19.1 A+0 B+30 C+0", A),
             ("17 CYCL DEF 10.0 ROTATION", N),
             ("18 CYCL DEF 247 DATUM SETTING ~", N),
             ("19 PRESET SELECT #2", N),
@@ -1051,8 +1051,8 @@ fn every_block_of_a_program() {
             ("28 END PGM 1234 MM", P),
         ],
     );
-    let want = mul(&r(Axis::X, 0.0), &r(Axis::Y, 45.0));
-    assert!(dist(&p.frame.rotation, &want) < 1e-15);
+    // Cycle 19 (spatial angles) replaced the PLANE.
+    assert!(dist(&p.frame.rotation, &r(Axis::Y, 30.0)) < 1e-15);
 
     let p = remarks(
         Dialect::Fanuc,
@@ -2207,6 +2207,98 @@ fn positioning_words_are_kept_and_written() {
             }
         }
     }
+}
+
+/// Heidenhain's cycle 19, WORKING PLANE, as CAM posts write it. Spatial angles (the
+/// default): about the fixed axes, A then B then C, `F = Rz(C)·Ry(B)·Rx(A)` (the manual:
+/// "first around the A axis, then B, and then C"), those not written 0, about the shifted
+/// datum; it replaces the active tilt; zero angles and a second line without angles cancel
+/// it. With the machine set to axis angles: the rotary positions, a direct mode.
+#[test]
+fn heidenhain_cycle_19() {
+    use Remark::Applied as A;
+    let p = remarks(
+        Dialect::Heidenhain,
+        &[
+            ("10 CYCL DEF 7.0 DATUM SHIFT", A),
+            ("11 CYCL DEF 7.1 X+10", A),
+            ("12 CYCL DEF 19.0 WORKING PLANE", A),
+            ("13 CYCL DEF 19.1 A+30 C+90", A),
+        ],
+    );
+    let want = mul(&r(Axis::Z, 90.0), &r(Axis::X, 30.0));
+    assert!(dist(&p.frame.rotation, &want) < 1e-15);
+    assert_eq!(p.frame.translation, [10.0, 0.0, 0.0]);
+    assert_eq!((p.positioning, p.direct), (Positioning::Stay, None));
+    // By hand: A+30 B+45 C+60 moves the tool axis to Rz(60)·Ry(45)·Rx(30)·e_z.
+    let (s30, c30) = (0.5, 0.75f64.sqrt());
+    let h = 0.5f64.sqrt();
+    let z_after_a = [0.0, -s30, c30];
+    let z_after_b = [h * z_after_a[2], z_after_a[1], h * z_after_a[2]];
+    let (s60, c60) = (c30, s30);
+    let z = [
+        c60 * z_after_b[0] - s60 * z_after_b[1],
+        s60 * z_after_b[0] + c60 * z_after_b[1],
+        z_after_b[2],
+    ];
+    let q = read(Dialect::Heidenhain, &["CYCL DEF 19.1 B+45 C+60 A+30"]);
+    for (k, zk) in z.iter().enumerate() {
+        assert!((q.frame.rotation[k][2] - zk).abs() < 1e-15, "{k}");
+    }
+    // A second cycle 19 replaces the first; the automatic positioning's feed turns the axes.
+    let q = p
+        .line(Dialect::Heidenhain, b"14 CYCL DEF 19.1 B-20 F1000 DIST50")
+        .unwrap()
+        .0;
+    assert!(dist(&q.frame.rotation, &r(Axis::Y, -20.0)) < 1e-15);
+    assert_eq!(q.frame.translation, [10.0, 0.0, 0.0]);
+    assert_eq!(
+        (q.positioning, q.feed, q.feed_mm_min),
+        (Positioning::Turn, Feed::Rate, 1000.0)
+    );
+    // The reset CAM posts write: all angles 0, then the cycle without angles.
+    for reset in [
+        &["CYCL DEF 19.0 WORKING PLANE", "CYCL DEF 19.1 A+0 B+0 C+0"][..],
+        &["CYCL DEF 19.0", "CYCL DEF 19.1"],
+    ] {
+        let mut q = p;
+        for l in reset {
+            q = q.line(Dialect::Heidenhain, l.as_bytes()).unwrap().0;
+        }
+        assert_eq!(q.frame.rotation, cncrot::IDENTITY, "{reset:?}");
+        assert_eq!(q.frame.translation, [10.0, 0.0, 0.0], "{reset:?}");
+        assert_eq!(q.positioning, Positioning::Stay);
+    }
+    // Malformed: a line the cycle does not have, a word twice, a parameter for a number.
+    for (line, error, column) in [
+        ("CYCL DEF 19.2 A+0", Error::UnknownWord, 14),
+        ("CYCL DEF 19.1 B+10 B+20", Error::UnknownWord, 20),
+        ("CYCL DEF 19.1 B+Q121", Error::NotANumber, 17),
+        ("CYCL DEF 19.1 X+10", Error::UnknownWord, 15),
+    ] {
+        let e = p.line(Dialect::Heidenhain, line.as_bytes()).unwrap_err();
+        assert_eq!((e.error, e.column), (error, column), "{line}");
+    }
+    // Axis angles (a setting of the machine): the positions of B and C, as PLANE AXIAL.
+    let axial = Program {
+        axis_angles: true,
+        ..Program::default()
+    };
+    let q = axial
+        .line(Dialect::Heidenhain, b"CYCL DEF 19.1 B+30 C+45 F2000")
+        .unwrap()
+        .0;
+    assert_eq!(
+        q.direct,
+        Some(Direct {
+            by: DirectAxes::Letters,
+            given: 0b110
+        })
+    );
+    assert_eq!(q.angles, [0.0, 30.0, 45.0]);
+    assert_eq!(q.positioning, Positioning::Turn);
+    let q = q.line(Dialect::Heidenhain, b"CYCL DEF 19.1").unwrap().0;
+    assert!(!q.is_active() && q.direct.is_none());
 }
 
 /// The direct modes (`PLANE AXIAL`, `G158` mode 2, a `CYCLE800` with `_MODE` 192) keep the

@@ -306,7 +306,7 @@ fn census(calls: usize) -> BTreeMap<&'static str, BTreeSet<i32>> {
             let pp = g.ptr_mut(&mut p as *mut cncrot_program);
             record(
                 "cncrot_program_init",
-                cncrot_program_init(pp, g.pick(&[0, 1, 2])),
+                cncrot_program_init(pp, g.pick(&[0, 1, 2, 3, 4])),
             );
             if g.chance(0.05) {
                 p.origin[0] += 1.0;

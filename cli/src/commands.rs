@@ -7,6 +7,7 @@ use crate::svg;
 use crate::{run, Common, Report};
 use cncrot::dialects::cycle600::{self, Call, State};
 use cncrot::dialects::head_def::HeadTable;
+use cncrot::dialects::heidenhain::cycle_head;
 use cncrot::dialects::program::{
     write_change, write_line, Dialect, DirectAxes, Program, Remark, MAX_CHANGE,
 };
@@ -314,7 +315,7 @@ fn direct_by(p: &Program) -> &'static str {
 pub fn line(
     from: &str,
     to: &[String],
-    euler: bool,
+    (euler, axis_angles): (bool, bool),
     text: Option<&str>,
     common: &Common,
     svg: Option<&str>,
@@ -323,6 +324,7 @@ pub fn line(
     let targets = targets(to)?;
     let mut program = Program {
         euler: euler && dialect == Dialect::Sinumerik,
+        axis_angles: axis_angles && dialect == Dialect::Heidenhain,
         ..Program::default()
     };
     let d = common.decimals;
@@ -1143,6 +1145,7 @@ pub struct ProgramArgs<'a> {
     pub file: &'a str,
     pub dialect: &'a str,
     pub euler: bool,
+    pub axis_angles: bool,
     pub to: Option<&'a str>,
     pub current: Option<&'a str>,
     pub json: bool,
@@ -1181,6 +1184,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     let d = a.decimals;
     let mut p = Program {
         euler: a.euler && dialect == Dialect::Sinumerik,
+        axis_angles: a.axis_angles && dialect == Dialect::Heidenhain,
         ..Program::default()
     };
     let (mut applied, mut passed, mut unfollowed, mut refused) = (0, 0, 0, 0);
@@ -1191,7 +1195,12 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     // The tilts the picture shows: the first few, more would hide each other.
     const MAX_DRAWN: usize = 6;
     let (mut drawn, mut tilts) = (Vec::new(), 0);
+    // A cycle's first line (`CYCL DEF 19.0`) in a translation into its own dialect: held
+    // until the next block shows whether the cycle is rewritten (the writer writes its own
+    // first line) or kept as it stands.
+    let mut held: Option<String> = None;
     for (k, raw) in text.lines().enumerate() {
+        let mut rewritten = false;
         let line = k + 1;
         let block = raw.trim_end_matches('\r');
         let (next, remark) = match p.line(dialect, block.as_bytes()) {
@@ -1212,7 +1221,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     .text(),
                     (None, false) => format!("line {line}: error: column {}: {message}", e.column),
                 };
-                if !put(row) {
+                if held.take().is_some_and(|h| !put(h)) || !put(row) {
                     return Ok(ok);
                 }
                 continue;
@@ -1269,6 +1278,14 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                 if let Some(t) = &target {
                     let mut buf = [0u8; MAX_CHANGE];
                     match write_change(t.dialect, t.form.as_bytes(), &before, &p, d, &mut buf) {
+                        Ok((0, _))
+                            if t.dialect == dialect
+                                && dialect == Dialect::Heidenhain
+                                && cycle_head(block.as_bytes()) =>
+                        {
+                            held = Some(block.to_string());
+                            None
+                        }
                         // The same dialect, or a plane selected (`G18`, perhaps with a
                         // move): the block as it stands (no writer says a plane).
                         Ok((0, _)) if t.dialect == dialect || before.plane != p.plane => {
@@ -1277,7 +1294,10 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         // Nothing changes in the target (cycle 7's first line, a
                         // command repeated): nothing to write.
                         Ok((0, _)) => None,
-                        Ok((len, _)) => Some(String::from_utf8_lossy(&buf[..len]).into_owned()),
+                        Ok((len, _)) => {
+                            rewritten = true;
+                            Some(String::from_utf8_lossy(&buf[..len]).into_owned())
+                        }
                         Err(e) => {
                             eprintln!(
                                 "cncrot: line {line}: not carried across as {} {}: {}: {block}",
@@ -1365,10 +1385,14 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
             }
         };
         if let Some(row) = row {
-            if !put(row) {
+            let head = held.take().filter(|_| !rewritten);
+            if head.is_some_and(|h| !put(h)) || !put(row) {
                 return Ok(ok);
             }
         }
+    }
+    if held.take().is_some_and(|h| !put(h)) {
+        return Ok(ok);
     }
     let total = applied + passed + unfollowed + refused;
     let summary = format!(

@@ -128,6 +128,10 @@ enum Command {
         /// SINUMERIK: frame angles in Euler mode (machine data 10600 = 2), not RPY.
         #[arg(long)]
         euler: bool,
+        /// Heidenhain: CYCL DEF 19's A B C are rotary-axis positions (a machine setting),
+        /// not spatial angles.
+        #[arg(long)]
+        axis_angles: bool,
         /// The line to read.
         text: Option<String>,
         /// Draw the frame (after the last line) into FILE as an SVG picture.
@@ -159,6 +163,10 @@ enum Command {
         /// SINUMERIK: frame angles in Euler mode (machine data 10600 = 2), not RPY.
         #[arg(long)]
         euler: bool,
+        /// Heidenhain: CYCL DEF 19's A B C are rotary-axis positions (a machine setting),
+        /// not spatial angles.
+        #[arg(long)]
+        axis_angles: bool,
         /// Write the program translated: DIALECT or DIALECT:FORM.
         #[arg(long, value_name = "DIALECT[:FORM]")]
         to: Option<String>,
@@ -363,14 +371,23 @@ fn main() -> ExitCode {
             from,
             to,
             euler,
+            axis_angles,
             text,
             svg,
             common,
-        } => commands::line(&from, &to, euler, text.as_deref(), &common, svg.as_deref()),
+        } => commands::line(
+            &from,
+            &to,
+            (euler, axis_angles),
+            text.as_deref(),
+            &common,
+            svg.as_deref(),
+        ),
         Command::Program {
             file,
             dialect,
             euler,
+            axis_angles,
             to,
             machine,
             current,
@@ -382,6 +399,7 @@ fn main() -> ExitCode {
                 file: &file,
                 dialect: &dialect,
                 euler,
+                axis_angles,
                 to: to.as_deref(),
                 current: current.as_deref(),
                 json,

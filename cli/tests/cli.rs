@@ -1564,6 +1564,70 @@ fn program_to_writes_datum_shifts() {
     );
 }
 
+/// Cycle 19 as older posts write it, with spatial angles (the default): `B+30 C+90` is
+/// Rz(90)·Ry(30) = Rz(180)·Rx(30)·Rz(−90) by hand (Ry(30) = Rz(90)·Rx(30)·Rz(−90)), so
+/// `G68.2 I180 J30 K-90`; the zero angles cancel (`G69`). Into Heidenhain itself the cycle
+/// is rewritten as `PLANE SPATIAL`, and its first line goes with it; a cycle that changes
+/// nothing (the second reset line) stays as it stands, both lines. With `--axis-angles`
+/// the angles are the positions of B and C.
+#[test]
+fn program_reads_cycle_19() {
+    let prog = "0 BEGIN PGM C19 MM\n1 CYCL DEF 19.0 WORKING PLANE\n2 CYCL DEF 19.1 B+30 C+90\n\
+                3 L X+0 Y+0 R0 FMAX\n4 CYCL DEF 19.0 WORKING PLANE\n5 CYCL DEF 19.1 A+0 B+0 C+0\n\
+                6 CYCL DEF 19.0 WORKING PLANE\n7 CYCL DEF 19.1\n8 END PGM C19 MM\n";
+    let r = cncrot(
+        &["program", "-", "--dialect", "heidenhain", "--to", "fanuc"],
+        prog,
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let want = [
+        "0 BEGIN PGM C19 MM",
+        "G68.2 X0. Y0. Z0. I180. J30. K-90.",
+        "3 L X+0 Y+0 R0 FMAX",
+        "G69",
+        "8 END PGM C19 MM",
+    ];
+    assert_eq!(r.stdout.lines().collect::<Vec<_>>(), want);
+    let r = cncrot(
+        &[
+            "program",
+            "-",
+            "--dialect",
+            "heidenhain",
+            "--to",
+            "heidenhain",
+        ],
+        prog,
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let want = [
+        "0 BEGIN PGM C19 MM",
+        "PLANE SPATIAL SPA+0 SPB+30 SPC+90 STAY",
+        "3 L X+0 Y+0 R0 FMAX",
+        "PLANE RESET STAY",
+        "6 CYCL DEF 19.0 WORKING PLANE",
+        "7 CYCL DEF 19.1",
+        "8 END PGM C19 MM",
+    ];
+    assert_eq!(r.stdout.lines().collect::<Vec<_>>(), want);
+    let r = cncrot(
+        &[
+            "program",
+            "-",
+            "--dialect",
+            "heidenhain",
+            "--axis-angles",
+            "--axis",
+            "work:0,1,0",
+            "--axis",
+            "work:0,0,1",
+        ],
+        prog,
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(r.stdout.contains("axes: 30.0000 90.0000"), "{}", r.stdout);
+}
+
 /// A direct mode (`PLANE AXIAL`) states the rotary-axis positions: without a machine its
 /// frame is not known and the row says so; on a head C about Z carrying B about Y the tool
 /// direction is Rz(45)·Ry(30)·e_z = (0.5·cos 45°, 0.5·sin 45°, cos 30°) by hand, the

@@ -85,10 +85,11 @@ fuzz_target!(|data: &[u8]| {
     };
     let dialect = i32::from(head % 8);
     let mut p = cncrot_program::default();
-    if head >> 7 != 0 {
+    // Bits 6 and 7: the options (SINUMERIK Euler mode, Heidenhain axis angles).
+    if head >> 6 != 0 {
         // SAFETY: p is valid.
         assert_eq!(
-            unsafe { cncrot_program_init(&mut p, u32::from(head >> 7)) },
+            unsafe { cncrot_program_init(&mut p, u32::from(head >> 6)) },
             0
         );
     }

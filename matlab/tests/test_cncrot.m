@@ -331,7 +331,7 @@ function test_cncrot(cases_file)
                 cncrot_program_lines(1, 'ROT Z30 X20', struct('options', 1))), 'state options of class int32');
   check(isequal(cncrot_program_lines('sinumerik', 'ROT Z30 X20', struct('options', true)), ...
                 cncrot_program_lines(1, 'ROT Z30 X20', struct('options', 1))), 'state options logical');
-  expect_message('cncrot:badState', @() cncrot_program_lines('sinumerik', 'ROT Z30', struct('options', uint8(2))), 'state options uint8 2', ...
+  expect_message('cncrot:badState', @() cncrot_program_lines('sinumerik', 'ROT Z30', struct('options', uint8(4))), 'state options uint8 4', ...
                  'cncrot_program_lines', 'argument 3 (state)');
   % Refusals: the identifier, the function, the argument, what it must be, what was given.
   expect_message('cncrot:badSequence', @() cncrot_convert(0, 'ZQY', [30 45 60], 1, 39), 'unknown letter', 'cncrot_convert', ...
@@ -495,7 +495,12 @@ function test_cncrot(cases_file)
   expect_error('cncrot:badState', @() cncrot_program_lines(d.FANUC, 'G69', st), 'edited state');
   F = cncrot_program_lines(d.SINUMERIK, 'ROT Z30 X20', struct('options', 1));
   check(max(max(abs(F(1:3, 1:3) - [cosd(30) -sind(30)*cosd(20) sind(30)*sind(20); sind(30) cosd(30)*cosd(20) -cosd(30)*sind(20); 0 sind(20) cosd(20)]))) < 1e-15, 'Euler mode from options');
-  expect_error('cncrot:badState', @() cncrot_program_lines(d.SINUMERIK, 'ROT Z30', struct('options', 2)), 'unknown option');
+  expect_error('cncrot:badState', @() cncrot_program_lines(d.SINUMERIK, 'ROT Z30', struct('options', 4)), 'unknown option');
+  % Cycle 19: spatial angles by default (Ry(30)), the rotary positions with option 2.
+  F = cncrot_program_lines(d.HEIDENHAIN, {'CYCL DEF 19.0 WORKING PLANE', 'CYCL DEF 19.1 B+30'});
+  check(max(max(abs(F(1:3, 1:3) - [cosd(30) 0 sind(30); 0 1 0; -sind(30) 0 cosd(30)]))) < 1e-15, 'cycle 19 spatial');
+  [~, st] = cncrot_program_lines(d.HEIDENHAIN, 'CYCL DEF 19.1 B+30 C+45', struct('options', 2));
+  check(st.active == 2 && isequal(st.angles(:).', [0 30 45]), 'cycle 19 axis angles');
   expect_error('cncrot:badArgument', @() cncrot_program_write(d.FANUC, 'PLANE SPATIAL', eye(4)), 'form of another dialect');
   expect_error('cncrot:badClass', @() cncrot_program_lines(d.FANUC, 42), 'numeric line');
   check(isequal(size(cncrot_program_write(d.FANUC, 'G68.2', zeros(4, 4, 0))), [0 1]), 'no frames, no lines');

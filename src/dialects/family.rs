@@ -30,6 +30,9 @@ pub struct Modal {
     pub angles: [f64; 3],
     /// SINUMERIK's frame angles in Euler mode (machine data 10600 = 2) instead of RPY.
     pub euler: bool,
+    /// Heidenhain's `CYCL DEF 19` angles as the rotary axes' positions (a direct mode)
+    /// instead of spatial angles (machine parameter, iTNC 530 MP7500 bit 1 = 0).
+    pub axis_angles: bool,
     /// The datum shift the program made active (`CYCL DEF 7`, `TRANS DATUM`, `G52`), in
     /// the workpiece axes before the tilt: part of `frame`'s origin, kept when a tilt is
     /// cancelled.

@@ -379,22 +379,12 @@ fn plane_frame(form: Form, w: &[f64]) -> Result<Frame, Error> {
 /// A datum table row (`#5`, `TRANS DATUM TABLE`) or another axis (`A`, `U`) is not
 /// followed.
 fn datum_shift(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
-    let cycle = if c.keyword(b"CYCL") {
-        c.spaces();
-        if !c.keyword(b"DEF") {
+    let cycle = if let Some((number, line)) = cycle_def(&mut c.clone()) {
+        if number != 7 {
             return Ok(None);
         }
-        c.spaces();
-        if c.peek() != Some(b'7') || c.peek_at(1) != Some(b'.') {
-            return Ok(None);
-        }
-        c.bump();
-        c.bump();
-        let first = c.peek() == Some(b'0');
-        while c.peek().is_some_and(|b| b.is_ascii_digit()) {
-            c.bump();
-        }
-        if first {
+        cycle_def(c);
+        if line == 0 {
             // `7.0 DATUM SHIFT` (in the program's language) only names the cycle: part of
             // the datum shift, the state unchanged.
             return Ok(Some(Block::Frame(*m)));
@@ -451,6 +441,115 @@ fn datum_shift(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
         return Err(c.error(Error::OutOfRange));
     }
     Ok(Some(Block::Frame(m.with_shift(shift))))
+}
+
+/// `CYCL DEF n.k` at the cursor: the cycle's number `n` and the line `k` of its definition
+/// (the cursor after them), or `None` (the cursor anywhere) when no cycle definition with a
+/// line number stands there (`CYCL DEF 200 DRILLING` has none).
+fn cycle_def(c: &mut Cursor) -> Option<(u32, u32)> {
+    if !c.keyword(b"CYCL") {
+        return None;
+    }
+    c.spaces();
+    if !c.keyword(b"DEF") {
+        return None;
+    }
+    c.spaces();
+    let digits = |c: &mut Cursor| {
+        let mut n: Option<u32> = None;
+        while let Some(d) = c.peek().filter(u8::is_ascii_digit) {
+            n = Some(
+                n.unwrap_or(0)
+                    .saturating_mul(10)
+                    .saturating_add(u32::from(d - b'0')),
+            );
+            c.bump();
+        }
+        n
+    };
+    let number = digits(c)?;
+    if c.peek() != Some(b'.') {
+        return None;
+    }
+    c.bump();
+    Some((number, digits(c)?))
+}
+
+/// Whether `block` is the first line of a cycle definition the reader follows (`CYCL DEF
+/// 7.0 DATUM SHIFT`, `CYCL DEF 19.0 WORKING PLANE`, after a block number): it only names the
+/// cycle, whose next lines set it. A translation into Heidenhain that rewrites those lines
+/// writes its own first line, so it must not keep this one as well.
+///
+/// ```
+/// use cncrot::dialects::heidenhain::cycle_head;
+/// assert!(cycle_head(b"12 CYCL DEF 19.0 WORKING PLANE"));
+/// assert!(!cycle_head(b"13 CYCL DEF 19.1 B+30") && !cycle_head(b"CYCL DEF 200 DRILLING"));
+/// ```
+pub fn cycle_head(block: &[u8]) -> bool {
+    let mut c = Cursor::new(block);
+    c.spaces();
+    while c.peek().is_some_and(|b| b.is_ascii_digit()) {
+        c.bump();
+    }
+    c.spaces();
+    matches!(cycle_def(&mut c), Some((7 | 19, 0)))
+}
+
+/// Cycle 19, WORKING PLANE (`CYCL DEF 19.0 WORKING PLANE`, then `CYCL DEF 19.1 A+0 B+45
+/// C+0`), or `None` for any other block. The first line only names the cycle (the state
+/// unchanged). The second sets the plane \[doc\]: `A`, `B`, `C` in any order, each at most
+/// once, those not written 0 \[choice: as every dialect's examples leave out zero words;
+/// posts write only the machine's axes\]; it replaces the active tilt, keeping the datum
+/// shift \[choice: the cycle has no incremental form\]. What the angles are is a machine
+/// parameter \[doc: iTNC 530 MP7500 bit 1\]: spatial angles by default, the same rotation as
+/// `PLANE SPATIAL SPA SPB SPC` \[doc: "the function corresponds to Cycle 19 if the entries in
+/// Cycle 19 are set to spatial angles"\] \[choice: the default, as the only reading whose
+/// plane follows from the block\]; with [`Modal::axis_angles`] the positions of the rotary
+/// axes named so, a direct mode as `PLANE AXIAL`. After the angles, `F n` (the feed for the
+/// automatic positioning: the axes then turn \[derived\]), `FMAX`, `MB`, `DIST`/`ABST`, and
+/// the `PLANE` options. A second line without angles (`CYCL DEF 19.1`, how a program
+/// switches the cycle off after setting every angle to 0 \[doc\]) cancels the tilt. Not
+/// inlined: its state stays out of the reader's frame (stack bound).
+#[inline(never)]
+fn working_plane(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
+    let Some((19, line)) = cycle_def(c) else {
+        return Ok(None);
+    };
+    if line == 0 {
+        return Ok(Some(Block::Frame(*m)));
+    }
+    if line != 1 {
+        return Err(c.error(Error::UnknownWord));
+    }
+    let (angles, given) = named_words(c, [b"A", b"B", b"C"])?;
+    let mut how = options(c)?;
+    if how.positioning == Positioning::Stay && how.feed == Feed::Rate {
+        how.positioning = Positioning::Turn;
+    }
+    let next = if !given.contains(&true) {
+        m.with_frame(RESET)
+    } else if m.axis_angles {
+        let given = given
+            .iter()
+            .enumerate()
+            .fold(0, |bits, (k, &g)| bits | (u8::from(g) << k));
+        let d = Direct {
+            by: DirectAxes::Letters,
+            given,
+        };
+        m.with_direct([0.0; 3], d, angles)
+    } else {
+        m.with_frame(Frame::from_rotation(spatial(angles)))
+    };
+    Ok(Some(Block::Frame(Modal {
+        choice: how.choice,
+        positioning: how.positioning,
+        retract: how.retract,
+        retract_mm: how.retract_mm,
+        feed: how.feed,
+        feed_mm_min: how.feed_mm_min,
+        ..next
+    })))
 }
 
 /// A Heidenhain block (from its first word, after the block number) that is not a `PLANE`:
@@ -573,6 +672,9 @@ impl Family for Heidenhain {
         }
         let column = c.column();
         if let Some(block) = datum_shift(m, &mut c.clone())? {
+            return Ok(block);
+        }
+        if let Some(block) = working_plane(m, &mut c.clone())? {
             return Ok(block);
         }
         if !c.keyword(b"PLANE") {

@@ -45,6 +45,11 @@ pub struct Program {
     /// SINUMERIK's frame angles in Euler mode (machine data 10600 = 2) instead of RPY: a
     /// setting of the machine that no block changes.
     pub euler: bool,
+    /// Heidenhain's `CYCL DEF 19.1 A B C` are the positions of the rotary axes named so (a
+    /// direct mode, as `PLANE AXIAL`) instead of spatial angles (as `PLANE SPATIAL`): a
+    /// setting of the machine (iTNC 530 machine parameter 7500 bit 1 = 0, TNC 640
+    /// kinematics configuration) that no block changes.
+    pub axis_angles: bool,
     /// The datum shift the program made active (`CYCL DEF 7`, `TRANS DATUM`, `G52`), in the
     /// workpiece axes before the tilt: part of `frame`'s origin, kept when the tilt is
     /// cancelled.
@@ -131,6 +136,7 @@ impl Program {
                 angles: next.angles,
                 dialect: Some(dialect),
                 euler: next.euler,
+                axis_angles: next.axis_angles,
                 shift: next.shift,
                 choice: next.choice,
                 // Nothing active: nothing to move to (a `G53.1` without a tilt); staying:
@@ -200,6 +206,7 @@ impl Program {
             frame: self.frame,
             angles: self.angles,
             euler: self.euler,
+            axis_angles: self.axis_angles,
             shift: self.shift,
             choice: self.choice,
             positioning: self.positioning,

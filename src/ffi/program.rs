@@ -53,6 +53,12 @@ const _: () = {
 /// An option of `cncrot_program_init`: SINUMERIK frame angles in Euler mode (machine data
 /// 10600 = 2) instead of RPY.
 pub const CNCROT_PROGRAM_SINUMERIK_EULER: u32 = 1;
+/// An option of `cncrot_program_init`: Heidenhain's `CYCL DEF 19.1 A B C` are the positions
+/// of the rotary axes named A, B, C (a direct mode, as `PLANE AXIAL`: iTNC 530 machine
+/// parameter 7500 bit 1 = 0) instead of spatial angles (as `PLANE SPATIAL`).
+pub const CNCROT_PROGRAM_HEIDENHAIN_AXIS_ANGLES: u32 = 2;
+/// Every option bit this version knows.
+const OPTIONS: u32 = CNCROT_PROGRAM_SINUMERIK_EULER | CNCROT_PROGRAM_HEIDENHAIN_AXIS_ANGLES;
 /// The longest line `cncrot_program_write` writes, without its NUL (SINUMERIK's block limit).
 pub const CNCROT_PROGRAM_LINE_MAX: usize = 512;
 /// The longest form name `cncrot_program_write` reads, without its NUL.
@@ -208,7 +214,7 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
         0 => None,
         d => Some(Dialect::from_code(d).map_err(|_| Error::BadState)?),
     };
-    if c.options & !CNCROT_PROGRAM_SINUMERIK_EULER != 0 {
+    if c.options & !OPTIONS != 0 {
         return Err(Error::BadState);
     }
     let frame = match c.active {
@@ -280,6 +286,7 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
         direct,
         dialect,
         euler: c.options & CNCROT_PROGRAM_SINUMERIK_EULER != 0,
+        axis_angles: c.options & CNCROT_PROGRAM_HEIDENHAIN_AXIS_ANGLES != 0,
         shift: c.shift,
         choice,
         positioning,
@@ -385,13 +392,14 @@ fn store(p: &Program, options: u32) -> cncrot_program {
 /// ```c
 /// cncrot_program p;
 /// cncrot_program_init(&p, CNCROT_PROGRAM_SINUMERIK_EULER);   // machine data 10600 = 2
+/// cncrot_program_init(&p, CNCROT_PROGRAM_HEIDENHAIN_AXIS_ANGLES);   // MP7500 bit 1 = 0
 /// ```
 #[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
 #[no_mangle]
 pub unsafe extern "C" fn cncrot_program_init(program: *mut cncrot_program, options: u32) -> i32 {
     guard(|| {
         non_null(&[program.is_null()])?;
-        if options & !CNCROT_PROGRAM_SINUMERIK_EULER != 0 {
+        if options & !OPTIONS != 0 {
             return Err(cncrot_status::BadArgument);
         }
         program.write_unaligned(store(&Program::default(), options));
@@ -468,8 +476,10 @@ unsafe fn write_state(program: *mut cncrot_program, p: &Program, options: u32) {
 /// tables and frame variables such as `G10 L2`, `#5221=`, `$P_UIFR[1]=`, `FN 17`; datum
 /// shifts from tables such as `CYCL DEF 7.1 #5`, `TRANS DATUM TABLE`; mirroring, scaling
 /// and rotations that need more than the state keeps such as `MIRROR`, `G51.1`,
-/// `CYCL DEF 10`, Haas's `G68`; a tilt through the machine's axes such as `CYCL DEF 19`,
-/// `TOROT`). A block that selects another working plane (`G17`–`G19`, for `ROT RPL=` and
+/// `CYCL DEF 10`, Haas's `G68`; a tilt through the machine's axes such as `TOROT`).
+/// Heidenhain's `CYCL DEF 19` (WORKING PLANE) is read with spatial angles, as `PLANE
+/// SPATIAL`, or as the rotary axes' positions when the state was initialised with
+/// `CNCROT_PROGRAM_HEIDENHAIN_AXIS_ANGLES`. A block that selects another working plane (`G17`–`G19`, for `ROT RPL=` and
 /// `G68 X Y R`) is applied with the frame unchanged. A program speaks one dialect.
 ///
 /// Returns 0, `CNCROT_STATUS_PASSED`, `CNCROT_STATUS_NOT_FOLLOWED`, or a negative status
@@ -481,8 +491,10 @@ unsafe fn write_state(program: *mut cncrot_program, p: &Program, options: u32) {
 /// `CNCROT_STATUS_LINE_TOO_LONG`, `CNCROT_STATUS_BAD_ARGUMENT` (unknown dialect, a dialect
 /// other than the program's, a value outside its set such as `_ST`, a `P` or `Q` that is no
 /// whole number, an invalid `_MIHEAD`), `CNCROT_STATUS_BAD_STATE` (a state this library did
-/// not write), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes, `G68.3`, `PLANE AXIAL`: they need
-/// the machine's kinematics), `CNCROT_STATUS_OUT_OF_RANGE` (a number of magnitude 1e100 or
+/// not write), `CNCROT_STATUS_NOT_AVAILABLE` (`G68.3`; a direct mode that is
+/// additive, incremental or turns after its rotation, and an incremental command such as
+/// `PLANE RELATIV`, `G68.4`, `AROT` on an active direct mode: they need the machine's
+/// kinematics), `CNCROT_STATUS_OUT_OF_RANGE` (a number of magnitude 1e100 or
 /// more, or non-zero below 1e-100; a frame that overflows), and the statuses of the
 /// command's mathematics: `CNCROT_STATUS_BAD_FLAG` (a CYCLE600 flag),
 /// `CNCROT_STATUS_BAD_SEQUENCE` (an axis order in `_MODE`, `_BIN_IN`/`_BIN_OUT`, `P`, `Q`),
