@@ -1094,7 +1094,7 @@ fn every_block_of_a_program() {
     // A cancel on a block that also changes the work offset: not followed, state kept.
     assert_eq!(p.line(Dialect::Fanuc, b"G69 G54").unwrap(), (p, N));
     // A tilt the library reads, written where it does not read it, is never passed over.
-    for line in ["G0 G68.2 X0 I0 J30 K0", "M3 G68.4 J10"] {
+    for line in ["G0 X10 G68.2 X0 I0 J30 K0", "M3 G68.4 J10"] {
         let e = p.line(Dialect::Fanuc, line.as_bytes()).unwrap_err();
         assert_eq!(e.error, Error::UnknownWord, "{line}");
     }
@@ -1339,7 +1339,7 @@ fn missing_words_are_named() {
         (Dialect::Syntec, "G158 X0 A30", "P"),
         (Dialect::Twincat, "AROT", "X, Y or Z"),
         (Dialect::Sinumerik, "AROT", "X, Y or Z"),
-        (Dialect::Sinumerik, "CYCLE800", "'('"),
+        (Dialect::Sinumerik, "CYCLE800 _TC", "'('"),
         (Dialect::Sinumerik, "CYCLE800(0,\"TC1\",0", "',' or ')'"),
         (
             Dialect::Sinumerik,
@@ -2205,6 +2205,52 @@ fn positioning_words_are_kept_and_written() {
                 assert!(frame_dist(&q.frame, &next.frame) < 1e-12, "{l} -> {form}");
                 p = next;
             }
+        }
+    }
+}
+
+/// What real programs write around their tilts (found running public programs through the
+/// reader): Heidenhain's block skip mark before the block number (`/7 PLANE …`, read as
+/// the ISO dialects read `/G68.2`: the block runs while block skip is off), SINUMERIK's
+/// `CYCLE800` without parentheses (the cancel), and a Fanuc `G68.2` after the motion mode
+/// with a feed on the block (a shop's `G1 G68.2 … F300.`, whose own table says tool along
+/// +X: by hand Rz(90)·Rx(90)·Rz(−90)·e_z = Rz(90)·(0, −1, 0) = (1, 0, 0)).
+#[test]
+fn what_real_programs_write_around_their_tilts() {
+    let p = read(
+        Dialect::Heidenhain,
+        &["/7 PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY", "/8 L X+0 FMAX"],
+    );
+    assert!(dist(&p.frame.rotation, &r(Axis::Y, 30.0)) < 1e-15);
+    let (_, remark) = p.line(Dialect::Heidenhain, b"/81 M30").unwrap();
+    assert_eq!(remark, Remark::Passed);
+    let s = read(
+        Dialect::Sinumerik,
+        &["CYCLE800(0,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,-1)"],
+    );
+    for off in ["CYCLE800", "N20 CYCLE800 ; swivel off"] {
+        let (q, remark) = s.line(Dialect::Sinumerik, off.as_bytes()).unwrap();
+        assert_eq!(
+            (q.frame, remark),
+            (Frame::IDENTITY, Remark::Applied),
+            "{off}"
+        );
+    }
+    let e = s.line(Dialect::Sinumerik, b"CYCLE800 X").unwrap_err();
+    assert_eq!(e.error, Error::MissingWord);
+    for (line, z) in [
+        (
+            "N00 G1 G68.2 X0. Y0. Z0. I90. J90. K-90. F300. ( ROTATE )",
+            [1.0, 0.0, 0.0],
+        ),
+        (
+            "N30 G0 G90 G68.2 X0. Y0. Z0. I0. J90. K0.",
+            [0.0, -1.0, 0.0],
+        ),
+    ] {
+        let f = read(Dialect::Fanuc, &[line]).frame.rotation;
+        for (k, zk) in z.iter().enumerate() {
+            assert!((f[k][2] - zk).abs() < 1e-15, "{line}");
         }
     }
 }

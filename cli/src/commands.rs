@@ -1140,6 +1140,24 @@ pub fn axes(
     Ok(ok)
 }
 
+/// The block skip mark `block` starts with, as the target writes it: `/` (ISO's levels
+/// `/1`–`/9` kept between ISO-style dialects; Heidenhain has one mark, and its digits after
+/// `/` are the block number), or "" for a block without one.
+fn skip_mark(block: &str, from: Dialect, to: Dialect) -> String {
+    let b = block.trim_start();
+    let Some(rest) = b.strip_prefix('/') else {
+        return String::new();
+    };
+    let iso = |d: Dialect| !matches!(d, Dialect::Heidenhain);
+    let level: String = rest.chars().take_while(char::is_ascii_digit).collect();
+    if iso(from) && iso(to) && !level.is_empty() {
+        // `/2 CYCLE800(…)`, not `/2CYCLE800(…)`.
+        format!("/{level} ")
+    } else {
+        "/".to_string()
+    }
+}
+
 /// What `program` is asked: the file, its dialect, a translation, the positions before.
 pub struct ProgramArgs<'a> {
     pub file: &'a str,
@@ -1296,7 +1314,15 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         Ok((0, _)) => None,
                         Ok((len, _)) => {
                             rewritten = true;
-                            Some(String::from_utf8_lossy(&buf[..len]).into_owned())
+                            let text = String::from_utf8_lossy(&buf[..len]);
+                            // An optional block stays optional: its skip mark on each line.
+                            let mark = skip_mark(block, dialect, t.dialect);
+                            Some(
+                                text.lines()
+                                    .map(|l| format!("{mark}{l}"))
+                                    .collect::<Vec<_>>()
+                                    .join("\n"),
+                            )
                         }
                         Err(e) => {
                             eprintln!(

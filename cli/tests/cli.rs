@@ -1564,6 +1564,34 @@ fn program_to_writes_datum_shifts() {
     );
 }
 
+/// An optional block stays optional in a translation: the skip mark on every line written
+/// for it, ISO's level kept between ISO-style dialects (Heidenhain's `/81` is the mark and
+/// block 81).
+#[test]
+fn program_to_keeps_skip_marks() {
+    let r = cncrot(
+        &["program", "-", "--dialect", "heidenhain", "--to", "fanuc"],
+        "/7 PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY\n/81 M30\n",
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(
+        r.stdout.lines().collect::<Vec<_>>(),
+        ["/G68.2 X0. Y0. Z0. I90. J30. K-90.", "/81 M30"]
+    );
+    let r = cncrot(
+        &["program", "-", "--dialect", "fanuc", "--to", "sinumerik"],
+        "/2 G68.2 X10. I0. J30. K0.\n/2G69\n",
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(
+        r.stdout.lines().collect::<Vec<_>>(),
+        [
+            "/2 CYCLE800(0,\"\",0,57,10,0,0,30,0,0,0,0,0,-1,0,0)",
+            "/2 CYCLE800()"
+        ]
+    );
+}
+
 /// Cycle 19 as older posts write it, with spatial angles (the default): `B+30 C+90` is
 /// Rz(90)·Ry(30) = Rz(180)·Rx(30)·Rz(−90) by hand (Ry(30) = Rz(90)·Rx(30)·Rz(−90)), so
 /// `G68.2 I180 J30 K-90`; the zero angles cancel (`G69`). Into Heidenhain itself the cycle

@@ -2,6 +2,38 @@
  * cncrot_program_translate.m. */
 #include "program_state.h"
 
+/* What the target writes for a block, with the block's skip mark on each of its lines (an
+ * optional block stays optional): "/", or an ISO level "/2 " between ISO-style dialects
+ * (Heidenhain has one mark, and its digits after "/" are the block number). */
+static mxArray *skip_marked(const char *block, size_t len, int32_t from, int32_t to, const char *out) {
+  size_t i = 0;
+  while (i < len && (block[i] == ' ' || block[i] == '\t')) i++;
+  if (i >= len || block[i] != '/' || out[0] == '\0') return mxCreateString(out);
+  char mark[16] = "/";
+  size_t d = i + 1, n = 0;
+  while (d < len && block[d] >= '0' && block[d] <= '9' && n < 8) mark[1 + n++] = block[d++];
+  int iso = from != CNCROT_DIALECT_HEIDENHAIN && to != CNCROT_DIALECT_HEIDENHAIN;
+  if (iso && n > 0) {
+    mark[1 + n] = ' ';
+    mark[2 + n] = '\0';
+  } else {
+    mark[1] = '\0';
+  }
+  static char marked[2 * CNCROT_PROGRAM_CHANGE_MAX + 64];
+  size_t m = 0, ml = strlen(mark);
+  int start = 1;
+  for (const char *o = out; *o && m + ml + 2 < sizeof marked; o++) {
+    if (start) {
+      memcpy(marked + m, mark, ml);
+      m += ml;
+    }
+    marked[m++] = *o;
+    start = *o == '\n';
+  }
+  marked[m] = '\0';
+  return mxCreateString(marked);
+}
+
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   check_nargs(nrhs, 4, 5, nlhs, 3);
   int32_t dialect = dialect_arg(prhs[0], 1, "dialect");
@@ -58,7 +90,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
       buf[len] = '\0';
       mxSetCell(text, k, mxIsChar(a) ? mxDuplicateArray(a) : mxCreateString(buf));
     } else {
-      mxSetCell(text, k, mxCreateString(out));
+      mxSetCell(text, k, skip_marked(buf, len, dialect, to, out));
     }
     mxSetCell(remarks, k, mxCreateString("applied"));
   }

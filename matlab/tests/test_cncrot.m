@@ -238,6 +238,14 @@ function test_cncrot(cases_file)
   check(strcmp(ts{4}, 'CYCLE800(0,"",0,57,10,0,-5,0,30,0,0,0,0,1,0,0)') && strcmp(ts{6}, 'TRANS X=10 Y=0 Z=-5'), 'translate: into SINUMERIK, _DIR +1');
   th = cncrot_program_translate('fanuc', {'G68.2 X10 Y20 I0 J30 K0'}, 'heidenhain', 'PLANE SPATIAL', 4);
   check(isequal(th, {sprintf('CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+10\nCYCL DEF 7.2 Y+20\nCYCL DEF 7.3 Z+0\nPLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY')}), 'translate: an origin as cycle 7');
+  % An optional block stays optional: its skip mark on every line written for it (an ISO level
+  % between ISO dialects; Heidenhain's digits after / are its block number).
+  tk = cncrot_program_translate('fanuc', {'/2 G68.2 X10 I0 J30 K0', '/G69'}, 'sinumerik', 'CYCLE800', 4);
+  check(isequal(tk, {'/2 CYCLE800(0,"",0,57,10,0,0,30,0,0,0,0,0,-1,0,0)'; '/CYCLE800()'}), 'translate: skip level kept');
+  tk = cncrot_program_translate('heidenhain', {'/7 PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY'}, 'fanuc', 'G68.2', 4);
+  check(isequal(tk, {'/G68.2 X0. Y0. Z0. I90. J30. K-90.'}), 'translate: Heidenhain skip mark');
+  tk = cncrot_program_translate('fanuc', {'/G68.2 X10 I0 J30 K0'}, 'heidenhain', 'PLANE SPATIAL', 4);
+  check(numel(strfind(tk{1}, sprintf('\n/'))) == 4 && tk{1}(1) == '/', 'translate: every line marked');
   expect_message('cncrot:hasOrigin', @() cncrot_program_translate('fanuc', {'G68.2 X10 J30'}, 'sinumerik', 'ROT'), 'translate: origin into ROT', 'cncrot_program_translate', 'line 1');
   expect_message('cncrot:badArgument', @() cncrot_program_translate('fanuc', {'G69'}, 'fanuc', 'PLANE SPATIAL'), 'translate: form of another dialect', 'cncrot_program_translate', 'argument 4 (form)');
   expect_message('cncrot:missingWord', @() cncrot_program_translate('heidenhain', {'L X+1', 'PLANE SPATIAL SPA+0 SPB+30'}, 'fanuc', 'G68.2'), 'translate: a refused block', 'cncrot_program_translate', 'line 2');

@@ -192,7 +192,8 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
     } else {
         return None;
     };
-    let words = address_words(c, *b"XYZIJKPQR", SYNTAX, false, (true, true));
+    // `F`: the modal feed rate a post may write on the block; not the frame's.
+    let words = address_words(c, *b"XYZIJKPQRF", SYNTAX, false, (true, true));
     Some(words.and_then(|w| {
         let form = whole(w.values[6], w.column(6))?;
         if !(0..=4).contains(&form) {
@@ -417,13 +418,15 @@ pub(crate) fn read_g52(m: &Modal, c: &mut Cursor) -> Result<Block, LineError> {
     Ok(Block::Frame(m.with_shift(shift)))
 }
 
-/// Skips the modal words a post may write before the tilt on its block (`N50 G90 G68.2 …`):
-/// plane selection (kept by [`in_block_plane`]), absolute positions, the cancels of cutter
-/// and length compensation and of canned cycles, units, feed per minute. None of them
-/// changes the frame. Whether any was skipped.
+/// Skips the modal words a post may write before the tilt on its block (`N50 G90 G68.2 …`,
+/// `N30 G0 G90 G68.2 …`): plane selection (kept by [`in_block_plane`]), absolute positions,
+/// the cancels of cutter and length compensation and of canned cycles, units, feed per
+/// minute, the motion mode (`G0`, `G1`: the tilt's `X Y Z` are its origin, not a move).
+/// None of them changes the frame. Whether any was skipped.
 pub(crate) fn skip_leading(c: &mut Cursor) -> bool {
-    const LEADING: [&[u8]; 11] = [
+    const LEADING: [&[u8]; 15] = [
         b"G17", b"G18", b"G19", b"G90", b"G40", b"G49", b"G80", b"G94", b"G20", b"G21", b"G15",
+        b"G0", b"G00", b"G1", b"G01",
     ];
     let mut any = false;
     while LEADING.iter().any(|k| c.code(k)) {

@@ -487,12 +487,22 @@ fn cycle_def(c: &mut Cursor) -> Option<(u32, u32)> {
 /// ```
 pub fn cycle_head(block: &[u8]) -> bool {
     let mut c = Cursor::new(block);
+    past_block_number(&mut c);
+    matches!(cycle_def(&mut c), Some((7 | 19, 0)))
+}
+
+/// Moves the cursor past a block's start: the block skip mark (`/81 M30`: the block runs
+/// while block skip is off, as every dialect's reader takes it) and the block number.
+fn past_block_number(c: &mut Cursor) {
     c.spaces();
+    if c.peek() == Some(b'/') {
+        c.bump();
+        c.spaces();
+    }
     while c.peek().is_some_and(|b| b.is_ascii_digit()) {
         c.bump();
     }
     c.spaces();
-    matches!(cycle_def(&mut c), Some((7 | 19, 0)))
 }
 
 /// Cycle 19, WORKING PLANE (`CYCL DEF 19.0 WORKING PLANE`, then `CYCL DEF 19.1 A+0 B+45
@@ -662,11 +672,7 @@ impl Family for Heidenhain {
     #[inline(never)]
     fn read_line(m: &Modal, text: &[u8]) -> Result<Block, LineError> {
         let mut c = Cursor::new(text);
-        c.spaces();
-        while c.peek().is_some_and(|b| b.is_ascii_digit()) {
-            c.bump();
-        }
-        c.spaces();
+        past_block_number(&mut c);
         if c.at_end() || c.peek() == Some(b'*') || c.rest_is_comment(true, false) {
             return Ok(Block::Passed);
         }

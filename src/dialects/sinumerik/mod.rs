@@ -613,12 +613,19 @@ fn refused(column: usize, allowed: &'static str) -> impl Fn(Error) -> LineError 
 
 /// `CYCLE800(_FR, _TC, _ST, _MODE, _X0, _Y0, _Z0, _A, _B, _C, _X1, _Y1, _Z1, _DIR, _FR_I,
 /// _DMODE)`: at least the four up to `_MODE` (omitted and empty arguments are 0);
-/// `CYCLE800()` and `_TC = "0"` deselect the swivel \[doc\]; `_ST` units digit 0 new plane,
+/// `CYCLE800()` and `_TC = "0"` deselect the swivel \[doc\], and so does `CYCLE800` without
+/// parentheses \[choice: a call without parameters may leave them out; DMG and Hermle
+/// programs cancel so\]; `_ST` units digit 0 new plane,
 /// 1 additive \[choice\], the higher digits (tool alignment, …) do not change the plane;
 /// `_DIR`, `_FR`, `_FR_I`, `_DMODE` choose motion and solution, not the plane.
 // Its own frame: the reader's frame holds only the deepest command's (CYCLE600) locals.
 #[inline(never)]
 fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
+    c.spaces();
+    if c.at_end() || c.rest_is_comment(true, false) {
+        c.end(true, false)?;
+        return Ok(m.with_frame(Frame::IDENTITY));
+    }
     let args = Args::<16>::read(c, 1)?;
     c.end(true, false)?;
     if args.n == 0 {
