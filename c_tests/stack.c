@@ -177,7 +177,8 @@ static void program_line(void) {
   memset(&axial, 0, sizeof axial);
   sink += cncrot_program_line(&axial, CNCROT_DIALECT_HEIDENHAIN, AXIAL, sizeof AXIAL - 1);
   /* Cycle 19, spatial and (on a machine set so) axis angles. */
-  sink += cncrot_program_line(&prog, CNCROT_DIALECT_HEIDENHAIN, C19, sizeof C19 - 1);
+  sink += cncrot_program_line(&prog, CNCROT_DIALECT_HEIDENHAIN, C19, sizeof C19 - 1) +
+          cncrot_program_line(&prog, CNCROT_DIALECT_HEIDENHAIN, "L A+Q120 C+Q122 FMAX M126", 26);
   static cncrot_program c19;
   sink += cncrot_program_init(&c19, CNCROT_PROGRAM_HEIDENHAIN_AXIS_ANGLES) +
           cncrot_program_line(&c19, CNCROT_DIALECT_HEIDENHAIN, C19, sizeof C19 - 1);

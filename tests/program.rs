@@ -2255,6 +2255,46 @@ fn what_real_programs_write_around_their_tilts() {
     }
 }
 
+/// CAM output tilts with `STAY` (or cycle 19) and turns the rotary axes in the next block to
+/// the positions the control left in `Q120`–`Q122`: that block is the turn (the state's
+/// positioning, so a translation writes `G53.1`), the frame unchanged; any other `L` block
+/// is a move.
+#[test]
+fn heidenhain_turns_to_the_plane_through_q120_to_q122() {
+    use Remark::{Applied as A, Passed as P};
+    let tilt = "55 PLANE SPATIAL SPA90 SPB0 SPC180 STAY SEQ- TABLE ROT";
+    for (turn, feed) in [
+        ("56 L A+Q120 C+Q122 R0 FMAX M126", (Feed::Rapid, 0.0)),
+        ("56 L B+Q121 C+Q122 F MAX", (Feed::Rapid, 0.0)),
+        ("L A+Q120 B+Q121 C+Q122 R0 F500 ; turn", (Feed::Rate, 500.0)),
+    ] {
+        let p = remarks(Dialect::Heidenhain, &[(tilt, A), (turn, A)]);
+        let before = read(Dialect::Heidenhain, &[tilt]);
+        assert_eq!(p.frame, before.frame, "{turn}");
+        assert_eq!(p.choice, AxisChoice::Minus(0), "{turn}");
+        assert_eq!(p.positioning, Positioning::Turn, "{turn}");
+        assert_eq!((p.feed, p.feed_mm_min), feed, "{turn}");
+    }
+    let p = read(Dialect::Heidenhain, &["CYCL DEF 19.1 B+30"]);
+    let (q, remark) = p.line(Dialect::Heidenhain, b"L B+Q121 R0 FMAX").unwrap();
+    assert_eq!((q.positioning, remark), (Positioning::Turn, A));
+    for other in [
+        "L A+Q121 C+Q122 R0 FMAX",
+        "L X+10 A+Q120 R0 FMAX",
+        "L A+Q120 C+Q122 R0 FMAX M3",
+        "L A+0 C+90 R0 FMAX",
+        "L R0 FMAX",
+    ] {
+        let (q, remark) = p.line(Dialect::Heidenhain, other.as_bytes()).unwrap();
+        assert_eq!((q, remark), (p, P), "{other}");
+    }
+    // Nothing active: nothing to turn to.
+    let (_, remark) = Program::default()
+        .line(Dialect::Heidenhain, b"L A+Q120 C+Q122 R0 FMAX")
+        .unwrap();
+    assert_eq!(remark, P);
+}
+
 /// Heidenhain's cycle 19, WORKING PLANE, as CAM posts write it. Spatial angles (the
 /// default): about the fixed axes, A then B then C, `F = Rz(C)·Ry(B)·Rx(A)` (the manual:
 /// "first around the A axis, then B, and then C"), those not written 0, about the shifted

@@ -491,6 +491,56 @@ pub fn cycle_head(block: &[u8]) -> bool {
     matches!(cycle_def(&mut c), Some((7 | 19, 0)))
 }
 
+/// An `L` block that moves only rotary axes to the positions the active tilt left in
+/// `Q120`–`Q122` (`L A+Q120 C+Q122 R0 FMAX M126`, `L B+Q121 C+Q122 F MAX`): the turn to
+/// the plane that CAM output writes after `PLANE … STAY` and cycle 19 \[doc: `STAY` "saves
+/// the positions in Q120 to Q122", to be approached in a separate positioning block\].
+/// Each letter with its own parameter (A Q120, B Q121, C Q122), besides them only `R0`, the
+/// feed (`FMAX`, `F MAX`, `F n`, `F AUTO`) and `M126`/`M127` (which way a rotary axis
+/// turns). Returns the feed, or `None` for any other block (an `L` with `X`, another
+/// parameter, a spindle M function: passed over as a move). Not inlined (stack bound).
+#[inline(never)]
+fn turn_to_plane(c: &mut Cursor) -> Option<(Feed, f64)> {
+    if !c.keyword(b"L") {
+        return None;
+    }
+    let mut feed = (Feed::Rapid, 0.0);
+    let mut rotary = false;
+    loop {
+        c.spaces();
+        if c.at_end() || c.rest_is_comment(true, false) {
+            return rotary.then_some(feed);
+        }
+        let letters = [(&b"A"[..], &b"Q120"[..]), (b"B", b"Q121"), (b"C", b"Q122")];
+        if let Some(&(_, q)) = letters.iter().find(|(l, _)| c.word(l)) {
+            if c.peek() == Some(b'+') {
+                c.bump();
+            }
+            if !c.code(q) {
+                return None;
+            }
+            rotary = true;
+        } else if c.code(b"R0") || c.code(b"M126") || c.code(b"M127") {
+        } else if c.keyword(b"FMAX") {
+            feed = (Feed::Rapid, 0.0);
+        } else if c.word(b"F") {
+            c.spaces();
+            feed = if c.keyword(b"MAX") {
+                (Feed::Rapid, 0.0)
+            } else if c.keyword(b"AUTO") {
+                (Feed::Auto, 0.0)
+            } else {
+                match c.number(SYNTAX) {
+                    Ok(f) if f > 0.0 => (Feed::Rate, f),
+                    _ => return None,
+                }
+            };
+        } else {
+            return None;
+        }
+    }
+}
+
 /// Moves the cursor past a block's start: the block skip mark (`/81 M30`: the block runs
 /// while block skip is off, as every dialect's reader takes it) and the block number.
 fn past_block_number(c: &mut Cursor) {
@@ -665,7 +715,8 @@ impl Family for Heidenhain {
     /// `PLANE VECTOR BX BY BZ NX NY NZ`, `PLANE POINTS P1X … P3Z` (every word required, in any
     /// order), `PLANE RELATIV SPA|SPB|SPC` (on the active plane), `PLANE RESET`, each with the
     /// positioning and solution options, after a line number, with `;` comments; every other
-    /// block is passed over or not followed (`other_block`); `PLANE AXIAL A B C` keeps the
+    /// block is passed over or not followed (`other_block`), but for the datum shifts, cycle
+    /// 19 and the turn to the plane through `Q120`–`Q122`; `PLANE AXIAL A B C` keeps the
     /// rotary-axis positions (a [`Direct`] mode: the machine gives the frame). A `PLANE`
     /// replaces the active one; the datum is not part of the plane (`POINTS` too: P1 is a
     /// point of the plane, the datum stays) \[doc\].
@@ -682,6 +733,17 @@ impl Family for Heidenhain {
         }
         if let Some(block) = working_plane(m, &mut c.clone())? {
             return Ok(block);
+        }
+        if let Some(feed) = turn_to_plane(&mut c.clone()) {
+            if m.frame != Frame::IDENTITY || m.direct.is_some() {
+                let (feed, feed_mm_min) = feed;
+                return Ok(Block::Frame(Modal {
+                    positioning: Positioning::Turn,
+                    feed,
+                    feed_mm_min,
+                    ..*m
+                }));
+            }
         }
         if !c.keyword(b"PLANE") {
             return Ok(other_block(text.get(column - 1..).unwrap_or(&[])));

@@ -621,11 +621,6 @@ fn refused(column: usize, allowed: &'static str) -> impl Fn(Error) -> LineError 
 // Its own frame: the reader's frame holds only the deepest command's (CYCLE600) locals.
 #[inline(never)]
 fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
-    c.spaces();
-    if c.at_end() || c.rest_is_comment(true, false) {
-        c.end(true, false)?;
-        return Ok(m.with_frame(Frame::IDENTITY));
-    }
     let args = Args::<16>::read(c, 1)?;
     c.end(true, false)?;
     if args.n == 0 {
@@ -979,6 +974,10 @@ impl Family for Sinumerik {
         }
         let column = c.column();
         if c.keyword(b"CYCLE800") {
+            if c.rest_is_comment(true, false) {
+                // Without parentheses: the cancel, as `CYCLE800()`.
+                return Ok(Block::Frame(m.with_frame(Frame::IDENTITY)));
+            }
             return cycle800_line(m, &mut c).map(Block::Frame);
         }
         if c.keyword(b"CYCLE600") {
