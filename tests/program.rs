@@ -2288,6 +2288,12 @@ fn heidenhain_turns_to_the_plane_through_q120_to_q122() {
         let (q, remark) = p.line(Dialect::Heidenhain, other.as_bytes()).unwrap();
         assert_eq!((q, remark), (p, P), "{other}");
     }
+    // Turned already (cycle 19 with its feed): the state unchanged.
+    let turned = read(Dialect::Heidenhain, &["CYCL DEF 19.1 B+30 F1000"]);
+    let (q, remark) = turned
+        .line(Dialect::Heidenhain, b"L B+Q121 R0 FMAX")
+        .unwrap();
+    assert_eq!((q, remark), (turned, A));
     // Nothing active: nothing to turn to.
     let (_, remark) = Program::default()
         .line(Dialect::Heidenhain, b"L A+Q120 C+Q122 R0 FMAX")

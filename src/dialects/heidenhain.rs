@@ -735,6 +735,11 @@ impl Family for Heidenhain {
             return Ok(block);
         }
         if let Some(feed) = turn_to_plane(&mut c.clone()) {
+            // The tilt block turned the axes already (`TURN`, cycle 19 with its feed): this
+            // block moves them where they are.
+            if m.positioning != Positioning::Stay {
+                return Ok(Block::Frame(*m));
+            }
             if m.frame != Frame::IDENTITY || m.direct.is_some() {
                 let (feed, feed_mm_min) = feed;
                 return Ok(Block::Frame(Modal {
