@@ -520,7 +520,6 @@ fn turn_to_plane(c: &mut Cursor) -> Option<(Feed, f64)> {
                 return None;
             }
             rotary = true;
-        } else if c.code(b"R0") || c.code(b"M126") || c.code(b"M127") {
         } else if c.keyword(b"FMAX") {
             feed = (Feed::Rapid, 0.0);
         } else if c.word(b"F") {
@@ -535,7 +534,8 @@ fn turn_to_plane(c: &mut Cursor) -> Option<(Feed, f64)> {
                     _ => return None,
                 }
             };
-        } else {
+        } else if !(c.code(b"R0") || c.code(b"M126") || c.code(b"M127")) {
+            // A word beyond the turn's (R0 and the rotary M functions change nothing).
             return None;
         }
     }

@@ -479,8 +479,9 @@ unsafe fn write_state(program: *mut cncrot_program, p: &Program, options: u32) {
 /// `CYCL DEF 10`, Haas's `G68`; a tilt through the machine's axes such as `TOROT`).
 /// Heidenhain's `CYCL DEF 19` (WORKING PLANE) is read with spatial angles, as `PLANE
 /// SPATIAL`, or as the rotary axes' positions when the state was initialised with
-/// `CNCROT_PROGRAM_HEIDENHAIN_AXIS_ANGLES`. A block that selects another working plane (`G17`–`G19`, for `ROT RPL=` and
-/// `G68 X Y R`) is applied with the frame unchanged. A program speaks one dialect.
+/// `CNCROT_PROGRAM_HEIDENHAIN_AXIS_ANGLES`. A block that selects another working plane
+/// (`G17`–`G19`, for `ROT RPL=` and `G68 X Y R`) is applied with the frame unchanged. A
+/// program speaks one dialect.
 ///
 /// Returns 0, `CNCROT_STATUS_PASSED`, `CNCROT_STATUS_NOT_FOLLOWED`, or a negative status
 /// with `*program` byte-identical:
