@@ -2301,6 +2301,39 @@ fn heidenhain_turns_to_the_plane_through_q120_to_q122() {
     assert_eq!(remark, P);
 }
 
+/// The iTNC 530 manual's table of `SEQ` on an A/C table machine (A about X carrying C about
+/// Z, no limit switches), `PLANE SPATIAL SPA+0 SPB+45 SPC+0`: from A0 C0 `SEQ+` gives
+/// A+45 C+90, `SEQ-` A−45 C−90; without `SEQ` A+45 C+90 from A0 C0 (both are as far) and
+/// the nearer A−45 C−90 from A0 C−105. By hand:
+/// the table turns the workpiece by `Rx(A)·Rz(C)`, so the tool points along
+/// `Rz(−90)·(0, sin 45°, cos 45°) = (sin 45°, 0, cos 45°)` in the workpiece, SPB+45's.
+#[test]
+fn heidenhain_seq_on_an_ac_table_as_the_manual_tabulates() {
+    use cncrot::kinematics::{Machine, RotaryAxis, Side};
+    let axis = |d: [f64; 3]| RotaryAxis::new(Side::Work, d, [0.0; 3]);
+    let m = Machine::new([0.0, 0.0, 1.0])
+        .unwrap()
+        .with_axis(axis([1.0, 0.0, 0.0]))
+        .unwrap()
+        .with_axis(axis([0.0, 0.0, 1.0]))
+        .unwrap();
+    let plane = "PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN FMAX";
+    for (seq, current, want) in [
+        (" SEQ+", [0.0, 0.0, 0.0], [45.0, 90.0]),
+        (" SEQ-", [0.0, 0.0, 0.0], [-45.0, -90.0]),
+        // Both equally far: the manual's pick.
+        ("", [0.0, 0.0, 0.0], [45.0, 90.0]),
+        ("", [0.0, -105.0, 0.0], [-45.0, -90.0]),
+    ] {
+        let line = format!("{plane}{seq}");
+        let p = read(Dialect::Heidenhain, &[&line]);
+        let c = p.axes(&m, current).unwrap();
+        for (got, want) in c.axes.iter().zip(want) {
+            assert!((got - want).abs() < 1e-12, "{line} from {current:?}: {:?}", c.axes);
+        }
+    }
+}
+
 /// Heidenhain's cycle 19, WORKING PLANE, as CAM posts write it. Spatial angles (the
 /// default): about the fixed axes, A then B then C, `F = Rz(C)·Ry(B)·Rx(A)` (the manual:
 /// "first around the A axis, then B, and then C"), those not written 0, about the shifted
