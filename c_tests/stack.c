@@ -223,6 +223,9 @@ static void cycle600(void) {
   sink += cncrot_cycle600(&gud, &table, 1, "NOPE", 1, 57, 1, 2, 3, 30, 90, 60, 4, 5, 6, 0, 55, 1, 1, 1);
 }
 static cncrot_machine mach, head3;
+/* Built with the fork head (build_fork). */
+static cncrot_machine tabled;
+static cncrot_program table_rot;
 static const char CARR[] =
     "N10 $TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1 $TC_CARR10[1]=0 $TC_CARR11[1]=1.5EX0 $TC_CARR12[1]=1\n"
     "N20 $TC_CARR4[1]=0.011 $TC_CARR5[1]=-0.041 $TC_CARR6[1]=-250.049 $TC_CARR23[1]=\"m\"\n"
@@ -265,7 +268,7 @@ static void program_axes(void) {
   static const double cur[3] = {750, 10, -20};
   static double ax[3];
   sink += cncrot_program_axes(&prog, &head3, cur, ax) + cncrot_program_axes(&prog, &mach, cur, ax) +
-          cncrot_program_axes(&axial, &head3, cur, ax);
+          cncrot_program_axes(&axial, &head3, cur, ax) + cncrot_program_axes(&table_rot, &tabled, cur, ax);
 }
 static void program_frame_on(void) {
   sink += cncrot_program_frame_on(&axial, &head3, f) + cncrot_program_frame_on(&prog, &mach, f);
@@ -293,6 +296,13 @@ static void build_fork(void) {
   fork_hirth = fork;
   fork_hirth.axes[0].hirth_step_deg = 2.5;
   sink += cncrot_machine_seal(&fork_hirth);
+  /* A table C with a head B, and a tilt that turns the free table (TABLE ROT). */
+  static const double y[3] = {0, 1, 0}, o[3] = {0, 0, 0};
+  static const char TR[] = "PLANE SPATIAL SPA+0 SPB+0 SPC+90 TURN TABLE ROT";
+  memset(&tabled, 0, sizeof tabled);
+  memset(&table_rot, 0, sizeof table_rot);
+  sink += cncrot_machine_add_axis(&tabled, 1, z, o, 0, 0) + cncrot_machine_add_axis(&tabled, 0, y, p, -100, 100) +
+          cncrot_program_line(&table_rot, CNCROT_DIALECT_HEIDENHAIN, TR, sizeof TR - 1);
 }
 static void machine_tcp_inverse_common(void) {
   static const double prev[6] = {0, 0, 0, 750, 10, -20}, prev2[6] = {0, 0, 0, 750, 10, 0};

@@ -602,6 +602,13 @@ static void sealed_states(void) {
   CHECK_STATUS(cncrot_program_init(&states[2], 4), CNCROT_STATUS_BAD_ARGUMENT);
   CHECK(memcmp(&before, &states[2], sizeof before) == 0, "init wrote on error");
   CHECK_STATUS(cncrot_program_init(NULL, 0), CNCROT_STATUS_NULL_POINTER);
+  /* TABLE ROT kept in the state, cleared by the reset. */
+  cncrot_program tr;
+  memset(&tr, 0, sizeof tr);
+  CHECK_STATUS(cncrot_program_line(&tr, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+0 SPB+0 SPC+90 TURN TABLE ROT", 47), CNCROT_STATUS_OK);
+  CHECK(tr.table_rot == 1, "TABLE ROT: %u", tr.table_rot);
+  CHECK_STATUS(cncrot_program_line(&tr, CNCROT_DIALECT_HEIDENHAIN, "PLANE RESET STAY", 16), CNCROT_STATUS_OK);
+  CHECK(tr.table_rot == 0, "reset: %u", tr.table_rot);
   /* Cycle 19 on a machine set to axis angles: the positions of B and C, as PLANE AXIAL. */
   cncrot_program ax;
   CHECK_STATUS(cncrot_program_init(&ax, CNCROT_PROGRAM_HEIDENHAIN_AXIS_ANGLES), CNCROT_STATUS_OK);

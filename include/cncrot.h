@@ -748,7 +748,7 @@ typedef struct cncrot_machine {
  * Layout (208 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
  * `angles` 96, `shift` 120, `active` 144, `dialect` 148, `options` 152, `choice` 156,
  * `reference_axis` 160, `positioning` 164, `direct_given` 168, `retract` 172,
- * `retract_mm` 176, `feed_mm_min` 184, `feed` 192, `plane` 196, `unused` 200, `reserved`
+ * `retract_mm` 176, `feed_mm_min` 184, `feed` 192, `plane` 196, `table_rot` 200, `reserved`
  * 204. Accepted on entry: all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's
  * `crc32`) of bytes 0..204 exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
  */
@@ -843,9 +843,13 @@ typedef struct cncrot_program {
    */
   int32_t plane;
   /**
-   * 0 (room for a later field in the same layout).
+   * 1 while the active tilt turns a free rotary table to the plane (Heidenhain `TABLE
+   * ROT`: `cncrot_program_axes` turns the first table from the workpiece where it is
+   * parallel to the tool so that the machine makes the whole rotation), 0 otherwise
+   * (`COORD ROT` or no word: the coordinate system turns, the table stays; always 0
+   * while no tilt or a direct mode is active).
    */
-  uint32_t unused;
+  uint32_t table_rot;
   /**
    * The seal: 0 in the all-zero initial state, else the checksum described above (the
    * field keeps the name it had when it was reserved, so that the layout is unchanged).

@@ -373,7 +373,7 @@ fn the_program_states_documented_layout() {
         offset_of!(cncrot_program, feed_mm_min),
         offset_of!(cncrot_program, feed),
         offset_of!(cncrot_program, plane),
-        offset_of!(cncrot_program, unused),
+        offset_of!(cncrot_program, table_rot),
         offset_of!(cncrot_program, reserved),
     ];
     assert_eq!(

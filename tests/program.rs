@@ -2329,9 +2329,75 @@ fn heidenhain_seq_on_an_ac_table_as_the_manual_tabulates() {
         let p = read(Dialect::Heidenhain, &[&line]);
         let c = p.axes(&m, current).unwrap();
         for (got, want) in c.axes.iter().zip(want) {
-            assert!((got - want).abs() < 1e-12, "{line} from {current:?}: {:?}", c.axes);
+            assert!(
+                (got - want).abs() < 1e-12,
+                "{line} from {current:?}: {:?}",
+                c.axes
+            );
         }
     }
+}
+
+/// `TABLE ROT` and `COORD ROT` on a head B (about Y) with a table C (about Z): for `SPC+90`
+/// the tool stays vertical, so B is 0 and C free. `COORD ROT` (and no word) leaves the
+/// table where it is, the coordinate system turns; `TABLE ROT` turns the table so that the
+/// machine makes the rotation. By hand: the table turns the workpiece by `Rz(C)`, so the
+/// frame in the workpiece is `Rz(−C)`, and `Rz(90°)` needs C = −90° (from C = 0; from
+/// C = 700° the turn nearest, 630°). Where the tool direction fixes C (`SPB+30 SPC+90`) the
+/// words change nothing. The word is kept in the state and written back; a reset clears it.
+#[test]
+fn heidenhain_table_rot_turns_a_free_table() {
+    use cncrot::kinematics::{Machine, RotaryAxis, Side};
+    let m = Machine::new([0.0, 0.0, 1.0])
+        .unwrap()
+        .with_axis(RotaryAxis::new(Side::Work, [0.0, 0.0, 1.0], [0.0; 3]))
+        .unwrap()
+        .with_axis(RotaryAxis::new(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3]))
+        .unwrap();
+    let plane = "PLANE SPATIAL SPA+0 SPB+0 SPC+90 TURN FMAX";
+    for (words, current, c_axis, free) in [
+        ("", 0.0, 0.0, true),
+        (" COORD ROT", 20.0, 20.0, true),
+        (" TABLE ROT", 0.0, -90.0, false),
+        (" SEQ+ TABLE ROT", 700.0, 630.0, false),
+    ] {
+        let line = format!("{plane}{words}");
+        let p = read(Dialect::Heidenhain, &[&line]);
+        assert_eq!(p.table_rot, words.contains("TABLE"), "{line}");
+        let c = p.axes(&m, [current, 0.0, 0.0]).unwrap();
+        assert!((c.axes[0] - c_axis).abs() < 1e-9, "{line}: {:?}", c.axes);
+        assert!(c.axes[1].abs() < 1e-9, "{line}: {:?}", c.axes);
+        assert_eq!(c.free, free, "{line}");
+        if !free {
+            let f = m.forward(c.axes).unwrap();
+            assert!(dist(&f.rotation, &r(Axis::Z, 90.0)) < 1e-12, "{line}");
+        }
+        // Written back as read.
+        let mut out = [0u8; MAX_CHANGE];
+        let (n, _) = write_change(
+            Dialect::Heidenhain,
+            b"PLANE SPATIAL",
+            &Program::default(),
+            &p,
+            -1,
+            &mut out,
+        )
+        .unwrap();
+        let text = std::str::from_utf8(&out[..n]).unwrap();
+        assert_eq!(text.contains("TABLE ROT"), p.table_rot, "{text}");
+        assert_eq!(read(Dialect::Heidenhain, &[text]).table_rot, p.table_rot);
+    }
+    let p = read(
+        Dialect::Heidenhain,
+        &["PLANE SPATIAL SPA+0 SPB+30 SPC+90 TURN TABLE ROT"],
+    );
+    let q = read(
+        Dialect::Heidenhain,
+        &["PLANE SPATIAL SPA+0 SPB+30 SPC+90 TURN COORD ROT"],
+    );
+    assert_eq!(p.axes(&m, [0.0; 3]), q.axes(&m, [0.0; 3]));
+    let (off, _) = p.line(Dialect::Heidenhain, b"PLANE RESET STAY").unwrap();
+    assert!(!off.table_rot);
 }
 
 /// Heidenhain's cycle 19, WORKING PLANE, as CAM posts write it. Spatial angles (the

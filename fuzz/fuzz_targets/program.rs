@@ -317,7 +317,8 @@ fn direct_on_machine(p: &cncrot_program, line: &[u8]) {
 /// The positions the state's tilt moves a fork head to (C about Z carrying B about Y, B
 /// within ±100°), from a current position made of the line's bytes: the outputs written
 /// only on success and then finite, the same as the machine's own choice under the rule the
-/// state's choice words name (the closest without them).
+/// state's choice words name (the closest without them; `TABLE ROT` has no table to turn on
+/// a head).
 fn axes_of(p: &cncrot_program, line: &[u8]) {
     let m = fork_head();
     let c = line.first().map_or(0.0, |&b| f64::from(b as i8) * 10.0);

@@ -504,6 +504,19 @@ function test_cncrot(cases_file)
   F = cncrot_program_lines(d.SINUMERIK, 'ROT Z30 X20', struct('options', 1));
   check(max(max(abs(F(1:3, 1:3) - [cosd(30) -sind(30)*cosd(20) sind(30)*sind(20); sind(30) cosd(30)*cosd(20) -cosd(30)*sind(20); 0 sind(20) cosd(20)]))) < 1e-15, 'Euler mode from options');
   expect_error('cncrot:badState', @() cncrot_program_lines(d.SINUMERIK, 'ROT Z30', struct('options', 4)), 'unknown option');
+  % TABLE ROT is kept in the state (and cleared by a reset).
+  [~, st] = cncrot_program_lines(d.HEIDENHAIN, 'PLANE SPATIAL SPA+0 SPB+0 SPC+90 TURN TABLE ROT');
+  check(st.table_rot == 1, 'TABLE ROT in the state');
+  % On a table C (about Z) with a head B (about Y) the tool stays vertical and C is free:
+  % TABLE ROT turns the table, Rz(-C) = Rz(90) by hand, so C = -90; COORD ROT keeps it.
+  tc = [1 0 0 1 0 0 0 0 0 0 0 0; 0 0 1 0 0 0 0 0 0 0 0 0];
+  axt = cncrot_program_axes(st, tc, [0 0 0]);
+  check(abs(axt(1) + 90) < 1e-9 && abs(axt(2)) < 1e-9, 'program_axes turns the table (TABLE ROT)');
+  [~, stc] = cncrot_program_lines(d.HEIDENHAIN, 'PLANE SPATIAL SPA+0 SPB+0 SPC+90 TURN COORD ROT');
+  axc = cncrot_program_axes(stc, tc, [20 0 0]);
+  check(abs(axc(1) - 20) < 1e-9, 'program_axes keeps the table (COORD ROT)');
+  [~, st] = cncrot_program_lines(d.HEIDENHAIN, 'PLANE RESET STAY', st);
+  check(st.table_rot == 0, 'TABLE ROT cleared by the reset');
   % Cycle 19: spatial angles by default (Ry(30)), the rotary positions with option 2.
   F = cncrot_program_lines(d.HEIDENHAIN, {'CYCL DEF 19.0 WORKING PLANE', 'CYCL DEF 19.1 B+30'});
   check(max(max(abs(F(1:3, 1:3) - [cosd(30) 0 sind(30); 0 1 0; -sind(30) 0 cosd(30)]))) < 1e-15, 'cycle 19 spatial');

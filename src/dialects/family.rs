@@ -55,6 +55,8 @@ pub struct Modal {
     pub direct: Option<Direct>,
     /// The working plane (`G17`–`G19`).
     pub plane: Plane,
+    /// The active tilt turns a free rotary table to the plane (Heidenhain `TABLE ROT`).
+    pub table_rot: bool,
 }
 
 /// A direct mode: a block that states rotary-axis positions (`PLANE AXIAL B+30 C+45`, a
@@ -276,6 +278,7 @@ impl Modal {
             feed: Feed::Rapid,
             feed_mm_min: 0.0,
             direct: None,
+            table_rot: false,
             ..*self
         }
     }
@@ -579,6 +582,9 @@ pub struct Motion {
     pub feed: Feed,
     /// The feed rate (mm/min) for [`Feed::Rate`].
     pub feed_mm_min: f64,
+    /// A free rotary table turns to the plane (`TABLE ROT`) instead of the coordinate
+    /// system alone (`COORD ROT`, or no word).
+    pub table_rot: bool,
 }
 
 /// A command of a five-axis program (see [`PathWords`]).

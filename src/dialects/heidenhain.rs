@@ -276,7 +276,11 @@ fn axial_words(c: &mut Cursor) -> Result<(Direct, [f64; 3]), LineError> {
 /// symmetry point, the same for a symmetry point at 0 \[choice\]. `MB MAX` / `MB n` (n > 0
 /// mm; `MB0` none) and `FMAX` / `F n` (n > 0 mm/min) / `F AUTO` are kept (the program
 /// state drops them with `STAY`, which moves nothing); `DIST n` (also `ABST n`: the pivot's
-/// distance from the tool tip for `MOVE`) is read and not kept.
+/// distance from the tool tip for `MOVE`) is read and not kept. `TABLE ROT` turns a free
+/// rotary table to the plane, `COORD ROT` (and no word) the coordinate system alone, the
+/// table not moved \[doc: "COORD ROT … the rotary table is not moved; the compensation is
+/// purely mathematical", "TABLE ROT … position the rotary table to the defined tilting
+/// angle"\]; kept even with `STAY` (it says where the axes go, not whether they move now).
 fn options(c: &mut Cursor) -> Result<Motion, LineError> {
     let mut how = Motion::default();
     loop {
@@ -298,11 +302,13 @@ fn options(c: &mut Cursor) -> Result<Motion, LineError> {
             (how.feed, how.feed_mm_min) = (Feed::Rapid, 0.0);
             continue;
         }
-        if c.keyword(b"TABLE") || c.keyword(b"COORD") {
+        let table = c.keyword(b"TABLE");
+        if table || c.keyword(b"COORD") {
             c.spaces();
             if !c.keyword(b"ROT") {
                 return Err(c.missing("ROT"));
             }
+            how.table_rot = table;
             continue;
         }
         if c.word(b"SEQ") || c.word(b"SYM") {
@@ -808,6 +814,7 @@ impl Family for Heidenhain {
             retract_mm: how.retract_mm,
             feed: how.feed,
             feed_mm_min: how.feed_mm_min,
+            table_rot: how.table_rot,
             ..m.with_frame(frame)
         }))
     }
@@ -888,6 +895,9 @@ impl Family for Heidenhain {
             AxisChoice::Minus(0) => out.text(b" SEQ-"),
             AxisChoice::Plus(0) => out.text(b" SEQ+"),
             _ => return Err(Error::NotAvailable),
+        }
+        if how.table_rot {
+            out.text(b" TABLE ROT");
         }
         Ok(())
     }

@@ -76,6 +76,12 @@ pub struct Program {
     pub direct: Option<Direct>,
     /// The working plane the program selected (`G17`–`G19`; `G17` until one is).
     pub plane: Plane,
+    /// The active tilt turns a free rotary table to the plane (Heidenhain `TABLE ROT`)
+    /// instead of turning the coordinate system alone (`COORD ROT`, or no word): at a pose
+    /// where the first rotary table from the workpiece is parallel to the tool,
+    /// [`Program::axes`] turns it so that the machine makes the whole rotation. False while
+    /// no tilt (or a direct mode) is active.
+    pub table_rot: bool,
 }
 
 /// What a block did, beside the state it leaves (`CNCROT_STATUS_PASSED` and
@@ -116,11 +122,14 @@ impl Program {
             Block::Passed => return Ok((*self, Remark::Passed)),
             Block::NotFollowed => return Ok((*self, Remark::NotFollowed)),
         };
-        let positioning = if next.frame == Frame::IDENTITY && next.direct.is_none() {
+        let untilted = next.frame == Frame::IDENTITY;
+        let positioning = if untilted && next.direct.is_none() {
             Positioning::Stay
         } else {
             next.positioning
         };
+        // Only a tilt has a free table to turn.
+        let table_rot = next.table_rot && !untilted && next.direct.is_none();
         let stay = positioning == Positioning::Stay;
         let h = next.frame.to_homogeneous();
         if !h.iter().flatten().all(|x| x.is_finite()) {
@@ -148,6 +157,7 @@ impl Program {
                 feed_mm_min: if stay { 0.0 } else { next.feed_mm_min },
                 direct: next.direct,
                 plane: next.plane,
+                table_rot,
             },
             Remark::Applied,
         ))
@@ -197,7 +207,11 @@ impl Program {
             AxisChoice::PositiveTurn(k) => Rule::PositiveTurn(axis(k)?),
             AxisChoice::NegativeTurn(k) => Rule::NegativeTurn(axis(k)?),
         };
-        machine.choose(&self.frame.rotation, current, rule)
+        let c = machine.choose(&self.frame.rotation, current, rule)?;
+        if self.table_rot && c.free {
+            return table_turned(machine, &self.frame.rotation, c, current);
+        }
+        Ok(c)
     }
 
     /// What the families read and write.
@@ -216,6 +230,7 @@ impl Program {
             feed_mm_min: self.feed_mm_min,
             direct: self.direct,
             plane: self.plane,
+            table_rot: self.table_rot,
         }
     }
 
@@ -301,6 +316,11 @@ impl Program {
                 None => self.angles == [0.0; 3],
             }
             && (self.is_active() || self.positioning == Positioning::Stay)
+            // `TABLE ROT` is Heidenhain's word, and only a tilt has a table to turn.
+            && (!self.table_rot
+                || (self.dialect == Some(Dialect::Heidenhain)
+                    && self.direct.is_none()
+                    && self.frame != Frame::IDENTITY))
             && self.motion_consistent();
         if consistent {
             Ok(())
@@ -384,6 +404,52 @@ pub(crate) fn direct_positions(
         return Err(Error::BadArgument);
     }
     Ok(positions)
+}
+
+/// `TABLE ROT` at a pose with a free axis (`c`, chosen with the free axis kept): the first
+/// rotary table from the workpiece whose turn leaves the tool direction where it is takes
+/// the rotation about the tool that `c` leaves to the frame, so that the machine makes the
+/// whole rotation \[doc: "position the rotary table to the defined tilting angle";
+/// TNC7: the free rotary axis is parallel to the tool and the first in the chain from the
+/// workpiece\]; placed as a stated position is (whole turns toward `current`, the travel,
+/// the Hirth grid). `c` itself where no table is free (a head axis: the coordinate system
+/// turns). Which way the table turns follows from the machine: the turn that reaches
+/// `target`.
+fn table_turned(
+    machine: &Machine,
+    target: &crate::Matrix,
+    c: Choice,
+    current: [f64; 3],
+) -> Result<Choice, Error> {
+    let r = c.remaining;
+    let psi = crate::math::atan2_deg(r[1][0], r[0][0]);
+    let axes = machine.axes();
+    for (k, axis) in axes.iter().enumerate().rev() {
+        if axis.side != crate::kinematics::Side::Work {
+            continue;
+        }
+        for sign in [1.0, -1.0] {
+            let mut turned = c.axes;
+            if let Some(x) = turned.get_mut(k) {
+                *x += sign * psi;
+            }
+            let Ok(f) = machine.forward(turned) else {
+                continue;
+            };
+            let miss = f
+                .rotation
+                .iter()
+                .flatten()
+                .zip(target.iter().flatten())
+                .map(|(a, b)| crate::math::abs(a - b))
+                .fold(0.0, |m, e| if e <= m { m } else { e });
+            // Written so that NaN skips the candidate.
+            if miss <= 1e-9 {
+                return machine.commanded(turned, current);
+            }
+        }
+    }
+    Ok(c)
 }
 
 /// The axis a block's choice words refer to when they name none (Heidenhain's master axis,
@@ -687,6 +753,7 @@ fn change(
         retract_mm: after.retract_mm,
         feed: after.feed,
         feed_mm_min: after.feed_mm_min,
+        table_rot: after.table_rot,
     };
     // A direct mode's tilt is its positions (its rotation only the machine knows).
     let (mut d0, d1) = (
@@ -695,6 +762,7 @@ fn change(
     );
     let active = t1 != Frame::IDENTITY || d1.is_some();
     let words_changed = before.choice != after.choice
+        || before.table_rot != after.table_rot
         || (before.retract, before.retract_mm.to_bits())
             != (after.retract, after.retract_mm.to_bits())
         || (before.feed, before.feed_mm_min.to_bits()) != (after.feed, after.feed_mm_min.to_bits());

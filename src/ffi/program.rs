@@ -75,7 +75,7 @@ const FORM_MAX: usize = 64;
 /// Layout (208 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
 /// `angles` 96, `shift` 120, `active` 144, `dialect` 148, `options` 152, `choice` 156,
 /// `reference_axis` 160, `positioning` 164, `direct_given` 168, `retract` 172,
-/// `retract_mm` 176, `feed_mm_min` 184, `feed` 192, `plane` 196, `unused` 200, `reserved`
+/// `retract_mm` 176, `feed_mm_min` 184, `feed` 192, `plane` 196, `table_rot` 200, `reserved`
 /// 204. Accepted on entry: all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's
 /// `crc32`) of bytes 0..204 exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
 #[repr(C)]
@@ -138,8 +138,12 @@ pub struct cncrot_program {
     /// `CNCROT_PLANE_XY` until one is): the plane of the rotations that name no axis
     /// (`ROT RPL=`, `G68 X Y R`).
     pub plane: i32,
-    /// 0 (room for a later field in the same layout).
-    pub unused: u32,
+    /// 1 while the active tilt turns a free rotary table to the plane (Heidenhain `TABLE
+    /// ROT`: `cncrot_program_axes` turns the first table from the workpiece where it is
+    /// parallel to the tool so that the machine makes the whole rotation), 0 otherwise
+    /// (`COORD ROT` or no word: the coordinate system turns, the table stays; always 0
+    /// while no tilt or a direct mode is active).
+    pub table_rot: u32,
     /// The seal: 0 in the all-zero initial state, else the checksum described above (the
     /// field keeps the name it had when it was reserved, so that the layout is unchanged).
     pub reserved: u32,
@@ -270,10 +274,16 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
         CNCROT_FEED_AUTO => Feed::Auto,
         _ => return Err(Error::BadState),
     };
-    let plane = match (c.plane, c.unused) {
-        (CNCROT_PLANE_XY, 0) => Plane::Xy,
-        (CNCROT_PLANE_ZX, 0) => Plane::Zx,
-        (CNCROT_PLANE_YZ, 0) => Plane::Yz,
+    let plane = match c.plane {
+        CNCROT_PLANE_XY => Plane::Xy,
+        CNCROT_PLANE_ZX => Plane::Zx,
+        CNCROT_PLANE_YZ => Plane::Yz,
+        _ => return Err(Error::BadState),
+    };
+    // Only with a tilt (`Program::check`).
+    let table_rot = match c.table_rot {
+        0 => false,
+        1 => true,
         _ => return Err(Error::BadState),
     };
     let p = Program {
@@ -291,6 +301,7 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
         choice,
         positioning,
         plane,
+        table_rot,
     };
     p.check().map_err(|_| Error::BadState)?;
     Ok(p)
@@ -372,7 +383,7 @@ fn store(p: &Program, options: u32) -> cncrot_program {
             Plane::Zx => CNCROT_PLANE_ZX,
             Plane::Yz => CNCROT_PLANE_YZ,
         },
-        unused: 0,
+        table_rot: u32::from(p.table_rot),
         reserved: 0,
     };
     c.reserved = seal_of(&c);
@@ -985,6 +996,48 @@ mod tests {
         }
         let longest = Dialect::ALL.iter().map(|d| d.max_line()).max();
         assert_eq!(longest, Some(CNCROT_PROGRAM_LINE_MAX));
+    }
+
+    /// `table_rot` read strictly even under a matching seal: 0 or 1, and 1 only with a
+    /// Heidenhain tilt (the word is Heidenhain's, and only a tilt has a table to turn).
+    #[test]
+    fn table_rot_is_read_strictly() {
+        let tilt = Program::default()
+            .line(
+                Dialect::Heidenhain,
+                b"PLANE SPATIAL SPA+0 SPB+0 SPC+90 STAY TABLE ROT",
+            )
+            .unwrap()
+            .0;
+        let c = store(&tilt, 0);
+        assert_eq!((c.table_rot, load(&c)), (1, Ok(tilt)));
+        let resealed = |mut c: cncrot_program| {
+            c.reserved = seal_of(&c);
+            load(&c)
+        };
+        assert_eq!(
+            resealed(cncrot_program { table_rot: 2, ..c }),
+            Err(Error::BadState)
+        );
+        let fanuc = Program::default()
+            .line(Dialect::Fanuc, b"G68.2 I0 J0 K90")
+            .unwrap()
+            .0;
+        let f = store(&fanuc, 0);
+        assert_eq!(
+            resealed(cncrot_program { table_rot: 1, ..f }),
+            Err(Error::BadState)
+        );
+        let off = tilt
+            .line(Dialect::Heidenhain, b"PLANE RESET STAY")
+            .unwrap()
+            .0;
+        let o = store(&off, 0);
+        assert_eq!(o.table_rot, 0);
+        assert_eq!(
+            resealed(cncrot_program { table_rot: 1, ..o }),
+            Err(Error::BadState)
+        );
     }
 
     /// Every state the library stores loads back as itself; zero is nothing active.
