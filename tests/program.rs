@@ -2398,6 +2398,24 @@ fn heidenhain_table_rot_turns_a_free_table() {
     assert_eq!(p.axes(&m, [0.0; 3]), q.axes(&m, [0.0; 3]));
     let (off, _) = p.line(Dialect::Heidenhain, b"PLANE RESET STAY").unwrap();
     assert!(!off.table_rot);
+    // Three axes (a table A under a head C carrying A) at their pole (C 0: both A about X)
+    // make the whole rotation of SPA+30: nothing is left for a table, the choice (with its
+    // free axis) as the machine makes it.
+    let x = [1.0, 0.0, 0.0];
+    let three = Machine::new([0.0, 0.0, 1.0])
+        .unwrap()
+        .with_axis(RotaryAxis::new(Side::Work, x, [0.0; 3]))
+        .unwrap()
+        .with_axis(RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]))
+        .unwrap()
+        .with_axis(RotaryAxis::new(Side::Tool, x, [0.0; 3]))
+        .unwrap();
+    let tilt = "PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN";
+    let p = read(Dialect::Heidenhain, &[&format!("{tilt} TABLE ROT")]);
+    let q = read(Dialect::Heidenhain, &[tilt]);
+    let c = p.axes(&three, [10.0, 0.0, 0.0]).unwrap();
+    assert!(c.free);
+    assert_eq!(Ok(c), q.axes(&three, [10.0, 0.0, 0.0]));
 }
 
 /// Heidenhain's cycle 19, WORKING PLANE, as CAM posts write it. Spatial angles (the

@@ -423,6 +423,10 @@ fn table_turned(
 ) -> Result<Choice, Error> {
     let r = c.remaining;
     let psi = crate::math::atan2_deg(r[1][0], r[0][0]);
+    // Nothing left to the frame (three axes at a pole make the whole rotation): as chosen.
+    if crate::math::abs(psi) <= 1e-12 {
+        return Ok(c);
+    }
     let axes = machine.axes();
     for (k, axis) in axes.iter().enumerate().rev() {
         if axis.side != crate::kinematics::Side::Work {
