@@ -385,11 +385,12 @@ fn plane_frame(form: Form, w: &[f64]) -> Result<Frame, Error> {
 /// A datum table row (`#5`, `TRANS DATUM TABLE`) or another axis (`A`, `U`) is not
 /// followed.
 fn datum_shift(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
-    let cycle = if let Some((number, line)) = cycle_def(&mut c.clone()) {
+    // `keyword` takes only what it matches: a block that is no `CYCL DEF` still has its
+    // `TRANS` at the cursor.
+    let cycle = if let Some((number, line)) = cycle_def(c) {
         if number != 7 {
             return Ok(None);
         }
-        cycle_def(c);
         if line == 0 {
             // `7.0 DATUM SHIFT` (in the program's language) only names the cycle: part of
             // the datum shift, the state unchanged.

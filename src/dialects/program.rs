@@ -13,7 +13,7 @@ pub use super::family::{AxisChoice, Direct, DirectAxes, Feed, Plane, Positioning
 use super::family::{Block, FormSpec, Modal, Motion, MAX_VALUES};
 use super::form;
 pub use super::registry::Dialect;
-use crate::kinematics::{Choice, Machine, Rule};
+use crate::kinematics::{Choice, Machine, Rule, MAX_AXES, VERIFY};
 use crate::text::number::Out;
 pub use crate::text::scan::LineError;
 use crate::{Error, Frame, Vector};
@@ -437,18 +437,9 @@ fn table_turned(
             if let Some(x) = turned.get_mut(k) {
                 *x += sign * psi;
             }
-            let Ok(f) = machine.forward(turned) else {
-                continue;
-            };
-            let miss = f
-                .rotation
-                .iter()
-                .flatten()
-                .zip(target.iter().flatten())
-                .map(|(a, b)| crate::math::abs(a - b))
-                .fold(0.0, |m, e| if e <= m { m } else { e });
-            // Written so that NaN skips the candidate.
-            if miss <= 1e-9 {
+            // The whole rotation verified as the solver verifies its solutions (NaN
+            // skips the candidate).
+            if machine.misses(&turned, target, MAX_AXES) <= VERIFY {
                 return machine.commanded(turned, current);
             }
         }

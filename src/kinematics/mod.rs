@@ -32,6 +32,7 @@ mod solve;
 mod tcp;
 
 pub use choose::{Choice, Rule};
+pub(crate) use solve::VERIFY;
 pub use solve::{Solutions, POLE_SINE};
 pub use tcp::{cl_pose, Tcp, TCP_AXES};
 
