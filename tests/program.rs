@@ -1077,8 +1077,9 @@ fn every_block_of_a_program() {
             ("N160 G68 X0 Y0 R30.", N),
             ("N170 G0G90G55X0Y0", N),
             ("N180 G90 G68.2 X0 Y0 Z0 I0 J30 K0", A),
-            // Fanuc's other G68.2 forms and LinuxCNC's words: not followed, not guessed.
-            ("N182 G68.2 P1 Q123 X0 Y0 Z0 I10 J20 K30", N),
+            // Fanuc's G68.2 forms without a public definition and LinuxCNC's R: not followed,
+            // not guessed.
+            ("N182 G68.2 P1 Q123 X0 Y0 Z0 I10 J20 K30", A),
             ("N183 G68.2 P2 X0 Y0 Z0 I1 J0 K0", N),
             ("N184 G68.2 X0 Y0 Z0 I0 J30 K0 R10", N),
             ("N185 G53.1 P1", A),
@@ -1908,12 +1909,70 @@ fn linuxcnc_euler_orders() {
         .line(Dialect::Fanuc, b"G68.2 Q313.5 J30")
         .unwrap_err();
     assert_eq!((e.error, e.column), (Error::BadArgument, 8));
-    // The roll-pitch-yaw form and R stay not followed: the sources disagree.
-    for l in ["G68.2 P1 Q123 I0 J30 K0", "G68.2 I0 J30 K0 R15"] {
-        let (_, remark) = Program::default()
+    // LinuxCNC's R stays not followed: the sources disagree about the axis it turns about.
+    let (_, remark) = Program::default()
+        .line(Dialect::Fanuc, b"G68.2 I0 J30 K0 R15")
+        .unwrap();
+    assert_eq!(remark, Remark::NotFollowed);
+}
+
+/// Fanuc's roll-pitch-yaw form `G68.2 P1 Q X Y Z I J K`: each letter's angle about its own
+/// axis (I about X, J about Y, K about Z), the rotations about the fixed axes in the order of
+/// `Q`. Expected by hand: `Q123 I30 J20` is `Ry(20)·Rx(30)`, tool axis
+/// (sin 20°·cos 30°, −sin 30°, cos 20°·cos 30°) = (0.2962, −0.5, 0.8138); `Q321` with the same
+/// angles is `Rx(30)·Ry(20)`, tool axis (sin 20°, −sin 30°·cos 20°, cos 30°·cos 20°) =
+/// (0.3420, −0.4698, 0.8138) — the block that tells fixed axes from moving ones (moving axes
+/// by place would give the first for `Q321` and the second for `Q123`).
+#[test]
+fn fanuc_roll_pitch_yaw() {
+    let f = |l: &str| read(Dialect::Fanuc, &[l]).frame;
+    let z = |f: Frame| [f.rotation[0][2], f.rotation[1][2], f.rotation[2][2]];
+    let (s20, c20) = (20f64.to_radians().sin(), 20f64.to_radians().cos());
+    let (s30, c30) = (0.5, 3f64.sqrt() / 2.0);
+    let close = |a: [f64; 3], b: [f64; 3]| a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-15);
+    assert!(close(
+        z(f("G68.2 P1 Q123 I30 J20 K0")),
+        [s20 * c30, -s30, c20 * c30]
+    ));
+    assert!(close(
+        z(f("G68.2 P1 Q321 I30 J20 K0")),
+        [s20, -s30 * c20, c30 * c20]
+    ));
+    // A letter keeps its axis whatever its place in Q.
+    assert!(dist(&f("G68.2 P1 Q321 I10 J0 K0").rotation, &r(Axis::X, 10.0)) < 1e-15);
+    assert!(dist(&f("G68.2 P1 Q231 I0 J0 K-40").rotation, &r(Axis::Z, -40.0)) < 1e-15);
+    // Q213: Y by J, then the fixed X by I, then the fixed Z by K.
+    let want = mul(
+        &mul(&r(Axis::Z, 30.0), &r(Axis::X, 10.0)),
+        &r(Axis::Y, 20.0),
+    );
+    assert!(dist(&f("G68.2 P1 Q213 I10 J20 K30").rotation, &want) < 1e-15);
+    // Without Q: X, Y, Z [choice]; the origin as in the Euler form.
+    let g = f("G68.2 P1 X10. Y-5. Z2. I10 J20 K30");
+    assert_eq!(g, f("G68.2 P1 Q123 X10 Y-5 Z2 I10 J20 K30"));
+    assert_eq!(g.translation, [10.0, -5.0, 2.0]);
+    // Haas's G268 writes the same frame with the same words.
+    assert_eq!(
+        g,
+        read(Dialect::Haas, &["G268 X10. Y-5. Z2. I10. J20. K30. Q123"]).frame
+    );
+    // G68.4 P1 composes in the active plane: two turns of 15° about X make 30°.
+    let p = read(Dialect::Fanuc, &["G68.2 P1 Q123 I15", "G68.4 P1 Q123 I15"]);
+    assert!(dist(&p.frame.rotation, &r(Axis::X, 30.0)) < 1e-15);
+    // An Euler order, or a repeated axis, is refused at the value of Q.
+    for (l, col) in [("G68.2 P1 Q313 J30", 11), ("G68.2 P1 Q112 J30", 11)] {
+        let e = Program::default()
             .line(Dialect::Fanuc, l.as_bytes())
-            .unwrap();
-        assert_eq!(remark, Remark::NotFollowed, "{l}");
+            .unwrap_err();
+        assert_eq!(
+            (e.error, e.column, e.expected),
+            (
+                Error::BadSequence,
+                col,
+                Some("Q: 123, 132, 213, 231, 312 or 321")
+            ),
+            "{l}"
+        );
     }
 }
 

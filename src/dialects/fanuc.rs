@@ -58,6 +58,56 @@ pub fn g68_2_ordered(origin: Vector, order: i32, ijk: [f64; 3]) -> Result<Frame,
     ))
 }
 
+/// The rotation order of a roll-pitch-yaw `Q` word (`G68.2 P1`, Haas `G268`): three
+/// different digits naming the fixed axes in the order the rotations are made (1 X, 2 Y,
+/// 3 Z); another `Q` is [`Error::BadSequence`].
+///
+/// ```
+/// use cncrot::dialects::fanuc::fixed_order;
+/// assert_eq!(fixed_order(321).unwrap(), cncrot::Sequence::ZYX);
+/// assert!(fixed_order(313).is_err()); // an Euler order: the P0 form's
+/// ```
+pub fn fixed_order(q: i32) -> Result<Sequence, Error> {
+    if !(111..=333).contains(&q) {
+        return Err(Error::BadSequence);
+    }
+    let digits = [q / 100, (q / 10) % 10, q % 10];
+    if !digits.iter().all(|d| (1..=3).contains(d)) {
+        return Err(Error::BadSequence);
+    }
+    let code = digits[0] + 4 * digits[1] + 16 * digits[2];
+    match Sequence::from_code(code)? {
+        s if !s.is_proper_euler() => Ok(s),
+        _ => Err(Error::BadSequence),
+    }
+}
+
+/// `G68.2 P1 Q<order> X Y Z I J K`, the roll-pitch-yaw form: origin `X Y Z`, then rotations
+/// about the fixed (workpiece) axes in the order `Q` names, each by its own letter's angle —
+/// `I` about X (roll), `J` about Y (pitch), `K` about Z (yaw) whatever the order; `Q123`:
+/// `F = Rz(K)·Ry(J)·Rx(I)`. Sources: the letters tied to their axes and `Q` as the order of
+/// the rotations \[doc: Mazak's Fanuc-style supplement, "I: angle of rotation around the
+/// X-axis [roll angle]", "q: order of rotations"\]; fixed axes \[3rd: a native LinuxCNC
+/// implementation's test (`P1 Q123 I30 J20 K0` is `Ry(20)·Rx(30)`), Haas's `G268` as CAM
+/// writes it, and roll-pitch-yaw as robotics names fixed-axis angles\]; LinuxCNC's Python
+/// remap alone turns the axes with the rotations. Another order: [`Error::BadSequence`].
+///
+/// ```
+/// use cncrot::dialects::fanuc::g68_2_rpy;
+/// // I30 about X, then J20 about the fixed Y: the tool axis (0.2962, -0.5, 0.8138).
+/// let f = g68_2_rpy([0.0; 3], 123, [30.0, 20.0, 0.0]).unwrap();
+/// let z = [f.rotation[0][2], f.rotation[1][2], f.rotation[2][2]];
+/// assert!((z[0] - 20f64.to_radians().sin() * 30f64.to_radians().cos()).abs() < 1e-15);
+/// assert!((z[1] + 0.5).abs() < 1e-15);
+/// assert!(g68_2_rpy([0.0; 3], 313, [0.0; 3]).is_err());
+/// ```
+pub fn g68_2_rpy(origin: Vector, order: i32, ijk: [f64; 3]) -> Result<Frame, Error> {
+    let s = fixed_order(order)?;
+    let angles = s.axes().map(|a| ijk[a.index()]);
+    let r = matrix_from_angles(Kind::Extrinsic, crate::AxisCode::from(s), angles);
+    Ok(Frame::with_translations(origin, r, [0.0; 3]))
+}
+
 /// `I, J, K` of a rotation: J in [0, 180] (as post-processors keep J ≥ 0), I and K in
 /// (-180, 180]; at J = 0 or 180 K = 0 (`singular`).
 pub fn g68_2_angles(m: &Matrix) -> Result<Decomposition, Error> {
@@ -143,11 +193,11 @@ pub(crate) struct Fanuc;
 /// `None` when none of them stands there.
 ///
 /// `G68.2 P0` is the Euler form (as `G68.2` without `P`), with LinuxCNC's `Q` for another
-/// proper Euler order ([`g68_2_ordered`]; `G68.4` too); `P1` (roll, pitch, yaw in the order
-/// `Q`: LinuxCNC's remap takes `I J K` by their place in `Q`, Mazak's manual by their axis,
-/// and whether the axes turn with the rotations is in no public text), `P2` (three points),
-/// `P3` (two vectors), `P4` (projection angles) and LinuxCNC's `R` are forms whose words the
-/// library does not read: such a block is [`Block::NotFollowed`], never a guessed frame.
+/// proper Euler order ([`g68_2_ordered`]; `G68.4` too); `P1` the roll-pitch-yaw form
+/// ([`g68_2_rpy`], `G68.4 P1` incrementally). `P2` (three points), `P3` (two vectors), `P4`
+/// (projection angles) and LinuxCNC's `R` are forms whose words the library does not read
+/// (their blocks are defined in no text found): such a block is [`Block::NotFollowed`],
+/// never a guessed frame.
 /// `G53.1`/`G53.6 P`: the direction the priority (master) axis turns, kept as the
 /// state's choice ([`g53_choice`]).
 pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineError>> {
@@ -203,10 +253,23 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
                 expected: None,
             });
         }
-        if form != 0 || w.given[8] {
+        if form > 1 || w.given[8] {
             return Ok(Block::NotFollowed);
         }
-        let call = if w.given[7] {
+        let call = if form == 1 {
+            // Without `Q`: X, then Y, then Z [choice: the first order of Mazak's list and
+            // LinuxCNC's default; a post writing `P1` from a B/C machine's angles means it].
+            let order = if w.given[7] {
+                whole(w.values[7], w.column(7))?
+            } else {
+                123
+            };
+            g68_2_rpy(v3(&w.values, 0), order, v3(&w.values, 3)).map_err(|e| LineError {
+                error: e,
+                column: w.column(7),
+                expected: Some("Q: 123, 132, 213, 231, 312 or 321"),
+            })?
+        } else if w.given[7] {
             let order = whole(w.values[7], w.column(7))?;
             g68_2_ordered(v3(&w.values, 0), order, v3(&w.values, 3)).map_err(|e| LineError {
                 error: e,

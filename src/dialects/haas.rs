@@ -2,17 +2,16 @@
 //!
 //! Confidence as in [`crate::dialects::sinumerik`].
 
-use crate::{
-    angles_from_matrix, matrix_from_angles, AxisCode, Convention, Decomposition, Error, Frame,
-    Kind, Sequence, Vector,
-};
+use super::fanuc;
+use crate::{angles_from_matrix, Convention, Decomposition, Error, Frame, Kind, Sequence, Vector};
 
 /// The rotation order of a `Q` word: its three digits name the fixed axes in the order the
 /// rotations are made (1 = X with angle `I`, 2 = Y with `J`, 3 = Z with `K`), e.g. `Q123`:
 /// about X by I, then about the fixed Y by J, then about the fixed Z by K:
 /// `F = Rz(K)·Ry(J)·Rx(I)` [3rd: the main CAM post writes it so]. Only the six orders of the
 /// three axes are accepted ([`Error::BadSequence`]); Haas's default for a missing `Q` is not
-/// public, so `Q` is required here \[choice\].
+/// public, so `Q` is required here \[choice\]. The same reading as Fanuc's roll-pitch-yaw
+/// form ([`fanuc::fixed_order`]).
 ///
 /// ```
 /// use cncrot::dialects::haas::q_order;
@@ -20,22 +19,12 @@ use crate::{
 /// assert!(q_order(313).is_err());
 /// ```
 pub fn q_order(q: i32) -> Result<Sequence, Error> {
-    if !(111..=333).contains(&q) {
-        return Err(Error::BadSequence);
-    }
-    let digits = [q / 100, (q / 10) % 10, q % 10];
-    if !digits.iter().all(|d| (1..=3).contains(d)) {
-        return Err(Error::BadSequence);
-    }
-    let code = digits[0] + 4 * digits[1] + 16 * digits[2];
-    match Sequence::from_code(code)? {
-        s if !s.is_proper_euler() => Ok(s),
-        _ => Err(Error::BadSequence),
-    }
+    fanuc::fixed_order(q)
 }
 
 /// `G268 X Y Z I J K Q`: origin `X Y Z`, then the fixed-axis rotations of `Q` with each
-/// axis's own angle (I about X, J about Y, K about Z).
+/// axis's own angle (I about X, J about Y, K about Z): the frame of Fanuc's
+/// `G68.2 P1 Q X Y Z I J K` ([`fanuc::g68_2_rpy`]).
 ///
 /// ```
 /// use cncrot::dialects::haas::g268;
@@ -43,10 +32,7 @@ pub fn q_order(q: i32) -> Result<Sequence, Error> {
 /// assert_eq!(f.rotation, cncrot::elementary(cncrot::Axis::Z, 90.0));
 /// ```
 pub fn g268(origin: Vector, ijk: [f64; 3], q: i32) -> Result<Frame, Error> {
-    let s = q_order(q)?;
-    let angles = s.axes().map(|a| ijk[a.index()]);
-    let r = matrix_from_angles(Kind::Extrinsic, AxisCode::from(s), angles);
-    Ok(Frame::with_translations(origin, r, [0.0; 3]))
+    fanuc::g68_2_rpy(origin, q, ijk)
 }
 
 /// `I, J, K` of a rotation for a `Q` order (the middle rotation's angle in [-90, 90]; at
@@ -69,7 +55,6 @@ pub const G269: Frame = Frame::IDENTITY;
 use super::family::{
     put, v3, Block, Family, Form, FormInfo, FormSpec, Modal, Motion, Positioning, MAX_VALUES,
 };
-use super::fanuc;
 use crate::text::number::{write_integer, write_word, Out, Style};
 use crate::text::scan::{address_words, whole, Cursor, LineError, Syntax};
 
