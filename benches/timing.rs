@@ -553,6 +553,10 @@ fn programs(b: &mut Bench, i: &Inputs) {
                 g682.len(),
             )
         };
+        // A safety cancel read with nothing active: the state names its dialect.
+        let (zero, mut cancelled) = (cncrot_program::default(), cncrot_program::default());
+        // SAFETY: valid pointers and lengths.
+        unsafe { cncrot_program_line(&mut cancelled, CNCROT_DIALECT_FANUC, c"G69".as_ptr(), 3) };
         let mut change = [0u8; CNCROT_PROGRAM_CHANGE_MAX + 1];
         for (class, dialect, form) in [
             (
@@ -570,6 +574,26 @@ fn programs(b: &mut Bench, i: &Inputs) {
                     cncrot_program_write_change(
                         a,
                         z,
+                        dialect,
+                        form.as_ptr(),
+                        4,
+                        change.as_mut_ptr().cast(),
+                        change.len(),
+                    )
+                },
+            );
+            // The same block through `cncrot_program_write_block` (read twice more on its
+            // probes), and a safety cancel with nothing active (written again).
+            b.time(
+                "cncrot_program_write_block",
+                class,
+                &[(shifted, tilted, g682), (zero, cancelled, &b"G69"[..])],
+                &mut |(a, z, text)| unsafe {
+                    cncrot_program_write_block(
+                        a,
+                        z,
+                        text.as_ptr().cast(),
+                        text.len(),
                         dialect,
                         form.as_ptr(),
                         4,

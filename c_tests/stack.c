@@ -215,6 +215,17 @@ static void program_write_change(void) {
                                       sizeof out) +
           cncrot_program_write_change(&change_from, &change_to, CNCROT_DIALECT_FANUC, "G68.2", 17, out, sizeof out);
 }
+static cncrot_program cancelled;
+static void program_write_block(void) {
+  static char out[CNCROT_PROGRAM_CHANGE_MAX + 1];
+  static const char b[] = "G68.2 X1.000000000001 Y2 Z3 I12.345678901 J33.3333333 K-77.7777777";
+  static const char cancel[] = "G69";
+  /* A tilt (the block read twice more on the probes) and a cancel restated with nothing active. */
+  sink += cncrot_program_write_block(&change_from, &change_to, b, sizeof b - 1, CNCROT_DIALECT_HEIDENHAIN,
+                                     "PLANE POINTS", -1, out, sizeof out) +
+          cncrot_program_write_block(&cancelled, &cancelled, cancel, sizeof cancel - 1, CNCROT_DIALECT_SINUMERIK,
+                                     "CYCLE800 185", -1, out, sizeof out);
+}
 static void cycle600(void) {
   memset(&gud, 0, sizeof gud);
   sink += cncrot_cycle600(&gud, &table, 0, "UFK600", 1, 57, 1, 2, 3, 30, 45, 60, 4, 5, 6, 1, 39, 0, 0, 0);
@@ -414,6 +425,7 @@ static const struct entry ENTRIES[] = {
     E(probe_edge, 0),        E(program_line, 1),       E(program_column, 1),
     E(program_expected, 1),  E(program_frame, 0),     E(program_write, 1),      E(program_init, 0),
     E(program_write_change, 1),
+    E(program_write_block, 1),
     E(machine_from_carr, 1), E(machine_carr_error_line, 1), E(machine_from_head, 1),
     E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
     E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),
@@ -445,6 +457,7 @@ int main(int argc, char **argv) {
     if (cncrot_program_line(&change_from, CNCROT_DIALECT_FANUC, a, sizeof a - 1) != 0) abort();
     change_to = change_from;
     if (cncrot_program_line(&change_to, CNCROT_DIALECT_FANUC, b, sizeof b - 1) != 0) abort();
+    if (cncrot_program_line(&cancelled, CNCROT_DIALECT_FANUC, "G69", 3) != 0) abort();
   }
   build_fork();
   size_t base = used_by(none);

@@ -823,7 +823,74 @@ static void translated_programs(void) {
   CHECK(out[0] == 'x' && out[sizeof out - 1] == 'x', "out touched");
 }
 
+/* What a translator writes for one block (cncrot_program_write_block): with nothing active a
+ * program's safety cancel is still the target's cancel (the cancels each dialect documents) and
+ * a zero datum shift the target's shift; a cycle's first line and a G53.1 without a tilt restate
+ * nothing; a block that changes the state is written as cncrot_program_write_change writes it;
+ * the refusals leave `out` untouched. */
+static void restated_blocks(void) {
+  static const struct {
+    int32_t from;
+    const char *block;
+    int32_t to;
+    const char *form;
+    const char *want;
+  } cases[] = {
+      {CNCROT_DIALECT_HEIDENHAIN, "PLANE RESET STAY", CNCROT_DIALECT_FANUC, "G68.2", "G69"},
+      {CNCROT_DIALECT_HEIDENHAIN, "10 PLANE RESET STAY", CNCROT_DIALECT_SINUMERIK, "CYCLE800", "CYCLE800()"},
+      {CNCROT_DIALECT_FANUC, "N10 G69", CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", "PLANE RESET STAY"},
+      {CNCROT_DIALECT_FANUC, "G69", CNCROT_DIALECT_HAAS, "G268", "G269"},
+      {CNCROT_DIALECT_SINUMERIK, "CYCLE800()", CNCROT_DIALECT_FANUC, "G68.2", "G69"},
+      {CNCROT_DIALECT_FANUC, "G52 X0 Y0 Z0", CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL",
+       "CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+0\nCYCL DEF 7.2 Y+0\nCYCL DEF 7.3 Z+0"},
+      {CNCROT_DIALECT_HEIDENHAIN, "TRANS DATUM RESET", CNCROT_DIALECT_FANUC, "G68.2", "G52 X0. Y0. Z0."},
+      {CNCROT_DIALECT_HEIDENHAIN, "CYCL DEF 7.0 DATUM SHIFT", CNCROT_DIALECT_FANUC, "G68.2", ""},
+      {CNCROT_DIALECT_FANUC, "G53.1", CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", ""},
+  };
+  char out[CNCROT_PROGRAM_CHANGE_MAX + 1];
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    cncrot_program before, after;
+    memset(&before, 0, sizeof before);
+    after = before;
+    const char *b = cases[k].block;
+    CHECK_STATUS(cncrot_program_line(&after, cases[k].from, b, strlen(b)), CNCROT_STATUS_OK);
+    CHECK_STATUS(cncrot_program_write_block(&before, &after, b, strlen(b), cases[k].to, cases[k].form, 4, out,
+                                            sizeof out),
+                 CNCROT_STATUS_OK);
+    CHECK(strcmp(out, cases[k].want) == 0, "%s: %s", b, out);
+  }
+  /* A change: the text of cncrot_program_write_change. */
+  cncrot_program before, after;
+  memset(&before, 0, sizeof before);
+  after = before;
+  const char *tilt = "G68.2 X10 I0 J30 K0";
+  CHECK_STATUS(cncrot_program_line(&after, CNCROT_DIALECT_FANUC, tilt, strlen(tilt)), CNCROT_STATUS_OK);
+  char change[CNCROT_PROGRAM_CHANGE_MAX + 1];
+  CHECK_STATUS(cncrot_program_write_change(&before, &after, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", 4, change,
+                                           sizeof change),
+               CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_program_write_block(&before, &after, tilt, strlen(tilt), CNCROT_DIALECT_HEIDENHAIN,
+                                          "PLANE SPATIAL", 4, out, sizeof out),
+               CNCROT_STATUS_OK);
+  CHECK(strcmp(out, change) == 0, "%s", out);
+  /* Refusals leave `out` as it was. */
+  memset(out, 'x', sizeof out);
+  CHECK_STATUS(cncrot_program_write_block(&before, &after, NULL, 0, CNCROT_DIALECT_FANUC, "G68.2", 4, out,
+                                          sizeof out),
+               CNCROT_STATUS_NULL_POINTER);
+  CHECK_STATUS(cncrot_program_write_block(&before, &after, tilt, CNCROT_PROGRAM_LINE_MAX + 3, CNCROT_DIALECT_FANUC,
+                                          "G68.2", 4, out, sizeof out),
+               CNCROT_STATUS_LINE_TOO_LONG);
+  CHECK_STATUS(cncrot_program_write_block(&before, &after, tilt, strlen(tilt), CNCROT_DIALECT_HEIDENHAIN,
+                                          "PLANE SPATIAL", 4, out, 2),
+               CNCROT_STATUS_NO_ROOM);
+  CHECK_STATUS(cncrot_program_write_block(&before, &after, tilt, strlen(tilt), 9, "G68.2", 4, out, sizeof out),
+               CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK(out[0] == 'x' && out[sizeof out - 1] == 'x', "out touched");
+}
+
 int main(void) {
+  restated_blocks();
   planes();
   vendors();
   readback_and_rules();

@@ -2194,6 +2194,42 @@ int32_t cncrot_program_write_change(const struct cncrot_program *before,
                                     size_t cap);
 
 /**
+ * What a translator writes for one block `line` (`len` bytes) of the source program, which
+ * `cncrot_program_line` read from `before` to `after` with status 0: the text of
+ * `cncrot_program_write_change` from `before` to `after`, and also what the block restates
+ * although the state does not change (the control may have something active that the
+ * state does not know of): a cancel while no tilt is active (the `PLANE RESET STAY`,
+ * `G69` or `CYCLE800()` a program opens with) is written as the target's cancel, a datum
+ * shift set to the value it already has (`G52 X0 Y0`, `TRANS DATUM RESET`, cycle 7 with
+ * zeros) as the target's datum shift. Found by reading the block again on a state with
+ * another tilt or shift. A block that only names a cycle (`CYCL DEF 7.0`), a `G53.1`
+ * without a tilt, or a tilt repeated unchanged restates nothing (an empty text).
+ *
+ * Returns as `cncrot_program_write_change`, and `CNCROT_STATUS_NULL_POINTER` for a NULL
+ * `line`, `CNCROT_STATUS_LINE_TOO_LONG` for a `len` longer than the dialect of `after`
+ * reads (with its line end).
+ *
+ * # Safety
+ * As `cncrot_program_write_change`; `line` points to `len` readable bytes.
+ *
+ * ```c
+ * struct cncrot_program before = p;
+ * if (cncrot_program_line(&p, CNCROT_DIALECT_HEIDENHAIN, l, strlen(l)) == 0)
+ *     cncrot_program_write_block(&before, &p, l, strlen(l), CNCROT_DIALECT_FANUC, "G68.2", 4,
+ *                                text, sizeof text);   // "G69" for "PLANE RESET STAY"
+ * ```
+ */
+int32_t cncrot_program_write_block(const struct cncrot_program *before,
+                                   const struct cncrot_program *after,
+                                   const char *line,
+                                   size_t len,
+                                   int32_t dialect,
+                                   const char *form,
+                                   int32_t decimals,
+                                   char *out,
+                                   size_t cap);
+
+/**
  * The rotation matrix of three angles in a convention.
  *
  * `intrinsic`: 1 about the rotated (workpiece) axes, `R = R_a1·R_a2·R_a3`; 0 about the

@@ -13,7 +13,9 @@
 %     changes there. A datum shift is written with the target's own command (Heidenhain
 %     CYCL DEF 7, G52, SINUMERIK TRANS), a tilt's origin as a datum shift where the form
 %     has no origin words (PLANE), an active tilt cancelled before a new shift, cancels as
-%     cancels (G69, PLANE RESET STAY, CYCLE800()), the tilt's choice words where the
+%     cancels (G69, PLANE RESET STAY, CYCLE800()) -- into another dialect also when nothing
+%     was active (the safety cancel a program opens with), as a datum shift set to the
+%     value it had is written again --, the tilt's choice words where the
 %     block has them (SEQ+/SEQ- <-> CYCLE800 _DIR +1/-1) and how the machine moves to the
 %     plane (TURN/MOVE/STAY <-> G53.1/G53.6, G253);
 %   - any other block: the block as it stands (remarks says which).

@@ -6,8 +6,8 @@
 mod common;
 
 use cncrot::dialects::program::{
-    write_change, write_line, AxisChoice, Dialect, Direct, DirectAxes, Feed, LineError,
-    Positioning, Program, Remark, Retract, MAX_CHANGE,
+    write_block, write_change, write_line, AxisChoice, Dialect, Direct, DirectAxes, Feed,
+    LineError, Positioning, Program, Remark, Retract, MAX_CHANGE,
 };
 use cncrot::{elementary, mul, Axis, Error, Frame, Matrix};
 use common::Rng;
@@ -1258,6 +1258,97 @@ fn cancels_are_written_as_cancels() {
     let nearly = Frame::from_rotation(r(Axis::X, 1e-9));
     let (n, _) = write_line(Dialect::Fanuc, b"G68.2", &nearly, -1, &mut buf).unwrap();
     assert!(buf[..n].starts_with(b"G68.2 "));
+}
+
+/// A block that restates what the state already holds is written again by `write_block`:
+/// each dialect's cancel, read with nothing active, becomes each target form's cancel (the
+/// texts of `cancels_are_written_as_cancels`), a zero shift with none active the target's
+/// shift; blocks that restate nothing write nothing; a block that changes the state writes
+/// what `write_change` writes.
+#[test]
+fn restated_blocks_are_written() {
+    let sources: [(Dialect, &str); 8] = [
+        (Dialect::Heidenhain, "PLANE RESET STAY"),
+        (Dialect::Heidenhain, "20 PLANE RESET TURN FMAX"),
+        (Dialect::Sinumerik, "CYCLE800()"),
+        (Dialect::Sinumerik, "N10 CYCLE800"),
+        (Dialect::Fanuc, "G69"),
+        (Dialect::Haas, "G269"),
+        (Dialect::Syntec, "G158"),
+        (Dialect::Twincat, "ROT X0 Y0 Z0"),
+    ];
+    let targets: [(Dialect, &str, &str); 6] = [
+        (Dialect::Sinumerik, "CYCLE800", "CYCLE800()"),
+        (Dialect::Heidenhain, "PLANE SPATIAL", "PLANE RESET STAY"),
+        (Dialect::Fanuc, "G68.2", "G69"),
+        (Dialect::Syntec, "G158", "G158"),
+        (Dialect::Haas, "G268", "G269"),
+        (Dialect::Twincat, "ROT", "ROT X0 Y0 Z0"),
+    ];
+    let mut buf = [0u8; MAX_CHANGE];
+    let mut text = |to: Dialect, form: &str, a: &Program, b: &Program, block: &str| {
+        let (n, _) = write_block(to, form.as_bytes(), a, b, block.as_bytes(), 4, &mut buf)
+            .unwrap_or_else(|e| panic!("{block} into {form}: {e:?}"));
+        String::from_utf8(buf[..n].to_vec()).unwrap()
+    };
+    let p0 = Program::default();
+    for (d, block) in sources {
+        let (p1, remark) = p0.line(d, block.as_bytes()).unwrap();
+        assert_eq!(
+            (remark, p1.frame),
+            (Remark::Applied, Frame::IDENTITY),
+            "{block}"
+        );
+        for (to, form, want) in targets {
+            assert_eq!(text(to, form, &p0, &p1, block), want, "{block} into {form}");
+        }
+    }
+    // A zero shift with none active: the target's shift command with zeros.
+    let (p1, _) = p0.line(Dialect::Fanuc, b"G52 X0 Y0").unwrap();
+    assert_eq!(
+        text(Dialect::Heidenhain, "PLANE SPATIAL", &p0, &p1, "G52 X0 Y0"),
+        "CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+0\nCYCL DEF 7.2 Y+0\nCYCL DEF 7.3 Z+0"
+    );
+    let (p1, _) = p0.line(Dialect::Heidenhain, b"TRANS DATUM RESET").unwrap();
+    assert_eq!(
+        text(Dialect::Fanuc, "G68.2", &p0, &p1, "TRANS DATUM RESET"),
+        "G52 X0. Y0. Z0."
+    );
+    // Nothing restated: a cycle's first line, a turn with no tilt, an incremental shift of
+    // nothing, a tilt repeated.
+    for (d, block) in [
+        (Dialect::Heidenhain, "CYCL DEF 7.0 DATUM SHIFT"),
+        (Dialect::Fanuc, "G53.1"),
+        (Dialect::Heidenhain, "CYCL DEF 7.1 IX+0"),
+    ] {
+        let (p1, _) = p0.line(d, block.as_bytes()).unwrap();
+        assert_eq!(
+            text(Dialect::Fanuc, "G68.2", &p0, &p1, block),
+            "",
+            "{block}"
+        );
+    }
+    let tilt = "G68.2 X1 I0 J30 K0";
+    let (p1, _) = p0.line(Dialect::Fanuc, tilt.as_bytes()).unwrap();
+    assert_eq!(
+        text(Dialect::Heidenhain, "PLANE SPATIAL", &p1, &p1, tilt),
+        ""
+    );
+    // A change: write_change's text.
+    let mut change = [0u8; MAX_CHANGE];
+    let (n, _) = write_change(
+        Dialect::Heidenhain,
+        b"PLANE SPATIAL",
+        &p0,
+        &p1,
+        4,
+        &mut change,
+    )
+    .unwrap();
+    assert_eq!(
+        text(Dialect::Heidenhain, "PLANE SPATIAL", &p0, &p1, tilt).as_bytes(),
+        &change[..n]
+    );
 }
 
 /// Every text a reader names as expected fits the room C gives it

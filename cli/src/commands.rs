@@ -9,7 +9,7 @@ use cncrot::dialects::cycle600::{self, Call, State};
 use cncrot::dialects::head_def::HeadTable;
 use cncrot::dialects::heidenhain::cycle_head;
 use cncrot::dialects::program::{
-    write_change, write_line, Dialect, DirectAxes, Program, Remark, MAX_CHANGE,
+    write_block, write_change, write_line, Dialect, DirectAxes, Program, Remark, MAX_CHANGE,
 };
 use cncrot::kinematics::{Machine, RotaryAxis, Rule, Side, MAX_AXES};
 use cncrot::{
@@ -1295,7 +1295,16 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                 }
                 if let Some(t) = &target {
                     let mut buf = [0u8; MAX_CHANGE];
-                    match write_change(t.dialect, t.form.as_bytes(), &before, &p, d, &mut buf) {
+                    // Into another dialect also what the block restates (a cancel, a
+                    // datum shift, with nothing active: the control may have something
+                    // active); in its own, such a block stays as it stands.
+                    let written = if t.dialect == dialect {
+                        write_change(t.dialect, t.form.as_bytes(), &before, &p, d, &mut buf)
+                    } else {
+                        let text = block.as_bytes();
+                        write_block(t.dialect, t.form.as_bytes(), &before, &p, text, d, &mut buf)
+                    };
+                    match written {
                         Ok((0, _))
                             if t.dialect == dialect
                                 && dialect == Dialect::Heidenhain

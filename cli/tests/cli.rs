@@ -1564,6 +1564,33 @@ fn program_to_writes_datum_shifts() {
     );
 }
 
+/// A program's opening cancel and zero datum shift, which change nothing in a state where
+/// nothing is active, are still written into another dialect (the control may have a tilt or
+/// a shift left active); in the program's own dialect they stay as they stand.
+#[test]
+fn program_to_keeps_safety_cancels() {
+    let prog = "0 BEGIN PGM T MM\n1 PLANE RESET STAY\n2 CYCL DEF 7.0 DATUM SHIFT\n\
+                3 CYCL DEF 7.1 X+0\n4 END PGM T MM\n";
+    let to = |d: &str| {
+        let r = cncrot(
+            &["program", "-", "--dialect", "heidenhain", "--to", d],
+            prog,
+        );
+        assert_eq!(r.code, 0, "{}", r.stderr);
+        r.stdout.lines().map(String::from).collect::<Vec<_>>()
+    };
+    assert_eq!(
+        to("fanuc"),
+        [
+            "0 BEGIN PGM T MM",
+            "G69",
+            "G52 X0. Y0. Z0.",
+            "4 END PGM T MM"
+        ]
+    );
+    assert_eq!(to("heidenhain"), prog.lines().collect::<Vec<_>>());
+}
+
 /// An optional block stays optional in a translation: the skip mark on every line written
 /// for it, ISO's level kept between ISO-style dialects (Heidenhain's `/81` is the mark and
 /// block 81).

@@ -5,7 +5,7 @@
 //! fits (what a missing word should be: never empty for one); an accepted one leaves a finite frame whose every writable form writes a line
 //! that its dialect reads back as the same frame, and a sealed state of which single-bit
 //! flips are refused; the program translated block by block into every dialect and form
-//! (`cncrot_program_write_change`) reads back as the same frames. Frames close to the forms' singularities (tilts of 90° − 10^-k) go
+//! (`cncrot_program_write_block`, with what each block restates) reads back as the same frames. Frames close to the forms' singularities (tilts of 90° − 10^-k) go
 //! through every writer too: a refusal must be one the documentation names for that frame.
 #![no_main]
 
@@ -177,7 +177,7 @@ fuzz_target!(|data: &[u8]| {
             round_trips(dialect, &f);
             axes_of(&p, &line);
         }
-        translated(&again, &p, &mut translations);
+        translated(&again, &p, &line, &mut translations);
         flips_are_refused(&p, line.len());
     }
 });
@@ -406,7 +406,8 @@ fn near_singular(dialect: i32, data: &[u8]) {
 }
 
 /// The program translated block by block into every dialect and form: the text
-/// `cncrot_program_write_change` writes for the state before and after the block, read in the
+/// `cncrot_program_write_block` writes for the block and the state before and after it (with
+/// what the block restates: a cancel or a datum shift with nothing changed), read in the
 /// target dialect on its own translated state, gives the source's frame (and its way of
 /// moving to a rotated plane where the target says it). A refusal is one the
 /// documentation names (an origin for a form without origin words in a dialect that keeps no
@@ -415,6 +416,7 @@ fn near_singular(dialect: i32, data: &[u8]) {
 fn translated(
     before: &cncrot_program,
     after: &cncrot_program,
+    line: &[u8],
     translations: &mut Vec<(i32, &CStr, bool, cncrot_program)>,
 ) {
     if after.active >= 2 {
@@ -429,7 +431,7 @@ fn translated(
         .chain(&after.shift)
         .fold(1.0f64, |a, x| a.max(x.abs()));
     translations.retain_mut(|(dialect, form, has_origin, state)| {
-        let text = match write_and_read(before, after, *dialect, form, state) {
+        let text = match write_and_read(before, after, Some(line), *dialect, form, state) {
             Ok(text) => text,
             Err(s) => {
                 let origin = f[3] != 0.0 || f[7] != 0.0 || f[11] != 0.0;
@@ -521,7 +523,7 @@ fn direct_translated(
     form: &CStr,
     state: &mut cncrot_program,
 ) -> bool {
-    let text = match write_and_read(before, after, dialect, form, state) {
+    let text = match write_and_read(before, after, None, dialect, form, state) {
         Ok(text) => text,
         Err(s) => {
             assert!(
@@ -547,28 +549,36 @@ fn direct_translated(
     true
 }
 
-/// The blocks `cncrot_program_write_change` writes for `before` → `after` in `dialect` and
-/// `form`, each read into `state` (every one accepted); a known refusal, with `out`
-/// untouched, as `Err`. The text never passes the room given.
+/// The blocks `cncrot_program_write_block` (for a `block`) or `cncrot_program_write_change`
+/// writes for `before` → `after` in `dialect` and `form`, each read into `state` (every one
+/// accepted); a known refusal, with `out` untouched, as `Err`. The text never passes the room
+/// given.
 fn write_and_read(
     before: &cncrot_program,
     after: &cncrot_program,
+    block: Option<&[u8]>,
     dialect: i32,
     form: &CStr,
     state: &mut cncrot_program,
 ) -> Result<String, i32> {
     let mut out = [0x5Au8; CNCROT_PROGRAM_CHANGE_MAX + 2];
+    let (o, cap) = (out.as_mut_ptr().cast(), CNCROT_PROGRAM_CHANGE_MAX + 1);
     // SAFETY: valid pointers, out holds more than cap bytes.
     let s = unsafe {
-        cncrot_program_write_change(
-            before,
-            after,
-            dialect,
-            form.as_ptr(),
-            -1,
-            out.as_mut_ptr().cast(),
-            CNCROT_PROGRAM_CHANGE_MAX + 1,
-        )
+        match block {
+            Some(b) => cncrot_program_write_block(
+                before,
+                after,
+                b.as_ptr().cast(),
+                b.len(),
+                dialect,
+                form.as_ptr(),
+                -1,
+                o,
+                cap,
+            ),
+            None => cncrot_program_write_change(before, after, dialect, form.as_ptr(), -1, o, cap),
+        }
     };
     input::assert_known(s);
     assert_eq!(out[CNCROT_PROGRAM_CHANGE_MAX + 1], 0x5A);

@@ -76,7 +76,10 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
       mxSetCell(remarks, k, mxCreateString(s == CNCROT_STATUS_PASSED ? "passed" : "not followed"));
       continue;
     }
-    int32_t w = cncrot_program_write_change(&before, &p, to, form, decimals, out, sizeof out);
+    /* Into another dialect also what the block restates (a cancel, a datum shift, with
+     * nothing active: the control may have something active). */
+    int32_t w = to == dialect ? cncrot_program_write_change(&before, &p, to, form, decimals, out, sizeof out)
+                              : cncrot_program_write_block(&before, &p, buf, len, to, form, decimals, out, sizeof out);
     if (w < 0) {
       mxDestroyArray(text);
       mxDestroyArray(remarks);

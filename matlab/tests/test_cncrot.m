@@ -238,6 +238,12 @@ function test_cncrot(cases_file)
   check(strcmp(ts{4}, 'CYCLE800(0,"",0,57,10,0,-5,0,30,0,0,0,0,1,0,0)') && strcmp(ts{6}, 'TRANS X=10 Y=0 Z=-5'), 'translate: into SINUMERIK, _DIR +1');
   th = cncrot_program_translate('fanuc', {'G68.2 X10 Y20 I0 J30 K0'}, 'heidenhain', 'PLANE SPATIAL', 4);
   check(isequal(th, {sprintf('CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+10\nCYCL DEF 7.2 Y+20\nCYCL DEF 7.3 Z+0\nPLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY')}), 'translate: an origin as cycle 7');
+  % A program's safety cancel and zero shift, with nothing active, are still written (the
+  % control may have something active); a cycle's first line restates nothing.
+  tc = cncrot_program_translate('heidenhain', {'PLANE RESET STAY', 'CYCL DEF 7.0 DATUM SHIFT', 'CYCL DEF 7.1 X+0', 'L Z+100 FMAX'}, 'fanuc', 'G68.2', 4);
+  check(isequal(tc, {'G69'; ''; 'G52 X0. Y0. Z0.'; 'L Z+100 FMAX'}), 'translate: cancels restated');
+  tc = cncrot_program_translate('heidenhain', {'PLANE RESET STAY'}, 'heidenhain', 'PLANE SPATIAL', 4);
+  check(isequal(tc, {''}), 'translate: in its own dialect nothing changes');
   % An optional block stays optional: its skip mark on every line written for it (an ISO level
   % between ISO dialects; Heidenhain's digits after / are its block number).
   tk = cncrot_program_translate('fanuc', {'/2 G68.2 X10 I0 J30 K0', '/G69'}, 'sinumerik', 'CYCLE800', 4);

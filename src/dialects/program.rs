@@ -9,8 +9,9 @@
 //! this module holds what is the same for all: the state, line ends and lengths, the checks
 //! of a restored state and of a written line.
 
+pub(crate) use super::family::FormSpec;
 pub use super::family::{AxisChoice, Direct, DirectAxes, Feed, Plane, Positioning, Retract};
-use super::family::{Block, FormSpec, Modal, Motion, MAX_VALUES};
+use super::family::{Block, Modal, Motion, MAX_VALUES};
 use super::form;
 pub use super::registry::Dialect;
 use crate::kinematics::{Choice, Machine, Rule, MAX_AXES, VERIFY};
@@ -712,6 +713,133 @@ pub(crate) fn change_length_with(
         return Err(Error::OutOfRange);
     }
     Ok((len, singular))
+}
+
+/// The blocks a translator writes for one block of the source program, `text`, which
+/// [`Program::line`] read from `before` to `after` ([`Remark::Applied`]): [`write_change`]
+/// from `before` to `after`, and also what the block restates although nothing changes in
+/// the state — the control the program runs on may have something active that the state
+/// does not know of. A cancel while no tilt is active (the `PLANE RESET STAY`, `G69` or
+/// `CYCLE800()` a program opens with) is written as the target's cancel; a datum shift
+/// set to the value it already has (`G52 X0 Y0`, `TRANS DATUM RESET`, cycle 7 with zeros)
+/// as the target's datum shift. What a block restates is found by reading it once more on
+/// a state where the tilt, or the shift, is something else: a block that leaves no tilt
+/// there is a cancel, one that changes the shift there sets it. A block that only names a
+/// cycle (`CYCL DEF 7.0`), a `G53.1` without a tilt, or a tilt repeated unchanged restates
+/// nothing: an empty text. Refused as [`write_change`].
+///
+/// ```
+/// use cncrot::dialects::program::{write_block, write_change, Dialect, Program};
+/// let p0 = Program::default();
+/// let (p1, _) = p0.line(Dialect::Heidenhain, b"PLANE RESET STAY").unwrap();
+/// assert_eq!(p1, p0); // nothing was active
+/// let mut buf = [0u8; 2048];
+/// let (n, _) = write_change(Dialect::Fanuc, b"G68.2", &p0, &p1, 4, &mut buf).unwrap();
+/// assert_eq!(n, 0);
+/// // The program's safety cancel is kept as the target's cancel.
+/// let text = b"PLANE RESET STAY";
+/// let (n, _) = write_block(Dialect::Fanuc, b"G68.2", &p0, &p1, text, 4, &mut buf).unwrap();
+/// assert_eq!(&buf[..n], b"G69");
+/// ```
+pub fn write_block(
+    dialect: Dialect,
+    form_text: &[u8],
+    before: &Program,
+    after: &Program,
+    text: &[u8],
+    decimals: i32,
+    buf: &mut [u8],
+) -> Result<(usize, bool), Error> {
+    let spec = dialect.parse_form(form_text)?;
+    let mut from = *before;
+    restate(&mut from, after, text);
+    write_change_with(dialect, &spec, &from, after, decimals, buf)
+}
+
+/// Turns `from` (the state before the block) into the state [`write_block`] writes the
+/// change from: with a tilt when `text` is a cancel and none was active, with another shift
+/// when `text` sets the shift to the value it had. Left as it is when the block changed
+/// what it restates, or `after` has no dialect. The changed state is of no dialect, which
+/// passes [`Program::check`] whatever the program's dialect (no programmed angles, no direct
+/// mode).
+pub(crate) fn restate(from: &mut Program, after: &Program, text: &[u8]) {
+    let Some(dialect) = after.dialect else {
+        return;
+    };
+    let cancel = untilted(from) && untilted(after) && leaves_untilted(from, dialect, text);
+    // A direct mode's positions are no frame to shift under (its state is written again
+    // whole): left as it is.
+    let shift =
+        from.shift == after.shift && from.direct.is_none() && sets_shift(from, dialect, text);
+    if cancel {
+        from.frame = Frame {
+            rotation: PROBE_TILT,
+            translation: from.shift,
+        };
+    }
+    if shift {
+        from.shift = other_shift(from.shift);
+        from.frame.translation = other_shift(from.frame.translation);
+    }
+    if cancel || shift {
+        *from = Program {
+            dialect: None,
+            angles: [0.0; 3],
+            direct: None,
+            table_rot: false,
+            ..*from
+        };
+    }
+}
+
+/// Any tilt will do: a cancel leaves none.
+const PROBE_TILT: crate::Matrix = {
+    let (s, c) = (0.5, 0.866_025_403_784_438_6);
+    [[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]]
+};
+
+/// Another shift than `v`.
+fn other_shift(v: Vector) -> Vector {
+    v.map(|x| x + 1.0)
+}
+
+/// No tilt, no direct mode: the frame is the datum shift alone.
+fn untilted(p: &Program) -> bool {
+    p.direct.is_none() && p.frame.rotation == crate::IDENTITY && p.frame.translation == p.shift
+}
+
+/// Whether `text` leaves no tilt when read on `before` with a tilt. Not inlined, like
+/// [`sets_shift`]: each probe's state and its result are on the stack only while it reads.
+#[inline(never)]
+fn leaves_untilted(before: &Program, dialect: Dialect, text: &[u8]) -> bool {
+    let tilted = Program {
+        frame: Frame {
+            rotation: PROBE_TILT,
+            translation: before.shift,
+        },
+        dialect: None,
+        angles: [0.0; 3],
+        table_rot: false,
+        ..*before
+    };
+    matches!(tilted.line(dialect, text), Ok((p, Remark::Applied)) if untilted(&p))
+}
+
+/// Whether `text` changes the shift when read on `before` with another shift.
+#[inline(never)]
+fn sets_shift(before: &Program, dialect: Dialect, text: &[u8]) -> bool {
+    let shifted = Program {
+        frame: Frame {
+            rotation: before.frame.rotation,
+            translation: other_shift(before.frame.translation),
+        },
+        shift: other_shift(before.shift),
+        dialect: None,
+        angles: [0.0; 3],
+        table_rot: false,
+        ..*before
+    };
+    matches!(shifted.line(dialect, text), Ok((p, Remark::Applied)) if p.shift != shifted.shift)
 }
 
 /// The blocks of [`write_change`] into `out`; whether the decomposition was singular. Not

@@ -8,8 +8,8 @@ use super::machine::{
 };
 use super::{cncrot_status, guard, non_null, read_finite, write};
 use crate::dialects::program::{
-    self, AxisChoice, Dialect, Direct, DirectAxes, Feed, Plane, Positioning, Program, Remark,
-    Retract,
+    self, AxisChoice, Dialect, Direct, DirectAxes, Feed, FormSpec, Plane, Positioning, Program,
+    Remark, Retract,
 };
 use crate::{crc32, Error, Frame};
 use core::ffi::c_char;
@@ -957,22 +957,102 @@ pub unsafe extern "C" fn cncrot_program_write_change(
         let d = Dialect::from_code(dialect)?;
         // The form is read whole before `out` is touched (they may be the same memory).
         let spec = d.parse_form(form_of(form)?)?;
-        // Measured first, then written straight into `out` (no text buffer on the stack):
-        // a refusal leaves it untouched.
-        let (len, singular) = program::change_length_with(d, &spec, &p0, &p1, decimals)?;
-        if cap <= len {
-            return Err(cncrot_status::NoRoom);
+        write_change_into(d, &spec, &p0, &p1, decimals, out, cap)
+    })
+}
+
+/// The change from `from` to `to` measured, then written straight into `out` (no text
+/// buffer on the stack): a refusal leaves it untouched.
+///
+/// # Safety
+/// `out` points to `cap` writable bytes.
+// Inlined: a frame of its own took 32 bytes more stack from `cncrot_program_write_change`.
+#[inline(always)]
+unsafe fn write_change_into(
+    d: Dialect,
+    spec: &FormSpec,
+    from: &Program,
+    to: &Program,
+    decimals: i32,
+    out: *mut c_char,
+    cap: usize,
+) -> Result<cncrot_status, cncrot_status> {
+    let (len, singular) = program::change_length_with(d, spec, from, to, decimals)?;
+    if cap <= len {
+        return Err(cncrot_status::NoRoom);
+    }
+    let dst = core::slice::from_raw_parts_mut(out.cast::<u8>(), len + 1);
+    let (body, nul) = dst.split_at_mut(len);
+    let (written, again) = program::write_change_with(d, spec, from, to, decimals, body)?;
+    if (written, again) != (len, singular) {
+        return Err(cncrot_status::Internal);
+    }
+    if let Some(z) = nul.first_mut() {
+        *z = 0;
+    }
+    Ok(super::status_of(singular))
+}
+
+/// What a translator writes for one block `line` (`len` bytes) of the source program, which
+/// `cncrot_program_line` read from `before` to `after` with status 0: the text of
+/// `cncrot_program_write_change` from `before` to `after`, and also what the block restates
+/// although the state does not change (the control may have something active that the
+/// state does not know of): a cancel while no tilt is active (the `PLANE RESET STAY`,
+/// `G69` or `CYCLE800()` a program opens with) is written as the target's cancel, a datum
+/// shift set to the value it already has (`G52 X0 Y0`, `TRANS DATUM RESET`, cycle 7 with
+/// zeros) as the target's datum shift. Found by reading the block again on a state with
+/// another tilt or shift. A block that only names a cycle (`CYCL DEF 7.0`), a `G53.1`
+/// without a tilt, or a tilt repeated unchanged restates nothing (an empty text).
+///
+/// Returns as `cncrot_program_write_change`, and `CNCROT_STATUS_NULL_POINTER` for a NULL
+/// `line`, `CNCROT_STATUS_LINE_TOO_LONG` for a `len` longer than the dialect of `after`
+/// reads (with its line end).
+///
+/// # Safety
+/// As `cncrot_program_write_change`; `line` points to `len` readable bytes.
+///
+/// ```c
+/// struct cncrot_program before = p;
+/// if (cncrot_program_line(&p, CNCROT_DIALECT_HEIDENHAIN, l, strlen(l)) == 0)
+///     cncrot_program_write_block(&before, &p, l, strlen(l), CNCROT_DIALECT_FANUC, "G68.2", 4,
+///                                text, sizeof text);   // "G69" for "PLANE RESET STAY"
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_program_write_block(
+    before: *const cncrot_program,
+    after: *const cncrot_program,
+    line: *const c_char,
+    len: usize,
+    dialect: i32,
+    form: *const c_char,
+    decimals: i32,
+    out: *mut c_char,
+    cap: usize,
+) -> i32 {
+    guard(|| {
+        non_null(&[
+            before.is_null(),
+            after.is_null(),
+            line.is_null(),
+            form.is_null(),
+            out.is_null(),
+        ])?;
+        let mut p0 = load_at(before)?;
+        let p1 = load_at(after)?;
+        let d = Dialect::from_code(dialect)?;
+        if p1.dialect.is_some_and(|source| len > source.max_line() + 2) {
+            return Err(cncrot_status::LineTooLong);
         }
-        let dst = core::slice::from_raw_parts_mut(out.cast::<u8>(), len + 1);
-        let (body, nul) = dst.split_at_mut(len);
-        let (written, again) = program::write_change_with(d, &spec, &p0, &p1, decimals, body)?;
-        if (written, again) != (len, singular) {
-            return Err(cncrot_status::Internal);
-        }
-        if let Some(z) = nul.first_mut() {
-            *z = 0;
-        }
-        Ok(super::status_of(singular))
+        let text = if p1.dialect.is_some() {
+            core::slice::from_raw_parts(line.cast::<u8>(), len)
+        } else {
+            &[]
+        };
+        // The form is read whole before `out` is touched (they may be the same memory).
+        let spec = d.parse_form(form_of(form)?)?;
+        program::restate(&mut p0, &p1, text);
+        write_change_into(d, &spec, &p0, &p1, decimals, out, cap)
     })
 }
 

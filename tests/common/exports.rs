@@ -1110,6 +1110,84 @@ fn programs() -> Vec<Call> {
             ));
             t.bytes(&out);
         }),
+        ("cncrot_program_write_block", |t| unsafe {
+            // A safety cancel and a zero shift with nothing active, a cycle's first line, a
+            // tilt: each block read, then what a translator writes for it.
+            let mut out = [0u8; CNCROT_PROGRAM_CHANGE_MAX + 1];
+            let mut p = cncrot_program::default();
+            for (l, d, form) in [
+                (&b"PLANE RESET STAY"[..], CNCROT_DIALECT_FANUC, c"G68.2"),
+                (
+                    b"CYCL DEF 7.0 DATUM SHIFT",
+                    CNCROT_DIALECT_SINUMERIK,
+                    c"CYCLE800",
+                ),
+                (b"CYCL DEF 7.1 X+0", CNCROT_DIALECT_FANUC, c"G68.2"),
+                (
+                    b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN",
+                    CNCROT_DIALECT_HAAS,
+                    c"G268",
+                ),
+                (b"PLANE RESET STAY", CNCROT_DIALECT_TWINCAT, c"ROT"),
+            ] {
+                let before = p;
+                t.status(cncrot_program_line(
+                    &mut p,
+                    CNCROT_DIALECT_HEIDENHAIN,
+                    l.as_ptr().cast(),
+                    l.len(),
+                ));
+                t.status(cncrot_program_write_block(
+                    &before,
+                    &p,
+                    l.as_ptr().cast(),
+                    l.len(),
+                    d,
+                    form.as_ptr(),
+                    -1,
+                    out.as_mut_ptr().cast(),
+                    out.len(),
+                ));
+                // The start of each text: the trace has room for the whole buffer once.
+                let head: &[u8; 96] = out.first_chunk().unwrap_or(&[0; 96]);
+                t.bytes(head);
+            }
+            let l = b"PLANE RESET STAY";
+            t.status(cncrot_program_write_block(
+                &p,
+                &p,
+                l.as_ptr().cast(),
+                300,
+                CNCROT_DIALECT_FANUC,
+                c"G68.2".as_ptr(),
+                -1,
+                out.as_mut_ptr().cast(),
+                out.len(),
+            ));
+            t.status(cncrot_program_write_block(
+                &p,
+                &p,
+                null(),
+                0,
+                CNCROT_DIALECT_FANUC,
+                c"G68.2".as_ptr(),
+                -1,
+                out.as_mut_ptr().cast(),
+                out.len(),
+            ));
+            t.status(cncrot_program_write_block(
+                &p,
+                &p,
+                l.as_ptr().cast(),
+                l.len(),
+                CNCROT_DIALECT_FANUC,
+                c"G68.2".as_ptr(),
+                -1,
+                out.as_mut_ptr().cast(),
+                2,
+            ));
+            t.bytes(&out);
+        }),
     ]
 }
 
