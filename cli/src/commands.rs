@@ -1198,7 +1198,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
             "--current needs a machine: --carr FILE or --axis ...",
         ));
     }
-    let text = input::read_source(a.file)?;
+    let (text, latin1) = input::read_source_as(a.file)?;
     let d = a.decimals;
     let mut p = Program {
         euler: a.euler && dialect == Dialect::Sinumerik,
@@ -1209,7 +1209,24 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
     let mut ok = true;
-    let mut put = |s: String| writeln!(out, "{s}").is_ok();
+    // A translation is a program again: written in the bytes and line ends it came in (a
+    // comment in Latin-1 or GBK stays those bytes, CRLF stays CRLF); the report is text.
+    let crlf = text.split('\n').next().is_some_and(|l| l.ends_with('\r'));
+    let translating = target.is_some();
+    let mut put = |s: String| {
+        if !translating {
+            return writeln!(out, "{s}").is_ok();
+        }
+        let s = if crlf { s.replace('\n', "\r\n") } else { s };
+        let bytes: Vec<u8> = if latin1 {
+            // Read byte for byte: every char below 256 (what the writers add is ASCII).
+            s.chars().map(|c| u8::try_from(c).unwrap_or(b'?')).collect()
+        } else {
+            s.into_bytes()
+        };
+        let end: &[u8] = if crlf { b"\r\n" } else { b"\n" };
+        out.write_all(&bytes).is_ok() && out.write_all(end).is_ok()
+    };
     // The tilts the picture shows: the first few, more would hide each other.
     const MAX_DRAWN: usize = 6;
     let (mut drawn, mut tilts) = (Vec::new(), 0);

@@ -308,6 +308,12 @@ pub fn batch_lines(source: &str) -> Result<Vec<(usize, String)>, Failure> {
 
 /// The whole text of a file, or of standard input for `-`: UTF-8, or else Latin-1.
 pub fn read_source(source: &str) -> Result<String, Failure> {
+    read_source_as(source).map(|(text, _)| text)
+}
+
+/// [`read_source`], and whether the file was read as Latin-1 (a translation writes it back
+/// in the bytes it came in).
+pub fn read_source_as(source: &str) -> Result<(String, bool), Failure> {
     let bytes = if source == "-" {
         let mut v = Vec::new();
         std::io::Read::read_to_end(&mut std::io::stdin(), &mut v)
@@ -321,8 +327,8 @@ pub fn read_source(source: &str) -> Result<String, Failure> {
     // is read byte for byte as Latin-1, so that every block is read (the commands are
     // ASCII either way) instead of the whole file refused.
     Ok(match String::from_utf8(bytes) {
-        Ok(text) => text,
-        Err(e) => e.into_bytes().into_iter().map(char::from).collect(),
+        Ok(text) => (text, false),
+        Err(e) => (e.into_bytes().into_iter().map(char::from).collect(), true),
     })
 }
 

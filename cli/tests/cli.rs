@@ -1591,6 +1591,35 @@ fn program_to_keeps_safety_cancels() {
     assert_eq!(to("heidenhain"), prog.lines().collect::<Vec<_>>());
 }
 
+/// A translation is the program again, in its own bytes: a comment in a one-byte code page
+/// (here GBK's two bytes for a Chinese word, not UTF-8) stays those bytes, CRLF line ends
+/// stay CRLF, also on the lines the writer adds.
+#[test]
+fn program_to_keeps_bytes_and_line_ends() {
+    let dir = std::env::temp_dir().join(format!("cncrot-bytes-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("gbk.h");
+    let mut prog = b"0 BEGIN PGM T MM\r\n1 ; T1 - \xb5\xb6\r\n".to_vec();
+    prog.extend_from_slice(b"2 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX\r\n3 END PGM T MM\r\n");
+    std::fs::write(&file, &prog).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_cncrot"))
+        .args([
+            "program",
+            file.to_str().unwrap(),
+            "--dialect",
+            "heidenhain",
+            "--to",
+            "fanuc",
+        ])
+        .output()
+        .unwrap();
+    std::fs::remove_dir_all(&dir).ok();
+    assert_eq!(out.status.code(), Some(0));
+    let mut want = b"0 BEGIN PGM T MM\r\n1 ; T1 - \xb5\xb6\r\n".to_vec();
+    want.extend_from_slice(b"G68.2 X0. Y0. Z0. I90. J30. K-90.\r\nG53.1\r\n3 END PGM T MM\r\n");
+    assert_eq!(out.stdout, want, "{}", String::from_utf8_lossy(&out.stdout));
+}
+
 /// An optional block stays optional in a translation: the skip mark on every line written
 /// for it, ISO's level kept between ISO-style dialects (Heidenhain's `/81` is the mark and
 /// block 81).
