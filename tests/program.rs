@@ -1802,12 +1802,15 @@ fn changes_are_written_with_the_targets_own_blocks() {
     );
     let cycle800 = translate(Dialect::Heidenhain, &hyper, Dialect::Sinumerik, "CYCLE800");
     assert_eq!(cycle800[4], "TRANS X=10 Y=20 Z=-5");
-    // MB MAX: the maximum retraction in the tool direction, _FR 4.
+    // MB MAX: the maximum retraction in the tool direction, _FR 4. The shift alone reset
+    // first and the cycle carrying the whole origin, the tilt cancelled before the shift is
+    // set alone again: the same whether the control keeps CYCLE800's frame apart from
+    // TRANS or not.
     assert_eq!(
         cycle800[5],
-        "CYCLE800(4,\"\",0,57,10,20,-5,0,30,0,0,0,0,-1,0,0)"
+        "TRANS\nCYCLE800(4,\"\",0,57,10,20,-5,0,30,0,0,0,0,-1,0,0)"
     );
-    assert_eq!(cycle800[7], "TRANS X=10 Y=20 Z=-5");
+    assert_eq!(cycle800[7], "CYCLE800()\nTRANS X=10 Y=20 Z=-5");
     // The plus direction in SINUMERIK is SEQ+ in Heidenhain, and back.
     let plus = translate(
         Dialect::Sinumerik,

@@ -1535,15 +1535,18 @@ fn program_to_writes_datum_shifts() {
     );
     assert_eq!(r.code, 0, "{}", r.stderr);
     let lines: Vec<&str> = r.stdout.lines().collect();
+    // The shift alone reset before the cycle carries the whole origin, the tilt cancelled
+    // before the shift is set alone again.
     assert_eq!(
-        lines[2..5],
+        lines[2..6],
         [
             "TRANS X=10 Y=0 Z=0",
             "TRANS X=10 Y=20 Z=0",
+            "TRANS",
             "CYCLE800(4,\"\",0,57,10,20,0,0,30,0,0,0,0,-1,0,0)"
         ]
     );
-    assert_eq!(lines[7], "TRANS X=10 Y=20 Z=0");
+    assert_eq!(lines[8..10], ["CYCLE800()", "TRANS X=10 Y=20 Z=0"]);
     // Into SINUMERIK's ROT an origin cannot go: the block keeps its line, exit status 1.
     let r = cncrot(
         &[
@@ -1650,7 +1653,8 @@ fn program_to_keeps_skip_marks() {
 
 /// Cycle 19 as older posts write it, with spatial angles (the default): `B+30 C+90` is
 /// Rz(90)·Ry(30) = Rz(180)·Rx(30)·Rz(−90) by hand (Ry(30) = Rz(90)·Rx(30)·Rz(−90)), so
-/// `G68.2 I180 J30 K-90`; the zero angles cancel (`G69`). Into Heidenhain itself the cycle
+/// `G68.2 I180 J30 K-90`; the zero angles cancel (`G69`), and so does the cycle without
+/// angles, though nothing is active any more (the cancel is kept). Into Heidenhain itself the cycle
 /// is rewritten as `PLANE SPATIAL`, and its first line goes with it; a cycle that changes
 /// nothing (the second reset line) stays as it stands, both lines. With `--axis-angles`
 /// the angles are the positions of B and C.
@@ -1671,6 +1675,7 @@ fn program_reads_cycle_19() {
         "0 BEGIN PGM C19 MM",
         "G68.2 X0. Y0. Z0. I180. J30. K-90.",
         "3 L X+0 Y+0 R0 FMAX",
+        "G69",
         "G69",
         "8 END PGM C19 MM",
     ];

@@ -235,7 +235,7 @@ function test_cncrot(cases_file)
   check(isequal(tf, {''; 'G52 X10. Y0. Z0.'; 'G52 X10. Y0. Z-5.'; sprintf('G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1'); 'L Z+100 FMAX'; 'G69'}), 'translate: into Fanuc');
   check(isequal(rf, {'applied'; 'applied'; 'applied'; 'applied'; 'passed'; 'applied'}), 'translate: remarks');
   ts = cncrot_program_translate("heidenhain", src, 'SINUMERIK', "CYCLE800", int8(4));
-  check(strcmp(ts{4}, 'CYCLE800(0,"",0,57,10,0,-5,0,30,0,0,0,0,1,0,0)') && strcmp(ts{6}, 'TRANS X=10 Y=0 Z=-5'), 'translate: into SINUMERIK, _DIR +1');
+  check(strcmp(ts{4}, sprintf('TRANS\nCYCLE800(0,"",0,57,10,0,-5,0,30,0,0,0,0,1,0,0)')) && strcmp(ts{6}, sprintf('CYCLE800()\nTRANS X=10 Y=0 Z=-5')), 'translate: into SINUMERIK, _DIR +1');
   th = cncrot_program_translate('fanuc', {'G68.2 X10 Y20 I0 J30 K0'}, 'heidenhain', 'PLANE SPATIAL', 4);
   check(isequal(th, {sprintf('CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+10\nCYCL DEF 7.2 Y+20\nCYCL DEF 7.3 Z+0\nPLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY')}), 'translate: an origin as cycle 7');
   % A program's safety cancel and zero shift, with nothing active, are still written (the

@@ -929,9 +929,19 @@ fn change(
         }
     } else if (s0, t0, d0) != (s1, t1, d1) || rewrite {
         // One frame, which each command replaces whole: a translation alone is the shift
-        // command, anything else the tilt block.
-        next(out);
-        if t1 == Frame::IDENTITY && d1.is_none() && s1 != [0.0; 3] {
+        // command, anything else the tilt block. Written so that the text means the same
+        // where the control keeps the tilt apart from the shift (a SINUMERIK whose CYCLE800
+        // writes system frames, which `TRANS` leaves alone): a tilt is cancelled by its own
+        // cancel before a shift alone is set, and a shift alone is reset (`TRANS`) before a
+        // tilt block carries the whole origin [choice].
+        let tilted0 = t0 != Frame::IDENTITY || d0.is_some();
+        let shifted0 = !tilted0 && s0 != [0.0; 3];
+        if t1 == Frame::IDENTITY && d1.is_none() && (s1 != [0.0; 3] || shifted0) {
+            if tilted0 {
+                next(out);
+                tilt_block(dialect, spec, &Frame::IDENTITY, stay, decimals, out)?;
+            }
+            next(out);
             match dialect.write_shift(s1, decimals, out) {
                 Err(Error::NotAvailable) => {
                     let f = Frame::with_translations(s1, crate::IDENTITY, [0.0; 3]);
@@ -940,6 +950,15 @@ fn change(
                 r => r?,
             }
         } else {
+            if shifted0 && (t1 != Frame::IDENTITY || d1.is_some()) {
+                // A dialect with no shift command has had none written.
+                let mut reset = Out::counter();
+                if dialect.write_shift([0.0; 3], decimals, &mut reset).is_ok() {
+                    next(out);
+                    dialect.write_shift([0.0; 3], decimals, out)?;
+                }
+            }
+            next(out);
             singular = tilt(out)?;
             tilt_written = true;
         }
