@@ -832,8 +832,8 @@ static void translated_programs(void) {
 
 /* What a translator writes for one block (cncrot_program_write_block): with nothing active a
  * program's safety cancel is still the target's cancel (the cancels each dialect documents) and
- * a zero datum shift the target's shift; a cycle's first line and a G53.1 without a tilt restate
- * nothing; a block that changes the state is written as cncrot_program_write_change writes it;
+ * a zero datum shift the target's shift; a cycle's first line restates nothing; a block that
+ * changes the state is written as cncrot_program_write_change writes it;
  * the refusals leave `out` untouched. */
 static void restated_blocks(void) {
   static const struct {
@@ -852,7 +852,10 @@ static void restated_blocks(void) {
        "CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+0\nCYCL DEF 7.2 Y+0\nCYCL DEF 7.3 Z+0"},
       {CNCROT_DIALECT_HEIDENHAIN, "TRANS DATUM RESET", CNCROT_DIALECT_FANUC, "G68.2", "G52 X0. Y0. Z0."},
       {CNCROT_DIALECT_HEIDENHAIN, "CYCL DEF 7.0 DATUM SHIFT", CNCROT_DIALECT_FANUC, "G68.2", ""},
-      {CNCROT_DIALECT_FANUC, "G53.1", CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", ""},
+      /* A turn with no tilt active: the axes to the untilted plane. */
+      {CNCROT_DIALECT_FANUC, "G53.1", CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", "PLANE RESET TURN FMAX"},
+      {CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+0 SPB+0 SPC+0 TURN FMAX", CNCROT_DIALECT_FANUC, "G68.2",
+       "G68.2 X0. Y0. Z0. I0. J0. K0.\nG53.1"},
   };
   char out[CNCROT_PROGRAM_CHANGE_MAX + 1];
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {

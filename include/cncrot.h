@@ -805,9 +805,11 @@ typedef struct cncrot_program {
   int32_t reference_axis;
   /**
    * How the program moves the machine to the active tilt: `CNCROT_POSITIONING_STAY`
-   * (`STAY`, a `G68.2` alone, frames; always while no tilt is active),
-   * `CNCROT_POSITIONING_TURN` (`TURN`, `G53.1`, `G253`, a `CYCLE800`),
-   * `CNCROT_POSITIONING_MOVE` (`MOVE`, `G53.6`: the tool tip kept in place).
+   * (`STAY`, a `G68.2` alone, frames, a cancel), `CNCROT_POSITIONING_TURN` (`TURN`,
+   * `G53.1`, `G253`, a `CYCLE800`), `CNCROT_POSITIONING_MOVE` (`MOVE`, `G53.6`: the tool
+   * tip kept in place). With no tilt active, turn or move means the axes turn to the
+   * untilted plane (`PLANE RESET TURN`, a zero tilt with `TURN`, a `CYCLE800` of zero
+   * angles, a `G53.1` after a `G68.2` of zeros).
    */
   int32_t positioning;
   /**
@@ -2202,8 +2204,8 @@ int32_t cncrot_program_write_change(const struct cncrot_program *before,
  * `G69` or `CYCLE800()` a program opens with) is written as the target's cancel, a datum
  * shift set to the value it already has (`G52 X0 Y0`, `TRANS DATUM RESET`, cycle 7 with
  * zeros) as the target's datum shift. Found by reading the block again on a state with
- * another tilt or shift. A block that only names a cycle (`CYCL DEF 7.0`), a `G53.1`
- * without a tilt, or a tilt repeated unchanged restates nothing (an empty text).
+ * another tilt or shift. A block that only names a cycle (`CYCL DEF 7.0`) or a tilt
+ * repeated unchanged restates nothing (an empty text).
  *
  * Returns as `cncrot_program_write_change`, and `CNCROT_STATUS_NULL_POINTER` for a NULL
  * `line`, `CNCROT_STATUS_LINE_TOO_LONG` for a `len` longer than the dialect of `after`

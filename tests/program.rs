@@ -457,8 +457,9 @@ fn fanuc_and_haas() {
         ..tilted
     };
     assert_eq!(read(d, &["G68.2 X5 J30", "N20 G53.1 (turn)"]), turned);
-    // Without a tilt there is nothing to move to; a new tilt states its own way.
-    assert_eq!(read(d, &["G53.1"]).positioning, Positioning::Stay);
+    // Without a tilt the axes turn to the untilted plane (after a G68.2 of zeros; without
+    // one the control raises an alarm); a new tilt states its own way.
+    assert_eq!(read(d, &["G53.1"]).positioning, Positioning::Turn);
     assert_eq!(
         read(d, &["G68.2 J30", "G53.1", "G68.2 J40"]).positioning,
         Positioning::Stay
@@ -1269,7 +1270,7 @@ fn cancels_are_written_as_cancels() {
 fn restated_blocks_are_written() {
     let sources: [(Dialect, &str); 8] = [
         (Dialect::Heidenhain, "PLANE RESET STAY"),
-        (Dialect::Heidenhain, "20 PLANE RESET TURN FMAX"),
+        (Dialect::Heidenhain, "20 PLANE RESET"),
         (Dialect::Sinumerik, "CYCLE800()"),
         (Dialect::Sinumerik, "N10 CYCLE800"),
         (Dialect::Fanuc, "G69"),
@@ -1314,11 +1315,10 @@ fn restated_blocks_are_written() {
         text(Dialect::Fanuc, "G68.2", &p0, &p1, "TRANS DATUM RESET"),
         "G52 X0. Y0. Z0."
     );
-    // Nothing restated: a cycle's first line, a turn with no tilt, an incremental shift of
-    // nothing, a tilt repeated.
+    // Nothing restated: a cycle's first line, an incremental shift of nothing, a tilt
+    // repeated.
     for (d, block) in [
         (Dialect::Heidenhain, "CYCL DEF 7.0 DATUM SHIFT"),
-        (Dialect::Fanuc, "G53.1"),
         (Dialect::Heidenhain, "CYCL DEF 7.1 IX+0"),
     ] {
         let (p1, _) = p0.line(d, block.as_bytes()).unwrap();
@@ -1349,6 +1349,84 @@ fn restated_blocks_are_written() {
         text(Dialect::Heidenhain, "PLANE SPATIAL", &p0, &p1, tilt).as_bytes(),
         &change[..n]
     );
+}
+
+/// A tilt of zero that turns the axes (they go back to the untilted plane) is written so in
+/// every target that can say it — a reset with `TURN`, a zero `G68.2`/`G268` and its
+/// `G53.1`/`G253`, a `CYCLE800` of zero angles — and reads back as that turn; a target that
+/// says nothing of the axes writes its cancel; the cancel after it is the cancel in each.
+#[test]
+fn zero_tilts_that_turn_are_written_so() {
+    let targets: [(Dialect, &str, &str, bool); 6] = [
+        (
+            Dialect::Heidenhain,
+            "PLANE SPATIAL",
+            "PLANE RESET TURN FMAX",
+            true,
+        ),
+        (
+            Dialect::Fanuc,
+            "G68.2",
+            "G68.2 X0. Y0. Z0. I0. J0. K0.\nG53.1",
+            true,
+        ),
+        (
+            Dialect::Haas,
+            "G268",
+            "G268 X0. Y0. Z0. I0. J0. K0. Q123\nG253",
+            true,
+        ),
+        (
+            Dialect::Sinumerik,
+            "CYCLE800",
+            "CYCLE800(0,\"\",0,57,0,0,0,0,0,0,0,0,0,-1,0,0)",
+            true,
+        ),
+        (Dialect::Syntec, "G158", "G158", false),
+        (Dialect::Twincat, "ROT", "ROT X0 Y0 Z0", false),
+    ];
+    let cancel = [
+        "PLANE RESET STAY",
+        "G69",
+        "G269",
+        "CYCLE800()",
+        "G158",
+        "ROT X0 Y0 Z0",
+    ];
+    let p0 = Program::default();
+    for source in [
+        "PLANE SPATIAL SPA+0 SPB+0 SPC+0 TURN FMAX",
+        "PLANE RESET TURN FMAX",
+    ] {
+        let (p1, _) = p0.line(Dialect::Heidenhain, source.as_bytes()).unwrap();
+        assert_eq!(
+            (p1.frame, p1.positioning),
+            (Frame::IDENTITY, Positioning::Turn)
+        );
+        let (p2, _) = p1.line(Dialect::Heidenhain, b"PLANE RESET STAY").unwrap();
+        for ((to, form, want, says), cancel) in targets.into_iter().zip(cancel) {
+            let mut buf = [0u8; MAX_CHANGE];
+            let (n, _) = write_change(to, form.as_bytes(), &p0, &p1, 4, &mut buf).unwrap();
+            let text = std::str::from_utf8(&buf[..n]).unwrap();
+            assert_eq!(text, want, "{source} into {form}");
+            let mut back = Program::default();
+            for l in text.lines() {
+                back = back.line(to, l.as_bytes()).unwrap().0;
+            }
+            let turned = if says {
+                Positioning::Turn
+            } else {
+                Positioning::Stay
+            };
+            assert_eq!(
+                (back.frame, back.positioning),
+                (Frame::IDENTITY, turned),
+                "{want}"
+            );
+            let (n, _) = write_change(to, form.as_bytes(), &p1, &p2, 4, &mut buf).unwrap();
+            assert_eq!(&buf[..n], cancel.as_bytes(), "{form}: the cancel after it");
+        }
+    }
 }
 
 /// Every text a reader names as expected fits the room C gives it
@@ -2204,8 +2282,10 @@ fn cam_programs_read_end_to_end() {
 
 /// How the machine moves to the plane is kept and written in each dialect's own words:
 /// Heidenhain `STAY`/`TURN`/`MOVE` ↔ Fanuc-style `G53.1` (turn) and `G53.6` (turn, tool tip
-/// kept) after the `G68.2` ↔ Haas `G253`; a `CYCLE800` swivels (turn); a reset leaves
-/// nothing to move to.
+/// kept) after the `G68.2` ↔ Haas `G253`; a `CYCLE800` swivels (turn); a reset or a zero
+/// tilt with `TURN` turns the axes to the untilted plane (turn, kept), and so does a
+/// `G53.1` or `G253` with no tilt active (after a `G68.2` of zeros; without one the control
+/// raises an alarm).
 #[test]
 fn positioning_words_are_kept_and_written() {
     use Positioning::{Move, Stay, Turn};
@@ -2220,7 +2300,15 @@ fn positioning_words_are_kept_and_written() {
         Move
     );
     assert_eq!(h("PLANE SPATIAL SPA+0 SPB+30 SPC+0"), Stay);
-    assert_eq!(h("PLANE RESET TURN FMAX"), Stay);
+    assert_eq!(h("PLANE RESET TURN FMAX"), Turn);
+    assert_eq!(h("PLANE RESET STAY"), Stay);
+    assert_eq!(h("PLANE SPATIAL SPA+0 SPB+0 SPC+0 MOVE FMAX"), Move);
+    assert_eq!(
+        read(Dialect::Fanuc, &["G68.2 I0 J0 K0", "G53.1"]).positioning,
+        Turn
+    );
+    assert_eq!(read(Dialect::Haas, &["G253"]).positioning, Turn);
+    assert_eq!(read(Dialect::Fanuc, &["G53.1", "G69"]).positioning, Stay);
     assert_eq!(
         read(Dialect::Haas, &["G268 J30 Q123", "G253"]).positioning,
         Turn

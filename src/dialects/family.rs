@@ -550,9 +550,17 @@ pub(crate) trait Family {
     }
 
     /// Writes the block that cancels the tilt programmed with `spec` (`G69`, `PLANE RESET
-    /// STAY`, `CYCLE800()`), what the writer gives for the identity frame; `false` (nothing
-    /// written) where the form has no cancel of its own and zero words are its cancel.
-    fn write_cancel(spec: &FormSpec, out: &mut Out) -> bool;
+    /// STAY`, `CYCLE800()`), what the writer gives for the identity frame, with the words of
+    /// `how` the cancel has (`PLANE RESET TURN FMAX`); `false` (nothing written) where the
+    /// form has no cancel of its own and zero words are its cancel, or where only the zero
+    /// tilt turns the axes as `how` says (`G68.2` of zeros and `G53.1`, a `CYCLE800` of zero
+    /// angles).
+    fn write_cancel(
+        spec: &FormSpec,
+        how: Motion,
+        decimals: i32,
+        out: &mut Out,
+    ) -> Result<bool, Error>;
 
     /// The frame of an owned form's words.
     fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error>;

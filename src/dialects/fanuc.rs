@@ -674,9 +674,14 @@ impl Family for Fanuc {
     }
 
     /// `G69`.
-    fn write_cancel(_: &FormSpec, out: &mut Out) -> bool {
+    /// `G69`; none while the axes turn to the untilted plane (`G68.2` of zeros, then
+    /// `G53.1`: `G69` turns nothing).
+    fn write_cancel(_: &FormSpec, how: Motion, _: i32, out: &mut Out) -> Result<bool, Error> {
+        if how.positioning != Positioning::Stay {
+            return Ok(false);
+        }
         out.text(b"G69");
-        true
+        Ok(true)
     }
 
     /// `G68.2 X Y Z I J K`, numbers always with a point.

@@ -115,7 +115,8 @@ impl Family for Haas {
             return fanuc::read_g52(m, &mut c);
         }
         if c.code(b"G253") {
-            // Turns the tool to the plane: no frame change.
+            // Turns the tool to the plane (with none active, to the untilted one): no frame
+            // change.
             return c.end(true, true).map(|()| {
                 Block::Frame(Modal {
                     positioning: Positioning::Turn,
@@ -160,9 +161,13 @@ impl Family for Haas {
     }
 
     /// `G269`.
-    fn write_cancel(_: &FormSpec, out: &mut Out) -> bool {
+    /// `G269`; none while the axes turn to the untilted plane (`G268` of zeros, then `G253`).
+    fn write_cancel(_: &FormSpec, how: Motion, _: i32, out: &mut Out) -> Result<bool, Error> {
+        if how.positioning != Positioning::Stay {
+            return Ok(false);
+        }
         out.text(b"G269");
-        true
+        Ok(true)
     }
 
     /// `G268 X Y Z I J K Q`, numbers always with a point.

@@ -802,15 +802,11 @@ impl Family for Heidenhain {
             return Err(c.error(Error::UnknownWord));
         };
         let how = options(&mut c)?;
-        // A reset moves the axes back, or not, but leaves no tilt to move to.
-        let positioning = if frame == RESET {
-            Positioning::Stay
-        } else {
-            how.positioning
-        };
+        // `PLANE RESET TURN`/`MOVE` turns the axes to the untilted plane, as a zero tilt with
+        // `TURN` does: its way of moving is kept.
         Ok(Block::Frame(Modal {
             choice: how.choice,
-            positioning,
+            positioning: how.positioning,
             retract: how.retract,
             retract_mm: how.retract_mm,
             feed: how.feed,
@@ -845,10 +841,17 @@ impl Family for Heidenhain {
         Ok(FormSpec { form, selector: 0 })
     }
 
-    /// `PLANE RESET STAY`.
-    fn write_cancel(_: &FormSpec, out: &mut Out) -> bool {
-        out.text(b"PLANE RESET STAY");
-        true
+    /// `PLANE RESET STAY`, or with `TURN`/`MOVE` the reset that turns the axes to the
+    /// untilted plane.
+    fn write_cancel(
+        _: &FormSpec,
+        how: Motion,
+        decimals: i32,
+        out: &mut Out,
+    ) -> Result<bool, Error> {
+        out.text(b"PLANE RESET");
+        write_positioning(how, decimals, out)?;
+        Ok(true)
     }
 
     /// `PLANE <form> <words> STAY`: the words with their signs (`SPA+30`), then the

@@ -124,11 +124,10 @@ impl Program {
             Block::NotFollowed => return Ok((*self, Remark::NotFollowed)),
         };
         let untilted = next.frame == Frame::IDENTITY;
-        let positioning = if untilted && next.direct.is_none() {
-            Positioning::Stay
-        } else {
-            next.positioning
-        };
+        // A tilt of zero that turns the axes (`PLANE … TURN` of zero angles, `PLANE RESET
+        // TURN`, a `CYCLE800` of zero angles) keeps its way of moving: the machine turns to
+        // the untilted plane.
+        let positioning = next.positioning;
         // Only a tilt has a free table to turn.
         let table_rot = next.table_rot && !untilted && next.direct.is_none();
         let stay = positioning == Positioning::Stay;
@@ -149,8 +148,7 @@ impl Program {
                 axis_angles: next.axis_angles,
                 shift: next.shift,
                 choice: next.choice,
-                // Nothing active: nothing to move to (a `G53.1` without a tilt); staying:
-                // no retraction, no feed.
+                // Staying: no retraction, no feed.
                 positioning,
                 retract: if stay { Retract::None } else { next.retract },
                 retract_mm: if stay { 0.0 } else { next.retract_mm },
@@ -316,7 +314,6 @@ impl Program {
                 Some(d) => d.consistent(&self.modal()),
                 None => self.angles == [0.0; 3],
             }
-            && (self.is_active() || self.positioning == Positioning::Stay)
             // `TABLE ROT` is Heidenhain's word, and only a tilt has a table to turn.
             && (!self.table_rot
                 || (self.dialect == Some(Dialect::Heidenhain)
@@ -542,12 +539,13 @@ fn tilt_block(
     let words = words.get(..n).ok_or(Error::BadArgument)?;
     // Nothing active is written as the cancel, as a program cancels a tilt: `PLANE RESET`
     // becomes `G69`, not a `G68.2` of zeros (which would leave the control in G68.2 mode).
-    if *frame == Frame::IDENTITY && dialect.write_cancel(spec, out) {
+    if *frame == Frame::IDENTITY && dialect.write_cancel(spec, how, decimals, out)? {
         // A cancel has no angles whose decomposition could be singular.
         return Ok(false);
     }
     dialect.write_line(spec, words, how, decimals, out)?;
-    Ok(singular)
+    // The untilted plane's words are all zero, whatever the form's singularity.
+    Ok(singular && *frame != Frame::IDENTITY)
 }
 
 /// The longest text [`write_change`] writes: a cancel, a datum shift of up to four blocks
@@ -725,14 +723,14 @@ pub(crate) fn change_length_with(
 /// as the target's datum shift. What a block restates is found by reading it once more on
 /// a state where the tilt, or the shift, is something else: a block that leaves no tilt
 /// there is a cancel, one that changes the shift there sets it. A block that only names a
-/// cycle (`CYCL DEF 7.0`), a `G53.1` without a tilt, or a tilt repeated unchanged restates
-/// nothing: an empty text. Refused as [`write_change`].
+/// cycle (`CYCL DEF 7.0`) or a tilt repeated unchanged restates nothing: an empty text.
+/// Refused as [`write_change`].
 ///
 /// ```
 /// use cncrot::dialects::program::{write_block, write_change, Dialect, Program};
 /// let p0 = Program::default();
 /// let (p1, _) = p0.line(Dialect::Heidenhain, b"PLANE RESET STAY").unwrap();
-/// assert_eq!(p1, p0); // nothing was active
+/// assert!(!p1.is_active()); // nothing was active, nothing is
 /// let mut buf = [0u8; 2048];
 /// let (n, _) = write_change(Dialect::Fanuc, b"G68.2", &p0, &p1, 4, &mut buf).unwrap();
 /// assert_eq!(n, 0);
@@ -905,6 +903,14 @@ fn change(
             .is_some();
     let rewrite =
         active && (words_changed || (moved && (dialect.positioning_in_block() || unsaid)));
+    // The axes turned to the untilted plane (a zero tilt with `TURN`), or no longer: the
+    // zero tilt that turns them, or the cancel after it.
+    let zero_turn = |p: &Program| {
+        p.frame.rotation == crate::IDENTITY
+            && p.direct.is_none()
+            && p.positioning != Positioning::Stay
+    };
+    let rewrite = rewrite || (moved && (zero_turn(before) || zero_turn(after)));
     let mut tilt_written = false;
     let tilt = |out: &mut Out| match d1 {
         Some(d) => dialect
@@ -965,7 +971,7 @@ fn change(
     }
     // Where a block of its own moves the machine (`G53.1`): after a new tilt, or alone (a
     // direct mode's block moves the axes itself).
-    if active && d1.is_none() && (tilt_written || moved) {
+    if (active || zero_turn(after)) && d1.is_none() && (tilt_written || moved) {
         if let Some(text) = dialect.positioning_block(spec, how) {
             next(out);
             out.text(text);

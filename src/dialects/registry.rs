@@ -69,9 +69,15 @@ macro_rules! families {
                 }
             }
 
-            pub(crate) fn write_cancel(self, spec: &FormSpec, out: &mut Out) -> bool {
+            pub(crate) fn write_cancel(
+                self,
+                spec: &FormSpec,
+                how: Motion,
+                decimals: i32,
+                out: &mut Out,
+            ) -> Result<bool, Error> {
                 match self {
-                    $(Dialect::$name => <$family>::write_cancel(spec, out),)*
+                    $(Dialect::$name => <$family>::write_cancel(spec, how, decimals, out),)*
                 }
             }
 

@@ -272,13 +272,17 @@ impl Family for Syntec {
     }
 
     /// `G158` without words for its own form, `G69` in its G68.2 mode.
-    fn write_cancel(spec: &FormSpec, out: &mut Out) -> bool {
-        out.text(if spec.form == Form::G158 {
-            b"G158"
+    /// `G158` (which says nothing of the axes), `G69`; none while the axes turn to the
+    /// untilted plane in the `G68.2` mode (`G68.2` of zeros, then `G53.1`).
+    fn write_cancel(spec: &FormSpec, how: Motion, _: i32, out: &mut Out) -> Result<bool, Error> {
+        if spec.form == Form::G158 {
+            out.text(b"G158");
+        } else if how.positioning == Positioning::Stay {
+            out.text(b"G69");
         } else {
-            b"G69"
-        });
-        true
+            return Ok(false);
+        }
+        Ok(true)
     }
 
     /// `G158 P X Y Z A B C U V W` or `G68.2 X Y Z I J K`, numbers always with a point.

@@ -204,8 +204,8 @@ impl Family for Twincat {
     }
 
     /// None of its own: `ROT X0 Y0 Z0` is TwinCAT's rotation off.
-    fn write_cancel(_: &FormSpec, _: &mut Out) -> bool {
-        false
+    fn write_cancel(_: &FormSpec, _: Motion, _: i32, _: &mut Out) -> Result<bool, Error> {
+        Ok(false)
     }
 
     /// `ROT X… Y… Z…`.

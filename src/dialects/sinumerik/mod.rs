@@ -1032,13 +1032,17 @@ impl Family for Sinumerik {
     }
 
     /// `CYCLE800()` (deselects the swivel data set), `ROT` (no rotation).
-    fn write_cancel(spec: &FormSpec, out: &mut Out) -> bool {
-        out.text(if spec.form == Form::Cycle800 {
-            b"CYCLE800()"
+    /// `CYCLE800()`, `ROT`; none while the axes turn to the untilted plane (a `CYCLE800`
+    /// of zero angles swivels them; `CYCLE800()` turns nothing).
+    fn write_cancel(spec: &FormSpec, how: Motion, _: i32, out: &mut Out) -> Result<bool, Error> {
+        if spec.form != Form::Cycle800 {
+            out.text(b"ROT");
+        } else if how.positioning == Positioning::Stay {
+            out.text(b"CYCLE800()");
         } else {
-            b"ROT"
-        });
-        true
+            return Ok(false);
+        }
+        Ok(true)
     }
 
     /// `CYCLE800(0,"",0,_MODE,_X0,_Y0,_Z0,_A,_B,_C,_X1,_Y1,_Z1,_DIR,0,0)` (`_DIR` +1 for
