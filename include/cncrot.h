@@ -2160,7 +2160,10 @@ int32_t cncrot_program_write(int32_t dialect,
  *   `cncrot_program_write` writes it, with the choice words the block has: Heidenhain
  *   `SEQ-`/`SEQ+`, CYCLE800 `_DIR` -1/+1 (-1 also for no choice: the cycle always names
  *   one); Fanuc, Syntec, Haas and TwinCAT blocks have none. Nothing active is written as
- *   the form's cancel.
+ *   the form's cancel; nothing active with the axes turning to the untilted plane
+ *   (`positioning` turn or move) as the dialect says that turn (`PLANE RESET TURN FMAX`, a
+ *   `G68.2` of zeros and `G53.1`, a `CYCLE800` of zero angles), or its cancel where it
+ *   cannot.
  * - How the machine moves to the plane (`positioning`) goes where the dialect says it:
  *   Heidenhain `STAY`, `TURN FMAX`, `MOVE FMAX` in the `PLANE`; Fanuc-style `G53.1` /
  *   `G53.6` and Haas `G253` as a block after the tilt, or alone when only the way of moving

@@ -538,7 +538,9 @@ fn tilt_block(
     let singular = form::form_values(spec.form, spec.selector, frame, slots)?;
     let words = words.get(..n).ok_or(Error::BadArgument)?;
     // Nothing active is written as the cancel, as a program cancels a tilt: `PLANE RESET`
-    // becomes `G69`, not a `G68.2` of zeros (which would leave the control in G68.2 mode).
+    // becomes `G69`, not a `G68.2` of zeros (which would leave the control in G68.2 mode) —
+    // unless the axes turn to the untilted plane, which only the zero tilt and its turn say
+    // where the cancel cannot (`write_cancel`).
     if *frame == Frame::IDENTITY && dialect.write_cancel(spec, how, decimals, out)? {
         // A cancel has no angles whose decomposition could be singular.
         return Ok(false);
@@ -550,13 +552,13 @@ fn tilt_block(
 
 /// The longest text [`write_change`] writes: a cancel, a datum shift of up to four blocks
 /// and a tilt, each no longer than the dialect reads, with their line ends (a dialect with
-/// one frame writes one block).
+/// one frame writes two: the shift's reset or the tilt's cancel, and its block).
 pub const MAX_CHANGE: usize = 2048;
 const _: () = {
     let mut k = 0;
     while k < Dialect::ALL.len() {
         let d = Dialect::ALL[k];
-        let blocks = if d.keeps_shift() { 6 } else { 1 };
+        let blocks = if d.keeps_shift() { 6 } else { 2 };
         assert!(blocks * d.max_line() + blocks - 1 <= MAX_CHANGE);
         k += 1;
     }
@@ -605,7 +607,10 @@ fn split(dialect: Dialect, spec: &FormSpec, p: &Program) -> (Vector, Frame) {
 ///   writes it, with the choice words the block has: Heidenhain `SEQ-`/`SEQ+`, CYCLE800
 ///   `_DIR` −1/+1 (−1 also for no choice: the cycle always names one \[choice\]); the
 ///   others have none on the block. A choice of an axis other than the master axis cannot be
-///   written ([`Error::NotAvailable`]). Nothing active is written as the cancel.
+///   written ([`Error::NotAvailable`]). Nothing active is written as the cancel; nothing
+///   active with the axes turning to the untilted plane as the dialect says that turn
+///   (`PLANE RESET TURN FMAX`, a `G68.2` of zeros and `G53.1`, a `CYCLE800` of zero
+///   angles), or its cancel where it cannot.
 /// - How the machine moves to the plane ([`Program::positioning`]) goes where the dialect
 ///   says it: Heidenhain's `STAY`, `TURN FMAX`, `MOVE FMAX` in the `PLANE` (a new way of
 ///   moving to the same plane is the `PLANE` again); Fanuc-style `G53.1`/`G53.6` and Haas

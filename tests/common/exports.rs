@@ -1152,40 +1152,25 @@ fn programs() -> Vec<Call> {
                 let head: &[u8; 96] = out.first_chunk().unwrap_or(&[0; 96]);
                 t.bytes(head);
             }
+            // A length beyond the dialect's line, a NULL line, no room.
             let l = b"PLANE RESET STAY";
-            t.status(cncrot_program_write_block(
-                &p,
-                &p,
-                l.as_ptr().cast(),
-                300,
-                CNCROT_DIALECT_FANUC,
-                c"G68.2".as_ptr(),
-                -1,
-                out.as_mut_ptr().cast(),
-                out.len(),
-            ));
-            t.status(cncrot_program_write_block(
-                &p,
-                &p,
-                null(),
-                0,
-                CNCROT_DIALECT_FANUC,
-                c"G68.2".as_ptr(),
-                -1,
-                out.as_mut_ptr().cast(),
-                out.len(),
-            ));
-            t.status(cncrot_program_write_block(
-                &p,
-                &p,
-                l.as_ptr().cast(),
-                l.len(),
-                CNCROT_DIALECT_FANUC,
-                c"G68.2".as_ptr(),
-                -1,
-                out.as_mut_ptr().cast(),
-                2,
-            ));
+            for (line, len, cap) in [
+                (l.as_ptr(), 300, out.len()),
+                (null(), 0, out.len()),
+                (l.as_ptr(), l.len(), 2),
+            ] {
+                t.status(cncrot_program_write_block(
+                    &p,
+                    &p,
+                    line.cast(),
+                    len,
+                    CNCROT_DIALECT_FANUC,
+                    c"G68.2".as_ptr(),
+                    -1,
+                    out.as_mut_ptr().cast(),
+                    cap,
+                ));
+            }
             t.bytes(&out);
         }),
     ]
