@@ -673,7 +673,6 @@ impl Family for Fanuc {
         })
     }
 
-    /// `G69`.
     /// `G69`; none while the axes turn to the untilted plane (`G68.2` of zeros, then
     /// `G53.1`: `G69` turns nothing).
     fn write_cancel(_: &FormSpec, how: Motion, _: i32, out: &mut Out) -> Result<bool, Error> {

@@ -160,7 +160,6 @@ impl Family for Haas {
         })
     }
 
-    /// `G269`.
     /// `G269`; none while the axes turn to the untilted plane (`G268` of zeros, then `G253`).
     fn write_cancel(_: &FormSpec, how: Motion, _: i32, out: &mut Out) -> Result<bool, Error> {
         if how.positioning != Positioning::Stay {

@@ -271,9 +271,9 @@ impl Family for Syntec {
         Ok(spec)
     }
 
-    /// `G158` without words for its own form, `G69` in its G68.2 mode.
-    /// `G158` (which says nothing of the axes), `G69`; none while the axes turn to the
-    /// untilted plane in the `G68.2` mode (`G68.2` of zeros, then `G53.1`).
+    /// `G158` without words for its own form (it says nothing of the axes), `G69` in its
+    /// G68.2 mode; none while the axes turn to the untilted plane there (`G68.2` of zeros,
+    /// then `G53.1`).
     fn write_cancel(spec: &FormSpec, how: Motion, _: i32, out: &mut Out) -> Result<bool, Error> {
         if spec.form == Form::G158 {
             out.text(b"G158");

@@ -1031,9 +1031,9 @@ impl Family for Sinumerik {
         Ok(spec)
     }
 
-    /// `CYCLE800()` (deselects the swivel data set), `ROT` (no rotation).
-    /// `CYCLE800()`, `ROT`; none while the axes turn to the untilted plane (a `CYCLE800`
-    /// of zero angles swivels them; `CYCLE800()` turns nothing).
+    /// `CYCLE800()` (deselects the swivel data set), `ROT` (no rotation); none while the
+    /// axes turn to the untilted plane (a `CYCLE800` of zero angles swivels them;
+    /// `CYCLE800()` turns nothing).
     fn write_cancel(spec: &FormSpec, how: Motion, _: i32, out: &mut Out) -> Result<bool, Error> {
         if spec.form != Form::Cycle800 {
             out.text(b"ROT");
