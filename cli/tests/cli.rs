@@ -1567,6 +1567,14 @@ fn program_to_writes_datum_shifts() {
     );
 }
 
+/// A program in `from` translated by `cncrot program - --to TO`, which must succeed: its
+/// output lines.
+fn program_to(prog: &str, from: &str, to: &str) -> Vec<String> {
+    let r = cncrot(&["program", "-", "--dialect", from, "--to", to], prog);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    r.stdout.lines().map(String::from).collect()
+}
+
 /// A program's opening cancel and zero datum shift, which change nothing in a state where
 /// nothing is active, are still written into another dialect (the control may have a tilt or
 /// a shift left active); in the program's own dialect they stay as they stand.
@@ -1574,14 +1582,7 @@ fn program_to_writes_datum_shifts() {
 fn program_to_keeps_safety_cancels() {
     let prog = "0 BEGIN PGM T MM\n1 PLANE RESET STAY\n2 CYCL DEF 7.0 DATUM SHIFT\n\
                 3 CYCL DEF 7.1 X+0\n4 END PGM T MM\n";
-    let to = |d: &str| {
-        let r = cncrot(
-            &["program", "-", "--dialect", "heidenhain", "--to", d],
-            prog,
-        );
-        assert_eq!(r.code, 0, "{}", r.stderr);
-        r.stdout.lines().map(String::from).collect::<Vec<_>>()
-    };
+    let to = |d: &str| program_to(prog, "heidenhain", d);
     assert_eq!(
         to("fanuc"),
         [
@@ -1628,22 +1629,13 @@ fn program_to_keeps_bytes_and_line_ends() {
 /// block 81).
 #[test]
 fn program_to_keeps_skip_marks() {
-    let r = cncrot(
-        &["program", "-", "--dialect", "heidenhain", "--to", "fanuc"],
-        "/7 PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY\n/81 M30\n",
-    );
-    assert_eq!(r.code, 0, "{}", r.stderr);
+    let prog = "/7 PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY\n/81 M30\n";
     assert_eq!(
-        r.stdout.lines().collect::<Vec<_>>(),
+        program_to(prog, "heidenhain", "fanuc"),
         ["/G68.2 X0. Y0. Z0. I90. J30. K-90.", "/81 M30"]
     );
-    let r = cncrot(
-        &["program", "-", "--dialect", "fanuc", "--to", "sinumerik"],
-        "/2 G68.2 X10. I0. J30. K0.\n/2G69\n",
-    );
-    assert_eq!(r.code, 0, "{}", r.stderr);
     assert_eq!(
-        r.stdout.lines().collect::<Vec<_>>(),
+        program_to("/2 G68.2 X10. I0. J30. K0.\n/2G69\n", "fanuc", "sinumerik"),
         [
             "/2 CYCLE800(0,\"\",0,57,10,0,0,30,0,0,0,0,0,-1,0,0)",
             "/2 CYCLE800()"
@@ -1663,14 +1655,7 @@ fn program_reads_cycle_19() {
     let prog = "0 BEGIN PGM C19 MM\n1 CYCL DEF 19.0 WORKING PLANE\n2 CYCL DEF 19.1 B+30 C+90\n\
                 3 L X+0 Y+0 R0 FMAX\n4 CYCL DEF 19.0 WORKING PLANE\n5 CYCL DEF 19.1 A+0 B+0 C+0\n\
                 6 CYCL DEF 19.0 WORKING PLANE\n7 CYCL DEF 19.1\n8 END PGM C19 MM\n";
-    let translated = |to: &str| {
-        let r = cncrot(
-            &["program", "-", "--dialect", "heidenhain", "--to", to],
-            prog,
-        );
-        assert_eq!(r.code, 0, "{}", r.stderr);
-        r.stdout.lines().map(str::to_string).collect::<Vec<_>>()
-    };
+    let translated = |to: &str| program_to(prog, "heidenhain", to);
     let want = [
         "0 BEGIN PGM C19 MM",
         "G68.2 X0. Y0. Z0. I180. J30. K-90.",

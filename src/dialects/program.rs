@@ -785,13 +785,19 @@ pub(crate) fn restate(from: &mut Program, after: &Program, text: &[u8]) {
         from.frame.translation = other_shift(from.frame.translation);
     }
     if cancel || shift {
-        *from = Program {
-            dialect: None,
-            angles: [0.0; 3],
-            direct: None,
-            table_rot: false,
-            ..*from
-        };
+        *from = of_no_dialect(from);
+    }
+}
+
+/// `p` as a state of no dialect: no programmed angles, no direct mode, no `TABLE ROT`, so
+/// that it passes [`Program::check`] with any frame (the probes of [`restate`]).
+fn of_no_dialect(p: &Program) -> Program {
+    Program {
+        dialect: None,
+        angles: [0.0; 3],
+        direct: None,
+        table_rot: false,
+        ..*p
     }
 }
 
@@ -820,10 +826,7 @@ fn leaves_untilted(before: &Program, dialect: Dialect, text: &[u8]) -> bool {
             rotation: PROBE_TILT,
             translation: before.shift,
         },
-        dialect: None,
-        angles: [0.0; 3],
-        table_rot: false,
-        ..*before
+        ..of_no_dialect(before)
     };
     matches!(tilted.line(dialect, text), Ok((p, Remark::Applied)) if untilted(&p))
 }
@@ -837,10 +840,7 @@ fn sets_shift(before: &Program, dialect: Dialect, text: &[u8]) -> bool {
             translation: other_shift(before.frame.translation),
         },
         shift: other_shift(before.shift),
-        dialect: None,
-        angles: [0.0; 3],
-        table_rot: false,
-        ..*before
+        ..of_no_dialect(before)
     };
     matches!(shifted.line(dialect, text), Ok((p, Remark::Applied)) if p.shift != shifted.shift)
 }
