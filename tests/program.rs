@@ -2751,6 +2751,40 @@ fn heidenhain_cycle_19() {
     assert!(!q.is_active() && q.direct.is_none());
 }
 
+/// Posts written for a decimal comma (a Swedish post's cycles 7 and 19: `7.1 X+25,`,
+/// `19.1 A-8,182 B+0, C-90,`): read as the same blocks written with points, bit for bit.
+#[test]
+fn heidenhain_reads_a_decimal_comma() {
+    let comma = [
+        "1 CYCL DEF 7.0 DATUM SHIFT",
+        "2 CYCL DEF 7.1 X+25,",
+        "3 CYCL DEF 7.2 Y-12,5",
+        "4 CYCL DEF 7.3 Z+0,",
+        "5 CYCL DEF 19.0 WORKING PLANE",
+        "6 CYCL DEF 19.1 A-8,182 B+0, C-90,",
+        "7 PLANE RELATIV SPB+2,25 TURN MB50, F2500, SEQ-",
+    ];
+    let point: Vec<String> = comma.iter().map(|l| l.replace(',', ".")).collect();
+    let point: Vec<&str> = point.iter().map(String::as_str).collect();
+    let (a, b) = (
+        read(Dialect::Heidenhain, &comma),
+        read(Dialect::Heidenhain, &point),
+    );
+    assert_eq!(a, b);
+    assert_eq!(a.shift, [25.0, -12.5, 0.0]);
+    assert_eq!((a.retract_mm, a.feed_mm_min), (50.0, 2500.0));
+    // One mark per number: the second one is where the number goes wrong.
+    let e = Program::default()
+        .line(Dialect::Heidenhain, b"CYCL DEF 19.1 A-8,1,82")
+        .unwrap_err();
+    assert_eq!((e.error, e.column), (Error::Parse, 20));
+    // The other dialects keep the comma for what separates: a cycle's arguments.
+    let e = Program::default()
+        .line(Dialect::Fanuc, b"G68.2 X0 Y0 Z0 I0 J8,5 K0")
+        .unwrap_err();
+    assert_eq!(e.error, Error::Parse);
+}
+
 /// The direct modes (`PLANE AXIAL`, `G158` mode 2, a `CYCLE800` with `_MODE` 192) keep the
 /// rotary-axis positions; the machine gives the frame. Hand derivation: on a table whose B
 /// (about Y) carries C (about Z), the workpiece turns by `W = Ry(B)·Rz(C)`, so the tilted

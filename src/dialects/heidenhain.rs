@@ -142,9 +142,12 @@ use super::family::{
 use crate::text::number::{write_word, Out, Style};
 use crate::text::scan::{Comments, Cursor, Exponent, LineError, Syntax, Token, Tokens};
 
+// A comma for the decimal point, as posts written for one put it (`CYCL DEF 19.1 A-8,182 B+0,
+// C-90,`): no word of the blocks read here has a comma of another meaning [choice].
 const SYNTAX: Syntax = Syntax {
     exponent: Exponent::None,
     ends: b";",
+    comma: true,
 };
 
 /// The words of one `PLANE` form, each required, in any order.

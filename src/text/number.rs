@@ -131,7 +131,8 @@ fn to_f64(x: u128) -> f64 {
     high as f64 * f64::from_bits(u64::from(1023 + 64 - lz) << 52)
 }
 
-/// The value of `digits` (ASCII digits with at most one `.`, at least one digit) times
+/// The value of `digits` (ASCII digits with at most one `.` or `,`, the decimal comma that
+/// [`scan_digits`] admits where a dialect has it; at least one digit) times
 /// `10^exp10`, correctly rounded; `negative` gives the sign (never -0).
 ///
 /// Refused: other characters ([`Error::Parse`]), more than [`MAX_DIGITS`] significant
@@ -148,7 +149,7 @@ pub fn parse(negative: bool, digits: &[u8], exp10: i32) -> Result<f64, Error> {
     let (mut w, mut used) = (0u64, 0usize);
     for &b in digits {
         match b {
-            b'.' if !point => point = true,
+            b'.' | b',' if !point => point = true,
             b'0'..=b'9' => {
                 any = true;
                 frac = frac.saturating_add(i32::from(point));
@@ -196,8 +197,9 @@ pub fn parse(negative: bool, digits: &[u8], exp10: i32) -> Result<f64, Error> {
     parse_exact(digits, sig, e, w, used).map(sign)
 }
 
-/// The digits at the start of a number (digits with at most one point; a second point ends
-/// them), gathered in the same pass that finds where they end.
+/// The digits at the start of a number (digits with at most one point, or decimal comma
+/// where the dialect has one; a second ends them), gathered in the same pass that finds
+/// where they end.
 #[derive(Clone, Copy, Debug)]
 pub struct Scanned {
     /// How many bytes the digits and the point take.
@@ -210,9 +212,10 @@ pub struct Scanned {
     frac: i32,
 }
 
-/// Finds the digits at the start of `text` (see [`Scanned`]).
+/// Finds the digits at the start of `text` (see [`Scanned`]); `comma`: a `,` may stand for
+/// the point.
 #[inline(always)]
-pub fn scan_digits(text: &[u8]) -> Scanned {
+pub fn scan_digits(text: &[u8], comma: bool) -> Scanned {
     let (mut w, mut n, mut frac, mut point, mut len) = (0u64, 0usize, 0i32, false, 0usize);
     for &b in text {
         let d = b.wrapping_sub(b'0');
@@ -220,7 +223,7 @@ pub fn scan_digits(text: &[u8]) -> Scanned {
             w = w.wrapping_mul(10).wrapping_add(u64::from(d));
             n += 1;
             frac = frac.saturating_add(i32::from(point));
-        } else if b == b'.' && !point {
+        } else if (b == b'.' || (comma && b == b',')) && !point {
             point = true;
         } else {
             break;
@@ -260,7 +263,8 @@ fn short(s: &Scanned, exp10: i32) -> Option<f64> {
 /// [`parse`] of at most 19 digits scaled by at most 10^±80, in one pass.
 #[inline(always)]
 fn parse_short(digits: &[u8], exp10: i32) -> Option<f64> {
-    let s = scan_digits(digits);
+    // `parse` takes either mark: the caller's scan said which one the text may have.
+    let s = scan_digits(digits, true);
     if s.len != digits.len() {
         return None;
     }

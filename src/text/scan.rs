@@ -60,6 +60,9 @@ pub struct Syntax {
     pub exponent: Exponent,
     /// Characters that end a number besides spaces and the end (`,` `)` in calls, `;` `(`).
     pub ends: &'static [u8],
+    /// A `,` may stand for the decimal point (`A-8,182`, `X+25,`): Heidenhain programs
+    /// written by posts for a decimal comma.
+    pub comma: bool,
 }
 
 /// Numbers of the address-word dialects (Fanuc, Syntec, Haas, TwinCAT): no exponent, ended
@@ -67,6 +70,7 @@ pub struct Syntax {
 pub const G_WORDS: Syntax = Syntax {
     exponent: Exponent::None,
     ends: b"(;",
+    comma: false,
 };
 
 /// Numbers of the ISO dialects whose words may stand without spaces (Fanuc, Syntec, Haas:
@@ -74,6 +78,7 @@ pub const G_WORDS: Syntax = Syntax {
 pub const ISO_WORDS: Syntax = Syntax {
     exponent: Exponent::None,
     ends: b"(;ABCDEFGHIJKLMNOPQRSTUVWXYZ",
+    comma: false,
 };
 
 /// A position in a line, with the scanning the dialects share. Columns are 1-based bytes.
@@ -280,7 +285,7 @@ impl<'a> Cursor<'a> {
         };
         // A second point ends the digits, so that it is reported where it stands.
         let rest = self.rest();
-        let scanned = number::scan_digits(rest);
+        let scanned = number::scan_digits(rest, syntax.comma);
         let digits = rest.get(..scanned.len).unwrap_or(&[]);
         self.pos += scanned.len;
         if digits.is_empty() {
@@ -658,6 +663,7 @@ mod tests {
         let s = Syntax {
             exponent: Exponent::Ex,
             ends: b",);",
+            comma: false,
         };
         let read = |t: &[u8]| Cursor::new(t).number(s);
         assert_eq!(read(b"30"), Ok(30.0));
@@ -684,6 +690,7 @@ mod tests {
         let c = Syntax {
             exponent: Exponent::E,
             ends: b"",
+            comma: false,
         };
         let read_c = |t: &[u8]| Cursor::new(t).number(c);
         assert_eq!(read_c(b"1.5e3"), Ok(1500.0));
@@ -692,5 +699,25 @@ mod tests {
         let none = |t: &[u8]| Cursor::new(t).number(G_WORDS);
         assert_eq!(none(b"1.5E3").unwrap_err().error, Error::Parse);
         assert_eq!(none(b"1.5(c)"), Ok(1.5));
+        // A decimal comma where the dialect has one; a second mark ends the digits.
+        let comma = Syntax {
+            exponent: Exponent::None,
+            ends: b";",
+            comma: true,
+        };
+        let read_comma = |t: &[u8]| Cursor::new(t).number(comma);
+        assert_eq!(read_comma(b"-8,182"), Ok(-8.182));
+        assert_eq!(read_comma(b"+25, "), Ok(25.0));
+        assert_eq!(read_comma(b"0,"), Ok(0.0));
+        assert_eq!(read_comma(b",5"), Ok(0.5));
+        assert_eq!(read_comma(b"1,5.2").unwrap_err().error, Error::Parse);
+        assert_eq!(read_comma(b"1.5,2").unwrap_err().error, Error::Parse);
+        // 25 significant digits: the general reader, which takes the comma alike.
+        assert_eq!(
+            read_comma(b"0,1000000000000000000000001"),
+            read(b"0.1000000000000000000000001")
+        );
+        // Without it, a comma ends the number where the call syntax lists its arguments.
+        assert_eq!(read(b"-20,5"), Ok(-20.0));
     }
 }

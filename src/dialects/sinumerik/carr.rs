@@ -36,6 +36,7 @@ use crate::{Error, Vector};
 const NUMBER: Syntax = Syntax {
     exponent: Exponent::Ex,
     ends: b";",
+    comma: false,
 };
 
 /// Why and where swivel data could not be read.

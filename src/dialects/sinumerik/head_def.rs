@@ -310,6 +310,7 @@ fn is_label(token: &[u8]) -> bool {
 const NUMBER: Syntax = Syntax {
     exponent: Exponent::E,
     ends: b"",
+    comma: false,
 };
 
 /// A token that is one number, correctly rounded (the reader every program text goes

@@ -382,10 +382,12 @@ use crate::text::scan::{
 const WORDS: Syntax = Syntax {
     exponent: Exponent::Ex,
     ends: b";",
+    comma: false,
 };
 const ARGS: Syntax = Syntax {
     exponent: Exponent::Ex,
     ends: b",);",
+    comma: false,
 };
 
 /// The arguments of a cycle call, compact (a line is parsed on a small stack): each a
