@@ -1122,6 +1122,30 @@ fn every_block_of_a_program() {
         ],
     );
     assert_eq!(packed, spaced);
+    // Blanks inside a word and a constant in brackets (macro B's expression of one number,
+    // `G52 X [ 0. ]` as a post wrote it) are the number: the same frame again.
+    let bracketed = read(
+        Dialect::Fanuc,
+        &[
+            "N10 G90 G17",
+            "N20 G52 X [ 5. ] Y[0]",
+            "N30 G68.2 X 1. Y[+2.]Z [3.] I0. J 30. K[ -0 ]",
+            "N40 G53.1",
+        ],
+    );
+    assert_eq!(bracketed, spaced);
+    // What is not one number stays refused, at the bracket; a word without its value is
+    // missing it where its blanks start.
+    for (line, error, column) in [
+        ("G52 X[#1]", Error::NotANumber, 6),
+        ("G52 X[1+2]", Error::NotANumber, 6),
+        ("G52 X[1]+2", Error::NotANumber, 9),
+        ("G52 X[1", Error::NotANumber, 6),
+        ("G52 X Y0", Error::MissingWord, 6),
+    ] {
+        let e = p.line(Dialect::Fanuc, line.as_bytes()).unwrap_err();
+        assert_eq!((e.error, e.column), (error, column), "{line}");
+    }
     assert_eq!(packed.frame.translation, [6.0, 2.0, 3.0]);
     assert!(dist(&packed.frame.rotation, &r(Axis::X, 30.0)) < 1e-15);
     assert_eq!(packed.positioning, Positioning::Turn);

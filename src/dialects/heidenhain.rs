@@ -148,6 +148,7 @@ const SYNTAX: Syntax = Syntax {
     exponent: Exponent::None,
     ends: b";",
     comma: true,
+    iso: false,
 };
 
 /// The words of one `PLANE` form, each required, in any order.

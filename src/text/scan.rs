@@ -63,6 +63,10 @@ pub struct Syntax {
     /// A `,` may stand for the decimal point (`A-8,182`, `X+25,`): Heidenhain programs
     /// written by posts for a decimal comma.
     pub comma: bool,
+    /// ISO words (Fanuc and its kin): blanks between an address and its value (`X 10.`)
+    /// and a constant in brackets (`X[0.]`, `X [ -5. ]`: macro B's expression of one
+    /// number) are its number.
+    pub iso: bool,
 }
 
 /// Numbers of the address-word dialects (Fanuc, Syntec, Haas, TwinCAT): no exponent, ended
@@ -71,6 +75,7 @@ pub const G_WORDS: Syntax = Syntax {
     exponent: Exponent::None,
     ends: b"(;",
     comma: false,
+    iso: false,
 };
 
 /// Numbers of the ISO dialects whose words may stand without spaces (Fanuc, Syntec, Haas:
@@ -79,6 +84,7 @@ pub const ISO_WORDS: Syntax = Syntax {
     exponent: Exponent::None,
     ends: b"(;ABCDEFGHIJKLMNOPQRSTUVWXYZ",
     comma: false,
+    iso: true,
 };
 
 /// A position in a line, with the scanning the dialects share. Columns are 1-based bytes.
@@ -271,6 +277,42 @@ impl<'a> Cursor<'a> {
     /// `1.5EX3`, C's `1.5e3`). A variable or expression here is [`Error::NotANumber`] at its column, a
     /// malformed number [`Error::Parse`].
     pub fn number(&mut self, syntax: Syntax) -> Result<f64, LineError> {
+        if !(syntax.iso && self.peek() == Some(b'[')) {
+            return self.plain_number(syntax);
+        }
+        // `[ 0. ]`: the number inside, or the expression it is.
+        let start = self.pos;
+        self.bump();
+        self.spaces();
+        let inner = Syntax {
+            ends: b"]",
+            ..syntax
+        };
+        let v = self.plain_number(inner);
+        self.spaces();
+        let (Ok(v), Some(b']')) = (v, self.peek()) else {
+            self.pos = start;
+            return Err(self.error(Error::NotANumber));
+        };
+        self.bump();
+        self.number_ends(syntax)?;
+        Ok(v)
+    }
+
+    /// What follows a number must end it: an operator or a letter makes an expression.
+    fn number_ends(&self, syntax: Syntax) -> Result<(), LineError> {
+        match self.peek() {
+            None | Some(b' ' | b'\t') => Ok(()),
+            Some(b) if syntax.ends.contains(&b) => Ok(()),
+            Some(b'+' | b'-' | b'*' | b'/' | b'^' | b'[' | b'(' | b'#' | b'$') => {
+                Err(self.error(Error::NotANumber))
+            }
+            Some(_) => Err(self.error(Error::Parse)),
+        }
+    }
+
+    /// [`Cursor::number`] without brackets.
+    fn plain_number(&mut self, syntax: Syntax) -> Result<f64, LineError> {
         let start = self.pos;
         let negative = match self.peek() {
             Some(b'-') => {
@@ -335,15 +377,7 @@ impl<'a> Cursor<'a> {
             }
             exp = exp.saturating_mul(sign);
         }
-        // What follows must end the number: an operator or a letter makes an expression.
-        match self.peek() {
-            None | Some(b' ' | b'\t') => {}
-            Some(b) if syntax.ends.contains(&b) => {}
-            Some(b'+' | b'-' | b'*' | b'/' | b'^' | b'[' | b'(' | b'#' | b'$') => {
-                return Err(self.error(Error::NotANumber))
-            }
-            Some(_) => return Err(self.error(Error::Parse)),
-        }
+        self.number_ends(syntax)?;
         number::parse_scanned(negative, digits, &scanned, exp).map_err(|error| LineError {
             error,
             column: start + 1,
@@ -448,6 +482,15 @@ pub fn address_words<const N: usize>(
         }
         if equals && c.peek() == Some(b'=') {
             c.bump();
+        }
+        if syntax.iso {
+            // Blanks inside a word, where a value follows them (`X 10.`); before another
+            // word the value is missing where the blanks start.
+            let here = c.pos;
+            c.spaces();
+            if !matches!(c.peek(), Some(b'0'..=b'9' | b'+' | b'-' | b'.' | b'[')) {
+                c.pos = here;
+            }
         }
         let at = c.column();
         let v = c.number(syntax)?;
@@ -664,6 +707,7 @@ mod tests {
             exponent: Exponent::Ex,
             ends: b",);",
             comma: false,
+            iso: false,
         };
         let read = |t: &[u8]| Cursor::new(t).number(s);
         assert_eq!(read(b"30"), Ok(30.0));
@@ -691,6 +735,7 @@ mod tests {
             exponent: Exponent::E,
             ends: b"",
             comma: false,
+            iso: false,
         };
         let read_c = |t: &[u8]| Cursor::new(t).number(c);
         assert_eq!(read_c(b"1.5e3"), Ok(1500.0));
@@ -704,6 +749,7 @@ mod tests {
             exponent: Exponent::None,
             ends: b";",
             comma: true,
+            iso: false,
         };
         let read_comma = |t: &[u8]| Cursor::new(t).number(comma);
         assert_eq!(read_comma(b"-8,182"), Ok(-8.182));

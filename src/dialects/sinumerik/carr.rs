@@ -37,6 +37,7 @@ const NUMBER: Syntax = Syntax {
     exponent: Exponent::Ex,
     ends: b";",
     comma: false,
+    iso: false,
 };
 
 /// Why and where swivel data could not be read.

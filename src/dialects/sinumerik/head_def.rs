@@ -311,6 +311,7 @@ const NUMBER: Syntax = Syntax {
     exponent: Exponent::E,
     ends: b"",
     comma: false,
+    iso: false,
 };
 
 /// A token that is one number, correctly rounded (the reader every program text goes

@@ -383,11 +383,13 @@ const WORDS: Syntax = Syntax {
     exponent: Exponent::Ex,
     ends: b";",
     comma: false,
+    iso: false,
 };
 const ARGS: Syntax = Syntax {
     exponent: Exponent::Ex,
     ends: b",);",
     comma: false,
+    iso: false,
 };
 
 /// The arguments of a cycle call, compact (a line is parsed on a small stack): each a
