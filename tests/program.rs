@@ -2559,11 +2559,32 @@ fn heidenhain_turns_to_the_plane_through_q120_to_q122() {
         .line(Dialect::Heidenhain, b"L B+Q121 R0 FMAX")
         .unwrap();
     assert_eq!((q, remark), (turned, A));
-    // Nothing active: nothing to turn to.
-    let (_, remark) = Program::default()
-        .line(Dialect::Heidenhain, b"L A+Q120 C+Q122 R0 FMAX")
+    // Nothing active (the pair a post writes for a plane of zeros, as a hyperMILL post
+    // for a DMU writes it): the turn to the untilted plane, which a translation says so.
+    let zero = read(
+        Dialect::Heidenhain,
+        &["PLANE SPATIAL SPA0 SPB0 SPC0 STAY SEQ+ TABLE ROT"],
+    );
+    assert!(!zero.is_active());
+    let (q, remark) = zero
+        .line(Dialect::Heidenhain, b"57 L A+Q120 C+Q122 R0 FMAX M126")
         .unwrap();
-    assert_eq!(remark, P);
+    assert_eq!(
+        (q.frame, q.positioning, remark),
+        (Frame::IDENTITY, Positioning::Turn, A)
+    );
+    let mut buf = [0u8; 512];
+    let (n, _) = write_block(
+        Dialect::Fanuc,
+        b"G68.2",
+        &zero,
+        &q,
+        b"57 L A+Q120 C+Q122 R0 FMAX M126",
+        4,
+        &mut buf,
+    )
+    .unwrap();
+    assert_eq!(&buf[..n], b"G68.2 X0. Y0. Z0. I0. J0. K0.\nG53.1");
 }
 
 /// The iTNC 530 manual's table of `SEQ` on an A/C table machine (A about X carrying C about

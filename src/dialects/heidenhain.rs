@@ -751,15 +751,16 @@ impl Family for Heidenhain {
             if m.positioning != Positioning::Stay {
                 return Ok(Block::Frame(*m));
             }
-            if m.frame != Frame::IDENTITY || m.direct.is_some() {
-                let (feed, feed_mm_min) = feed;
-                return Ok(Block::Frame(Modal {
-                    positioning: Positioning::Turn,
-                    feed,
-                    feed_mm_min,
-                    ..*m
-                }));
-            }
+            // With no tilt active too: the parameters hold the positions of the last
+            // `PLANE … STAY`, which may have been a plane of zeros (CAM posts write the pair
+            // for every plane): the turn to the untilted plane [choice].
+            let (feed, feed_mm_min) = feed;
+            return Ok(Block::Frame(Modal {
+                positioning: Positioning::Turn,
+                feed,
+                feed_mm_min,
+                ..*m
+            }));
         }
         if !c.keyword(b"PLANE") {
             return Ok(other_block(text.get(column - 1..).unwrap_or(&[])));
