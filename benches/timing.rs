@@ -557,6 +557,17 @@ fn programs(b: &mut Bench, i: &Inputs) {
         let (zero, mut cancelled) = (cncrot_program::default(), cncrot_program::default());
         // SAFETY: valid pointers and lengths.
         unsafe { cncrot_program_line(&mut cancelled, CNCROT_DIALECT_FANUC, c"G69".as_ptr(), 3) };
+        // Whether two blocks join: a shift and a tilt (no), a tilt and its turn (yes).
+        let mut turned = tilted;
+        // SAFETY: valid pointers and lengths.
+        unsafe { cncrot_program_line(&mut turned, CNCROT_DIALECT_FANUC, c"G53.1".as_ptr(), 5) };
+        let mut join = 0i32;
+        b.time(
+            "cncrot_program_joins",
+            "random",
+            &[(zero, shifted, tilted), (shifted, tilted, turned)],
+            &mut |(a, z, n)| unsafe { cncrot_program_joins(a, z, n, &mut join) },
+        );
         let mut change = [0u8; CNCROT_PROGRAM_CHANGE_MAX + 1];
         for (class, dialect, form) in [
             (

@@ -130,7 +130,9 @@ int main(void) {
       hexes(g, 16);
       printf("\n");
     }
-  /* Whole programs translated block by block (cncrot_program_write_change): a datum shift, a
+  /* Whole programs translated block by block as cncrot_program_translate does it
+   * (cncrot_program_write_block into another dialect, blocks that join written at the last
+   * of them: cncrot_program_joins; cncrot_program_write_change within one): a datum shift, a
    * tilt with its origin, a way of moving to it, its cancel; the program's lines and each
    * line's text in the target ("-" for none) in hex. */
   static const struct {
@@ -147,26 +149,41 @@ int main(void) {
              rnd(-170, 170), rnd(1, 89), rnd(-170, 170));
     snprintf(l[2], sizeof l[2], "%s", v % 2 ? "G53.6" : "G53.1");
     snprintf(l[3], sizeof l[3], "G69");
+    cncrot_program s[5];
+    memset(&s[0], 0, sizeof s[0]);
+    for (int j = 0; j < 4; j++) {
+      s[j + 1] = s[j];
+      if (cncrot_program_line(&s[j + 1], CNCROT_DIALECT_FANUC, l[j], strlen(l[j])) < 0) return 1;
+    }
     for (int k = 0; k < (int)(sizeof TARGETS / sizeof TARGETS[0]); k++) {
       int decimals = v == 3 ? 4 : -1;
-      printf("T %d %d %d", CNCROT_DIALECT_FANUC, TARGETS[k].dialect, decimals);
+      int32_t to = TARGETS[k].dialect;
+      printf("T %d %d %d", CNCROT_DIALECT_FANUC, to, decimals);
       text_hex(TARGETS[k].form);
       printf(" 4");
       for (int j = 0; j < 4; j++) text_hex(l[j]);
-      cncrot_program before, after;
-      memset(&before, 0, sizeof before);
+      int run = -1;
       for (int j = 0; j < 4; j++) {
         static char text[CNCROT_PROGRAM_CHANGE_MAX + 1];
-        after = before;
-        if (cncrot_program_line(&after, CNCROT_DIALECT_FANUC, l[j], strlen(l[j])) < 0 ||
-            cncrot_program_write_change(&before, &after, TARGETS[k].dialect, TARGETS[k].form, decimals, text,
-                                        sizeof text) < 0)
+        int32_t join = 0;
+        if (to != CNCROT_DIALECT_FANUC && j + 1 < 4 && cncrot_program_joins(&s[j], &s[j + 1], &s[j + 2], &join) < 0)
           return 1;
+        if (join) {
+          if (run < 0) run = j;
+          printf(" -");
+          continue;
+        }
+        const cncrot_program *from = &s[run < 0 ? j : run];
+        run = -1;
+        int32_t w = to == CNCROT_DIALECT_FANUC
+                        ? cncrot_program_write_change(&s[j], &s[j + 1], to, TARGETS[k].form, decimals, text, sizeof text)
+                        : cncrot_program_write_block(from, &s[j + 1], l[j], strlen(l[j]), to, TARGETS[k].form,
+                                                     decimals, text, sizeof text);
+        if (w < 0) return 1;
         if (text[0])
           text_hex(text);
         else
           printf(" -");
-        before = after;
       }
       printf("\n");
     }

@@ -226,6 +226,10 @@ static void program_write_block(void) {
           cncrot_program_write_block(&cancelled, &cancelled, cancel, sizeof cancel - 1, CNCROT_DIALECT_SINUMERIK,
                                      "CYCLE800 185", -1, out, sizeof out);
 }
+static void program_joins(void) {
+  int32_t join = 0;
+  sink += cncrot_program_joins(&change_from, &change_to, &cancelled, &join) + join;
+}
 static void cycle600(void) {
   memset(&gud, 0, sizeof gud);
   sink += cncrot_cycle600(&gud, &table, 0, "UFK600", 1, 57, 1, 2, 3, 30, 45, 60, 4, 5, 6, 1, 39, 0, 0, 0);
@@ -426,6 +430,7 @@ static const struct entry ENTRIES[] = {
     E(program_expected, 1),  E(program_frame, 0),     E(program_write, 1),      E(program_init, 0),
     E(program_write_change, 1),
     E(program_write_block, 1),
+    E(program_joins, 0),
     E(machine_from_carr, 1), E(machine_carr_error_line, 1), E(machine_from_head, 1),
     E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
     E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),

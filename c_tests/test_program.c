@@ -899,7 +899,46 @@ static void restated_blocks(void) {
   CHECK(out[0] == 'x' && out[sizeof out - 1] == 'x', "out touched");
 }
 
+/* Blocks that are one command spread over lines (cycle 7's axis lines; a tilt and its turn)
+ * join; a restated cancel with nothing active and the next shift do not. */
+static void joined_blocks(void) {
+  static const char *lines[] = {
+      "PLANE RESET STAY",         "CYCL DEF 7.0 DATUM SHIFT", "CYCL DEF 7.1 X+10", "CYCL DEF 7.2 Y+20",
+      "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY", "L B+Q121 R0 FMAX", "CYCL DEF 7.1 X+0", "CYCL DEF 7.2 Y+20",
+      "CYCL DEF 7.3 Z+0",
+  };
+  /* joins[k]: block k and block k + 1. */
+  static const int32_t want[] = {0, 0, 1, 0, 1, 0, 1, 1};
+  enum { N = sizeof lines / sizeof lines[0] };
+  cncrot_program s[N + 1];
+  memset(&s[0], 0, sizeof s[0]);
+  for (size_t k = 0; k < N; k++) {
+    s[k + 1] = s[k];
+    CHECK_STATUS(cncrot_program_line(&s[k + 1], CNCROT_DIALECT_HEIDENHAIN, lines[k], strlen(lines[k])),
+                 CNCROT_STATUS_OK);
+  }
+  for (size_t k = 0; k + 1 < N; k++) {
+    int32_t join = -1;
+    CHECK_STATUS(cncrot_program_joins(&s[k], &s[k + 1], &s[k + 2], &join), CNCROT_STATUS_OK);
+    CHECK(join == want[k], "%s / %s: %d", lines[k], lines[k + 1], (int)join);
+  }
+  /* The joined text: one G52 for 7.1 and 7.2. */
+  char out[CNCROT_PROGRAM_CHANGE_MAX + 1];
+  CHECK_STATUS(cncrot_program_write_block(&s[2], &s[4], lines[3], strlen(lines[3]), CNCROT_DIALECT_FANUC, "G68.2", 4,
+                                          out, sizeof out),
+               CNCROT_STATUS_OK);
+  CHECK(strcmp(out, "G52 X10. Y20. Z0.") == 0, "%s", out);
+  /* Refusals leave the answer untouched. */
+  int32_t join = 7;
+  CHECK_STATUS(cncrot_program_joins(&s[0], NULL, &s[1], &join), CNCROT_STATUS_NULL_POINTER);
+  cncrot_program bad = s[1];
+  bad.shift[0] = 1;
+  CHECK_STATUS(cncrot_program_joins(&s[0], &bad, &s[1], &join), CNCROT_STATUS_BAD_STATE);
+  CHECK(join == 7, "join touched");
+}
+
 int main(void) {
+  joined_blocks();
   restated_blocks();
   planes();
   vendors();

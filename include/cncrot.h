@@ -2235,6 +2235,37 @@ int32_t cncrot_program_write_block(const struct cncrot_program *before,
                                    size_t cap);
 
 /**
+ * Whether a translator writes two blocks read one after the other — the first from
+ * `before` to `after`, the next from `after` to `next`, each read by `cncrot_program_line`
+ * with status 0 — as one change: `cncrot_program_write_block` from `before` to `next` with
+ * the second block's text, nothing for the first. They are one command spread over lines:
+ * the lines of one datum shift (Heidenhain's `CYCL DEF 7.1 X…`, `7.2 Y…`, `7.3 Z…`, each
+ * changing the shift alone or nothing; a first line that changes nothing joins only while a
+ * tilt is active, since with none it may be a cancel the program restates), or a tilt and the block
+ * that turns the axes to it (`G68.2` then `G53.1`, `PLANE … STAY` then `L A+Q120 … FMAX`,
+ * `G268` then `G253`: the second changes only how the machine moves, the first changed
+ * something without turning). Within one dialect a translator keeps the blocks as they
+ * stand and needs no join.
+ *
+ * Writes 1 (join) or 0 to `*joins` and returns 0; or a negative status with `*joins`
+ * untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a state this library
+ * did not write).
+ *
+ * # Safety
+ * `before`, `after` and `next` point to readable `cncrot_program`s, `joins` to a writable
+ * `int32_t`.
+ *
+ * ```c
+ * int32_t join = 0;
+ * cncrot_program_joins(&before, &after, &next, &join);  // CYCL DEF 7.1 X+10, 7.2 Y+20: 1
+ * ```
+ */
+int32_t cncrot_program_joins(const struct cncrot_program *before,
+                             const struct cncrot_program *after,
+                             const struct cncrot_program *next,
+                             int32_t *joins);
+
+/**
  * The rotation matrix of three angles in a convention.
  *
  * `intrinsic`: 1 about the rotated (workpiece) axes, `R = R_a1·R_a2·R_a3`; 0 about the

@@ -17,7 +17,9 @@
 %     was active (the safety cancel a program opens with), as a datum shift set to the
 %     value it had is written again --, the tilt's choice words where the
 %     block has them (SEQ+/SEQ- <-> CYCLE800 _DIR +1/-1) and how the machine moves to the
-%     plane (TURN/MOVE/STAY <-> G53.1/G53.6, G253);
+%     plane (TURN/MOVE/STAY <-> G53.1/G53.6, G253). A command spread over lines is
+%     written once, at its last line ('' for the others): cycle 7's axis lines as one
+%     G52, a G68.2 and its G53.1 as one PLANE ... TURN (cncrot_program_joins);
 %   - any other block: the block as it stands (remarks says which).
 %   remarks (N-by-1 cell): 'applied', 'passed' or 'not followed' as cncrot_program_lines
 %   says; a 'not followed' block changes the frame in a way the library does not follow
@@ -30,6 +32,6 @@
 %     prog = {'CYCL DEF 7.0 DATUM SHIFT', 'CYCL DEF 7.1 X+10', ...
 %             'PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX SEQ-', 'L Z+100 FMAX', 'PLANE RESET STAY'};
 %     text = cncrot_program_translate('heidenhain', prog, 'fanuc', 'G68.2', 4)
-%     % {''; 'G52 X10. Y0. Z0.'; 'G68.2 X0. Y0. Z0. I90. J30. K-90.'; 'L Z+100 FMAX'; 'G69'}
+%     % {''; 'G52 X10. Y0. Z0.'; sprintf('G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1'); 'L Z+100 FMAX'; 'G69'}
 %
 %   See also CNCROT_PROGRAM_LINES, CNCROT_PROGRAM_WRITE, CNCROT_DIALECTS.

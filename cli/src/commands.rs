@@ -9,7 +9,8 @@ use cncrot::dialects::cycle600::{self, Call, State};
 use cncrot::dialects::head_def::HeadTable;
 use cncrot::dialects::heidenhain::cycle_head;
 use cncrot::dialects::program::{
-    write_block, write_change, write_line, Dialect, DirectAxes, Program, Remark, MAX_CHANGE,
+    joins, write_block, write_change, write_line, AxisChoice, Dialect, DirectAxes, Program, Remark,
+    MAX_CHANGE,
 };
 use cncrot::kinematics::{Machine, RotaryAxis, Rule, Side, MAX_AXES};
 use cncrot::{
@@ -239,6 +240,21 @@ fn targets(to: &[String]) -> Result<Vec<Target>, Failure> {
 
 /// The positions a direct mode states, as its block names them (`B=30 C=45`, or
 /// `axis 1=45 axis 2=30`).
+/// A program's choice of solution in words, for a message.
+fn choice_name(c: AxisChoice) -> String {
+    let axis = |k: u8| match k {
+        0 => "the master axis".to_string(),
+        k => format!("rotary axis {k}"),
+    };
+    match c {
+        AxisChoice::Closest => "the closest".to_string(),
+        AxisChoice::Minus(k) => format!("the lower position of {}", axis(k)),
+        AxisChoice::Plus(k) => format!("the higher position of {}", axis(k)),
+        AxisChoice::PositiveTurn(k) => format!("{} turning only up", axis(k)),
+        AxisChoice::NegativeTurn(k) => format!("{} turning only down", axis(k)),
+    }
+}
+
 fn direct_text(p: &Program, d: i32) -> String {
     let Some(direct) = p.direct else {
         return String::new();
@@ -1234,6 +1250,27 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     // until the next block shows whether the cycle is rewritten (the writer writes its own
     // first line) or kept as it stands.
     let mut held: Option<String> = None;
+    // Each block's state read ahead, so that a translation sees the next block: blocks
+    // that are one command spread over lines (cycle 7's axis lines, a tilt and its turn)
+    // are written as one change at the last of them; `run` holds the state before the
+    // first.
+    let ahead: Vec<Option<Program>> = if target.is_some() {
+        let mut q = p;
+        text.lines()
+            .map(
+                |raw| match q.line(dialect, raw.trim_end_matches('\r').as_bytes()) {
+                    Ok((next, Remark::Applied)) => {
+                        q = next;
+                        Some(next)
+                    }
+                    _ => None,
+                },
+            )
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let mut run: Option<Program> = None;
     for (k, raw) in text.lines().enumerate() {
         let mut rewritten = false;
         let line = k + 1;
@@ -1310,6 +1347,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         });
                     }
                 }
+                let next = ahead.get(k + 1).copied().flatten();
                 if let Some(t) = &target {
                     let mut buf = [0u8; MAX_CHANGE];
                     // Into another dialect also what the block restates (a cancel, a
@@ -1317,9 +1355,40 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     // active); in its own, such a block stays as it stands.
                     let written = if t.dialect == dialect {
                         write_change(t.dialect, t.form.as_bytes(), &before, &p, d, &mut buf)
+                    } else if next.is_some_and(|n| joins(&before, &p, &n)) {
+                        // Written with the next block.
+                        run = run.or(Some(before));
+                        Ok((0, false))
                     } else {
+                        let from = run.take().unwrap_or(before);
                         let text = block.as_bytes();
-                        write_block(t.dialect, t.form.as_bytes(), &before, &p, text, d, &mut buf)
+                        let form = t.form.as_bytes();
+                        let w = write_block(t.dialect, form, &from, &p, text, d, &mut buf);
+                        // A choice the target has no word for: the same text with the
+                        // opposite choice.
+                        let opposite = match p.choice {
+                            AxisChoice::Minus(k) => Some(AxisChoice::Plus(k)),
+                            AxisChoice::Plus(k) => Some(AxisChoice::Minus(k)),
+                            AxisChoice::PositiveTurn(k) => Some(AxisChoice::NegativeTurn(k)),
+                            AxisChoice::NegativeTurn(k) => Some(AxisChoice::PositiveTurn(k)),
+                            AxisChoice::Closest => None,
+                        };
+                        if let (Ok((len, _)), Some(choice)) = (w, opposite) {
+                            let flipped = Program { choice, ..p };
+                            let mut other = [0u8; MAX_CHANGE];
+                            let same =
+                                write_block(t.dialect, form, &from, &flipped, text, d, &mut other)
+                                    .is_ok_and(|(n, _)| other.get(..n) == buf.get(..len));
+                            if len > 0 && same {
+                                eprintln!(
+                                    "cncrot: line {line}: the choice of solution ({}) has no word in {} {}: the control chooses by its own rule: {block}",
+                                    choice_name(p.choice),
+                                    input::dialect_name(t.dialect),
+                                    t.form
+                                );
+                            }
+                        }
+                        w
                     };
                     match written {
                         Ok((0, _))

@@ -1511,7 +1511,7 @@ fn program_to_writes_datum_shifts() {
     let want = [
         "0 BEGIN PGM TILT MM",
         "1 TOOL CALL 1 Z S5000",
-        "G52 X10. Y0. Z0.",
+        // Cycle 7's axis lines: one shift.
         "G52 X10. Y20. Z0.",
         "G68.2 X0. Y0. Z0. I90. J30. K-90.",
         "G53.1",
@@ -1538,15 +1538,14 @@ fn program_to_writes_datum_shifts() {
     // The shift alone reset before the cycle carries the whole origin, the tilt cancelled
     // before the shift is set alone again.
     assert_eq!(
-        lines[2..6],
+        lines[2..5],
         [
-            "TRANS X=10 Y=0 Z=0",
             "TRANS X=10 Y=20 Z=0",
             "TRANS",
             "CYCLE800(4,\"\",0,57,10,20,0,0,30,0,0,0,0,-1,0,0)"
         ]
     );
-    assert_eq!(lines[8..10], ["CYCLE800()", "TRANS X=10 Y=20 Z=0"]);
+    assert_eq!(lines[7..9], ["CYCLE800()", "TRANS X=10 Y=20 Z=0"]);
     // Into SINUMERIK's ROT an origin cannot go: the block keeps its line, exit status 1.
     let r = cncrot(
         &[
@@ -1573,6 +1572,68 @@ fn program_to(prog: &str, from: &str, to: &str) -> Vec<String> {
     let r = cncrot(&["program", "-", "--dialect", from, "--to", to], prog);
     assert_eq!(r.code, 0, "{}", r.stderr);
     r.stdout.lines().map(String::from).collect()
+}
+
+/// A command spread over lines is written as one in the target: cycle 7's axis lines as one
+/// `G52`, a `PLANE … STAY` and the block that turns to it as one `G68.2` with its `G53.1`;
+/// under the tilt, the shift reset once (not once per axis). By hand: `SPB+30` is `Ry(30°)`
+/// = `Rz(90°)·Rx(30°)·Rz(−90°)`, Fanuc's `I90. J30. K-90.`. `SEQ-` has no word in `G68.2`:
+/// said on standard error.
+#[test]
+fn program_to_joins_commands_spread_over_lines() {
+    let prog = "CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+10\nCYCL DEF 7.2 Y+20\n\
+                CYCL DEF 7.3 Z-5\nPLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY SEQ-\n\
+                L B+Q121 C+Q122 R0 FMAX\nL X+0 Y+0 R0 FMAX\nCYCL DEF 7.0 DATUM SHIFT\n\
+                CYCL DEF 7.1 X+0\nCYCL DEF 7.2 Y+0\nCYCL DEF 7.3 Z+0\nPLANE RESET STAY\n";
+    let tilt = "G68.2 X0. Y0. Z0. I90. J30. K-90.";
+    assert_eq!(
+        program_to(prog, "heidenhain", "fanuc"),
+        [
+            "G52 X10. Y20. Z-5.",
+            tilt,
+            "G53.1",
+            "L X+0 Y+0 R0 FMAX",
+            "G69",
+            "G52 X0. Y0. Z0.",
+            tilt,
+            "G53.1",
+            "G69"
+        ]
+    );
+    let r = cncrot(
+        &["program", "-", "--dialect", "heidenhain", "--to", "fanuc"],
+        prog,
+    );
+    assert!(
+        r.stderr.contains("line 6: the choice of solution (the lower position of the master axis) has no word in fanuc"),
+        "{}",
+        r.stderr
+    );
+    // CYCLE800 has the word (`_DIR` -1): nothing to say.
+    let r = cncrot(
+        &[
+            "program",
+            "-",
+            "--dialect",
+            "heidenhain",
+            "--to",
+            "sinumerik",
+        ],
+        prog,
+    );
+    assert!(!r.stderr.contains("choice"), "{}", r.stderr);
+    // Into Heidenhain: G68.2 and its G53.1 are one PLANE … TURN.
+    assert_eq!(
+        program_to(
+            "G68.2 X0 Y0 Z0 I90. J30. K-90.\nG53.1\nG69\n",
+            "fanuc",
+            "heidenhain"
+        ),
+        [
+            "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX",
+            "PLANE RESET STAY"
+        ]
+    );
 }
 
 /// A program's opening cancel and zero datum shift, which change nothing in a state where

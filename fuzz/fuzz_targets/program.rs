@@ -107,6 +107,9 @@ fuzz_target!(|data: &[u8]| {
         })
         .collect();
     let mut path: cncrot_tool_path = unsafe { std::mem::zeroed() };
+    // The state before the last block, when that block was applied (0): whether it joins
+    // the next one.
+    let mut applied: Option<cncrot_program> = None;
     for line in text.split(|&b| b == b'\n') {
         // Each block in a heap buffer of exactly its length: AddressSanitizer sees any
         // over-read.
@@ -117,6 +120,8 @@ fuzz_target!(|data: &[u8]| {
         // SAFETY: the line holds len bytes; p is valid.
         let s = unsafe { cncrot_program_line(&mut p, dialect, line.as_ptr().cast(), line.len()) };
         input::assert_known(s);
+        // Only the block just before counts: whatever this one is, it ends the pair.
+        let first = applied.take();
         let mut column = usize::MAX;
         // SAFETY: as above.
         let c = unsafe {
@@ -179,8 +184,40 @@ fuzz_target!(|data: &[u8]| {
         }
         translated(&again, &p, &line, &mut translations);
         flips_are_refused(&p, line.len());
+        if s == 0 {
+            joined(first.as_ref(), &again, &p);
+            applied = Some(again);
+        }
     }
 });
+
+/// Two applied blocks in a row (`first` → `after` → `next`): `cncrot_program_joins` answers,
+/// and a join is of blocks that leave the tilt's rotation alone in the second (a shift's
+/// next axis, a turn to the plane), with the first one changing something or a tilt active.
+fn joined(first: Option<&cncrot_program>, after: &cncrot_program, next: &cncrot_program) {
+    let Some(first) = first else {
+        return;
+    };
+    let mut join = -1;
+    // SAFETY: valid states and a writable answer.
+    let s = unsafe { cncrot_program_joins(first, after, next, &mut join) };
+    assert_eq!(s, 0);
+    assert!(join == 0 || join == 1);
+    if join == 1 {
+        // A direct mode's frame needs the machine: its positions stay instead.
+        assert_eq!(
+            (after.active >= 2, after.angles),
+            (next.active >= 2, next.angles)
+        );
+        if after.active < 2 {
+            let (f, g) = (frame(after), frame(next));
+            for k in [0, 1, 2, 4, 5, 6, 8, 9, 10] {
+                assert_eq!(f[k], g[k], "the second block turned the frame");
+            }
+        }
+        assert!(as_bytes(first) != as_bytes(after) || after.active != 0);
+    }
+}
 
 /// The fork head of the checks: C about Z carrying B about Y, B within ±100°, the pivot
 /// 150 mm above the tool adapter.

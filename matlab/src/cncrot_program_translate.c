@@ -57,6 +57,10 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   size_t n = cell ? mxGetNumberOfElements(lines) : 1;
   mxArray *text = mxCreateCellMatrix(n, 1);
   mxArray *remarks = mxCreateCellMatrix(n, 1);
+  /* Blocks that are one command spread over lines (cycle 7's axis lines, a tilt and its turn)
+   * are written as one change at the last of them: the state before the first. */
+  cncrot_program run;
+  int running = 0;
   for (size_t k = 0; k < n; k++) {
     const mxArray *a = cell ? mxGetCell(lines, k) : lines;
     if (!a) a = mxCreateString("");
@@ -76,10 +80,27 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
       mxSetCell(remarks, k, mxCreateString(s == CNCROT_STATUS_PASSED ? "passed" : "not followed"));
       continue;
     }
+    if (to != dialect && cell && k + 1 < n && mxGetCell(lines, k + 1)) {
+      char next_buf[CNCROT_PROGRAM_LINE_MAX + 3];
+      size_t next_len = line_bytes(mxGetCell(lines, k + 1), 2, next_buf, sizeof next_buf);
+      cncrot_program next = p;
+      int32_t join = 0;
+      if (cncrot_program_line(&next, dialect, next_buf, next_len) == CNCROT_STATUS_OK &&
+          cncrot_program_joins(&before, &p, &next, &join) == CNCROT_STATUS_OK && join) {
+        /* Written with the next block. */
+        if (!running) run = before;
+        running = 1;
+        mxSetCell(text, k, mxCreateString(""));
+        mxSetCell(remarks, k, mxCreateString("applied"));
+        continue;
+      }
+    }
+    cncrot_program from = running ? run : before;
+    running = 0;
     /* Into another dialect also what the block restates (a cancel, a datum shift, with
      * nothing active: the control may have something active). */
     int32_t w = to == dialect ? cncrot_program_write_change(&before, &p, to, form, decimals, out, sizeof out)
-                              : cncrot_program_write_block(&before, &p, buf, len, to, form, decimals, out, sizeof out);
+                              : cncrot_program_write_block(&from, &p, buf, len, to, form, decimals, out, sizeof out);
     if (w < 0) {
       mxDestroyArray(text);
       mxDestroyArray(remarks);

@@ -232,7 +232,11 @@ function test_cncrot(cases_file)
   src = {'CYCL DEF 7.0 DATUM SHIFT', 'CYCL DEF 7.1 X+10', 'CYCL DEF 7.3 Z-5', ...
          'PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX SEQ+', 'L Z+100 FMAX', 'PLANE RESET STAY'};
   [tf, rf] = cncrot_program_translate('heidenhain', src, 'fanuc', 'G68.2', 4);
-  check(isequal(tf, {''; 'G52 X10. Y0. Z0.'; 'G52 X10. Y0. Z-5.'; sprintf('G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1'); 'L Z+100 FMAX'; 'G69'}), 'translate: into Fanuc');
+  % Cycle 7's axis lines are one shift: written at the last of them (cncrot_program_joins).
+  check(isequal(tf, {''; ''; 'G52 X10. Y0. Z-5.'; sprintf('G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1'); 'L Z+100 FMAX'; 'G69'}), 'translate: into Fanuc');
+  % A tilt and the block that turns to it are one PLANE ... TURN.
+  tj = cncrot_program_translate('fanuc', {'G68.2 X0 Y0 Z0 I90. J30. K-90.', 'G53.1', 'G69'}, 'heidenhain', 'PLANE SPATIAL', 4);
+  check(isequal(tj, {''; 'PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX'; 'PLANE RESET STAY'}), 'translate: a tilt and its turn joined');
   check(isequal(rf, {'applied'; 'applied'; 'applied'; 'applied'; 'passed'; 'applied'}), 'translate: remarks');
   ts = cncrot_program_translate("heidenhain", src, 'SINUMERIK', "CYCLE800", int8(4));
   check(strcmp(ts{4}, sprintf('TRANS\nCYCLE800(0,"",0,57,10,0,-5,0,30,0,0,0,0,1,0,0)')) && strcmp(ts{6}, sprintf('CYCLE800()\nTRANS X=10 Y=0 Z=-5')), 'translate: into SINUMERIK, _DIR +1');

@@ -759,6 +759,69 @@ pub fn write_block(
     write_change_with(dialect, &spec, &from, after, decimals, buf)
 }
 
+/// Whether a translator writes two blocks read one after the other — the first from
+/// `before` to `after`, the next from `after` to `next` — as one change, from `before` to
+/// `next` at the second block (the first writes nothing): they are one command spread over
+/// lines, which the target says in one.
+///
+/// - The lines of one datum shift: each changes the shift alone, or nothing (Heidenhain's
+///   `CYCL DEF 7.1 X…`, `7.2 Y…`, `7.3 Z…`, an axis restated; a target writes the whole
+///   shift once, instead of one shift per axis, or under a tilt one cancel and tilt again
+///   per axis). A first line that changes nothing joins only while a tilt is active: with
+///   none, it may be a cancel the program restates (see [`write_block`]), which must stay.
+///   What a second line restates stays: [`write_block`] reads it on the joined change.
+/// - A tilt and the block that turns the axes to it: the next block changes only how the
+///   machine moves (`G68.2` then `G53.1`, `PLANE … STAY` then `L A+Q120 C+Q122 … FMAX`, `G268`
+///   then `G253`), after a first that changed something and did not turn: one `PLANE … TURN`
+///   or `CYCLE800`.
+///
+/// Within one dialect a translator keeps the blocks as they stand and needs no join.
+///
+/// ```
+/// use cncrot::dialects::program::{joins, Dialect, Program};
+/// let read = |p: &Program, l: &str| p.line(Dialect::Heidenhain, l.as_bytes()).unwrap().0;
+/// let p0 = read(&Program::default(), "CYCL DEF 7.0 DATUM SHIFT");
+/// let p1 = read(&p0, "CYCL DEF 7.1 X+10");
+/// let p2 = read(&p1, "CYCL DEF 7.2 Y+20");
+/// let p3 = read(&p2, "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY");
+/// let p4 = read(&p3, "L A+Q120 B+Q121 C+Q122 R0 FMAX");
+/// assert!(joins(&p0, &p1, &p2)); // one G52 X10. Y20. Z0.
+/// assert!(!joins(&p1, &p2, &p3)); // the shift, then the tilt
+/// assert!(joins(&p2, &p3, &p4)); // one G68.2 … then G53.1, one PLANE … TURN
+/// ```
+pub fn joins(before: &Program, after: &Program, next: &Program) -> bool {
+    // Everything but the shift (and the frame's origin, which holds it) the same.
+    let shift_only = |a: &Program, b: &Program| {
+        a.frame.rotation == b.frame.rotation
+            && Program {
+                shift: b.shift,
+                frame: b.frame,
+                ..*a
+            } == *b
+    };
+    // Everything but how the machine moves to the plane the same.
+    let moving_only = |a: &Program, b: &Program| {
+        Program {
+            choice: b.choice,
+            positioning: b.positioning,
+            retract: b.retract,
+            retract_mm: b.retract_mm,
+            feed: b.feed,
+            feed_mm_min: b.feed_mm_min,
+            table_rot: b.table_rot,
+            ..*a
+        } == *b
+    };
+    let tilted = after.frame.rotation != crate::IDENTITY || after.direct.is_some();
+    let shifts =
+        shift_only(before, after) && shift_only(after, next) && (before != after || tilted);
+    let turns = before != after
+        && after.positioning == Positioning::Stay
+        && next.positioning != Positioning::Stay
+        && moving_only(after, next);
+    shifts || turns
+}
+
 /// Turns `from` (the state before the block) into the state [`write_block`] writes the
 /// change from: with a tilt when `text` is a cancel and none was active, with another shift
 /// when `text` sets the shift to the value it had. Left as it is when the block changed

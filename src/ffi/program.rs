@@ -1062,6 +1062,53 @@ pub unsafe extern "C" fn cncrot_program_write_block(
     })
 }
 
+/// Whether a translator writes two blocks read one after the other — the first from
+/// `before` to `after`, the next from `after` to `next`, each read by `cncrot_program_line`
+/// with status 0 — as one change: `cncrot_program_write_block` from `before` to `next` with
+/// the second block's text, nothing for the first. They are one command spread over lines:
+/// the lines of one datum shift (Heidenhain's `CYCL DEF 7.1 X…`, `7.2 Y…`, `7.3 Z…`, each
+/// changing the shift alone or nothing; a first line that changes nothing joins only while a
+/// tilt is active, since with none it may be a cancel the program restates), or a tilt and the block
+/// that turns the axes to it (`G68.2` then `G53.1`, `PLANE … STAY` then `L A+Q120 … FMAX`,
+/// `G268` then `G253`: the second changes only how the machine moves, the first changed
+/// something without turning). Within one dialect a translator keeps the blocks as they
+/// stand and needs no join.
+///
+/// Writes 1 (join) or 0 to `*joins` and returns 0; or a negative status with `*joins`
+/// untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a state this library
+/// did not write).
+///
+/// # Safety
+/// `before`, `after` and `next` point to readable `cncrot_program`s, `joins` to a writable
+/// `int32_t`.
+///
+/// ```c
+/// int32_t join = 0;
+/// cncrot_program_joins(&before, &after, &next, &join);  // CYCL DEF 7.1 X+10, 7.2 Y+20: 1
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_program_joins(
+    before: *const cncrot_program,
+    after: *const cncrot_program,
+    next: *const cncrot_program,
+    joins: *mut i32,
+) -> i32 {
+    guard(|| {
+        non_null(&[
+            before.is_null(),
+            after.is_null(),
+            next.is_null(),
+            joins.is_null(),
+        ])?;
+        let p0 = load_at(before)?;
+        let p1 = load_at(after)?;
+        let p2 = load_at(next)?;
+        *joins = i32::from(program::joins(&p0, &p1, &p2));
+        Ok(cncrot_status::Ok)
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1110,6 +1110,46 @@ fn programs() -> Vec<Call> {
             ));
             t.bytes(&out);
         }),
+        ("cncrot_program_joins", |t| unsafe {
+            // Cycle 7 line by line, then a tilt and its turn: each pair of blocks judged.
+            let mut states = [cncrot_program::default(); 6];
+            for (k, l) in [
+                &b"CYCL DEF 7.1 X+10"[..],
+                b"CYCL DEF 7.2 Y+20",
+                b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY",
+                b"L A+Q120 B+Q121 C+Q122 R0 FMAX",
+                b"PLANE RESET STAY",
+            ]
+            .iter()
+            .enumerate()
+            {
+                states[k + 1] = states[k];
+                t.status(cncrot_program_line(
+                    &mut states[k + 1],
+                    CNCROT_DIALECT_HEIDENHAIN,
+                    l.as_ptr().cast(),
+                    l.len(),
+                ));
+            }
+            for w in states.windows(3) {
+                let mut join = -1;
+                t.status(cncrot_program_joins(&w[0], &w[1], &w[2], &mut join));
+                t.status(join);
+            }
+            let mut join = 7;
+            t.status(cncrot_program_joins(
+                &states[0],
+                null(),
+                &states[1],
+                &mut join,
+            ));
+            let mut bad = states[1];
+            bad.shift[0] = 11.0;
+            t.status(cncrot_program_joins(
+                &states[0], &bad, &states[2], &mut join,
+            ));
+            t.status(join);
+        }),
         ("cncrot_program_write_block", |t| unsafe {
             // A safety cancel and a zero shift with nothing active, a cycle's first line, a
             // tilt: each block read, then what a translator writes for it.
