@@ -1189,6 +1189,9 @@ fn every_block_of_a_program() {
             ("N110 G505", N),
             ("N120 G500", N),
             ("N130 SCALE X2", N),
+            // Setting actual values moves the workpiece coordinates by an amount the
+            // program does not state.
+            ("N131 PRESETON(X,0,Y,0)", N),
             // RPL with an axis' angle: in no manual's syntax.
             ("N132 AROT X10 RPL=30", N),
             ("N140 G153 G0 Z0", P),

@@ -1222,6 +1222,8 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
         ..Program::default()
     };
     let (mut applied, mut passed, mut unfollowed, mut refused) = (0, 0, 0, 0);
+    // Blocks read but not written in the target (its form has no words for the change).
+    let mut uncarried = 0;
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
     let mut ok = true;
@@ -1420,6 +1422,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             )
                         }
                         Err(e) => {
+                            uncarried += 1;
                             eprintln!(
                                 "cncrot: line {line}: not carried across as {} {}: {}: {block}",
                                 input::dialect_name(t.dialect),
@@ -1516,9 +1519,12 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
         return Ok(ok);
     }
     let total = applied + passed + unfollowed + refused;
-    let summary = format!(
+    let mut summary = format!(
         "{total} blocks: {applied} concerning the frame, {passed} passed over, {unfollowed} not followed, {refused} refused"
     );
+    if target.is_some() {
+        summary += &format!(", {uncarried} not carried across");
+    }
     match (&target, a.json) {
         (Some(_), _) => eprintln!("cncrot: {summary}"),
         (None, true) => {

@@ -1564,6 +1564,12 @@ fn program_to_writes_datum_shifts() {
         "{}",
         r.stderr
     );
+    // The summary counts what was not carried across.
+    assert!(
+        r.stderr.contains("0 refused, 2 not carried across"),
+        "{}",
+        r.stderr
+    );
 }
 
 /// A program in `from` translated by `cncrot program - --to TO`, which must succeed: its

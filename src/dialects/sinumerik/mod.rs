@@ -812,7 +812,8 @@ fn angle_mode(selector: i32) -> Result<AngleMode, Error> {
 /// the settable frames `G54`–`G57`, `G505`–`G599` and `G500`, the axial offsets `G58`/`G59`,
 /// mirroring and scaling (`MIRROR`, `AMIRROR`, `SCALE`, `ASCALE`), frames from the tool
 /// orientation (`TOROT`, `TOROTX`/`Y`/`Z`, `TOFRAME`, `TOFRAMEX`/`Y`/`Z`, `TOROTOF`) and from
-/// the workpiece (`PAROT`, `PAROTOF`), and assignments to frame variables (`$P_…FRAME`,
+/// the workpiece (`PAROT`, `PAROTOF`), setting actual values (`PRESETON`, `PRESETONS`),
+/// and assignments to frame variables (`$P_…FRAME`,
 /// `$P_UIFR[…]`, `$P_UBFR`, `$P_UGFR`). Another working plane (`G17`–`G19`) is kept, the
 /// frame unchanged. Anything else is passed over (motion, `T`/`D`/`M`, `R` parameters,
 /// `DEF`, control structures, calls, `TRAORI`, `G53`/`G153`/`SUPA`, which suppress frames
@@ -835,7 +836,9 @@ fn other_block(m: &Modal, rest: &[u8], offset: usize) -> Result<Block, LineError
         b"CYCLE800",
         b"CYCLE600",
     ];
-    const NOT_FOLLOWED: [&[u8]; 22] = [
+    const NOT_FOLLOWED: [&[u8]; 24] = [
+        b"PRESETON",
+        b"PRESETONS",
         b"G54",
         b"G55",
         b"G56",
