@@ -1572,10 +1572,15 @@ fn program_to_writes_datum_shifts() {
     );
 }
 
+/// `cncrot program - --dialect FROM --to TO` on `prog`.
+fn translate(prog: &str, from: &str, to: &str) -> Run {
+    cncrot(&["program", "-", "--dialect", from, "--to", to], prog)
+}
+
 /// A program in `from` translated by `cncrot program - --to TO`, which must succeed: its
 /// output lines.
 fn program_to(prog: &str, from: &str, to: &str) -> Vec<String> {
-    let r = cncrot(&["program", "-", "--dialect", from, "--to", to], prog);
+    let r = translate(prog, from, to);
     assert_eq!(r.code, 0, "{}", r.stderr);
     r.stdout.lines().map(String::from).collect()
 }
@@ -1606,27 +1611,14 @@ fn program_to_joins_commands_spread_over_lines() {
             "G69"
         ]
     );
-    let r = cncrot(
-        &["program", "-", "--dialect", "heidenhain", "--to", "fanuc"],
-        prog,
-    );
+    let r = translate(prog, "heidenhain", "fanuc");
     assert!(
         r.stderr.contains("line 6: the choice of solution (the lower position of the master axis) has no word in fanuc"),
         "{}",
         r.stderr
     );
     // CYCLE800 has the word (`_DIR` -1): nothing to say.
-    let r = cncrot(
-        &[
-            "program",
-            "-",
-            "--dialect",
-            "heidenhain",
-            "--to",
-            "sinumerik",
-        ],
-        prog,
-    );
+    let r = translate(prog, "heidenhain", "sinumerik");
     assert!(!r.stderr.contains("choice"), "{}", r.stderr);
     // Into Heidenhain: G68.2 and its G53.1 are one PLANE … TURN.
     assert_eq!(

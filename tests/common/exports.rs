@@ -1041,22 +1041,13 @@ fn programs() -> Vec<Call> {
             t.bytes(&out);
         }),
         ("cncrot_program_write_change", |t| unsafe {
-            let mut states = [cncrot_program::default(); 3];
-            for (k, l) in [
-                &b"CYCL DEF 7.1 X+10"[..],
-                b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN SEQ-",
-            ]
-            .iter()
-            .enumerate()
-            {
-                states[k + 1] = states[k];
-                t.status(cncrot_program_line(
-                    &mut states[k + 1],
-                    CNCROT_DIALECT_HEIDENHAIN,
-                    l.as_ptr().cast(),
-                    l.len(),
-                ));
-            }
+            let states = heidenhain_states(
+                t,
+                &[
+                    b"CYCL DEF 7.1 X+10",
+                    b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN SEQ-",
+                ],
+            );
             let mut out = [0u8; CNCROT_PROGRAM_CHANGE_MAX + 1];
             for (a, b, d, form, dec) in [
                 (0, 2, CNCROT_DIALECT_FANUC, c"G68.2", -1),
@@ -1112,26 +1103,17 @@ fn programs() -> Vec<Call> {
         }),
         ("cncrot_program_joins", |t| unsafe {
             // Cycle 7 line by line, then a tilt and its turn: each pair of blocks judged.
-            let mut states = [cncrot_program::default(); 6];
-            for (k, l) in [
-                &b"CYCL DEF 7.1 X+10"[..],
-                b"CYCL DEF 7.2 Y+20",
-                b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY",
-                b"L A+Q120 B+Q121 C+Q122 R0 FMAX",
-                b"PLANE RESET STAY",
-            ]
-            .iter()
-            .enumerate()
-            {
-                states[k + 1] = states[k];
-                t.status(cncrot_program_line(
-                    &mut states[k + 1],
-                    CNCROT_DIALECT_HEIDENHAIN,
-                    l.as_ptr().cast(),
-                    l.len(),
-                ));
-            }
-            for w in states.windows(3) {
+            let states = heidenhain_states(
+                t,
+                &[
+                    b"CYCL DEF 7.1 X+10",
+                    b"CYCL DEF 7.2 Y+20",
+                    b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY",
+                    b"L A+Q120 B+Q121 C+Q122 R0 FMAX",
+                    b"PLANE RESET STAY",
+                ],
+            );
+            for w in states[..6].windows(3) {
                 let mut join = -1;
                 t.status(cncrot_program_joins(&w[0], &w[1], &w[2], &mut join));
                 t.status(join);
@@ -1217,6 +1199,24 @@ fn programs() -> Vec<Call> {
 }
 
 /// Machines: from swivel data and heads, axes added, forward, inverse, choice, following.
+/// The states of a Heidenhain program after each of its `lines` (at most 7; the empty state
+/// first, the last repeated after them), each read's status traced. An array: the tables
+/// run under the allocation counter.
+unsafe fn heidenhain_states(t: &mut Trace, lines: &[&[u8]]) -> [cncrot_program; 8] {
+    let mut states = [cncrot_program::default(); 8];
+    for (k, l) in lines.iter().enumerate().take(7) {
+        let mut p = states[k];
+        t.status(cncrot_program_line(
+            &mut p,
+            CNCROT_DIALECT_HEIDENHAIN,
+            l.as_ptr().cast(),
+            l.len(),
+        ));
+        states[k + 1..].fill(p);
+    }
+    states
+}
+
 fn machines() -> Vec<Call> {
     vec![
         ("cncrot_machine_from_carr", |t| unsafe {
