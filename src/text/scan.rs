@@ -274,8 +274,9 @@ impl<'a> Cursor<'a> {
     }
 
     /// A number in `syntax` starting here (`30`, `-20.5`, `+27`, `30.`, `.5`, SINUMERIK's
-    /// `1.5EX3`, C's `1.5e3`). A variable or expression here is [`Error::NotANumber`] at its column, a
-    /// malformed number [`Error::Parse`].
+    /// `1.5EX3`, C's `1.5e3`, Heidenhain's `-8,182`, ISO's `[0.]`). A variable or expression
+    /// here is [`Error::NotANumber`] at its column (a bracket's at the bracket), a malformed
+    /// number [`Error::Parse`].
     pub fn number(&mut self, syntax: Syntax) -> Result<f64, LineError> {
         if !(syntax.iso && self.peek() == Some(b'[')) {
             return self.plain_number(syntax);
