@@ -1662,21 +1662,35 @@ fn choice_words_are_kept_and_followed() {
     let from = [180.0, -25.0, 0.0];
     assert!((plane("").axes(&head, from).unwrap().axes[1] + 30.0).abs() < 1e-9);
     assert!((plane("SEQ+").axes(&head, from).unwrap().axes[1] - 30.0).abs() < 1e-9);
-    // CYCLE800 _DIR (the 14th parameter): -1 minus, +1 plus, 0 none, others refused.
+    // CYCLE800 _DIR (the 14th parameter): -1 minus, +1 plus (each swivels), 0 the frame
+    // calculated without swivelling (no retraction either), others refused.
     let c800 = |dir: &str| {
-        let l = format!("CYCLE800(0,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,{dir})");
+        let l = format!("CYCLE800(1,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,{dir})");
         Program::default().line(Dialect::Sinumerik, l.as_bytes())
     };
-    assert_eq!(c800("-1").unwrap().0.choice, AxisChoice::Minus(0));
-    assert_eq!(c800("1").unwrap().0.choice, AxisChoice::Plus(0));
-    assert_eq!(c800("0").unwrap().0.choice, AxisChoice::Closest);
+    let (minus, plus) = (c800("-1").unwrap().0, c800("1").unwrap().0);
+    assert_eq!(
+        (minus.choice, minus.positioning),
+        (AxisChoice::Minus(0), Positioning::Turn)
+    );
+    assert_eq!(
+        (plus.choice, plus.positioning),
+        (AxisChoice::Plus(0), Positioning::Turn)
+    );
+    assert_eq!(plus.retract, Retract::MachineZ);
+    let stay = c800("0").unwrap().0;
+    assert_eq!(
+        (stay.choice, stay.positioning, stay.retract),
+        (AxisChoice::Closest, Positioning::Stay, Retract::None)
+    );
+    assert_eq!(stay.frame, plus.frame);
     let e = c800("2").unwrap_err();
     // Reported at `_DIR` itself, the last parameter.
-    let at = "CYCLE800(0,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,".len() + 1;
+    let at = "CYCLE800(1,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,".len() + 1;
     assert_eq!((e.error, e.column), (Error::BadArgument, at));
     assert_eq!(
         e.expected,
-        Some("_DIR: -1 (minus), +1 (plus) or 0 (no choice)")
+        Some("_DIR: -1 (minus), +1 (plus) or 0 (no swivel: calculate only)")
     );
     assert!((b(&c800("-1").unwrap().0) + 30.0).abs() < 1e-9);
     // A tilt without words clears them.
@@ -1928,6 +1942,15 @@ fn changes_are_written_with_the_targets_own_blocks() {
     let back = translate(
         Dialect::Heidenhain,
         &["PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY SEQ+"],
+        Dialect::Sinumerik,
+        "CYCLE800",
+    );
+    // `STAY` computes the plane without swivelling: `_DIR` 0 (the choice waits for the block
+    // that turns); with `TURN`, the plus direction.
+    assert_eq!(back, ["CYCLE800(0,\"\",0,57,0,0,0,30,0,0,0,0,0,0,0,0)"]);
+    let back = translate(
+        Dialect::Heidenhain,
+        &["PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN SEQ+"],
         Dialect::Sinumerik,
         "CYCLE800",
     );

@@ -1696,7 +1696,8 @@ fn program_to_keeps_skip_marks() {
     assert_eq!(
         program_to("/2 G68.2 X10. I0. J30. K0.\n/2G69\n", "fanuc", "sinumerik"),
         [
-            "/2 CYCLE800(0,\"\",0,57,10,0,0,30,0,0,0,0,0,-1,0,0)",
+            // No G53.1: the frame without swivelling, `_DIR` 0.
+            "/2 CYCLE800(0,\"\",0,57,10,0,0,30,0,0,0,0,0,0,0,0)",
             "/2 CYCLE800()"
         ]
     );

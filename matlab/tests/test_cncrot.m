@@ -251,7 +251,7 @@ function test_cncrot(cases_file)
   % An optional block stays optional: its skip mark on every line written for it (an ISO level
   % between ISO dialects; Heidenhain's digits after / are its block number).
   tk = cncrot_program_translate('fanuc', {'/2 G68.2 X10 I0 J30 K0', '/G69'}, 'sinumerik', 'CYCLE800', 4);
-  check(isequal(tk, {'/2 CYCLE800(0,"",0,57,10,0,0,30,0,0,0,0,0,-1,0,0)'; '/CYCLE800()'}), 'translate: skip level kept');
+  check(isequal(tk, {'/2 CYCLE800(0,"",0,57,10,0,0,30,0,0,0,0,0,0,0,0)'; '/CYCLE800()'}), 'translate: skip level kept');
   tk = cncrot_program_translate('heidenhain', {'/7 PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY'}, 'fanuc', 'G68.2', 4);
   check(isequal(tk, {'/G68.2 X0. Y0. Z0. I90. J30. K-90.'}), 'translate: Heidenhain skip mark');
   tk = cncrot_program_translate('fanuc', {'/G68.2 X10 I0 J30 K0'}, 'heidenhain', 'PLANE SPATIAL', 4);

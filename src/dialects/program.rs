@@ -506,7 +506,18 @@ pub fn write_line(
     // dialect cannot read: no buffer would help.
     let room = buf.len();
     let mut out = Out::new(buf);
-    let singular = tilt_block(dialect, &spec, frame, Motion::default(), decimals, &mut out)?;
+    // A `CYCLE800` written alone swivels, as CYCLE800 programs do (`_DIR` -1; 0 would only
+    // calculate the frame) [choice], and no frame is its cancel `CYCLE800()`; a `PLANE`
+    // alone stays (`STAY`), as the manuals write it.
+    let how = Motion {
+        positioning: if dialect == Dialect::Sinumerik && *frame != Frame::IDENTITY {
+            Positioning::Turn
+        } else {
+            Positioning::Stay
+        },
+        ..Motion::default()
+    };
+    let singular = tilt_block(dialect, &spec, frame, how, decimals, &mut out)?;
     let len = match out.finish() {
         Some(len) => len,
         None if room >= dialect.max_line() => return Err(Error::OutOfRange),
@@ -605,7 +616,7 @@ fn split(dialect: Dialect, spec: &FormSpec, p: &Program) -> (Vector, Frame) {
 ///   TwinCAT).
 /// - A changed tilt, or the same tilt with other choice words, is written as [`write_line`]
 ///   writes it, with the choice words the block has: Heidenhain `SEQ-`/`SEQ+`, CYCLE800
-///   `_DIR` −1/+1 (−1 also for no choice: the cycle always names one \[choice\]); the
+///   `_DIR` −1/+1 where it swivels (−1 also for no choice: a swivel names one \[choice\]); the
 ///   others have none on the block. A choice of an axis other than the master axis cannot be
 ///   written ([`Error::NotAvailable`]). Nothing active is written as the cancel; nothing
 ///   active with the axes turning to the untilted plane as the dialect says that turn
@@ -615,7 +626,8 @@ fn split(dialect: Dialect, spec: &FormSpec, p: &Program) -> (Vector, Frame) {
 ///   says it: Heidenhain's `STAY`, `TURN FMAX`, `MOVE FMAX` in the `PLANE` (a new way of
 ///   moving to the same plane is the `PLANE` again); Fanuc-style `G53.1`/`G53.6` and Haas
 ///   `G253` as a block after the tilt, or alone when only the way of moving changed.
-///   CYCLE800 always swivels; `ROT`, TwinCAT and `G158` say nothing.
+///   CYCLE800's `_DIR` 0 where the axes stay (the frame alone), ±1 where they turn;
+///   `ROT`, TwinCAT and `G158` say nothing.
 ///
 /// Refused as by [`write_line`], and: a state [`Program::check`] refuses
 /// ([`Error::NotFinite`], [`Error::BadArgument`], [`Error::NotARotation`]); [`Error::NoRoom`]

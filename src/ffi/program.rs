@@ -909,8 +909,8 @@ const _: () = assert!(CNCROT_PROGRAM_CHANGE_MAX == program::MAX_CHANGE);
 ///   shift apart, refuse it with `CNCROT_STATUS_HAS_ORIGIN`.
 /// - A changed tilt, or the same tilt with other choice words, is written as
 ///   `cncrot_program_write` writes it, with the choice words the block has: Heidenhain
-///   `SEQ-`/`SEQ+`, CYCLE800 `_DIR` -1/+1 (-1 also for no choice: the cycle always names
-///   one); Fanuc, Syntec, Haas and TwinCAT blocks have none. Nothing active is written as
+///   `SEQ-`/`SEQ+`, CYCLE800 `_DIR` -1/+1 where it swivels (-1 also for no choice: a swivel
+///   always names one); Fanuc, Syntec, Haas and TwinCAT blocks have none. Nothing active is written as
 ///   the form's cancel; nothing active with the axes turning to the untilted plane
 ///   (`positioning` turn or move) as the dialect says that turn (`PLANE RESET TURN FMAX`, a
 ///   `G68.2` of zeros and `G53.1`, a `CYCLE800` of zero angles), or its cancel where it
@@ -918,7 +918,8 @@ const _: () = assert!(CNCROT_PROGRAM_CHANGE_MAX == program::MAX_CHANGE);
 /// - How the machine moves to the plane (`positioning`) goes where the dialect says it:
 ///   Heidenhain `STAY`, `TURN FMAX`, `MOVE FMAX` in the `PLANE`; Fanuc-style `G53.1` /
 ///   `G53.6` and Haas `G253` as a block after the tilt, or alone when only the way of moving
-///   changed. CYCLE800 always swivels; `ROT`, TwinCAT and `G158` say nothing.
+///   changed; CYCLE800's `_DIR` 0 where the axes stay (the frame alone), ±1 where they
+///   turn. `ROT`, TwinCAT and `G158` say nothing.
 ///
 /// Returns 0 or `CNCROT_STATUS_SINGULAR` (as `cncrot_program_write`), or a negative status
 /// with `out` untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a state

@@ -637,13 +637,15 @@ fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
     let tc = args.name(1)?;
     let st = args.int(2)?;
     let mode = args.int(3)?;
-    // `_DIR`: the solution, by the direction of the direction-reference axis [doc].
-    let choice = match args.int(13)? {
-        -1 => AxisChoice::Minus(0),
-        1 => AxisChoice::Plus(0),
-        0 => AxisChoice::Closest,
+    // `_DIR`: the solution, by the direction of the direction-reference axis [doc]; 0 the
+    // frame alone, calculated without swivelling [3rd: posts write 0 where the axes must not
+    // turn and ±1 where they do; the cycle's dialog offers "do not swivel (calculate only)"].
+    let (choice, swivels) = match args.int(13)? {
+        -1 => (AxisChoice::Minus(0), true),
+        1 => (AxisChoice::Plus(0), true),
+        0 => (AxisChoice::Closest, false),
         _ => {
-            let allowed = "_DIR: -1 (minus), +1 (plus) or 0 (no choice)";
+            let allowed = "_DIR: -1 (minus), +1 (plus) or 0 (no swivel: calculate only)";
             return Err(refused(args.column(13), allowed)(Error::BadArgument));
         }
     };
@@ -666,16 +668,21 @@ fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
         return cycle800_direct(m, &args, st % 10 == 1, &w);
     }
     let call = cycle800_words(mode, &w).map_err(refused(args.column(3), allowed))?;
-    // The cycle swivels the machine to the plane [choice: `_ST`'s higher digits, which may
-    // say "swivel: no", are not public].
     let base = if st % 10 == 1 {
         m.tilt_base().map_err(at(args.column(2)))?
     } else {
         m.frame
     };
+    // Without a swivel nothing moves: no retraction either. Decided before the state is
+    // built, not by a return of its own (stack bound).
+    let (positioning, retract, retract_mm) = if swivels {
+        (Positioning::Turn, retract, retract_mm)
+    } else {
+        (Positioning::Stay, Retract::None, 0.0)
+    };
     Ok(Modal {
         choice,
-        positioning: Positioning::Turn,
+        positioning,
         retract,
         retract_mm,
         ..m.with_frame(cycle800_apply(&base, st % 10 == 1, &call))
@@ -935,6 +942,9 @@ impl Family for Sinumerik {
     const TOOL_PATH: Option<&'static super::family::PathWords> = Some(&SINUMERIK_PATH);
     /// Its manual's limit for a block.
     const MAX_LINE: usize = 512;
+    /// `CYCLE800`'s `_DIR` says whether the axes swivel (0: the frame alone); `ROT` says
+    /// nothing, and is the same block again.
+    const POSITIONING_IN_BLOCK: bool = true;
     const FORMS: &'static [FormInfo] = &[
         FormInfo {
             form: Form::Cycle800,
@@ -1052,8 +1062,9 @@ impl Family for Sinumerik {
         Ok(true)
     }
 
-    /// `CYCLE800(0,"",0,_MODE,_X0,_Y0,_Z0,_A,_B,_C,_X1,_Y1,_Z1,_DIR,0,0)` (`_DIR` +1 for
-    /// a plus choice, else −1, "minus" \[choice\]) or `ROT X=… Y=… Z=…`.
+    /// `CYCLE800(0,"",0,_MODE,_X0,_Y0,_Z0,_A,_B,_C,_X1,_Y1,_Z1,_DIR,0,0)` (`_DIR` 0 where
+    /// the axes stay, else +1 for a plus choice, −1 otherwise, "minus" \[choice\]) or
+    /// `ROT X=… Y=… Z=…`.
     #[inline(never)]
     fn write_line(
         spec: &FormSpec,
@@ -1077,9 +1088,11 @@ impl Family for Sinumerik {
                     out.byte(b',');
                     write(out, v, decimals, style)?;
                 }
-                // `_DIR`: "minus" unless the plus direction is asked for [choice: CYCLE800
-                // always names a direction]; the direction-reference axis is machine data.
+                // `_DIR`: 0 where the axes stay (the frame alone); where they turn "minus"
+                // unless the plus direction is asked for [choice: a swivel always names a
+                // direction]; the direction-reference axis is machine data.
                 out.text(match how.choice {
+                    _ if how.positioning == Positioning::Stay => b",0,",
                     // A direction of travel has no parameter: as no choice [choice].
                     AxisChoice::Closest
                     | AxisChoice::Minus(0)
