@@ -1886,6 +1886,41 @@ fn translate(from: Dialect, lines: &[&str], to: Dialect, form: &str) -> Vec<Stri
     out
 }
 
+/// A new tilt over an active one: where a block of its own turns the axes (`G68.2` with
+/// `G53.1`, `G268` with `G253`) the old one is cancelled first, which every control
+/// accepts; a `PLANE`, a `CYCLE800`, a `G158` replace it. Hand-derived: SPA+30 is `Rx(30)`,
+/// G68.2 `I0 J30 K0`, G268 `I30 J0 K0`.
+#[test]
+fn a_new_tilt_over_an_active_one() {
+    let prog = [
+        "PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY",
+        "PLANE SPATIAL SPA+0 SPB+0 SPC+0 STAY",
+        "PLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY",
+        "PLANE SPATIAL SPA-30 SPB+0 SPC+0 STAY",
+    ];
+    let fanuc = translate(Dialect::Heidenhain, &prog, Dialect::Fanuc, "G68.2");
+    assert_eq!(
+        fanuc,
+        [
+            "G68.2 X0. Y0. Z0. I0. J30. K0.",
+            "G69",
+            "G68.2 X0. Y0. Z0. I0. J30. K0.",
+            // Rx(-30) = Rz(180)·Rx(30)·Rz(180): J stays in [0, 180].
+            "G69\nG68.2 X0. Y0. Z0. I180. J30. K180."
+        ]
+    );
+    let haas = translate(Dialect::Heidenhain, &prog, Dialect::Haas, "G268");
+    assert_eq!(haas[3], "G269\nG268 X0. Y0. Z0. I-30. J0. K0. Q123");
+    for (to, form) in [
+        (Dialect::Heidenhain, "PLANE SPATIAL"),
+        (Dialect::Sinumerik, "CYCLE800"),
+        (Dialect::Syntec, "G158"),
+    ] {
+        let t = translate(Dialect::Heidenhain, &prog, to, form);
+        assert!(!t[3].contains('\n'), "{form}: {}", t[3]);
+    }
+}
+
 /// Datum shifts are written with the target's own command, the tilt about the shifted
 /// datum, a tilt's origin into the datum shift where the form has no origin words, a shift
 /// under an active tilt after its cancel, and cancels as cancels. The expected lines are

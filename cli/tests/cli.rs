@@ -872,12 +872,13 @@ fn program_reads_a_whole_program_on_a_machine() {
     assert_eq!(r.code, 0, "{}", r.stderr);
     let lines: Vec<&str> = r.stdout.lines().collect();
     // Cycle 7's first line changes nothing in a Fanuc program: it is left out; TURN is
-    // G53.1 after the G68.2.
-    assert_eq!(lines.len(), 9, "{}", r.stdout);
+    // G53.1 after the G68.2; the next plane cancels this one first.
+    assert_eq!(lines.len(), 10, "{}", r.stdout);
     assert_eq!(lines[1], "1 TOOL CALL 1 Z S5000");
     assert_eq!(lines[2], "G68.2 X0. Y0. Z0. I90. J30. K-90.");
     assert_eq!(lines[3], "G53.1");
-    assert_eq!(lines[7], "G69");
+    assert_eq!(lines[5], "G69");
+    assert_eq!(lines[8], "G69");
     // A plane selection is carried across as it stands (no writer says a plane): the
     // rotation in the G18 plane that follows is written as the target's tilt.
     let r = cncrot(
@@ -1516,6 +1517,8 @@ fn program_to_writes_datum_shifts() {
         "G68.2 X0. Y0. Z0. I90. J30. K-90.",
         "G53.1",
         "6 L X+10 Y+0 FMAX",
+        // A new plane over an active one: cancelled first.
+        "G69",
         "G68.2 X0. Y0. Z0. I0. J20. K90.",
         "G53.1",
         "G69",

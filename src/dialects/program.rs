@@ -971,16 +971,17 @@ fn change(
     // Where the tilt block says how to move, a new way of moving is a new tilt block; where a
     // block of its own moves the machine (`G53.1`), no block takes that back: a tilt that
     // stays where it is after one that turned is the tilt block again, without it.
-    let unsaid = after.positioning == Positioning::Stay
-        && dialect
-            .positioning_block(
-                spec,
-                Motion {
-                    positioning: Positioning::Turn,
-                    ..Motion::default()
-                },
-            )
-            .is_some();
+    // The form turns the axes with a block of its own (`G53.1`, `G253`).
+    let turn_block = dialect
+        .positioning_block(
+            spec,
+            Motion {
+                positioning: Positioning::Turn,
+                ..Motion::default()
+            },
+        )
+        .is_some();
+    let unsaid = after.positioning == Positioning::Stay && turn_block;
     let rewrite =
         active && (words_changed || (moved && (dialect.positioning_in_block() || unsaid)));
     // The axes turned to the untilted plane (a zero tilt with `TURN`), or no longer: the
@@ -1008,7 +1009,17 @@ fn change(
             next(out);
             dialect.write_shift(s1, decimals, out)?;
         }
-        if (t0, d0) != (t1, d1) || rewrite {
+        let replaced = (t0, d0) != (t1, d1);
+        if replaced || rewrite {
+            // A new tilt over an active one where a block of its own turns the axes
+            // (`G68.2`, `G268`): cancelled first (`G69`, `G269`), which means the same where
+            // the control replaces the tilt and is what a control that refuses a tilt in
+            // tilt mode needs [choice]. A `PLANE`, a `G158` replace it.
+            let over = (t0 != Frame::IDENTITY || d0.is_some()) && active;
+            if replaced && over && turn_block {
+                next(out);
+                tilt_block(dialect, spec, &Frame::IDENTITY, stay, decimals, out)?;
+            }
             next(out);
             singular = tilt(out)?;
             tilt_written = true;
