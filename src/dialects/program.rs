@@ -968,9 +968,6 @@ fn change(
             != (after.retract, after.retract_mm.to_bits())
         || (before.feed, before.feed_mm_min.to_bits()) != (after.feed, after.feed_mm_min.to_bits());
     let moved = before.positioning != after.positioning;
-    // Where the tilt block says how to move, a new way of moving is a new tilt block; where a
-    // block of its own moves the machine (`G53.1`), no block takes that back: a tilt that
-    // stays where it is after one that turned is the tilt block again, without it.
     // The form turns the axes with a block of its own (`G53.1`, `G253`).
     let turn_block = dialect
         .positioning_block(
@@ -981,6 +978,9 @@ fn change(
             },
         )
         .is_some();
+    // Where the tilt block says how to move, a new way of moving is a new tilt block; where a
+    // block of its own moves the machine (`G53.1`), no block takes that back: a tilt that
+    // stays where it is after one that turned is the tilt block again, without it.
     let unsaid = after.positioning == Positioning::Stay && turn_block;
     let rewrite =
         active && (words_changed || (moved && (dialect.positioning_in_block() || unsaid)));
