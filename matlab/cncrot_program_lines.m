@@ -15,8 +15,8 @@
 %   tilt's own choice words (state.choice 1 minus, 2 plus for SEQ-/SEQ+ and _DIR, 4 / 5
 %   positive / negative turn for G53.1 P1 / P2, with state.reference_axis;
 %   cncrot_program_axes follows them) and how the program moves the
-%   machine to the tilt (state.positioning 0 stay, 1 turn for TURN, G53.1, G253, CYCLE800,
-%   2 move for MOVE, G53.6; with no tilt active, 1 or 2 turn the axes to the untilted plane:
+%   machine to the tilt (state.positioning 0 stay, 1 turn for TURN, G53.1, G253, a
+%   CYCLE800 with _DIR -1 or +1 (_DIR 0: stay), 2 move for MOVE, G53.6; with no tilt active, 1 or 2 turn the axes to the untilted plane:
 %   PLANE RESET TURN, a zero tilt with TURN; state.retract 0 none, 1 MB MAX / _FR 4, 2 MB n / _FR 5 by
 %   state.retract_mm, 3 _FR 1 along machine Z, 4 _FR 2 along Z then X Y; state.feed 0 FMAX,
 %   1 F n at state.feed_mm_min, 2 F AUTO) and the working plane (state.plane 0 G17, 1 G18,

@@ -114,8 +114,9 @@ pub struct cncrot_program {
     /// 0 with `CNCROT_CHOOSE_CLOSEST`.
     pub reference_axis: i32,
     /// How the program moves the machine to the active tilt: `CNCROT_POSITIONING_STAY`
-    /// (`STAY`, a `G68.2` alone, frames, a cancel), `CNCROT_POSITIONING_TURN` (`TURN`,
-    /// `G53.1`, `G253`, a `CYCLE800`), `CNCROT_POSITIONING_MOVE` (`MOVE`, `G53.6`: the tool
+    /// (`STAY`, a `G68.2` alone, a `CYCLE800` with `_DIR` 0, frames, a cancel),
+    /// `CNCROT_POSITIONING_TURN` (`TURN`, `G53.1`, `G253`, a `CYCLE800` with `_DIR` ±1),
+    /// `CNCROT_POSITIONING_MOVE` (`MOVE`, `G53.6`: the tool
     /// tip kept in place). With no tilt active, turn or move means the axes turn to the
     /// untilted plane (`PLANE RESET TURN`, a zero tilt with `TURN`, a `CYCLE800` of zero
     /// angles, a `G53.1` after a `G68.2` of zeros).
