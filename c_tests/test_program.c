@@ -937,7 +937,42 @@ static void joined_blocks(void) {
   CHECK(join == 7, "join touched");
 }
 
+/* A block that adds to the tilt is kept as one and written as the target's incremental
+ * form, its words exact (SPC+15 is Rz(15): G68.2's I15 J0 K0), so that a loop repeating
+ * it adds as often: the text read twice gives the source block read twice. */
+static void incremental_blocks(void) {
+  static const char first[] = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY", step[] = "PLANE RELATIV SPC+15 STAY";
+  cncrot_program p0, p1, p2, q;
+  memset(&p0, 0, sizeof p0);
+  CHECK_STATUS(cncrot_program_line(&p0, CNCROT_DIALECT_HEIDENHAIN, first, strlen(first)), CNCROT_STATUS_OK);
+  CHECK(p0.relative == 0, "PLANE SPATIAL: %u", p0.relative);
+  p1 = p0;
+  CHECK_STATUS(cncrot_program_line(&p1, CNCROT_DIALECT_HEIDENHAIN, step, strlen(step)), CNCROT_STATUS_OK);
+  CHECK(p1.relative == 1 && p1.spare == 0, "PLANE RELATIV: %u %u", p1.relative, p1.spare);
+  char out[CNCROT_PROGRAM_CHANGE_MAX + 1];
+  /* A turn about Z alone: Z, X', Z'' angles say only their sum (singular). */
+  CHECK_STATUS(cncrot_program_write_block(&p0, &p1, step, strlen(step), CNCROT_DIALECT_FANUC, "G68.2", -1, out,
+                                          sizeof out),
+               CNCROT_STATUS_SINGULAR);
+  CHECK(strcmp(out, "G68.4 X0. Y0. Z0. I15. J0. K0.") == 0, "%s", out);
+  /* Twice in the target as twice in the source. */
+  memset(&q, 0, sizeof q);
+  CHECK_STATUS(cncrot_program_line(&q, CNCROT_DIALECT_FANUC, "G68.2 X0 Y0 Z0 I90 J30 K-90", 27), CNCROT_STATUS_OK);
+  for (int k = 0; k < 2; k++)
+    CHECK_STATUS(cncrot_program_line(&q, CNCROT_DIALECT_FANUC, out, strlen(out)), CNCROT_STATUS_OK);
+  p2 = p1;
+  CHECK_STATUS(cncrot_program_line(&p2, CNCROT_DIALECT_HEIDENHAIN, step, strlen(step)), CNCROT_STATUS_OK);
+  double diff = 0;
+  for (int k = 0; k < 9; k++) diff = fmax(diff, fabs(q.rotation[k] - p2.rotation[k]));
+  CHECK(diff < 1e-15, "twice: %g", diff);
+  /* Without the block, from the states: the same plane, up to the last bits. */
+  CHECK_STATUS(cncrot_program_write_change(&p0, &p1, CNCROT_DIALECT_SINUMERIK, "CYCLE800", 4, out, sizeof out),
+               CNCROT_STATUS_OK);
+  CHECK(strcmp(out, "CYCLE800(0,\"\",1,57,0,0,0,0,0,15,0,0,0,0,0,0)") == 0, "%s", out);
+}
+
 int main(void) {
+  incremental_blocks();
   joined_blocks();
   restated_blocks();
   planes();

@@ -255,7 +255,7 @@
  * Mixed into the seal of every `cncrot_program` this version writes: a state of a version
  * with another meaning of the same bytes gets another constant, and is refused.
  */
-#define CNCROT_PROGRAM_FORMAT 1347569461
+#define CNCROT_PROGRAM_FORMAT 1347569462
 
 /**
  * `cncrot_program.positioning`: the tilt command moves no axis (`STAY`, `G68.2` alone).
@@ -745,12 +745,13 @@ typedef struct cncrot_machine {
  * hand, a bit flipped in storage, a state of another version — is refused with
  * `CNCROT_STATUS_BAD_STATE`.
  *
- * Layout (208 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
+ * Layout (216 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
  * `angles` 96, `shift` 120, `active` 144, `dialect` 148, `options` 152, `choice` 156,
  * `reference_axis` 160, `positioning` 164, `direct_given` 168, `retract` 172,
- * `retract_mm` 176, `feed_mm_min` 184, `feed` 192, `plane` 196, `table_rot` 200, `reserved`
- * 204. Accepted on entry: all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's
- * `crc32`) of bytes 0..204 exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
+ * `retract_mm` 176, `feed_mm_min` 184, `feed` 192, `plane` 196, `table_rot` 200,
+ * `relative` 204, `spare` 208, `reserved` 212. Accepted on entry: all zero bytes, or
+ * `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..212 exclusive-or
+ * `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
  */
 typedef struct cncrot_program {
   /**
@@ -853,6 +854,19 @@ typedef struct cncrot_program {
    * while no tilt or a direct mode is active).
    */
   uint32_t table_rot;
+  /**
+   * 1 while the active tilt was set by a block that adds to the tilt before it (`PLANE
+   * RELATIV`, `G68.4`, a `CYCLE800` with `_ST` 1, `AROT`, `ATRANS`, `G158 P01…`,
+   * `CYCLE600` with `_ROT_AD` 1): `cncrot_program_write_change` then writes the
+   * target's incremental form (`PLANE RELATIV`, `G68.4`, `_ST` 1, `AROT`, `G158 P01…`),
+   * so that a loop repeating the block adds as often; 0 otherwise (always while no tilt
+   * or a direct mode is active).
+   */
+  uint32_t relative;
+  /**
+   * 0: room for a field of a later version (a state with anything else is refused).
+   */
+  uint32_t spare;
   /**
    * The seal: 0 in the all-zero initial state, else the checksum described above (the
    * field keeps the name it had when it was reserved, so that the layout is unchanged).
@@ -2170,6 +2184,12 @@ int32_t cncrot_program_write(int32_t dialect,
  *   `G53.6` and Haas `G253` as a block after the tilt, or alone when only the way of moving
  *   changed; CYCLE800's `_DIR` 0 where the axes stay (the frame alone), ±1 where they
  *   turn. `ROT`, TwinCAT and `G158` say nothing.
+ * - A tilt added to the one before (`relative` 1 in `after`: `PLANE RELATIV`, `G68.4`, …)
+ *   is written as the target's increment on it (`before⁻¹·after`): `PLANE RELATIV`, one
+ *   angle per block, `G68.4`, `CYCLE800` with `_ST` 1, `AROT`, `G158 P01…`, so that a loop
+ *   repeating the source block adds as often. Written whole where the target has no such
+ *   form (Haas, TwinCAT), for an increment with an origin the form has no words for, or
+ *   with the datum shift changed.
  *
  * Returns 0 or `CNCROT_STATUS_SINGULAR` (as `cncrot_program_write`), or a negative status
  * with `out` untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a state
@@ -2210,7 +2230,10 @@ int32_t cncrot_program_write_change(const struct cncrot_program *before,
  * shift set to the value it already has (`G52 X0 Y0`, `TRANS DATUM RESET`, cycle 7 with
  * zeros) as the target's datum shift. Found by reading the block again on a state with
  * another tilt or shift. A block that only names a cycle (`CYCL DEF 7.0`) or a tilt
- * repeated unchanged restates nothing (an empty text).
+ * repeated unchanged restates nothing (an empty text). A block that adds to the tilt is
+ * written as the target's increment with the block's own numbers (read again on a state
+ * with nothing active: `PLANE RELATIV SPC+15` is `G68.4 … I15. J0. K0.` in the shortest
+ * exact numbers, where the two states alone give `I14.999999999999996`).
  *
  * Returns as `cncrot_program_write_change`, and `CNCROT_STATUS_NULL_POINTER` for a NULL
  * `line`, `CNCROT_STATUS_LINE_TOO_LONG` for a `len` longer than the dialect of `after`

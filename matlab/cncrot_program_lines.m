@@ -21,7 +21,10 @@
 %   state.retract_mm, 3 _FR 1 along machine Z, 4 _FR 2 along Z then X Y; state.feed 0 FMAX,
 %   1 F n at state.feed_mm_min, 2 F AUTO) and the working plane (state.plane 0 G17, 1 G18,
 %   2 G19: the plane of ROT RPL= and G68 X Y R) and Heidenhain's TABLE ROT (state.table_rot 1:
-%   cncrot_program_axes turns a free rotary table to the plane; 0 for COORD ROT or none).
+%   cncrot_program_axes turns a free rotary table to the plane; 0 for COORD ROT or none),
+%   and whether the active tilt was added to the one before (state.relative 1 after PLANE
+%   RELATIV, G68.4, a CYCLE800 with _ST 1, AROT, G158 P01...: cncrot_program_translate
+%   writes the target's incremental form, so that a loop repeating the block adds as often).
 %   A direct mode (PLANE AXIAL, G158 mode 2, a CYCLE800 with _MODE 192) keeps the rotary-axis positions (state.angles; state.active 2 by letter A,
 %   B, C, 3 by the machine's axes 1, 2, 3; state.direct_given which were given): its frame
 %   follows from the machine's kinematics, NaN without one; with machine (as in

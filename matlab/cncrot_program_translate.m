@@ -17,7 +17,10 @@
 %     was active (the safety cancel a program opens with), as a datum shift set to the
 %     value it had is written again --, the tilt's choice words where the
 %     block has them (SEQ+/SEQ- <-> CYCLE800 _DIR +1/-1) and how the machine moves to the
-%     plane (TURN/MOVE/STAY <-> G53.1/G53.6, G253). A command spread over lines is
+%     plane (TURN/MOVE/STAY <-> G53.1/G53.6, G253). A block that adds to the tilt (PLANE
+%     RELATIV, G68.4, CYCLE800 with _ST 1, AROT, G158 P01...) is written as the target's
+%     increment (PLANE RELATIV, G68.4, _ST 1, AROT, G158 P01...), so that a loop repeating
+%     it adds as often (the plane it reaches where the target has none: Haas). A command spread over lines is
 %     written once, at its last line ('' for the others): cycle 7's axis lines as one
 %     G52, a G68.2 and its G53.1 as one PLANE ... TURN (cncrot_program_joins);
 %   - any other block: the block as it stands (remarks says which).

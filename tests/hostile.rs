@@ -351,11 +351,11 @@ fn valid_state() -> cncrot_cycle600_gud {
     g
 }
 
-/// The program state's documented layout (208 bytes; ABI 0.2).
+/// The program state's documented layout (216 bytes; ABI 0.2).
 #[test]
 fn the_program_states_documented_layout() {
     use std::mem::offset_of;
-    assert_eq!(size_of::<cncrot_program>(), 208);
+    assert_eq!(size_of::<cncrot_program>(), 216);
     let offsets = [
         offset_of!(cncrot_program, rotation),
         offset_of!(cncrot_program, origin),
@@ -374,11 +374,16 @@ fn the_program_states_documented_layout() {
         offset_of!(cncrot_program, feed),
         offset_of!(cncrot_program, plane),
         offset_of!(cncrot_program, table_rot),
+        offset_of!(cncrot_program, relative),
+        offset_of!(cncrot_program, spare),
         offset_of!(cncrot_program, reserved),
     ];
     assert_eq!(
         offsets,
-        [0, 72, 96, 120, 144, 148, 152, 156, 160, 164, 168, 172, 176, 184, 192, 196, 200, 204]
+        [
+            0, 72, 96, 120, 144, 148, 152, 156, 160, 164, 168, 172, 176, 184, 192, 196, 200, 204,
+            208, 212
+        ]
     );
 }
 

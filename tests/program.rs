@@ -3071,3 +3071,163 @@ fn direct_modes_are_translated_where_the_target_has_one() {
         assert_eq!(r, Err(Error::NotAvailable), "{form}");
     }
 }
+
+/// A block that adds to the active tilt (`PLANE RELATIV`, `G68.4`, `CYCLE800` with `_ST` 1,
+/// `AROT`, `G158 P01…`) is written as the target's incremental form, so that a loop which
+/// repeats it adds as often: the source block read three times and the text written for its
+/// first reading read three times give the same frames. Texts hand-derived: `SPC+15` is
+/// `Rz(15)`, in G68.2's Z, X', Z'' angles `I15 J0 K0`; `Ry(30)` is `I90 J30 K-90` and `SPB+30`.
+#[test]
+fn incremental_tilts_stay_incremental() {
+    let h = [
+        "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY",
+        "PLANE RELATIV SPC+15 TURN MB50 FMAX",
+    ];
+    let second = |to, form| translate(Dialect::Heidenhain, &h, to, form)[1].clone();
+    assert_eq!(
+        second(Dialect::Fanuc, "G68.2"),
+        "G68.4 X0. Y0. Z0. I15. J0. K0.\nG53.1"
+    );
+    assert_eq!(
+        second(Dialect::Sinumerik, "CYCLE800"),
+        "CYCLE800(5,\"\",1,57,0,0,0,0,0,15,0,0,0,-1,50,0)"
+    );
+    assert_eq!(second(Dialect::Sinumerik, "ROT"), "AROT X=0 Y=0 Z=15");
+    assert_eq!(
+        second(Dialect::Syntec, "G158"),
+        "G158 P01157 X0. Y0. Z0. A0. B0. C15. U0. V0. W0."
+    );
+    assert_eq!(
+        second(Dialect::Syntec, "G68.2"),
+        "G68.4 X0. Y0. Z0. I15. J0. K0.\nG53.1"
+    );
+    // With the block, in the shortest exact numbers: the words' own increment, not
+    // `before⁻¹·after` (which reads `I14.999999999999996`).
+    let p1 = read(Dialect::Heidenhain, &h[..1]);
+    let p2 = p1.line(Dialect::Heidenhain, h[1].as_bytes()).unwrap().0;
+    let mut buf = [0u8; MAX_CHANGE];
+    let (n, _) = write_block(
+        Dialect::Fanuc,
+        b"G68.2",
+        &p1,
+        &p2,
+        h[1].as_bytes(),
+        -1,
+        &mut buf,
+    )
+    .unwrap();
+    assert_eq!(&buf[..n], b"G68.4 X0. Y0. Z0. I15. J0. K0.\nG53.1");
+    // Haas has no incremental `G268`: the plane the block reaches.
+    assert!(second(Dialect::Haas, "G268").starts_with("G269\nG268 "));
+    let f = [
+        "G68.2 X0 Y0 Z0 I0 J20 K0",
+        "G68.4 X0 Y0 Z0 I90 J30 K-90",
+        "G53.1",
+        "G68.4 X5 Y0 Z2 I0 J0 K10",
+    ];
+    let heidenhain = translate(Dialect::Fanuc, &f, Dialect::Heidenhain, "PLANE SPATIAL");
+    assert_eq!(heidenhain[1], "PLANE RELATIV SPB+30 STAY");
+    // The same plane with another way of moving: a zero increment that turns.
+    assert_eq!(heidenhain[2], "PLANE RELATIV SPA+0 TURN FMAX");
+    assert_eq!(
+        translate(Dialect::Fanuc, &f, Dialect::Fanuc, "G68.2")[2],
+        "G53.1"
+    );
+    // An increment with an origin: `PLANE RELATIV` has no words for it.
+    assert!(heidenhain[3].contains("PLANE SPATIAL"), "{}", heidenhain[3]);
+    let sinumerik = translate(Dialect::Fanuc, &f, Dialect::Sinumerik, "CYCLE800");
+    assert_eq!(
+        sinumerik[3],
+        "CYCLE800(0,\"\",1,57,5,0,2,0,0,10,0,0,0,0,0,0)"
+    );
+
+    let sources: [(Dialect, &[&str], &str); 7] = [
+        (
+            Dialect::Heidenhain,
+            &[
+                "CYCL DEF 7.0 DATUM SHIFT",
+                "CYCL DEF 7.1 X+10",
+                "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY",
+            ],
+            "PLANE RELATIV SPC+15 TURN FMAX",
+        ),
+        (
+            Dialect::Fanuc,
+            &["G52 X5 Y-3", "G68.2 X1 Y2 Z3 I10 J20 K30"],
+            "G68.4 X2 Y0 Z1 I5 J10 K15",
+        ),
+        (Dialect::Fanuc, &["G68.2 I0 J20 K0"], "G68.4 I10 J20 K30"),
+        (Dialect::Fanuc, &[], "G68.4 I0 J0 K25"),
+        (
+            Dialect::Sinumerik,
+            &["CYCLE800(0,\"T\",0,57,1,2,3,10,20,30,0,0,0,1,0,0)"],
+            "CYCLE800(0,\"T\",1,57,0,0,0,0,0,12,0,0,0,1,0,0)",
+        ),
+        (Dialect::Sinumerik, &["ROT X10 Y20"], "AROT Z12"),
+        (
+            Dialect::Syntec,
+            &["G158 P10157 X1 Y2 Z3 A10 B20 C30"],
+            "G158 P01157 A0 B5 C10",
+        ),
+    ];
+    let targets = [
+        (Dialect::Heidenhain, "PLANE SPATIAL"),
+        (Dialect::Heidenhain, "PLANE VECTOR"),
+        (Dialect::Fanuc, "G68.2"),
+        (Dialect::Syntec, "G158"),
+        (Dialect::Syntec, "G68.2"),
+        (Dialect::Sinumerik, "CYCLE800"),
+        (Dialect::Sinumerik, "ROT"),
+    ];
+    let write = |to: Dialect, form: &str, p: &Program, q: &Program| {
+        let mut buf = [0u8; MAX_CHANGE];
+        write_change(to, form.as_bytes(), p, q, -1, &mut buf)
+            .map(|(n, _)| String::from_utf8(buf[..n].to_vec()).unwrap())
+    };
+    let run = |to: Dialect, q: Program, text: &str| {
+        text.lines()
+            .fold(q, |q, l| q.line(to, l.as_bytes()).unwrap().0)
+    };
+    let mut looped = 0;
+    for (from, setup, block) in sources {
+        for (to, form) in targets {
+            let (mut p, mut q) = (Program::default(), Program::default());
+            let mut writable = true;
+            for l in setup {
+                let next = p.line(from, l.as_bytes()).unwrap().0;
+                match write(to, form, &p, &next) {
+                    Ok(t) => q = run(to, q, &t),
+                    // `ROT` has no origin words.
+                    Err(Error::HasOrigin) => writable = false,
+                    Err(e) => panic!("{l} -> {form}: {e:?}"),
+                }
+                p = next;
+            }
+            if !writable {
+                continue;
+            }
+            let next = p.line(from, block.as_bytes()).unwrap().0;
+            assert!(next.relative, "{block}");
+            let text = write(to, form, &p, &next).unwrap();
+            // Only where the form has words for the increment's origin.
+            let incremental = ["PLANE RELATIV", "G68.4", "\",1,", "AROT", "P01"]
+                .iter()
+                .any(|w| text.contains(w));
+            let passes = if incremental { 3 } else { 1 };
+            looped += usize::from(incremental);
+            for pass in 0..passes {
+                p = p.line(from, block.as_bytes()).unwrap().0;
+                q = run(to, q, &text);
+                assert!(
+                    frame_dist(&q.frame, &p.frame) < 1e-9,
+                    "{block} -> {form} pass {pass}: {text}\n{:?}\n{:?}",
+                    q.frame,
+                    p.frame
+                );
+            }
+        }
+    }
+    // 49 pairs: `ROT` cannot write the four setups with an origin, `PLANE RELATIV` not the
+    // increment with one (two forms).
+    assert_eq!(looped, 49 - 4 - 2);
+}

@@ -1390,6 +1390,25 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                 );
                             }
                         }
+                        // An increment the target cannot say: the same text as the plane
+                        // it reaches.
+                        if let (Ok((len, _)), true) = (w, p.relative) {
+                            let whole = Program {
+                                relative: false,
+                                ..p
+                            };
+                            let mut other = [0u8; MAX_CHANGE];
+                            let same =
+                                write_block(t.dialect, form, &from, &whole, text, d, &mut other)
+                                    .is_ok_and(|(n, _)| other.get(..n) == buf.get(..len));
+                            if len > 0 && same {
+                                eprintln!(
+                                    "cncrot: line {line}: the block adds to the active tilt and {} {} cannot say this increment: written as the plane it reaches, so a loop that repeats the block does not add: {block}",
+                                    input::dialect_name(t.dialect),
+                                    t.form
+                                );
+                            }
+                        }
                         w
                     };
                     match written {

@@ -1820,3 +1820,34 @@ fn program_reads_direct_modes_through_the_machine() {
     );
     assert_eq!(r.code, 1, "{}", r.stderr);
 }
+
+/// A block that adds to the tilt, in a loop, is written as the target's increment, so that
+/// each pass adds: `PLANE RELATIV SPC+15` is `Rz(15°)`, G68.2's `I15. J0. K0.` as a `G68.4`;
+/// `SPB+30` is `I90. J30. K-90.`. Haas has no incremental `G268`: said on standard error.
+#[test]
+fn program_to_keeps_increments() {
+    let prog = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY\nLBL 1\nPLANE RELATIV SPC+15 TURN FMAX\n\
+                L Z+100 R0 FMAX\nCALL LBL 1 REP 3\nPLANE RESET STAY\n";
+    assert_eq!(
+        program_to(prog, "heidenhain", "fanuc"),
+        [
+            "G68.2 X0. Y0. Z0. I90. J30. K-90.",
+            "LBL 1",
+            "G68.4 X0. Y0. Z0. I15. J0. K0.",
+            "G53.1",
+            "L Z+100 R0 FMAX",
+            "CALL LBL 1 REP 3",
+            "G69"
+        ]
+    );
+    let r = translate(prog, "heidenhain", "fanuc");
+    assert!(!r.stderr.contains("does not add"), "{}", r.stderr);
+    let r = translate(prog, "heidenhain", "haas");
+    assert!(
+        r.stderr.contains(
+            "line 3: the block adds to the active tilt and haas G268 cannot say this increment"
+        ),
+        "{}",
+        r.stderr
+    );
+}

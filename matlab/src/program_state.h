@@ -1,6 +1,6 @@
 /* The program state as a MATLAB struct (rotation, origin, angles, shift, active, dialect,
  * options, choice, reference_axis, positioning, direct_given, retract, retract_mm,
- * feed_mm_min, feed, plane, table_rot, seal) and back, and the reading of program lines: shared by
+ * feed_mm_min, feed, plane, table_rot, relative, seal) and back, and the reading of program lines: shared by
  * cncrot_program_lines, cncrot_program_translate and cncrot_program_axes. */
 #ifndef CNCROT_PROGRAM_STATE_H
 #define CNCROT_PROGRAM_STATE_H
@@ -8,7 +8,7 @@
 
 static const char *FIELDS[] = {"rotation", "origin", "angles", "shift", "active", "dialect",
                                "options", "choice", "reference_axis", "positioning", "direct_given",
-                               "retract", "retract_mm", "feed_mm_min", "feed", "plane", "table_rot", "seal"};
+                               "retract", "retract_mm", "feed_mm_min", "feed", "plane", "table_rot", "relative", "seal"};
 
 /* A field of the state struct as n doubles (absent: zeros; wrong size: an error). */
 static void field(const mxArray *s, int arg, const char *name, double *out, size_t n) {
@@ -70,6 +70,8 @@ static void from_struct(const mxArray *s, int arg, cncrot_program *p) {
   p->plane = as_int(v[0]);
   field(s, arg, "table_rot", v, 1);
   p->table_rot = as_u32(v[0]);
+  field(s, arg, "relative", v, 1);
+  p->relative = as_u32(v[0]);
   if (mxGetField(s, 0, "seal")) {
     field(s, arg, "seal", v, 1);
     p->reserved = as_u32(v[0]);
@@ -108,6 +110,7 @@ static mxArray *to_struct(const cncrot_program *p) {
   mxSetField(s, 0, "feed", mxCreateDoubleScalar(p->feed));
   mxSetField(s, 0, "plane", mxCreateDoubleScalar(p->plane));
   mxSetField(s, 0, "table_rot", mxCreateDoubleScalar(p->table_rot));
+  mxSetField(s, 0, "relative", mxCreateDoubleScalar(p->relative));
   mxSetField(s, 0, "seal", mxCreateDoubleScalar(p->reserved));
   return s;
 }

@@ -527,6 +527,12 @@ function test_cncrot(cases_file)
   check(abs(axc(1) - 20) < 1e-9, 'program_axes keeps the table (COORD ROT)');
   [~, st] = cncrot_program_lines(d.HEIDENHAIN, 'PLANE RESET STAY', st);
   check(st.table_rot == 0, 'TABLE ROT cleared by the reset');
+  % An incremental tilt is kept as one and translated into the target's incremental form
+  % (SPC+15 is Rz(15), G68.2's I15 J0 K0).
+  [~, st] = cncrot_program_lines(d.HEIDENHAIN, {'PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY', 'PLANE RELATIV SPC+15 STAY'});
+  check(st.relative == 1, 'PLANE RELATIV in the state');
+  t = cncrot_program_translate(d.HEIDENHAIN, {'PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY', 'PLANE RELATIV SPC+15 STAY'}, d.FANUC, 'G68.2');
+  check(strcmp(t{2}, 'G68.4 X0. Y0. Z0. I15. J0. K0.'), 'PLANE RELATIV as G68.4');
   % Cycle 19: spatial angles by default (Ry(30)), the rotary positions with option 2.
   F = cncrot_program_lines(d.HEIDENHAIN, {'CYCL DEF 19.0 WORKING PLANE', 'CYCL DEF 19.1 B+30'});
   check(max(max(abs(F(1:3, 1:3) - [cosd(30) 0 sind(30); 0 1 0; -sind(30) 0 cosd(30)]))) < 1e-15, 'cycle 19 spatial');

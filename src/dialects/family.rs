@@ -57,6 +57,9 @@ pub struct Modal {
     pub plane: Plane,
     /// The active tilt turns a free rotary table to the plane (Heidenhain `TABLE ROT`).
     pub table_rot: bool,
+    /// The active tilt was set by a block that adds to the tilt before it (`PLANE RELATIV`,
+    /// `G68.4`, `AROT`, …).
+    pub relative: bool,
 }
 
 /// A direct mode: a block that states rotary-axis positions (`PLANE AXIAL B+30 C+45`, a
@@ -279,7 +282,18 @@ impl Modal {
             feed_mm_min: 0.0,
             direct: None,
             table_rot: false,
+            relative: false,
             ..*self
+        }
+    }
+
+    /// [`Modal::with_frame`] for a command that adds to the active tilt where `added` (its
+    /// frame the active one composed with the command's): the state remembers it, so that
+    /// a translator writes the target's incremental form.
+    pub fn with_tilt(&self, tilt: Frame, added: bool) -> Modal {
+        Modal {
+            relative: added,
+            ..self.with_frame(tilt)
         }
     }
 
@@ -511,6 +525,15 @@ pub(crate) trait Family {
         None
     }
 
+    /// The form whose words [`Family::write_line`] writes as an increment on the active
+    /// tilt when the motion says `relative` (`G68.4` for `G68.2`, `PLANE RELATIV` from the
+    /// spatial angles for every `PLANE`, `CYCLE800` with `_ST` 1, `AROT` for `ROT`); `None`
+    /// where the family has no such command for `spec`.
+    fn relative_form(spec: &FormSpec) -> Option<FormSpec> {
+        let _ = spec;
+        None
+    }
+
     /// Whether the family's reader keeps a datum shift apart from the tilt, kept when the
     /// tilt is cancelled (Heidenhain's cycle 7, Fanuc-style `G52`); `false` where one frame
     /// holds both and a substituting command replaces it (SINUMERIK's `TRANS` and `ROT`).
@@ -593,6 +616,9 @@ pub struct Motion {
     /// A free rotary table turns to the plane (`TABLE ROT`) instead of the coordinate
     /// system alone (`COORD ROT`, or no word).
     pub table_rot: bool,
+    /// The block adds to the active tilt (`G68.4`, `PLANE RELATIV`, `CYCLE800` with `_ST`
+    /// 1, `AROT`, `G158 P01…`): the words are the increment.
+    pub relative: bool,
 }
 
 /// A command of a five-axis program (see [`PathWords`]).

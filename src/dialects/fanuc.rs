@@ -279,11 +279,12 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
         } else {
             g68_2(v3(&w.values, 0), v3(&w.values, 3))
         };
-        Ok(Block::Frame(m.with_frame(if incremental {
+        let tilt = if incremental {
             g68_4(&LineError::at(column, m.tilt_base())?, &call)
         } else {
             call
-        })))
+        };
+        Ok(Block::Frame(m.with_tilt(tilt, incremental)))
     }))
 }
 
@@ -574,8 +575,14 @@ pub(crate) fn iso_block(
 }
 
 /// Writes `G68.2 X Y Z I J K` (Syntec's `G68.2` mode too).
-pub(crate) fn write_g68_2(words: &[f64], decimals: i32, out: &mut Out) -> Result<(), Error> {
-    out.text(b"G68.2");
+/// `G68.4` with the same words where `relative`: the increment on the active plane.
+pub(crate) fn write_g68_2(
+    words: &[f64],
+    relative: bool,
+    decimals: i32,
+    out: &mut Out,
+) -> Result<(), Error> {
+    out.text(if relative { b"G68.4" } else { b"G68.2" });
     for (name, &v) in [b" X", b" Y", b" Z", b" I", b" J", b" K"].iter().zip(words) {
         write_word(out, *name, v, decimals, STYLE)?;
     }
@@ -688,13 +695,13 @@ impl Family for Fanuc {
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
-        _: Motion,
+        how: Motion,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {
         match spec.form {
             // The block has no words for the solution: `G53.1` turns the axes.
-            Form::G68_2 => write_g68_2(words, decimals, out),
+            Form::G68_2 => write_g68_2(words, how.relative, decimals, out),
             _ => Err(Error::BadArgument),
         }
     }
@@ -705,6 +712,11 @@ impl Family for Fanuc {
 
     fn positioning_block(_: &FormSpec, how: Motion) -> Option<&'static [u8]> {
         g53(how)
+    }
+
+    /// `G68.4`: the words of `G68.2`, on the active plane.
+    fn relative_form(spec: &FormSpec) -> Option<FormSpec> {
+        (spec.form == Form::G68_2).then_some(*spec)
     }
 
     fn form_frame(form: Form, selector: i32, words: &[f64]) -> Result<Frame, Error> {

@@ -236,6 +236,59 @@ fn write_positioning(how: Motion, decimals: i32, out: &mut Out) -> Result<(), Er
     Ok(())
 }
 
+/// A `PLANE`'s words after its positioning: `SEQ±` names the master axis' sign; another
+/// axis cannot be named on the block. A direction of travel (`G53.1 P1`) has no word here:
+/// not written, as `SEQ` is not on a `G68.2` \[choice\]. Then `TABLE ROT`.
+fn write_choice(how: Motion, out: &mut Out) -> Result<(), Error> {
+    match how.choice {
+        AxisChoice::Closest | AxisChoice::PositiveTurn(0) | AxisChoice::NegativeTurn(0) => {}
+        AxisChoice::Minus(0) => out.text(b" SEQ-"),
+        AxisChoice::Plus(0) => out.text(b" SEQ+"),
+        _ => return Err(Error::NotAvailable),
+    }
+    if how.table_rot {
+        out.text(b" TABLE ROT");
+    }
+    Ok(())
+}
+
+/// An increment on the active plane of spatial angles `SPA SPB SPC` (`words`): `PLANE
+/// RELATIV` takes one angle, about the axis already turned, so `Rz(SPC)·Ry(SPB)·Rx(SPA)` is
+/// three blocks, `SPC`, then `SPB`, then `SPA`; an angle written as 0 is left out (one block
+/// at least), the blocks before the last stay where they are, the last moves as `how` says.
+/// Not inlined: its locals stay out of the frame of every `PLANE` written (stack bound).
+#[inline(never)]
+fn write_relativ(words: &[f64], how: Motion, decimals: i32, out: &mut Out) -> Result<(), Error> {
+    let &[a, b, c] = words else {
+        return Err(Error::BadArgument);
+    };
+    let steps: [(&[u8], f64); 3] = [(b" SPC", c), (b" SPB", b), (b" SPA", a)];
+    let given = |&(_, v): &(&[u8], f64)| !crate::text::number::writes_zero(v, decimals);
+    let last = steps.iter().rposition(given).unwrap_or(2);
+    let style = Style {
+        plus: true,
+        point: false,
+    };
+    let mut first = true;
+    for (k, step) in steps.iter().enumerate() {
+        if k != last && !given(step) {
+            continue;
+        }
+        if !first {
+            out.byte(b'\n');
+        }
+        first = false;
+        out.text(b"PLANE RELATIV");
+        write_word(out, step.0, step.1, decimals, style)?;
+        if k == last {
+            write_positioning(how, decimals, out)?;
+            return write_choice(how, out);
+        }
+        out.text(b" STAY");
+    }
+    Ok(())
+}
+
 /// The rest of a `PLANE AXIAL` block. Not inlined: its state stays out of the reader's
 /// frame (stack bound).
 #[inline(never)]
@@ -767,6 +820,7 @@ impl Family for Heidenhain {
         }
         c.spaces();
         let at = c.column();
+        let mut added = false;
         let frame = if c.keyword(b"SPATIAL") {
             let w = plane_words(&mut c, [b"SPA", b"SPB", b"SPC"])?;
             LineError::at(at, plane_frame(Form::PlaneSpatial, &w))?
@@ -798,6 +852,7 @@ impl Family for Heidenhain {
             };
             c.spaces();
             let angle = c.number(SYNTAX)?;
+            added = true;
             relativ(&LineError::at(at, m.tilt_base())?, axis, angle)
         } else if c.keyword(b"RESET") {
             RESET
@@ -817,7 +872,7 @@ impl Family for Heidenhain {
             feed: how.feed,
             feed_mm_min: how.feed_mm_min,
             table_rot: how.table_rot,
-            ..m.with_frame(frame)
+            ..m.with_tilt(frame, added)
         }))
     }
 
@@ -871,6 +926,9 @@ impl Family for Heidenhain {
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {
+        if how.relative {
+            return write_relativ(words, how, decimals, out);
+        }
         let (head, names): (&[u8], &[&[u8]]) = match spec.form {
             Form::PlaneSpatial => (b"PLANE SPATIAL", &[b" SPA", b" SPB", b" SPC"]),
             Form::PlaneProjected => (b"PLANE PROJECTED", &[b" PROPR", b" PROMIN", b" ROT"]),
@@ -896,19 +954,23 @@ impl Family for Heidenhain {
             write_word(out, name, v, decimals, style)?;
         }
         write_positioning(how, decimals, out)?;
-        // `SEQ±` names the master axis' sign; another axis cannot be named on the block. A
-        // direction of travel (`G53.1 P1`) has no word here: not written, as `SEQ` is not
-        // on a `G68.2` [choice].
-        match how.choice {
-            AxisChoice::Closest | AxisChoice::PositiveTurn(0) | AxisChoice::NegativeTurn(0) => {}
-            AxisChoice::Minus(0) => out.text(b" SEQ-"),
-            AxisChoice::Plus(0) => out.text(b" SEQ+"),
-            _ => return Err(Error::NotAvailable),
-        }
-        if how.table_rot {
-            out.text(b" TABLE ROT");
-        }
-        Ok(())
+        write_choice(how, out)
+    }
+
+    /// `PLANE RELATIV` from the spatial angles of every `PLANE`.
+    fn relative_form(spec: &FormSpec) -> Option<FormSpec> {
+        let plane = matches!(
+            spec.form,
+            Form::PlaneSpatial
+                | Form::PlaneProjected
+                | Form::PlaneEuler
+                | Form::PlaneVector
+                | Form::PlanePoints
+        );
+        plane.then_some(FormSpec {
+            form: Form::PlaneSpatial,
+            selector: 0,
+        })
     }
 
     /// `PLANE AXIAL` with the positions given (`A`, `B`, `C`), then the positioning: the

@@ -83,6 +83,12 @@ pub struct Program {
     /// [`Program::axes`] turns it so that the machine makes the whole rotation. False while
     /// no tilt (or a direct mode) is active.
     pub table_rot: bool,
+    /// The active tilt was set by a block that adds to the tilt before it (`PLANE
+    /// RELATIV`, `G68.4`, a `CYCLE800` with `_ST` 1, `AROT`, `ATRANS`, `G158 P01…`,
+    /// `CYCLE600` with `_ROT_AD` 1): a translator writes the target's incremental form, so
+    /// that a loop which repeats the block adds as often. False while no tilt (or a direct
+    /// mode) is active.
+    pub relative: bool,
 }
 
 /// What a block did, beside the state it leaves (`CNCROT_STATUS_PASSED` and
@@ -128,7 +134,8 @@ impl Program {
         // TURN`, a `CYCLE800` of zero angles) keeps its way of moving: the machine turns to
         // the untilted plane.
         let positioning = next.positioning;
-        // Only a tilt has a free table to turn.
+        // Only a tilt has a free table to turn, or was added to the one before.
+        let tilted = next.frame.rotation != crate::IDENTITY && next.direct.is_none();
         let table_rot = next.table_rot && !untilted && next.direct.is_none();
         let stay = positioning == Positioning::Stay;
         let h = next.frame.to_homogeneous();
@@ -157,6 +164,7 @@ impl Program {
                 direct: next.direct,
                 plane: next.plane,
                 table_rot,
+                relative: next.relative && tilted,
             },
             Remark::Applied,
         ))
@@ -230,6 +238,7 @@ impl Program {
             direct: self.direct,
             plane: self.plane,
             table_rot: self.table_rot,
+            relative: self.relative,
         }
     }
 
@@ -319,6 +328,9 @@ impl Program {
                 || (self.dialect == Some(Dialect::Heidenhain)
                     && self.direct.is_none()
                     && self.frame != Frame::IDENTITY))
+            // Only a tilt was added to.
+            && (!self.relative
+                || (self.direct.is_none() && self.frame.rotation != crate::IDENTITY))
             && self.motion_consistent();
         if consistent {
             Ok(())
@@ -329,6 +341,20 @@ impl Program {
 }
 
 impl Program {
+    /// How the machine moves to the active tilt, as the tilt block says it.
+    fn motion(&self) -> Motion {
+        Motion {
+            choice: self.choice,
+            positioning: self.positioning,
+            retract: self.retract,
+            retract_mm: self.retract_mm,
+            feed: self.feed,
+            feed_mm_min: self.feed_mm_min,
+            table_rot: self.table_rot,
+            relative: false,
+        }
+    }
+
     /// Retraction and feed as a reader leaves them: none while staying, a retraction
     /// distance and a feed rate positive and finite.
     fn motion_consistent(&self) -> bool {
@@ -659,22 +685,27 @@ pub fn write_change(
     buf: &mut [u8],
 ) -> Result<(usize, bool), Error> {
     let spec = dialect.parse_form(form_text)?;
-    write_change_with(dialect, &spec, before, after, decimals, buf)
+    let c = Change {
+        before,
+        after,
+        step: None,
+    };
+    write_change_with(dialect, &spec, &c, decimals, buf)
 }
 
 /// [`write_change`] with the form already read (the C boundary reads the caller's form
-/// name before it touches the output, which may be the same memory).
+/// name before it touches the output, which may be the same memory), and the increment the
+/// block added to the tilt where it is known exactly ([`added_step`]).
 pub(crate) fn write_change_with(
     dialect: Dialect,
     spec: &FormSpec,
-    before: &Program,
-    after: &Program,
+    c: &Change,
     decimals: i32,
     buf: &mut [u8],
 ) -> Result<(usize, bool), Error> {
     let room = buf.len();
     let mut out = Out::new(buf);
-    let singular = change(dialect, spec, before, after, decimals, &mut out)?;
+    let singular = blocks(dialect, spec, c, decimals, &mut out)?;
     let len = match out.finish() {
         Some(len) => len,
         None if room >= MAX_CHANGE => return Err(Error::OutOfRange),
@@ -710,19 +741,24 @@ pub fn change_length(
     decimals: i32,
 ) -> Result<(usize, bool), Error> {
     let spec = dialect.parse_form(form_text)?;
-    change_length_with(dialect, &spec, before, after, decimals)
+    let c = Change {
+        before,
+        after,
+        step: None,
+    };
+    change_length_with(dialect, &spec, &c, decimals)
 }
 
-/// [`change_length`] with the form already read.
+/// [`change_length`] with the form already read (and the increment, as
+/// [`write_change_with`]).
 pub(crate) fn change_length_with(
     dialect: Dialect,
     spec: &FormSpec,
-    before: &Program,
-    after: &Program,
+    c: &Change,
     decimals: i32,
 ) -> Result<(usize, bool), Error> {
     let mut out = Out::counter();
-    let singular = change(dialect, spec, before, after, decimals, &mut out)?;
+    let singular = blocks(dialect, spec, c, decimals, &mut out)?;
     let len = out.finish().unwrap_or(usize::MAX);
     if len > MAX_CHANGE || out.longest_line() > dialect.max_line() {
         return Err(Error::OutOfRange);
@@ -768,7 +804,13 @@ pub fn write_block(
     let spec = dialect.parse_form(form_text)?;
     let mut from = *before;
     restate(&mut from, after, text);
-    write_change_with(dialect, &spec, &from, after, decimals, buf)
+    let step = added_step(&from, after, text);
+    let c = Change {
+        before: &from,
+        after,
+        step: step.as_ref(),
+    };
+    write_change_with(dialect, &spec, &c, decimals, buf)
 }
 
 /// Whether a translator writes two blocks read one after the other — the first from
@@ -920,8 +962,150 @@ fn sets_shift(before: &Program, dialect: Dialect, text: &[u8]) -> bool {
     matches!(shifted.line(dialect, text), Ok((p, Remark::Applied)) if p.shift != shifted.shift)
 }
 
-/// The blocks of [`write_change`] into `out`; whether the decomposition was singular. Not
-/// inlined: measured and then written, its frame is on the stack once.
+/// The blocks of [`write_change`] into `out`: the increment where the tilt was added to
+/// ([`added`]), else the whole change ([`change`]); whether the decomposition was singular.
+#[inline(never)]
+fn blocks(
+    dialect: Dialect,
+    spec: &FormSpec,
+    c: &Change,
+    decimals: i32,
+    out: &mut Out,
+) -> Result<bool, Error> {
+    match added(dialect, spec, c, decimals, out) {
+        Some(r) => r,
+        None => change(dialect, spec, c.before, c.after, decimals, out),
+    }
+}
+
+/// A change to write: the states before and after it, and the increment the block added to
+/// the tilt where its reader gave it ([`added_step`]). One argument for three (stack bound).
+pub(crate) struct Change<'a> {
+    /// The state before the block.
+    pub before: &'a Program,
+    /// The state after it.
+    pub after: &'a Program,
+    /// The block's own increment.
+    pub step: Option<&'a Frame>,
+}
+
+/// The blocks of [`write_change`] into `out` where `after`'s tilt was added to the one before
+/// ([`Program::relative`]: `PLANE RELATIV`, `G68.4`, `AROT`, …): the target's incremental
+/// form with the increment — `step` where the block's reader gave it ([`added_step`]: the
+/// words' own numbers), else `before⁻¹·after` — (`G68.4`, `PLANE RELATIV` one angle per block,
+/// `CYCLE800` with `_ST` 1, `AROT`, `G158 P01…`), then the block that moves the machine
+/// where the dialect has one, so that a loop which repeats the source block repeats the
+/// target's and adds as often; the same plane with another way of moving, where the tilt
+/// block says it, as a zero increment (`PLANE RELATIV SPA+0 TURN FMAX`). `None` where the
+/// change is written whole ([`change`]): not added to, another datum shift (in the program
+/// or as the target writes it) or a direct mode before, a state [`Program::check`]
+/// refuses, a target without an incremental form (`G268`, TwinCAT, whose `AROT` adds
+/// angles, not rotations), or an increment with an origin the form has no words for
+/// (`PLANE RELATIV`, `AROT`). Not inlined: its frame is beside [`change`]'s, not on top of
+/// it.
+#[inline(never)]
+fn added(
+    dialect: Dialect,
+    spec: &FormSpec,
+    &Change {
+        before,
+        after,
+        step,
+    }: &Change,
+    decimals: i32,
+    out: &mut Out,
+) -> Option<Result<bool, Error>> {
+    // The same datum shift in the program and as the target writes it (a `TRANS` before a
+    // SINUMERIK `AROT` is the frame's origin, a Fanuc `G52` while no tilt is active).
+    let plain = after.relative
+        && before.direct.is_none()
+        && before.shift == after.shift
+        && decimals <= crate::text::number::MAX_DECIMALS
+        && before.check().is_ok()
+        && after.check().is_ok()
+        && split(dialect, spec, before).0 == split(dialect, spec, after).0;
+    if !plain {
+        return None;
+    }
+    let rspec = dialect.relative_form(spec)?;
+    if before.frame == after.frame
+        && !(before.motion() != after.motion() && dialect.positioning_in_block())
+    {
+        return None;
+    }
+    let how = Motion {
+        relative: true,
+        ..after.motion()
+    };
+    let size = before
+        .frame
+        .translation
+        .iter()
+        .chain(&after.frame.translation)
+        .fold(1.0, |m: f64, &x| m.max(crate::math::abs(x)));
+    // The block's own increment where it leads from `before` to `after` (a TwinCAT `AROT`
+    // adds angles, which is no increment on the right).
+    let near = |a: &Frame, b: &Frame| {
+        let (ha, hb) = (a.to_homogeneous(), b.to_homogeneous());
+        ha.iter()
+            .flatten()
+            .zip(hb.iter().flatten())
+            .all(|(x, y)| crate::math::abs(x - y) <= 1e-12 * size)
+    };
+    let mut step = match step {
+        Some(s) if near(&before.frame.compose(s), &after.frame) => *s,
+        _ => before.frame.inverse().compose(&after.frame),
+    };
+    // The origin is the same where the block added a rotation alone, up to the rounding of
+    // the datum shift added back to the tilt's origin.
+    if step
+        .translation
+        .iter()
+        .all(|&x| crate::math::abs(x) <= 1e-12 * size)
+    {
+        step.translation = [0.0; 3];
+    }
+    if step.translation != [0.0; 3] && !rspec.form.has_origin() {
+        return None;
+    }
+    let mut words = [0.0; MAX_VALUES];
+    let slots = words.get_mut(..rspec.form.count())?;
+    Some(
+        form::form_values(rspec.form, rspec.selector, &step, slots).and_then(|singular| {
+            let n = rspec.form.count();
+            dialect.write_line(&rspec, words.get(..n).unwrap_or(&[]), how, decimals, out)?;
+            if let Some(text) = dialect.positioning_block(spec, how) {
+                out.byte(b'\n');
+                out.text(text);
+            }
+            Ok(singular)
+        }),
+    )
+}
+
+/// The frame the block `text` added to the active tilt as its reader computes it, from the
+/// words' own numbers (`PLANE RELATIV SPC+15` is exactly `Rz(15)`, where `before⁻¹·after`
+/// carries the rounding of two products): the block read again on a state with nothing
+/// active. `None` where `after` was not added to or the block is no such command (the
+/// second line of a joined pair). Not inlined: the probe's state is on the stack only while
+/// it reads.
+#[inline(never)]
+pub(crate) fn added_step(before: &Program, after: &Program, text: &[u8]) -> Option<Frame> {
+    let dialect = after.dialect.filter(|_| after.relative)?;
+    let probe = Program {
+        frame: Frame::IDENTITY,
+        shift: [0.0; 3],
+        relative: false,
+        ..of_no_dialect(before)
+    };
+    match probe.line(dialect, text) {
+        Ok((p, Remark::Applied)) if p.relative => Some(p.frame),
+        _ => None,
+    }
+}
+
+/// The whole change of [`write_change`] into `out`; whether the decomposition was singular.
+/// Not inlined: measured and then written, its frame is on the stack once.
 #[inline(never)]
 fn change(
     dialect: Dialect,
@@ -955,6 +1139,7 @@ fn change(
         feed: after.feed,
         feed_mm_min: after.feed_mm_min,
         table_rot: after.table_rot,
+        relative: false,
     };
     // A direct mode's tilt is its positions (its rotation only the machine knows).
     let (mut d0, d1) = (

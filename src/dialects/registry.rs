@@ -110,6 +110,12 @@ macro_rules! families {
                 }
             }
 
+            pub(crate) fn relative_form(self, spec: &FormSpec) -> Option<FormSpec> {
+                match self {
+                    $(Dialect::$name => <$family>::relative_form(spec),)*
+                }
+            }
+
             pub(crate) const fn keeps_shift(self) -> bool {
                 match self {
                     $(Dialect::$name => <$family>::KEEPS_SHIFT,)*

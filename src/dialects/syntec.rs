@@ -218,7 +218,8 @@ impl Family for Syntec {
                 }));
             }
             let f = frame(&base, pword, [x, y, z], [a, b, cc], [u, v, ww]);
-            return Ok(Block::Frame(m.with_frame(LineError::at(column, f)?)));
+            let f = LineError::at(column, f)?;
+            return Ok(Block::Frame(m.with_tilt(f, pword.incremental)));
         }
         if let Some(result) = fanuc::read_g68(m, &mut c) {
             return result;
@@ -290,15 +291,21 @@ impl Family for Syntec {
     fn write_line(
         spec: &FormSpec,
         words: &[f64],
-        _: Motion,
+        how: Motion,
         decimals: i32,
         out: &mut Out,
     ) -> Result<(), Error> {
         match spec.form {
-            Form::G68_2 => super::fanuc::write_g68_2(words, decimals, out),
+            Form::G68_2 => super::fanuc::write_g68_2(words, how.relative, decimals, out),
             Form::G158 => {
-                out.text(b"G158 P");
-                write_integer(out, spec.selector);
+                // Incremental: the leading digits `01` instead of `10` (`P01157`).
+                if how.relative {
+                    out.text(b"G158 P0");
+                    write_integer(out, spec.selector - 9000);
+                } else {
+                    out.text(b"G158 P");
+                    write_integer(out, spec.selector);
+                }
                 let names: [&[u8]; 9] = [
                     b" X", b" Y", b" Z", b" A", b" B", b" C", b" U", b" V", b" W",
                 ];
@@ -344,6 +351,17 @@ impl Family for Syntec {
     fn positioning_block(spec: &FormSpec, how: Motion) -> Option<&'static [u8]> {
         match spec.form {
             Form::G68_2 => fanuc::g53(how),
+            _ => None,
+        }
+    }
+
+    /// `G68.4` in the `G68.2` mode; `G158 P01…` for an absolute `G158 P10…` of a mode that
+    /// rotates (mode 2 states positions, which do not add).
+    fn relative_form(spec: &FormSpec) -> Option<FormSpec> {
+        let absolute = matches!(PWord::decode(spec.selector), Ok(p) if !p.incremental && p.mode != Mode::Direct);
+        match spec.form {
+            Form::G68_2 => Some(*spec),
+            Form::G158 if absolute => Some(*spec),
             _ => None,
         }
     }

@@ -177,6 +177,7 @@ impl Family for Twincat {
         Ok(Block::Frame(Modal {
             frame: Frame::from_rotation(matrix(angles)),
             angles: angles.map(|a| a + 0.0),
+            relative: additive,
             ..*m
         }))
     }

@@ -72,12 +72,13 @@ const FORM_MAX: usize = 64;
 /// hand, a bit flipped in storage, a state of another version — is refused with
 /// `CNCROT_STATUS_BAD_STATE`.
 ///
-/// Layout (208 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
+/// Layout (216 bytes, no padding, native byte order): `rotation` at 0, `origin` 72,
 /// `angles` 96, `shift` 120, `active` 144, `dialect` 148, `options` 152, `choice` 156,
 /// `reference_axis` 160, `positioning` 164, `direct_given` 168, `retract` 172,
-/// `retract_mm` 176, `feed_mm_min` 184, `feed` 192, `plane` 196, `table_rot` 200, `reserved`
-/// 204. Accepted on entry: all zero bytes, or `reserved` = the CRC-32 (IEEE, as zlib's
-/// `crc32`) of bytes 0..204 exclusive-or `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
+/// `retract_mm` 176, `feed_mm_min` 184, `feed` 192, `plane` 196, `table_rot` 200,
+/// `relative` 204, `spare` 208, `reserved` 212. Accepted on entry: all zero bytes, or
+/// `reserved` = the CRC-32 (IEEE, as zlib's `crc32`) of bytes 0..212 exclusive-or
+/// `CNCROT_PROGRAM_FORMAT`, with well-formed fields.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct cncrot_program {
@@ -147,6 +148,15 @@ pub struct cncrot_program {
     /// (`COORD ROT` or no word: the coordinate system turns, the table stays; always 0
     /// while no tilt or a direct mode is active).
     pub table_rot: u32,
+    /// 1 while the active tilt was set by a block that adds to the tilt before it (`PLANE
+    /// RELATIV`, `G68.4`, a `CYCLE800` with `_ST` 1, `AROT`, `ATRANS`, `G158 P01…`,
+    /// `CYCLE600` with `_ROT_AD` 1): `cncrot_program_write_change` then writes the
+    /// target's incremental form (`PLANE RELATIV`, `G68.4`, `_ST` 1, `AROT`, `G158 P01…`),
+    /// so that a loop repeating the block adds as often; 0 otherwise (always while no tilt
+    /// or a direct mode is active).
+    pub relative: u32,
+    /// 0: room for a field of a later version (a state with anything else is refused).
+    pub spare: u32,
     /// The seal: 0 in the all-zero initial state, else the checksum described above (the
     /// field keeps the name it had when it was reserved, so that the layout is unchanged).
     pub reserved: u32,
@@ -154,7 +164,7 @@ pub struct cncrot_program {
 
 /// Mixed into the seal of every `cncrot_program` this version writes: a state of a version
 /// with another meaning of the same bytes gets another constant, and is refused.
-pub const CNCROT_PROGRAM_FORMAT: u32 = 0x5052_4735;
+pub const CNCROT_PROGRAM_FORMAT: u32 = 0x5052_4736;
 
 /// `cncrot_program.positioning`: the tilt command moves no axis (`STAY`, `G68.2` alone).
 pub const CNCROT_POSITIONING_STAY: i32 = 0;
@@ -196,7 +206,7 @@ const PROGRAM_SIZE: usize = core::mem::size_of::<cncrot_program>();
 /// The bytes the seal covers: everything before it.
 const SEALED: usize = core::mem::offset_of!(cncrot_program, reserved);
 // No padding (every byte is a field's, so every byte is covered), and the documented layout.
-const _: () = assert!(SEALED == 204 && PROGRAM_SIZE == 208);
+const _: () = assert!(SEALED == 212 && PROGRAM_SIZE == 216);
 
 fn program_bytes(c: &cncrot_program) -> &[u8; PROGRAM_SIZE] {
     // SAFETY: a plain repr(C) struct of integers and doubles without padding (asserted
@@ -290,7 +300,14 @@ fn load(c: &cncrot_program) -> Result<Program, Error> {
         1 => true,
         _ => return Err(Error::BadState),
     };
+    // Only with a tilt (`Program::check`); the spare field empty.
+    let relative = match (c.relative, c.spare) {
+        (0, 0) => false,
+        (1, 0) => true,
+        _ => return Err(Error::BadState),
+    };
     let p = Program {
+        relative,
         retract,
         retract_mm: c.retract_mm,
         feed,
@@ -388,6 +405,8 @@ fn store(p: &Program, options: u32) -> cncrot_program {
             Plane::Yz => CNCROT_PLANE_YZ,
         },
         table_rot: u32::from(p.table_rot),
+        relative: u32::from(p.relative),
+        spare: 0,
         reserved: 0,
     };
     c.reserved = seal_of(&c);
@@ -921,6 +940,12 @@ const _: () = assert!(CNCROT_PROGRAM_CHANGE_MAX == program::MAX_CHANGE);
 ///   `G53.6` and Haas `G253` as a block after the tilt, or alone when only the way of moving
 ///   changed; CYCLE800's `_DIR` 0 where the axes stay (the frame alone), ±1 where they
 ///   turn. `ROT`, TwinCAT and `G158` say nothing.
+/// - A tilt added to the one before (`relative` 1 in `after`: `PLANE RELATIV`, `G68.4`, …)
+///   is written as the target's increment on it (`before⁻¹·after`): `PLANE RELATIV`, one
+///   angle per block, `G68.4`, `CYCLE800` with `_ST` 1, `AROT`, `G158 P01…`, so that a loop
+///   repeating the source block adds as often. Written whole where the target has no such
+///   form (Haas, TwinCAT), for an increment with an origin the form has no words for, or
+///   with the datum shift changed.
 ///
 /// Returns 0 or `CNCROT_STATUS_SINGULAR` (as `cncrot_program_write`), or a negative status
 /// with `out` untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a state
@@ -965,7 +990,7 @@ pub unsafe extern "C" fn cncrot_program_write_change(
         let d = Dialect::from_code(dialect)?;
         // The form is read whole before `out` is touched (they may be the same memory).
         let spec = d.parse_form(form_of(form)?)?;
-        write_change_into(d, &spec, &p0, &p1, decimals, out, cap)
+        write_change_into(d, &spec, &p0, &p1, None, decimals, out, cap)
     })
 }
 
@@ -976,22 +1001,29 @@ pub unsafe extern "C" fn cncrot_program_write_change(
 /// `out` points to `cap` writable bytes.
 // Inlined: a frame of its own took 32 bytes more stack from `cncrot_program_write_change`.
 #[inline(always)]
+#[allow(clippy::too_many_arguments)] // The C function's, and the block's increment.
 unsafe fn write_change_into(
     d: Dialect,
     spec: &FormSpec,
     from: &Program,
     to: &Program,
+    step: Option<&Frame>,
     decimals: i32,
     out: *mut c_char,
     cap: usize,
 ) -> Result<cncrot_status, cncrot_status> {
-    let (len, singular) = program::change_length_with(d, spec, from, to, decimals)?;
+    let c = program::Change {
+        before: from,
+        after: to,
+        step,
+    };
+    let (len, singular) = program::change_length_with(d, spec, &c, decimals)?;
     if cap <= len {
         return Err(cncrot_status::NoRoom);
     }
     let dst = core::slice::from_raw_parts_mut(out.cast::<u8>(), len + 1);
     let (body, nul) = dst.split_at_mut(len);
-    let (written, again) = program::write_change_with(d, spec, from, to, decimals, body)?;
+    let (written, again) = program::write_change_with(d, spec, &c, decimals, body)?;
     if (written, again) != (len, singular) {
         return Err(cncrot_status::Internal);
     }
@@ -1010,7 +1042,10 @@ unsafe fn write_change_into(
 /// shift set to the value it already has (`G52 X0 Y0`, `TRANS DATUM RESET`, cycle 7 with
 /// zeros) as the target's datum shift. Found by reading the block again on a state with
 /// another tilt or shift. A block that only names a cycle (`CYCL DEF 7.0`) or a tilt
-/// repeated unchanged restates nothing (an empty text).
+/// repeated unchanged restates nothing (an empty text). A block that adds to the tilt is
+/// written as the target's increment with the block's own numbers (read again on a state
+/// with nothing active: `PLANE RELATIV SPC+15` is `G68.4 … I15. J0. K0.` in the shortest
+/// exact numbers, where the two states alone give `I14.999999999999996`).
 ///
 /// Returns as `cncrot_program_write_change`, and `CNCROT_STATUS_NULL_POINTER` for a NULL
 /// `line`, `CNCROT_STATUS_LINE_TOO_LONG` for a `len` longer than the dialect of `after`
@@ -1060,7 +1095,8 @@ pub unsafe extern "C" fn cncrot_program_write_block(
         // The form is read whole before `out` is touched (they may be the same memory).
         let spec = d.parse_form(form_of(form)?)?;
         program::restate(&mut p0, &p1, text);
-        write_change_into(d, &spec, &p0, &p1, decimals, out, cap)
+        let step = program::added_step(&p0, &p1, text);
+        write_change_into(d, &spec, &p0, &p1, step.as_ref(), decimals, out, cap)
     })
 }
 
@@ -1175,6 +1211,47 @@ mod tests {
         );
     }
 
+    /// `relative` read strictly even under a matching seal: 0 or 1, and 1 only with a tilt
+    /// (a direct mode's positions or the untilted plane are not added to); `spare` 0.
+    #[test]
+    fn relative_is_read_strictly() {
+        let read = |lines: &[&str]| {
+            lines.iter().fold(Program::default(), |p, l| {
+                p.line(Dialect::Heidenhain, l.as_bytes()).unwrap().0
+            })
+        };
+        let added = read(&[
+            "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY",
+            "PLANE RELATIV SPA+5 STAY",
+        ]);
+        let c = store(&added, 0);
+        assert_eq!((c.relative, c.spare, load(&c)), (1, 0, Ok(added)));
+        let resealed = |mut c: cncrot_program| {
+            c.reserved = seal_of(&c);
+            load(&c)
+        };
+        for bad in [
+            cncrot_program { relative: 2, ..c },
+            cncrot_program { spare: 1, ..c },
+        ] {
+            assert_eq!(resealed(bad), Err(Error::BadState));
+        }
+        // Back to the untilted plane by increments: nothing active is added to.
+        let back = read(&["PLANE RELATIV SPB+90 STAY", "PLANE RELATIV SPB-90 STAY"]);
+        assert_eq!((back.frame, back.relative), (Frame::IDENTITY, false));
+        let o = store(&back, 0);
+        assert_eq!(
+            resealed(cncrot_program { relative: 1, ..o }),
+            Err(Error::BadState)
+        );
+        let axial = read(&["PLANE AXIAL B+30 STAY"]);
+        let a = store(&axial, 0);
+        assert_eq!(
+            resealed(cncrot_program { relative: 1, ..a }),
+            Err(Error::BadState)
+        );
+    }
+
     /// Every state the library stores loads back as itself; zero is nothing active.
     #[test]
     fn states_round_trip_and_strangers_are_refused() {
@@ -1227,7 +1304,7 @@ mod tests {
         assert_eq!(load(&hand), Err(Error::BadState));
     }
 
-    /// The seal is what the header documents: the CRC-32 of bytes 0..204 exclusive-or
+    /// The seal is what the header documents: the CRC-32 of bytes 0..212 exclusive-or
     /// `CNCROT_PROGRAM_FORMAT`; a state sealed without the format (another version's) is
     /// refused.
     #[test]
@@ -1238,9 +1315,9 @@ mod tests {
             .0;
         let c = store(&p, 0);
         let bytes = program_bytes(&c);
-        assert_eq!(c.reserved, crc32(&bytes[..204]) ^ 0x5052_4735);
+        assert_eq!(c.reserved, crc32(&bytes[..212]) ^ 0x5052_4736);
         let mut other = c;
-        other.reserved = crc32(&bytes[..204]);
+        other.reserved = crc32(&bytes[..212]);
         assert_eq!(load(&other), Err(Error::BadState));
     }
 

@@ -858,6 +858,17 @@ pub fn write(out: &mut Out, v: f64, decimals: i32, style: Style) -> Result<(), E
     Ok(())
 }
 
+/// Whether [`write`] writes `v` as `0` with `decimals` (a word a writer may leave out).
+pub fn writes_zero(v: f64, decimals: i32) -> bool {
+    let mut buf = [0u8; 1];
+    let mut out = Out::new(&mut buf);
+    let plain = Style {
+        plus: false,
+        point: false,
+    };
+    write(&mut out, v, decimals, plain).is_ok() && out.finish() == Some(1) && buf == *b"0"
+}
+
 /// Writes `<name><number>` (the name carries its leading space and any `=`).
 pub fn write_word(
     out: &mut Out,
@@ -896,6 +907,15 @@ pub fn write_integer(out: &mut Out, v: i32) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Zero as written: rounded away at the decimals asked for, never in the shortest
+    /// exact digits unless it is 0.
+    #[test]
+    fn what_writes_as_zero() {
+        assert!(writes_zero(0.0, 4) && writes_zero(-0.0, -1) && writes_zero(-4e-5, 4));
+        assert!(writes_zero(1e-17, 12) && writes_zero(0.000_499_9, 3));
+        assert!(!writes_zero(5e-4, 3) && !writes_zero(1e-17, -1) && !writes_zero(7.0, 0));
+    }
 
     fn read(t: &str) -> Result<f64, Error> {
         let (neg, t) = match t.strip_prefix('-') {

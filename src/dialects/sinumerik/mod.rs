@@ -554,11 +554,12 @@ fn frame_command(
         }
         _ => Frame::with_translations(xyz, crate::IDENTITY, [0.0; 3]),
     };
-    Ok(Block::Frame(m.with_frame(if additive {
+    let tilt = if additive {
         m.tilt_base().map_err(at(column))?.compose(&step)
     } else {
         step
-    })))
+    };
+    Ok(Block::Frame(m.with_tilt(tilt, additive)))
 }
 
 /// Whether the words of a `ROT`/`AROT`/`CROT` name `RPL`: a rotation in the working plane.
@@ -599,11 +600,12 @@ fn rpl_command(
         Err(_) => return Ok(Block::NotFollowed),
     }
     let step = Frame::from_rotation(crate::elementary(m.plane.normal(), angle));
-    Ok(Block::Frame(m.with_frame(if additive {
+    let tilt = if additive {
         m.tilt_base().map_err(at(column))?.compose(&step)
     } else {
         step
-    })))
+    };
+    Ok(Block::Frame(m.with_tilt(tilt, additive)))
 }
 
 /// A refused value at `column`, with what the parameter may be.
@@ -685,7 +687,7 @@ fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
         positioning,
         retract,
         retract_mm,
-        ..m.with_frame(cycle800_apply(&base, st % 10 == 1, &call))
+        ..m.with_tilt(cycle800_apply(&base, st % 10 == 1, &call), st % 10 == 1)
     })
 }
 
@@ -795,7 +797,7 @@ fn cycle600_line(m: &Modal, c: &mut Cursor, column: usize) -> Result<Modal, Line
     // It swivels as the CYCLE800 it calls does.
     Ok(Modal {
         positioning: Positioning::Turn,
-        ..m.with_frame(next.frame)
+        ..m.with_tilt(next.frame, call.rot_ad == 1)
     })
 }
 
@@ -1082,7 +1084,12 @@ impl Family for Sinumerik {
                 let (fr, fr_i) = retract_words(&how);
                 out.text(b"CYCLE800(");
                 write_integer(out, fr);
-                out.text(b",\"\",0,");
+                // `_ST` 1: additive, on the swivelled plane.
+                out.text(if how.relative {
+                    b",\"\",1,"
+                } else {
+                    b",\"\",0,"
+                });
                 write_integer(out, spec.selector);
                 for &v in words {
                     out.byte(b',');
@@ -1105,7 +1112,7 @@ impl Family for Sinumerik {
                 out.text(b",0)");
             }
             Form::SinumerikRot => {
-                out.text(b"ROT");
+                out.text(if how.relative { b"AROT" } else { b"ROT" });
                 for (name, &v) in [&b" X="[..], b" Y=", b" Z="].iter().zip(words) {
                     write_word(out, name, v, decimals, style)?;
                 }
@@ -1148,6 +1155,11 @@ impl Family for Sinumerik {
         write(out, fr_i, decimals, style)?;
         out.text(b",0)");
         Ok(())
+    }
+
+    /// `CYCLE800` with `_ST` 1 (additive), `AROT` for `ROT`.
+    fn relative_form(spec: &FormSpec) -> Option<FormSpec> {
+        matches!(spec.form, Form::Cycle800 | Form::SinumerikRot).then_some(*spec)
     }
 
     /// `TRANS X=… Y=… Z=…`, or `TRANS` for no shift. SINUMERIK keeps one programmable
