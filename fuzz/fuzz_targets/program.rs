@@ -5,7 +5,9 @@
 //! fits (what a missing word should be: never empty for one); an accepted one leaves a finite frame whose every writable form writes a line
 //! that its dialect reads back as the same frame, and a sealed state of which single-bit
 //! flips are refused; the program translated block by block into every dialect and form
-//! (`cncrot_program_write_block`, with what each block restates) reads back as the same frames. Frames close to the forms' singularities (tilts of 90° − 10^-k) go
+//! (`cncrot_program_write_block`, with what each block restates) reads back as the same frames,
+//! and a block that adds to the tilt, written as the target's increment, read twice there
+//! gives the block read twice. Frames close to the forms' singularities (tilts of 90° − 10^-k) go
 //! through every writer too: a refusal must be one the documentation names for that frame.
 #![no_main]
 
@@ -545,6 +547,44 @@ fn translated(
             d <= 1e-11 * scale,
             "{form:?} in dialect {dialect}: {text}: {d:e}"
         );
+        // A block that adds to the tilt, written as the target's increment, adds as often:
+        // the text read again gives the block read again (a loop's second pass).
+        let increment = ["PLANE RELATIV", "G68.4", "AROT", " P01", ",\"\",1,"]
+            .iter()
+            .any(|w| text.contains(w));
+        if after.relative == 1 && increment {
+            let mut again = *after;
+            // SAFETY: the line holds its length in bytes; the state is valid.
+            let s = unsafe {
+                cncrot_program_line(&mut again, after.dialect, line.as_ptr().cast(), line.len())
+            };
+            if s == 0 && again.active == 1 {
+                let mut twice = *state;
+                for block in text.split('\n') {
+                    // SAFETY: as above.
+                    let r = unsafe {
+                        cncrot_program_line(
+                            &mut twice,
+                            *dialect,
+                            block.as_ptr().cast(),
+                            block.len(),
+                        )
+                    };
+                    assert!(r >= 0, "{form:?}: {block}: {r}");
+                }
+                let (a, b) = (frame(&again), frame(&twice));
+                let scale = a.iter().chain(&b).fold(1.0f64, |m, x| m.max(x.abs()));
+                let d = a
+                    .iter()
+                    .zip(&b)
+                    .map(|(x, y)| (x - y).abs())
+                    .fold(0.0, f64::max);
+                assert!(
+                    d <= 1e-9 * scale,
+                    "{form:?} in dialect {dialect}, twice: {text}: {d:e}"
+                );
+            }
+        }
         true
     });
 }
