@@ -204,7 +204,9 @@ static void program_write(void) {
           cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", g, -1, out, sizeof out) +
           cncrot_program_write(CNCROT_DIALECT_FANUC, "G68.2", g, 17, out, sizeof out);
 }
-static cncrot_program change_from, change_to;
+static cncrot_program change_from, change_to, added_to, added_far;
+static const char added[] = "G68.4 I1.234567890123 J45.678901234 K-12.3456789";
+static const char added_origin[] = "G68.4 X0.5 Y-0.25 Z0.000000001 I1.234567890123 J45.678901234 K-12.3456789";
 static void program_write_change(void) {
   static char out[CNCROT_PROGRAM_CHANGE_MAX + 1];
   /* A tilt with an origin into PLANE POINTS: a cancel, cycle 7 and the plane, the numbers
@@ -214,6 +216,11 @@ static void program_write_change(void) {
           cncrot_program_write_change(&change_to, &change_from, CNCROT_DIALECT_SINUMERIK, "CYCLE800 185", -1, out,
                                       sizeof out) +
           cncrot_program_write_change(&change_from, &change_to, CNCROT_DIALECT_FANUC, "G68.2", 17, out, sizeof out);
+  /* Increments: three PLANE RELATIV, an additive CYCLE800 with an origin. */
+  sink += cncrot_program_write_change(&change_to, &added_to, CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", -1, out,
+                                      sizeof out) +
+          cncrot_program_write_change(&change_to, &added_far, CNCROT_DIALECT_SINUMERIK, "CYCLE800 185", -1, out,
+                                      sizeof out);
 }
 static cncrot_program cancelled;
 static void program_write_block(void) {
@@ -225,6 +232,11 @@ static void program_write_block(void) {
                                      "PLANE POINTS", -1, out, sizeof out) +
           cncrot_program_write_block(&cancelled, &cancelled, cancel, sizeof cancel - 1, CNCROT_DIALECT_SINUMERIK,
                                      "CYCLE800 185", -1, out, sizeof out);
+  /* Increments, their own words read on a third probe. */
+  sink += cncrot_program_write_block(&change_to, &added_to, added, sizeof added - 1, CNCROT_DIALECT_HEIDENHAIN,
+                                     "PLANE POINTS", -1, out, sizeof out) +
+          cncrot_program_write_block(&change_to, &added_far, added_origin, sizeof added_origin - 1,
+                                     CNCROT_DIALECT_SINUMERIK, "CYCLE800 185", -1, out, sizeof out);
 }
 static void program_joins(void) {
   int32_t join = 0;
@@ -463,6 +475,10 @@ int main(int argc, char **argv) {
     change_to = change_from;
     if (cncrot_program_line(&change_to, CNCROT_DIALECT_FANUC, b, sizeof b - 1) != 0) abort();
     if (cncrot_program_line(&cancelled, CNCROT_DIALECT_FANUC, "G69", 3) != 0) abort();
+    added_to = added_far = change_to;
+    if (cncrot_program_line(&added_to, CNCROT_DIALECT_FANUC, added, sizeof added - 1) != 0) abort();
+    if (cncrot_program_line(&added_far, CNCROT_DIALECT_FANUC, added_origin, sizeof added_origin - 1) != 0) abort();
+    if (!added_to.relative || !added_far.relative) abort();
   }
   build_fork();
   size_t base = used_by(none);

@@ -1015,16 +1015,7 @@ fn added(
     decimals: i32,
     out: &mut Out,
 ) -> Option<Result<bool, Error>> {
-    // The same datum shift in the program and as the target writes it (a `TRANS` before a
-    // SINUMERIK `AROT` is the frame's origin, a Fanuc `G52` while no tilt is active).
-    let plain = after.relative
-        && before.direct.is_none()
-        && before.shift == after.shift
-        && decimals <= crate::text::number::MAX_DECIMALS
-        && before.check().is_ok()
-        && after.check().is_ok()
-        && split(dialect, spec, before).0 == split(dialect, spec, after).0;
-    if !plain {
+    if !(decimals <= crate::text::number::MAX_DECIMALS && adds(dialect, spec, before, after)) {
         return None;
     }
     let rspec = dialect.relative_form(spec)?;
@@ -1037,34 +1028,7 @@ fn added(
         relative: true,
         ..after.motion()
     };
-    let size = before
-        .frame
-        .translation
-        .iter()
-        .chain(&after.frame.translation)
-        .fold(1.0, |m: f64, &x| m.max(crate::math::abs(x)));
-    // The block's own increment where it leads from `before` to `after` (a TwinCAT `AROT`
-    // adds angles, which is no increment on the right).
-    let near = |a: &Frame, b: &Frame| {
-        let (ha, hb) = (a.to_homogeneous(), b.to_homogeneous());
-        ha.iter()
-            .flatten()
-            .zip(hb.iter().flatten())
-            .all(|(x, y)| crate::math::abs(x - y) <= 1e-12 * size)
-    };
-    let mut step = match step {
-        Some(s) if near(&before.frame.compose(s), &after.frame) => *s,
-        _ => before.frame.inverse().compose(&after.frame),
-    };
-    // The origin is the same where the block added a rotation alone, up to the rounding of
-    // the datum shift added back to the tilt's origin.
-    if step
-        .translation
-        .iter()
-        .all(|&x| crate::math::abs(x) <= 1e-12 * size)
-    {
-        step.translation = [0.0; 3];
-    }
+    let step = increment(&before.frame, &after.frame, step);
     if step.translation != [0.0; 3] && !rspec.form.has_origin() {
         return None;
     }
@@ -1081,6 +1045,54 @@ fn added(
             Ok(singular)
         }),
     )
+}
+
+/// Whether `after`'s tilt was added to `before`'s with nothing else changed: both states
+/// as a reader leaves them, no direct mode before, the same datum shift in the program and
+/// as the target writes it (a `TRANS` before a SINUMERIK `AROT` is the frame's origin, a
+/// Fanuc `G52` while no tilt is active). Not inlined: the states it splits are gone when
+/// the increment is written (stack bound).
+#[inline(never)]
+fn adds(dialect: Dialect, spec: &FormSpec, before: &Program, after: &Program) -> bool {
+    after.relative
+        && before.direct.is_none()
+        && before.shift == after.shift
+        && before.check().is_ok()
+        && after.check().is_ok()
+        && split(dialect, spec, before).0 == split(dialect, spec, after).0
+}
+
+/// The increment from `before` to `after`: `step` where it leads from one to the other (to
+/// 1e-12 of the frames' size; a TwinCAT `AROT` adds angles, which is no increment on the
+/// right), else `before⁻¹·after`, its origin 0 where it is within 1e-12 of the frames' size
+/// (a rotation added alone: the datum shift added back to the tilt's origin rounds). Not
+/// inlined: its products are gone when the increment is written (stack bound).
+#[inline(never)]
+fn increment(before: &Frame, after: &Frame, step: Option<&Frame>) -> Frame {
+    let size = before
+        .translation
+        .iter()
+        .chain(&after.translation)
+        .fold(1.0, |m: f64, &x| m.max(crate::math::abs(x)));
+    let near = |x: f64, y: f64| crate::math::abs(x - y) <= 1e-12 * size;
+    let leads = |s: &Frame| {
+        let f = before.compose(s);
+        let rows = f
+            .rotation
+            .iter()
+            .flatten()
+            .zip(after.rotation.iter().flatten());
+        rows.chain(f.translation.iter().zip(&after.translation))
+            .all(|(x, y)| near(*x, *y))
+    };
+    let mut step = match step {
+        Some(s) if leads(s) => *s,
+        _ => before.inverse().compose(after),
+    };
+    if step.translation.iter().all(|&x| near(x, 0.0)) {
+        step.translation = [0.0; 3];
+    }
+    step
 }
 
 /// The frame the block `text` added to the active tilt as its reader computes it, from the
@@ -1130,17 +1142,10 @@ fn change(
         blocks += 1;
     };
     let mut singular = false;
-    let stay = Motion::default();
-    let how = Motion {
-        choice: after.choice,
-        positioning: after.positioning,
-        retract: after.retract,
-        retract_mm: after.retract_mm,
-        feed: after.feed,
-        feed_mm_min: after.feed_mm_min,
-        table_rot: after.table_rot,
-        relative: false,
-    };
+    // How the machine moves: built where it is passed (a copy held across the change would
+    // cost its frame 48 bytes, stack bound).
+    let stay = Motion::default;
+    let how = || after.motion();
     // A direct mode's tilt is its positions (its rotation only the machine knows).
     let (mut d0, d1) = (
         before.direct.map(|d| (d, before.angles)),
@@ -1180,15 +1185,15 @@ fn change(
     let mut tilt_written = false;
     let tilt = |out: &mut Out| match d1 {
         Some(d) => dialect
-            .write_direct(spec, t1.translation, d, how, decimals, out)
+            .write_direct(spec, t1.translation, d, how(), decimals, out)
             .map(|()| false),
-        None => tilt_block(dialect, spec, &t1, how, decimals, out),
+        None => tilt_block(dialect, spec, &t1, how(), decimals, out),
     };
     if dialect.keeps_shift() {
         if s0 != s1 {
             if t0 != Frame::IDENTITY || d0.is_some() {
                 next(out);
-                tilt_block(dialect, spec, &Frame::IDENTITY, stay, decimals, out)?;
+                tilt_block(dialect, spec, &Frame::IDENTITY, stay(), decimals, out)?;
                 (t0, d0) = (Frame::IDENTITY, None);
             }
             next(out);
@@ -1203,7 +1208,7 @@ fn change(
             let over = (t0 != Frame::IDENTITY || d0.is_some()) && active;
             if replaced && over && turn_block {
                 next(out);
-                tilt_block(dialect, spec, &Frame::IDENTITY, stay, decimals, out)?;
+                tilt_block(dialect, spec, &Frame::IDENTITY, stay(), decimals, out)?;
             }
             next(out);
             singular = tilt(out)?;
@@ -1221,13 +1226,13 @@ fn change(
         if t1 == Frame::IDENTITY && d1.is_none() && (s1 != [0.0; 3] || shifted0) {
             if tilted0 {
                 next(out);
-                tilt_block(dialect, spec, &Frame::IDENTITY, stay, decimals, out)?;
+                tilt_block(dialect, spec, &Frame::IDENTITY, stay(), decimals, out)?;
             }
             next(out);
             match dialect.write_shift(s1, decimals, out) {
                 Err(Error::NotAvailable) => {
                     let f = Frame::with_translations(s1, crate::IDENTITY, [0.0; 3]);
-                    tilt_block(dialect, spec, &f, how, decimals, out)?;
+                    tilt_block(dialect, spec, &f, how(), decimals, out)?;
                 }
                 r => r?,
             }
@@ -1248,7 +1253,7 @@ fn change(
     // Where a block of its own moves the machine (`G53.1`): after a new tilt, or alone (a
     // direct mode's block moves the axes itself).
     if (active || zero_turn(after)) && d1.is_none() && (tilt_written || moved) {
-        if let Some(text) = dialect.positioning_block(spec, how) {
+        if let Some(text) = dialect.positioning_block(spec, how()) {
             next(out);
             out.text(text);
         }

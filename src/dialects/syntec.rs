@@ -358,7 +358,8 @@ impl Family for Syntec {
     /// `G68.4` in the `G68.2` mode; `G158 P01…` for an absolute `G158 P10…` of a mode that
     /// rotates (mode 2 states positions, which do not add).
     fn relative_form(spec: &FormSpec) -> Option<FormSpec> {
-        let absolute = matches!(PWord::decode(spec.selector), Ok(p) if !p.incremental && p.mode != Mode::Direct);
+        let absolute =
+            PWord::decode(spec.selector).is_ok_and(|p| !p.incremental && p.mode != Mode::Direct);
         match spec.form {
             Form::G68_2 => Some(*spec),
             Form::G158 if absolute => Some(*spec),
