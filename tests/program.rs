@@ -3141,7 +3141,12 @@ fn incremental_tilts_stay_incremental() {
         "CYCLE800(0,\"\",1,57,5,0,2,0,0,10,0,0,0,0,0,0)"
     );
 
-    let sources: [(Dialect, &[&str], &str); 7] = [
+    // TwinCAT adds angles: one axis' is an increment on the frame, two axes' are not.
+    let twincat = read(Dialect::Twincat, &["ROT X20 Y10", "AROT Z1 X90"]);
+    assert!(!twincat.relative);
+    let sources: [(Dialect, &[&str], &str); 9] = [
+        (Dialect::Twincat, &["ROT X20 Y10"], "AROT Z15"),
+        (Dialect::Twincat, &["ROT X20 Y10 Z5"], "AROT Y5"),
         (
             Dialect::Heidenhain,
             &[
@@ -3227,7 +3232,7 @@ fn incremental_tilts_stay_incremental() {
             }
         }
     }
-    // 49 pairs: `ROT` cannot write the four setups with an origin, `PLANE RELATIV` not the
+    // 63 pairs: `ROT` cannot write the four setups with an origin, `PLANE RELATIV` not the
     // increment with one (two forms).
-    assert_eq!(looped, 49 - 4 - 2);
+    assert_eq!(looped, 63 - 4 - 2);
 }

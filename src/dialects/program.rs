@@ -85,7 +85,7 @@ pub struct Program {
     pub table_rot: bool,
     /// The active tilt was set by a block that adds to the tilt before it (`PLANE
     /// RELATIV`, `G68.4`, a `CYCLE800` with `_ST` 1, `AROT`, `ATRANS`, `G158 P01…`,
-    /// `CYCLE600` with `_ROT_AD` 1): a translator writes the target's incremental form, so
+    /// `CYCLE600` with `_ROT_AD` 1, TwinCAT's `AROT` of one axis): a translator writes the target's incremental form, so
     /// that a loop which repeats the block adds as often. False while no tilt (or a direct
     /// mode) is active.
     pub relative: bool,

@@ -177,7 +177,9 @@ impl Family for Twincat {
         Ok(Block::Frame(Modal {
             frame: Frame::from_rotation(matrix(angles)),
             angles: angles.map(|a| a + 0.0),
-            relative: additive,
+            // Angles add: one axis' increment is a rotation composed with the frame (the
+            // same each time a loop repeats it); two or more are not [derived].
+            relative: additive && xyz.iter().filter(|a| **a != 0.0).count() == 1,
             ..*m
         }))
     }
