@@ -7,8 +7,8 @@
 //! flips are refused; the program translated block by block into every dialect and form
 //! (`cncrot_program_write_block`, with what each block restates) reads back as the same frames,
 //! and a block that adds to the tilt, written as the target's increment, read twice there
-//! gives the block read twice. Frames close to the forms' singularities (tilts of 90° − 10^-k) go
-//! through every writer too: a refusal must be one the documentation names for that frame.
+//! gives the block read twice. Frames close to the forms' singularities (tilts of
+//! 90° − 10^-k) go through every writer too: a refusal must be one the documentation names for that frame.
 #![no_main]
 
 #[path = "input.rs"]

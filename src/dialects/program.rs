@@ -85,9 +85,9 @@ pub struct Program {
     pub table_rot: bool,
     /// The active tilt was set by a block that adds to the tilt before it (`PLANE
     /// RELATIV`, `G68.4`, a `CYCLE800` with `_ST` 1, `AROT`, `ATRANS`, `G158 P01…`,
-    /// `CYCLE600` with `_ROT_AD` 1, TwinCAT's `AROT` of one axis): a translator writes the target's incremental form, so
-    /// that a loop which repeats the block adds as often. False while no tilt (or a direct
-    /// mode) is active.
+    /// `CYCLE600` with `_ROT_AD` 1, TwinCAT's `AROT` of one axis): a translator writes the
+    /// target's incremental form, so that a loop which repeats the block adds as often.
+    /// False while no tilt (or a direct mode) is active.
     pub relative: bool,
 }
 
@@ -991,9 +991,9 @@ pub(crate) struct Change<'a> {
 
 /// The blocks of [`write_change`] into `out` where `after`'s tilt was added to the one before
 /// ([`Program::relative`]: `PLANE RELATIV`, `G68.4`, `AROT`, …): the target's incremental
-/// form with the increment — `step` where the block's reader gave it ([`added_step`]: the
-/// words' own numbers), else `before⁻¹·after` — (`G68.4`, `PLANE RELATIV` one angle per block,
-/// `CYCLE800` with `_ST` 1, `AROT`, `G158 P01…`), then the block that moves the machine
+/// form (`G68.4`, `PLANE RELATIV` one angle per block, `CYCLE800` with `_ST` 1, `AROT`,
+/// `G158 P01…`) with the increment — `step` where the block's reader gave it
+/// ([`added_step`]: the words' own numbers), else `before⁻¹·after` —, then the block that moves the machine
 /// where the dialect has one, so that a loop which repeats the source block repeats the
 /// target's and adds as often; the same plane with another way of moving, where the tilt
 /// block says it, as a zero increment (`PLANE RELATIV SPA+0 TURN FMAX`). `None` where the

@@ -150,10 +150,10 @@ pub struct cncrot_program {
     pub table_rot: u32,
     /// 1 while the active tilt was set by a block that adds to the tilt before it (`PLANE
     /// RELATIV`, `G68.4`, a `CYCLE800` with `_ST` 1, `AROT`, `ATRANS`, `G158 P01…`,
-    /// `CYCLE600` with `_ROT_AD` 1): `cncrot_program_write_change` then writes the
-    /// target's incremental form (`PLANE RELATIV`, `G68.4`, `_ST` 1, `AROT`, `G158 P01…`),
-    /// so that a loop repeating the block adds as often; 0 otherwise (always while no tilt
-    /// or a direct mode is active).
+    /// `CYCLE600` with `_ROT_AD` 1, TwinCAT's `AROT` of one axis): `cncrot_program_write_change`
+    /// then writes the target's incremental form (`PLANE RELATIV`, `G68.4`, `_ST` 1, `AROT`,
+    /// `G158 P01…`), so that a loop repeating the block adds as often; 0 otherwise (always
+    /// while no tilt or a direct mode is active).
     pub relative: u32,
     /// 0: room for a field of a later version (a state with anything else is refused).
     pub spare: u32,
@@ -930,8 +930,8 @@ const _: () = assert!(CNCROT_PROGRAM_CHANGE_MAX == program::MAX_CHANGE);
 /// - A changed tilt, or the same tilt with other choice words, is written as
 ///   `cncrot_program_write` writes it, with the choice words the block has: Heidenhain
 ///   `SEQ-`/`SEQ+`, CYCLE800 `_DIR` -1/+1 where it swivels (-1 also for no choice: a swivel
-///   always names one); Fanuc, Syntec, Haas and TwinCAT blocks have none. Nothing active is written as
-///   the form's cancel; nothing active with the axes turning to the untilted plane
+///   always names one); Fanuc, Syntec, Haas and TwinCAT blocks have none. Nothing active
+///   is written as the form's cancel; nothing active with the axes turning to the untilted plane
 ///   (`positioning` turn or move) as the dialect says that turn (`PLANE RESET TURN FMAX`, a
 ///   `G68.2` of zeros and `G53.1`, a `CYCLE800` of zero angles), or its cancel where it
 ///   cannot.
