@@ -3,7 +3,7 @@
 %   brings every solution to the whole turn nearest to the CURRENT positions (computed 10,
 %   current 750 -> 730) or within the travel limits, snaps Hirth axes to their grid, skips
 %   solutions outside the travel, and picks one by RULE: 0 the closest (default), 1 the
-%   lower and 2 the higher position of axis REF (1-based; CYCLE800 minus/plus, Heidenhain
+%   lower and 2 the higher angle, in (-180, 180], of axis REF (1-based; CYCLE800 minus/plus, Heidenhain
 %   SEQ-/SEQ+ on the master axis), 3 the other solution of the pair (CYCLE600 _ROT_INV),
 %   4 / 5 axis REF turning only up / only down from its current position, the least it
 %   must (G53.1 P1 / P2; the other axes the nearest turn).

@@ -383,6 +383,30 @@ fn choice_rules_limits_and_hirth() {
         Err(Error::BadArgument)
     );
 
+    // "Minus" and "plus" compare angles, not the turns placed toward the current position
+    // (SEQ- is "the master axis at a negative angle"): on a B without limits, from
+    // B = -170° the B = 30° solution unwinds to -330° (160° away, against 200° for 30°),
+    // which is lower, yet the minus solution is B = -30° (140° away, placed at -30°).
+    let free = machine(&[
+        axis(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]),
+        axis(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3]),
+    ]);
+    let minus = free
+        .choose(&target, [0.0, -170.0, 0.0], Rule::Minus(1))
+        .unwrap();
+    assert!(
+        (minus.axes[0] + 170.0).abs() < 1e-9 && (minus.axes[1] + 30.0).abs() < 1e-9,
+        "{minus:?}"
+    );
+    // From B = 170°: B = -30° unwinds to 330°, higher, yet "plus" is B = 30°.
+    let plus = free
+        .choose(&target, [0.0, 170.0, 0.0], Rule::Plus(1))
+        .unwrap();
+    assert!(
+        (plus.axes[0] - 10.0).abs() < 1e-9 && (plus.axes[1] - 30.0).abs() < 1e-9,
+        "{plus:?}"
+    );
+
     // With B limited to 0..100, "minus" cannot have B = -30 and takes the other.
     let mut b2 = b;
     b2.limits = Some([0.0, 100.0]);

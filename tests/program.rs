@@ -1662,6 +1662,33 @@ fn choice_words_are_kept_and_followed() {
     let from = [180.0, -25.0, 0.0];
     assert!((plane("").axes(&head, from).unwrap().axes[1] + 30.0).abs() < 1e-9);
     assert!((plane("SEQ+").axes(&head, from).unwrap().axes[1] - 30.0).abs() < 1e-9);
+    // The same solution wherever the axes stand (a program's blocks each start where the
+    // one before left them): an AC table, the tool along the workpiece's X (hyperMILL's
+    // "A-90 C270" comment beside this block). SEQ- is A -90 with C -90, a whole turn of C
+    // nearest the current position; from A -90 the A +90 solution unwinds to -270, which
+    // was taken as the lower.
+    let table = Machine::new([0.0, 0.0, 1.0])
+        .unwrap()
+        .with_axis(RotaryAxis::new(Side::Work, [1.0, 0.0, 0.0], [0.0; 3]))
+        .unwrap()
+        .with_axis(RotaryAxis::new(Side::Work, [0.0, 0.0, 1.0], [0.0; 3]))
+        .unwrap();
+    let seq = read(
+        Dialect::Heidenhain,
+        &["PLANE SPATIAL SPA90 SPB0 SPC90 STAY SEQ- TABLE ROT"],
+    );
+    for (from, want) in [
+        ([0.0, 0.0, 0.0], [-90.0, -90.0]),
+        ([-90.0, -90.0, 0.0], [-90.0, -90.0]),
+        ([-90.0, 270.0, 0.0], [-90.0, 270.0]),
+        ([80.0, 100.0, 0.0], [-90.0, 270.0]),
+    ] {
+        let got = seq.axes(&table, from).unwrap().axes;
+        assert!(
+            (got[0] - want[0]).abs() < 1e-9 && (got[1] - want[1]).abs() < 1e-9,
+            "from {from:?}: {got:?}"
+        );
+    }
     // CYCLE800 _DIR (the 14th parameter): -1 minus, +1 plus (each swivels), 0 the frame
     // calculated without swivelling (no retraction either), others refused.
     let c800 = |dir: &str| {

@@ -184,10 +184,10 @@ pub enum AxisChoice {
     /// No words: the dialect's default, the solution closest to the current positions.
     #[default]
     Closest,
-    /// The lower position of an axis: 1..=3 in chain order, or 0 for the machine's master
+    /// The lower angle (in (−180°, 180°]) of an axis: 1..=3 in chain order, or 0 for the machine's master
     /// axis (for a head the axis nearest the tool, else the axis nearest the machine base).
     Minus(u8),
-    /// The higher position of an axis (numbered as for `Minus`).
+    /// The higher angle of an axis (numbered as for `Minus`).
     Plus(u8),
     /// The axis turns only in its positive direction, the least it must (`G53.1 P1`
     /// \[3rd: LinuxCNC's tilted-work-plane remap, "positive rotation only" of the primary

@@ -173,7 +173,8 @@ impl Program {
     /// The rotary-axis positions the active tilt moves `machine` to, seen from `current`
     /// (degrees; axes the machine lacks are 0), as [`Machine::choose`] chooses them under the
     /// rule of the tilt's own choice words ([`Program::choice`]): `SEQ-`, `_DIR = -1` the
-    /// lower position of the master axis ([`Rule::Minus`]), `SEQ+`, `_DIR = +1` the higher
+    /// lower angle of the master axis ([`Rule::Minus`]: in (−180°, 180°], whatever
+    /// `current`), `SEQ+`, `_DIR = +1` the higher
     /// \[doc\], the master axis being a head's axis nearest the tool, else the axis nearest
     /// the machine base \[choice\]; without words the solution closest to the current
     /// positions ([`Rule::Closest`]) — what SINUMERIK does for a frame \[doc\], Heidenhain

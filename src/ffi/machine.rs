@@ -19,11 +19,12 @@ pub const CNCROT_MACHINE_TCP_AXES: usize = 6;
 pub const CNCROT_MACHINE_SOLUTIONS_MAX: usize = 2;
 /// `cncrot_machine_choose`: the solution closest to the current positions.
 pub const CNCROT_CHOOSE_CLOSEST: i32 = 0;
-/// `cncrot_machine_choose`: the lower position of the reference axis (CYCLE800 "minus",
-/// Heidenhain `SEQ-` on the master axis).
+/// `cncrot_machine_choose`: the solution with the lower angle of the reference axis, as an
+/// angle in (-180, 180] before whole turns are unwound (CYCLE800 "minus", Heidenhain `SEQ-`
+/// on the master axis: "a negative angle").
 pub const CNCROT_CHOOSE_MINUS: i32 = 1;
-/// `cncrot_machine_choose`: the higher position of the reference axis (CYCLE800 "plus",
-/// Heidenhain `SEQ+`).
+/// `cncrot_machine_choose`: the solution with the higher angle of the reference axis, as
+/// `CNCROT_CHOOSE_MINUS` (CYCLE800 "plus", Heidenhain `SEQ+`).
 pub const CNCROT_CHOOSE_PLUS: i32 = 2;
 /// `cncrot_machine_choose`: the other solution of the pair (CYCLE600 `_ROT_INV = 1`); the
 /// only one left when the other lies outside the travel or there is no other.
@@ -715,7 +716,8 @@ pub unsafe extern "C" fn cncrot_machine_inverse(
 /// within `CNCROT_MACHINE_TRAVEL_TOLERANCE_DEG` beyond an end of the travel is taken exactly
 /// at that end (a target made at an end is reached there; `axes_deg` never lies outside
 /// the travel). `rule`: `CNCROT_CHOOSE_CLOSEST` (`reference_axis` 0), `CNCROT_CHOOSE_MINUS`
-/// / `_PLUS` (the lower / higher position of axis `reference_axis`, 1-based: CYCLE800's
+/// / `_PLUS` (the lower / higher angle in (-180, 180] of axis `reference_axis`, 1-based,
+/// whatever the current positions: CYCLE800's
 /// direction reference, Heidenhain `SEQ-` / `SEQ+` on the master axis; the other solution
 /// when one lies outside the travel), `CNCROT_CHOOSE_INVERSE` (`reference_axis` 0; the
 /// other solution of the pair: CYCLE600 `_ROT_INV`), `CNCROT_CHOOSE_POSITIVE_TURN` /
@@ -1007,7 +1009,7 @@ pub unsafe extern "C" fn cncrot_machine_tcp_inverse(
 /// `cncrot_machine_tcp_inverse` with the rotary solution picked by `rule` and
 /// `reference_axis` as in `cncrot_machine_choose`: `CNCROT_CHOOSE_CLOSEST` (`reference_axis`
 /// 0; the same as `cncrot_machine_tcp_inverse`), `CNCROT_CHOOSE_MINUS` / `_PLUS` (a priority
-/// axis, 1-based: the solution with its lower / higher position, as `SEQ-`/`SEQ+` or
+/// axis, 1-based: the solution with its lower / higher angle in (-180, 180], as `SEQ-`/`SEQ+` or
 /// CYCLE800's `_DIR` ask; the other one when that lies outside the travel),
 /// `CNCROT_CHOOSE_POSITIVE_TURN` / `_NEGATIVE_TURN` (a priority axis and its direction of
 /// travel: it turns only up / only down, the least it must, as `G53.1 P1` / `P2` ask),

@@ -2,7 +2,7 @@
 //! the controllers' rules (CYCLE800 minus/plus, Heidenhain `SEQ±`, CYCLE600 `_ROT_INV`).
 
 use super::{Machine, Solutions, Stored, MAX_AXES, MAX_SOLUTIONS, TRAVEL_TOLERANCE};
-use crate::math::{abs, ceil, round, turns_toward};
+use crate::math::{abs, ceil, round, turns_toward, wrap_deg};
 use crate::{check_rotation, mul, transpose, Error, Matrix, CLOSEST_MAX, IDENTITY};
 
 /// Which solution [`Machine::choose`] takes.
@@ -11,10 +11,14 @@ pub enum Rule {
     /// The one closest to the current positions (sum of squared differences): what
     /// SINUMERIK does for a frame ("the pair closest to the current positions").
     Closest,
-    /// The lower position of the given axis (0-based): CYCLE800 "minus" on the
-    /// direction-reference axis; Heidenhain `SEQ-` on the master axis.
+    /// The solution whose position of the given axis (0-based), as an angle in
+    /// (−180°, 180°], is the lower, then placed like every solution (whole turns toward
+    /// the current position): CYCLE800 "minus" on the direction-reference axis;
+    /// Heidenhain `SEQ-` on the master axis ("a negative angle"). The same solution
+    /// whatever the current positions.
     Minus(usize),
-    /// The higher position of the given axis: CYCLE800 "plus", Heidenhain `SEQ+`.
+    /// The higher angle of the given axis, as [`Rule::Minus`]: CYCLE800 "plus",
+    /// Heidenhain `SEQ+`.
     Plus(usize),
     /// The other one of the pair: the paper's `_ROT_INV = 1` (the same orientation with the
     /// axes in the inverse position). The closest when there is no other.
@@ -331,8 +335,15 @@ impl Machine {
                 let better = match best.and_then(|b| placed.get(b)) {
                     None => true,
                     Some(q) => {
-                        let (x, y) = (p.0.get(k).copied(), q.0.get(k).copied());
-                        // Equal positions: the closer one.
+                        // Compared as angles in (-180°, 180°], not as the turns placed
+                        // toward `current`: `SEQ-` asks for the master axis at a negative
+                        // angle, and from A = -90° the other solution's A = 90° is placed
+                        // at -270° (a tie), which is lower but the `SEQ+` solution.
+                        let at = |s: &([f64; MAX_AXES], [f64; MAX_AXES], f64)| {
+                            s.0.get(k).map(|&x| wrap_deg(x))
+                        };
+                        let (x, y) = (at(p), at(q));
+                        // Equal angles: the closer one.
                         if x == y {
                             p.2 < q.2
                         } else {

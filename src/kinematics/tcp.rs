@@ -165,7 +165,7 @@ impl Machine {
 
     /// [`Machine::tcp_inverse`] with the rotary solution picked by `rule`: a priority axis
     /// and its side ([`Rule::Minus`] / [`Rule::Plus`]: the solution with that axis' lower
-    /// or higher position, as `SEQ-`/`SEQ+` ask) or its direction of travel
+    /// or higher angle in (−180°, 180°], as `SEQ-`/`SEQ+` ask) or its direction of travel
     /// ([`Rule::PositiveTurn`] / [`Rule::NegativeTurn`], as `G53.1 P1`/`P2` ask), or the
     /// other solution of the pair ([`Rule::Inverse`]). Whole turns are unwound toward
     /// `previous` in every case.
