@@ -568,6 +568,26 @@ fn programs(b: &mut Bench, i: &Inputs) {
             &[(zero, shifted, tilted), (shifted, tilted, turned)],
             &mut |(a, z, n)| unsafe { cncrot_program_joins(a, z, n, &mut join) },
         );
+        // What a translator keeps of a block: a cancel among a retract's words, a tilt with
+        // its motion mode and feed.
+        let mut kept = [0u8; CNCROT_PROGRAM_LINE_MAX + 3];
+        b.time(
+            "cncrot_program_rest",
+            "random",
+            &[
+                &b"G91 G28 Z0. G69"[..],
+                b"N40 G1 G68.2 X0. Y0. Z0. I90. J30. K-90. F300.",
+            ],
+            &mut |l| unsafe {
+                cncrot_program_rest(
+                    CNCROT_DIALECT_FANUC,
+                    l.as_ptr().cast(),
+                    l.len(),
+                    kept.as_mut_ptr().cast(),
+                    kept.len(),
+                )
+            },
+        );
         let mut change = [0u8; CNCROT_PROGRAM_CHANGE_MAX + 1];
         for (class, dialect, form) in [
             (

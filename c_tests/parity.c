@@ -147,8 +147,15 @@ int main(void) {
     snprintf(l[0], sizeof l[0], "G52 X%.6f Y%.6f", rnd(-100, 100), rnd(-100, 100));
     snprintf(l[1], sizeof l[1], "G68.2 X%.6f Y0 Z%.6f I%.6f J%.6f K%.6f", rnd(-50, 50), rnd(-50, 50),
              rnd(-170, 170), rnd(1, 89), rnd(-170, 170));
+    if (v == 2) {
+      /* A tilt and a cancel among other words: kept beside the translation. */
+      char t[150];
+      memcpy(t, l[1], sizeof t - 1);
+      t[sizeof t - 1] = '\0';
+      snprintf(l[1], sizeof l[1], "N40 G1 %s F300.", t);
+    }
     snprintf(l[2], sizeof l[2], "%s", v % 2 ? "G53.6" : "G53.1");
-    snprintf(l[3], sizeof l[3], "G69");
+    snprintf(l[3], sizeof l[3], "%s", v == 2 ? "G91 G28 Z0. G69" : "G69");
     cncrot_program s[5];
     memset(&s[0], 0, sizeof s[0]);
     for (int j = 0; j < 4; j++) {
@@ -165,12 +172,20 @@ int main(void) {
       int run = -1;
       for (int j = 0; j < 4; j++) {
         static char text[CNCROT_PROGRAM_CHANGE_MAX + 1];
+        /* The block's other words first, on a line of their own (cncrot_program_rest). */
+        char keep[CNCROT_PROGRAM_LINE_MAX + 3] = "";
+        if (to != CNCROT_DIALECT_FANUC &&
+            cncrot_program_rest(CNCROT_DIALECT_FANUC, l[j], strlen(l[j]), keep, sizeof keep) < 0)
+          return 1;
         int32_t join = 0;
         if (to != CNCROT_DIALECT_FANUC && j + 1 < 4 && cncrot_program_joins(&s[j], &s[j + 1], &s[j + 2], &join) < 0)
           return 1;
         if (join) {
           if (run < 0) run = j;
-          printf(" -");
+          if (keep[0])
+            text_hex(keep);
+          else
+            printf(" -");
           continue;
         }
         const cncrot_program *from = &s[run < 0 ? j : run];
@@ -180,10 +195,15 @@ int main(void) {
                         : cncrot_program_write_block(from, &s[j + 1], l[j], strlen(l[j]), to, TARGETS[k].form,
                                                      decimals, text, sizeof text);
         if (w < 0) return 1;
-        if (text[0])
+        if (keep[0]) {
+          static char both[CNCROT_PROGRAM_LINE_MAX + CNCROT_PROGRAM_CHANGE_MAX + 8];
+          snprintf(both, sizeof both, "%s%s%s", keep, text[0] ? "\n" : "", text);
+          text_hex(both);
+        } else if (text[0]) {
           text_hex(text);
-        else
+        } else {
           printf(" -");
+        }
       }
       printf("\n");
     }

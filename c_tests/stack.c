@@ -238,6 +238,11 @@ static void program_write_block(void) {
           cncrot_program_write_block(&change_to, &added_far, added_origin, sizeof added_origin - 1,
                                      CNCROT_DIALECT_SINUMERIK, "CYCLE800 185", -1, out, sizeof out);
 }
+static void program_rest(void) {
+  static char out[CNCROT_PROGRAM_LINE_MAX + 3];
+  static const char b[] = "N40 G1 G68.2 X 10. Y[0.] Z0 I0 J30 K0 F300. (TILT) G91 G28 Z0. G69 ; end";
+  sink += cncrot_program_rest(CNCROT_DIALECT_SYNTEC, b, sizeof b - 1, out, sizeof out) + out[0];
+}
 static void program_joins(void) {
   int32_t join = 0;
   sink += cncrot_program_joins(&change_from, &change_to, &cancelled, &join) + join;
@@ -442,7 +447,7 @@ static const struct entry ENTRIES[] = {
     E(program_expected, 1),  E(program_frame, 0),     E(program_write, 1),      E(program_init, 0),
     E(program_write_change, 1),
     E(program_write_block, 1),
-    E(program_joins, 0),
+    E(program_joins, 0),      E(program_rest, 0),
     E(machine_from_carr, 1), E(machine_carr_error_line, 1), E(machine_from_head, 1),
     E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
     E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),

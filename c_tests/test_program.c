@@ -971,7 +971,51 @@ static void incremental_blocks(void) {
   CHECK(strcmp(out, "CYCLE800(0,\"\",1,57,0,0,0,0,0,15,0,0,0,0,0,0)") == 0, "%s", out);
 }
 
+/* What a translator keeps of a block: the words beside the frame command, as they stand
+ * (a retract beside a cancel, the motion mode and feed beside a tilt); nothing where only
+ * the block number and comments are left, or where the dialect allows no other words. */
+static void kept_words(void) {
+  static const struct {
+    int32_t dialect;
+    const char *block, *rest;
+  } cases[] = {
+      {CNCROT_DIALECT_FANUC, "G0 G90 G49 G69 G80 G40 G17", "G0 G90 G49 G80 G40 G17"},
+      {CNCROT_DIALECT_FANUC, "G91 G28 Z0. G69", "G91 G28 Z0."},
+      {CNCROT_DIALECT_FANUC, "N40 G1 G68.2 X0. Y0. Z0. I90. J-1. K-90. F300.", "N40 G1 F300."},
+      {CNCROT_DIALECT_FANUC, "N50 G90 G68.2 X 10. Y[0.] Z0 I0 J30 K0 (TILT)", "N50 G90 (TILT)"},
+      {CNCROT_DIALECT_FANUC, "N60 G69 (CANCEL)", ""},
+      {CNCROT_DIALECT_FANUC, "G1 X10. Y10.", "G1 X10. Y10."},
+      {CNCROT_DIALECT_HAAS, "G0 G269 G90", "G0 G90"},
+      {CNCROT_DIALECT_SYNTEC, "G1 G158 L1 P10 X0 Y0 Z0 A0 B30 C0 F100.", "G1 F100."},
+      {CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN F1000", ""},
+      {CNCROT_DIALECT_SINUMERIK, "N10 CYCLE800()", ""},
+  };
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    char out[300];
+    memset(out, 0x5A, sizeof out);
+    CHECK_STATUS(cncrot_program_rest(cases[k].dialect, cases[k].block, strlen(cases[k].block), out, sizeof out),
+                 CNCROT_STATUS_OK);
+    CHECK(strcmp(out, cases[k].rest) == 0, "%s: '%s'", cases[k].block, out);
+  }
+  /* The room: the text and its NUL; too little leaves `out` untouched. */
+  const char *b = cases[1].block;
+  char small[12];
+  memset(small, 0x5A, sizeof small);
+  CHECK_STATUS(cncrot_program_rest(CNCROT_DIALECT_FANUC, b, strlen(b), small, 11), CNCROT_STATUS_NO_ROOM);
+  CHECK((unsigned char)small[0] == 0x5A, "out touched");
+  CHECK_STATUS(cncrot_program_rest(CNCROT_DIALECT_FANUC, b, strlen(b), small, 12), CNCROT_STATUS_OK);
+  CHECK(strcmp(small, "G91 G28 Z0.") == 0, "%s", small);
+  CHECK_STATUS(cncrot_program_rest(9, b, strlen(b), small, 12), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_program_rest(CNCROT_DIALECT_FANUC, NULL, 0, small, 12), CNCROT_STATUS_NULL_POINTER);
+  /* In place: the block's own buffer receives its rest. */
+  char in_place[] = "G91 G28 Z0. G69";
+  CHECK_STATUS(cncrot_program_rest(CNCROT_DIALECT_FANUC, in_place, strlen(in_place), in_place, sizeof in_place),
+               CNCROT_STATUS_OK);
+  CHECK(strcmp(in_place, "G91 G28 Z0.") == 0, "%s", in_place);
+}
+
 int main(void) {
+  kept_words();
   incremental_blocks();
   joined_blocks();
   restated_blocks();

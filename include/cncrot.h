@@ -2262,6 +2262,37 @@ int32_t cncrot_program_write_block(const struct cncrot_program *before,
                                    size_t cap);
 
 /**
+ * The words of block `line` (`len` bytes) of a `dialect` program that are not the
+ * frame's, as they stand: what a translator keeps beside the text of
+ * `cncrot_program_write_block` for the block (the motion, feed, compensation and mode
+ * words an ISO-style post writes on the block of a tilt or a cancel, and the block
+ * number). Without them a translation drops a retract (`G91 G28 Z0.` of
+ * `G91 G28 Z0. G69`) or a feed (`N40 G1 F300.` of `N40 G1 G68.2 … F300.`). Also for the
+ * first block of two that `cncrot_program_joins` writes as one. An empty text where
+ * nothing but the block number and comments is left, and for SINUMERIK, Heidenhain and
+ * TwinCAT, whose readers refuse other words beside a frame command; a block without a
+ * frame command is left whole (up to a NUL byte, which ends it). `out` receives the text
+ * NUL-terminated.
+ *
+ * No allocation, no panic, time linear in `len`.
+ *
+ * Returns 0, or with `out` untouched: `CNCROT_STATUS_NULL_POINTER`,
+ * `CNCROT_STATUS_BAD_ARGUMENT` (an unknown `dialect`), `CNCROT_STATUS_LINE_TOO_LONG` (a
+ * `len` longer than the dialect reads, with its line end), `CNCROT_STATUS_NO_ROOM` (`cap`
+ * not above the text's length; `len + 1` always suffices).
+ *
+ * # Safety
+ * `line` points to `len` readable bytes, `out` to `cap` writable ones (they may overlap).
+ *
+ * ```c
+ * char keep[260];
+ * cncrot_program_rest(CNCROT_DIALECT_FANUC, "G91 G28 Z0. G69", 15, keep, sizeof keep);
+ * // keep: "G91 G28 Z0.", then the target's cancel
+ * ```
+ */
+int32_t cncrot_program_rest(int32_t dialect, const char *line, size_t len, char *out, size_t cap);
+
+/**
  * Whether a translator writes two blocks read one after the other — the first from
  * `before` to `after`, the next from `after` to `next`, each read by `cncrot_program_line`
  * with status 0 — as one change: `cncrot_program_write_block` from `before` to `next` with

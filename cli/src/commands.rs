@@ -9,8 +9,8 @@ use cncrot::dialects::cycle600::{self, Call, State};
 use cncrot::dialects::head_def::HeadTable;
 use cncrot::dialects::heidenhain::cycle_head;
 use cncrot::dialects::program::{
-    joins, write_block, write_change, write_line, AxisChoice, Dialect, DirectAxes, Program, Remark,
-    MAX_CHANGE,
+    joins, rest, write_block, write_change, write_line, AxisChoice, Dialect, DirectAxes, Program,
+    Remark, MAX_CHANGE,
 };
 use cncrot::kinematics::{Machine, RotaryAxis, Rule, Side, MAX_AXES};
 use cncrot::{
@@ -1352,6 +1352,16 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                 let next = ahead.get(k + 1).copied().flatten();
                 if let Some(t) = &target {
                     let mut buf = [0u8; MAX_CHANGE];
+                    // What the block holds besides the frame's words, kept as it stands.
+                    let kept = {
+                        let mut rest_buf = [0u8; MAX_CHANGE];
+                        match rest(dialect, block.as_bytes(), &mut rest_buf) {
+                            Ok(n) if n > 0 => {
+                                Some(String::from_utf8_lossy(&rest_buf[..n]).into_owned())
+                            }
+                            _ => None,
+                        }
+                    };
                     // Into another dialect also what the block restates (a cancel, a
                     // datum shift, with nothing active: the control may have something
                     // active); in its own, such a block stays as it stands.
@@ -1426,16 +1436,20 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             Some(block.to_string())
                         }
                         // Nothing changes in the target (cycle 7's first line, a
-                        // command repeated): nothing to write.
-                        Ok((0, _)) => None,
+                        // command repeated, a block written with the next): nothing to
+                        // write but the block's other words.
+                        Ok((0, _)) => kept.clone(),
                         Ok((len, _)) => {
                             rewritten = true;
                             let text = String::from_utf8_lossy(&buf[..len]);
                             // An optional block stays optional: its skip mark on each line.
                             let mark = skip_mark(block, dialect, t.dialect);
+                            // The block's other words (a retract beside a cancel, the
+                            // motion mode and feed beside a tilt) first, as they stand.
                             Some(
-                                text.lines()
-                                    .map(|l| format!("{mark}{l}"))
+                                kept.iter()
+                                    .cloned()
+                                    .chain(text.lines().map(|l| format!("{mark}{l}")))
                                     .collect::<Vec<_>>()
                                     .join("\n"),
                             )

@@ -1588,6 +1588,31 @@ fn program_to(prog: &str, from: &str, to: &str) -> Vec<String> {
     r.stdout.lines().map(String::from).collect()
 }
 
+/// The other words of a tilt or cancel block stay (a helper's shop programs: a TECH STAR
+/// header, a generator's `G1 G68.2 … F300.`): the retract `G91 G28 Z0.` beside `G69` and the
+/// motion mode and feed beside `G68.2` on a line of their own before the translation, the
+/// block's own line when only the cancel was there; a joined tilt keeps its first line's.
+#[test]
+fn program_to_keeps_a_blocks_other_words() {
+    let prog = "G0 G90 G49 G69 G80 G40 G17\nG91 G28 Z0. G69\n\
+                N40 G1 G68.2 X0. Y0. Z0. I0. J30. K0. F300.\nN50 G53.1\nN70 X10. Y10.\nG69\n";
+    assert_eq!(
+        program_to(prog, "fanuc", "haas"),
+        [
+            "G0 G90 G49 G80 G40 G17",
+            "G269",
+            "G91 G28 Z0.",
+            "G269",
+            "N40 G1 F300.",
+            // Euler Z-X-Z (0, 30, 0) is Rx(30°): roll 30 about X.
+            "G268 X0. Y0. Z0. I30. J0. K0. Q123",
+            "G253",
+            "N70 X10. Y10.",
+            "G269"
+        ]
+    );
+}
+
 /// A command spread over lines is written as one in the target: cycle 7's axis lines as one
 /// `G52`, a `PLANE … STAY` and the block that turns to it as one `G68.2` with its `G53.1`;
 /// under the tilt, the shift reset once (not once per axis). By hand: `SPB+30` is `Ry(30°)`

@@ -186,12 +186,78 @@ fuzz_target!(|data: &[u8]| {
         }
         translated(&again, &p, &line, &mut translations);
         flips_are_refused(&p, line.len());
+        kept(dialect, &again, &line);
         if s == 0 {
             joined(first.as_ref(), &again, &p);
             applied = Some(again);
         }
     }
 });
+
+/// What a translator keeps of a block read on `before`, `cncrot_program_rest`: no
+/// longer than the block, its own rest, and read on `before` it changes no frame, shift or
+/// tilt's increment (only a plane selection it may hold); `out` untouched when refused.
+fn kept(dialect: i32, before: &cncrot_program, line: &[u8]) {
+    let mut out = [0x5Au8; 520];
+    let mut small = [0x5Au8; 4];
+    // SAFETY: `line` holds its length in bytes, `out` and `small` theirs.
+    let (s, t) = unsafe {
+        (
+            cncrot_program_rest(
+                dialect,
+                line.as_ptr().cast(),
+                line.len(),
+                out.as_mut_ptr().cast(),
+                out.len(),
+            ),
+            cncrot_program_rest(
+                dialect,
+                line.as_ptr().cast(),
+                line.len(),
+                small.as_mut_ptr().cast(),
+                small.len(),
+            ),
+        )
+    };
+    if s != 0 {
+        assert!(s < 0 && out == [0x5Au8; 520], "rest {s}");
+        return;
+    }
+    let n = out.iter().position(|&b| b == 0).expect("NUL-terminated");
+    assert!(n <= line.len(), "a rest longer than its block");
+    assert!(
+        t == 0 || (t == -23 && small == [0x5Au8; 4]),
+        "rest into 4 bytes: {t}"
+    );
+    if n == 0 {
+        return;
+    }
+    let rest = out[..n].to_vec().into_boxed_slice();
+    let mut again = [0x5Au8; 520];
+    // SAFETY: as above.
+    let r = unsafe {
+        cncrot_program_rest(
+            dialect,
+            rest.as_ptr().cast(),
+            n,
+            again.as_mut_ptr().cast(),
+            again.len(),
+        )
+    };
+    assert_eq!(r, 0);
+    assert_eq!(&again[..=n], &out[..=n], "the rest of a rest is itself");
+    let mut q = *before;
+    // SAFETY: as above; q is valid.
+    let k = unsafe { cncrot_program_line(&mut q, dialect, rest.as_ptr().cast(), n) };
+    if k >= 0 {
+        assert!(
+            q.rotation == before.rotation && q.origin == before.origin && q.shift == before.shift,
+            "the rest of {:?} changed the frame: {:?}",
+            String::from_utf8_lossy(line),
+            String::from_utf8_lossy(&rest)
+        );
+    }
+}
 
 /// Two applied blocks in a row (`first` → `after` → `next`): `cncrot_program_joins` answers,
 /// and a join is of blocks that leave the tilt's rotation alone in the second (a shift's

@@ -4,23 +4,29 @@
 
 /* What the target writes for a block, with the block's skip mark on each of its lines (an
  * optional block stays optional): "/", or an ISO level "/2 " between ISO-style dialects
- * (Heidenhain has one mark, and its digits after "/" are the block number). */
-static mxArray *skip_marked(const char *block, size_t len, int32_t from, int32_t to, const char *out) {
+ * (Heidenhain has one mark, and its digits after "/" are the block number). `keep` (the
+ * block's other words, cncrot_program_rest, with the block's own mark) comes first. */
+static mxArray *skip_marked(const char *block, size_t len, int32_t from, int32_t to, const char *keep,
+                            const char *out) {
   size_t i = 0;
   while (i < len && (block[i] == ' ' || block[i] == '\t')) i++;
-  if (i >= len || block[i] != '/' || out[0] == '\0') return mxCreateString(out);
-  char mark[16] = "/";
-  size_t d = i + 1, n = 0;
-  while (d < len && block[d] >= '0' && block[d] <= '9' && n < 8) mark[1 + n++] = block[d++];
-  int iso = from != CNCROT_DIALECT_HEIDENHAIN && to != CNCROT_DIALECT_HEIDENHAIN;
-  if (iso && n > 0) {
-    mark[1 + n] = ' ';
-    mark[2 + n] = '\0';
-  } else {
-    mark[1] = '\0';
+  char mark[16] = "";
+  if (i < len && block[i] == '/') {
+    size_t d = i + 1, n = 0;
+    mark[0] = '/';
+    while (d < len && block[d] >= '0' && block[d] <= '9' && n < 8) mark[1 + n++] = block[d++];
+    int iso = from != CNCROT_DIALECT_HEIDENHAIN && to != CNCROT_DIALECT_HEIDENHAIN;
+    if (iso && n > 0) {
+      mark[1 + n] = ' ';
+      mark[2 + n] = '\0';
+    } else {
+      mark[1] = '\0';
+    }
   }
-  static char marked[2 * CNCROT_PROGRAM_CHANGE_MAX + 64];
+  static char marked[3 * CNCROT_PROGRAM_CHANGE_MAX + 64];
   size_t m = 0, ml = strlen(mark);
+  for (const char *o = keep; *o && m + 2 < sizeof marked; o++) marked[m++] = *o;
+  if (m > 0 && out[0]) marked[m++] = '\n';
   int start = 1;
   for (const char *o = out; *o && m + ml + 2 < sizeof marked; o++) {
     if (start) {
@@ -80,6 +86,10 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
       mxSetCell(remarks, k, mxCreateString(s == CNCROT_STATUS_PASSED ? "passed" : "not followed"));
       continue;
     }
+    /* The block's other words (a retract beside a cancel, the motion mode and feed beside a
+     * tilt), kept as they stand before its translation. */
+    char keep[CNCROT_PROGRAM_LINE_MAX + 3] = "";
+    if (to != dialect && cncrot_program_rest(dialect, buf, len, keep, sizeof keep) != CNCROT_STATUS_OK) keep[0] = '\0';
     if (to != dialect && cell && k + 1 < n && mxGetCell(lines, k + 1)) {
       char next_buf[CNCROT_PROGRAM_LINE_MAX + 3];
       size_t next_len = line_bytes(mxGetCell(lines, k + 1), 2, next_buf, sizeof next_buf);
@@ -90,7 +100,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
         /* Written with the next block. */
         if (!running) run = before;
         running = 1;
-        mxSetCell(text, k, mxCreateString(""));
+        mxSetCell(text, k, mxCreateString(keep));
         mxSetCell(remarks, k, mxCreateString("applied"));
         continue;
       }
@@ -114,7 +124,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
       buf[len] = '\0';
       mxSetCell(text, k, mxIsChar(a) ? mxDuplicateArray(a) : mxCreateString(buf));
     } else {
-      mxSetCell(text, k, skip_marked(buf, len, dialect, to, out));
+      mxSetCell(text, k, skip_marked(buf, len, dialect, to, keep, out));
     }
     mxSetCell(remarks, k, mxCreateString("applied"));
   }

@@ -238,6 +238,10 @@ function test_cncrot(cases_file)
   tj = cncrot_program_translate('fanuc', {'G68.2 X0 Y0 Z0 I90. J30. K-90.', 'G53.1', 'G69'}, 'heidenhain', 'PLANE SPATIAL', 4);
   check(isequal(tj, {''; 'PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX'; 'PLANE RESET STAY'}), 'translate: a tilt and its turn joined');
   check(isequal(rf, {'applied'; 'applied'; 'applied'; 'applied'; 'passed'; 'applied'}), 'translate: remarks');
+  % The other words of a tilt or cancel block stay, on a line of their own before the
+  % translation (a retract beside G69; G1 and the feed beside a G68.2 joined to its G53.1).
+  tw = cncrot_program_translate('fanuc', {'G91 G28 Z0. G69', 'N40 G1 G68.2 X0 Y0 Z0 I0 J30 K0 F300.', 'G53.1'}, 'haas', 'G268', 4);
+  check(isequal(tw, {sprintf('G91 G28 Z0.\nG269'); 'N40 G1 F300.'; sprintf('G268 X0. Y0. Z0. I30. J0. K0. Q123\nG253')}), 'translate: other words kept');
   ts = cncrot_program_translate("heidenhain", src, 'SINUMERIK', "CYCLE800", int8(4));
   check(strcmp(ts{4}, sprintf('TRANS\nCYCLE800(0,"",0,57,10,0,-5,0,30,0,0,0,0,1,0,0)')) && strcmp(ts{6}, sprintf('CYCLE800()\nTRANS X=10 Y=0 Z=-5')), 'translate: into SINUMERIK, _DIR +1');
   th = cncrot_program_translate('fanuc', {'G68.2 X10 Y20 I0 J30 K0'}, 'heidenhain', 'PLANE SPATIAL', 4);

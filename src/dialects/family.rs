@@ -484,6 +484,14 @@ pub(crate) trait Family {
     /// The forms whose frames this family computes (each form has exactly one owner).
     const FORMS: &'static [FormInfo];
 
+    /// The words of `text` that are not its frame commands', appended to `out` (see
+    /// [`super::program::rest`]); whether a word other than the block number is left.
+    /// None by default: the family's frame commands stand alone on their blocks (its
+    /// reader refuses other words beside one).
+    fn rest(_text: &[u8], _out: &mut Out) -> bool {
+        false
+    }
+
     /// What one block does to `m` (any block of a program in this dialect: a command the
     /// family reads gives the next state, any other block is passed over or, if it changes
     /// the frame in a way the family does not follow, says so); only a malformed command

@@ -599,6 +599,114 @@ pub(crate) fn write_g52(shift: Vector, decimals: i32, out: &mut Out) -> Result<(
     Ok(())
 }
 
+/// The frame commands a Fanuc-style block may hold among other words (G-codes in tenths,
+/// as [`crate::text::scan::Token::code`]), each with the address letters it takes: what
+/// [`iso_rest`] leaves out of a block. `G69` takes none (it may stand anywhere).
+pub(crate) const FANUC_FRAME_WORDS: &[(u32, &[u8])] = &[
+    (682, b"XYZIJKPQR"),
+    (684, b"XYZIJKPQR"),
+    (680, b"XYZIJKR"),
+    (690, b""),
+    (531, b"P"),
+    (536, b"P"),
+    (520, b"XYZ"),
+];
+
+/// The words of an ISO-style block that are not its frame commands' (`table`: each
+/// command's G-code in tenths with the address letters it takes), appended to `out` as
+/// they stand: the motion, feed, compensation and mode words a post writes beside a tilt
+/// or a cancel (`G91 G28 Z0.` of `G91 G28 Z0. G69`, `N40 G1 F300.` of `N40 G1 G68.2 …
+/// F300.`), comments kept, the blanks around a left-out word made one. A letter a command
+/// takes belongs to it up to the next G-code (`F` on a `G68.2` is the feed of the moves
+/// that follow: kept). A value after blanks or in brackets (`X 10.`, `J[30.]`) goes with
+/// its letter. Whether a word other than the block number is left.
+pub(crate) fn iso_rest(text: &[u8], table: &[(u32, &[u8])], out: &mut Out) -> bool {
+    let comments = Comments {
+        semicolon: true,
+        parens: true,
+    };
+    let blank = |b: &u8| matches!(b, b' ' | b'\t' | b'\r' | b'\n');
+    let (mut from, mut letters, mut words) = (0, &[][..], false);
+    // Something written, and blanks left out since: one blank before the next text.
+    let (mut written, mut gap) = (false, false);
+    let mut put = |segment: &[u8], out: &mut Out, gap: &mut bool| {
+        let lead = segment.iter().take_while(|b| blank(b)).count();
+        let body = segment.get(lead..).unwrap_or(&[]);
+        let trail = body.iter().rev().take_while(|b| blank(b)).count();
+        let body = body.get(..body.len() - trail).unwrap_or(&[]);
+        if body.is_empty() {
+            *gap |= !segment.is_empty();
+            return;
+        }
+        if written && (*gap || lead > 0) {
+            out.byte(b' ');
+        }
+        out.text(body);
+        written = true;
+        *gap = trail > 0;
+    };
+    for t in Tokens::new(text, comments, true) {
+        let start = t.column - 1;
+        // Inside a value left out with its letter (`X [ u. ]`): not a word of its own.
+        if start < from {
+            continue;
+        }
+        let command = match (t.letter, t.code()) {
+            (b'G', Some(code)) => table.iter().find(|(c, _)| *c == code).map(|(_, l)| *l),
+            _ => None,
+        };
+        let frame = match command {
+            Some(l) => {
+                letters = l;
+                true
+            }
+            None if t.letter == b'G' => {
+                letters = &[];
+                false
+            }
+            None => letters.contains(&t.letter),
+        };
+        if !frame {
+            words |= t.letter != b'N';
+            continue;
+        }
+        put(text.get(from..start).unwrap_or(&[]), out, &mut gap);
+        gap = true;
+        from = value_end(text, start + 1 + t.value.len(), t.value.is_empty());
+    }
+    put(text.get(from..).unwrap_or(&[]), out, &mut gap);
+    words
+}
+
+/// Where a word's value ends when its token (ending at `end`) has none (`empty`): after
+/// blanks, a number or one bracketed constant, as the ISO readers take them.
+fn value_end(text: &[u8], end: usize, empty: bool) -> usize {
+    if !empty {
+        return end;
+    }
+    let mut k = end;
+    while matches!(text.get(k), Some(b' ' | b'\t')) {
+        k += 1;
+    }
+    match text.get(k) {
+        Some(b'[') => {
+            let rest = text.get(k..).unwrap_or(&[]);
+            k + rest
+                .iter()
+                .position(|&c| c == b']')
+                .map_or(rest.len(), |p| p + 1)
+        }
+        Some(b'+' | b'-' | b'.' | b'0'..=b'9') => {
+            k += 1;
+            while matches!(text.get(k), Some(b'.' | b'0'..=b'9')) {
+                k += 1;
+            }
+            k
+        }
+        _ => end,
+    }
+}
+
 /// Fanuc's five-axis programs: `G43.4` (tool centre point, rotary positions `A B C`) and
 /// `G43.5` (the tool direction `I J K`) switch the transformation on, `G49` off \[doc\];
 /// `G90`/`G91`; arcs, `G28`/`G30` and `G53` moves are not followed.
@@ -628,6 +736,10 @@ impl Family for Fanuc {
             writable: true,
         },
     ];
+
+    fn rest(text: &[u8], out: &mut Out) -> bool {
+        iso_rest(text, FANUC_FRAME_WORDS, out)
+    }
 
     /// One block of a Fanuc-style program: `G68.2 X Y Z I J K` (omitted words are 0; a new
     /// `G68.2` replaces the active plane \[choice\]), `G68.4` (the same, on the active

@@ -81,6 +81,13 @@ impl Family for Haas {
         writable: true,
     }];
 
+    /// `G268`, `G269`, `G253`, `G52` and their words left out.
+    fn rest(text: &[u8], out: &mut Out) -> bool {
+        const WORDS: &[(u32, &[u8])] =
+            &[(2680, b"XYZIJKQ"), (2690, b""), (2530, b""), (520, b"XYZ")];
+        fanuc::iso_rest(text, WORDS, out)
+    }
+
     /// One block of a Haas program: `G268 X Y Z I J K Q` (omitted `X … K` are 0; `Q` is
     /// required [choice: Haas's default is not public]), `G269` (cancel), `G253` (orients
     /// the spindle: no frame change), with a block number and `( … )` comments. A `G268`

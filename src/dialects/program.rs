@@ -814,6 +814,41 @@ pub fn write_block(
     write_change_with(dialect, &spec, &c, decimals, buf)
 }
 
+/// The words of a block of a `dialect` program that are not the frame's, as they stand:
+/// what a translator keeps beside the blocks [`write_block`] writes for it (the motion,
+/// feed, compensation and mode words an ISO-style post writes on the block of a tilt or a
+/// cancel, and the block number), written to `buf`. Without them a translation drops a
+/// retract (`G91 G28 Z0.` of `G91 G28 Z0. G69`) or a feed (`N40 G1 F300.` of
+/// `N40 G1 G68.2 … F300.`). Empty where nothing but the block number and comments is left,
+/// and in the dialects whose readers refuse other words beside a frame command (SINUMERIK,
+/// Heidenhain, TwinCAT). A block that holds no frame command is left whole (up to a NUL
+/// byte, which ends it as it ends a C string).
+///
+/// Errors: [`Error::LineTooLong`] (a text longer than the dialect reads, with a line end),
+/// [`Error::NoRoom`] (`buf` too small: the text's length always suffices).
+///
+/// ```
+/// use cncrot::dialects::program::{rest, Dialect};
+/// let mut buf = [0u8; 256];
+/// let n = rest(Dialect::Fanuc, b"G91 G28 Z0. G69", &mut buf).unwrap();
+/// assert_eq!(&buf[..n], b"G91 G28 Z0.");
+/// let n = rest(Dialect::Fanuc, b"N40 G1 G68.2 X0. Y0. Z0. I0. J30. K0. F300.", &mut buf).unwrap();
+/// assert_eq!(&buf[..n], b"N40 G1 F300.");
+/// assert_eq!(rest(Dialect::Fanuc, b"N50 G69 (CANCEL)", &mut buf), Ok(0));
+/// ```
+pub fn rest(dialect: Dialect, text: &[u8], buf: &mut [u8]) -> Result<usize, Error> {
+    if text.len() > dialect.max_line() + 2 {
+        return Err(Error::LineTooLong);
+    }
+    // A NUL byte ends the text, as it ends the C string the rest is written as.
+    let text = text.split(|&b| b == 0).next().unwrap_or(&[]);
+    let mut out = Out::new(buf);
+    if !dialect.rest(text, &mut out) {
+        return Ok(0);
+    }
+    out.finish().ok_or(Error::NoRoom)
+}
+
 /// Whether a translator writes two blocks read one after the other — the first from
 /// `before` to `after`, the next from `after` to `next` — as one change, from `before` to
 /// `next` at the second block (the first writes nothing): they are one command spread over

@@ -51,6 +51,12 @@ macro_rules! families {
                 }
             }
 
+            pub(crate) fn rest(self, text: &[u8], out: &mut Out) -> bool {
+                match self {
+                    $(Dialect::$name => <$family>::rest(text, out),)*
+                }
+            }
+
             pub(crate) fn read_line(self, m: &Modal, text: &[u8]) -> Result<Block, LineError> {
                 match self {
                     $(Dialect::$name => <$family>::read_line(m, text),)*

@@ -173,6 +173,21 @@ impl Family for Syntec {
         writable: true,
     }];
 
+    /// `G158` and the commands of its `G68.2` mode left out.
+    fn rest(text: &[u8], out: &mut Out) -> bool {
+        const WORDS: &[(u32, &[u8])] = &[
+            (1580, b"LPXYZABCUVW"),
+            (682, b"XYZIJKPQR"),
+            (684, b"XYZIJKPQR"),
+            (680, b"XYZIJKR"),
+            (690, b""),
+            (531, b"P"),
+            (536, b"P"),
+            (520, b"XYZ"),
+        ];
+        fanuc::iso_rest(text, WORDS, out)
+    }
+
     /// One block of a Syntec program: `G158 L P X Y Z A B C U V W` (omitted words are 0,
     /// `L` accepted and ignored [choice: not documented]; `G158` without words cancels
     /// \[choice\]), and the Fanuc-style `G68.2`, `G68.4`, `G69`, `G53.1` of its G68.2 mode,

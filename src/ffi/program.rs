@@ -1100,6 +1100,78 @@ pub unsafe extern "C" fn cncrot_program_write_block(
     })
 }
 
+/// The words of block `line` (`len` bytes) of a `dialect` program that are not the
+/// frame's, as they stand: what a translator keeps beside the text of
+/// `cncrot_program_write_block` for the block (the motion, feed, compensation and mode
+/// words an ISO-style post writes on the block of a tilt or a cancel, and the block
+/// number). Without them a translation drops a retract (`G91 G28 Z0.` of
+/// `G91 G28 Z0. G69`) or a feed (`N40 G1 F300.` of `N40 G1 G68.2 … F300.`). Also for the
+/// first block of two that `cncrot_program_joins` writes as one. An empty text where
+/// nothing but the block number and comments is left, and for SINUMERIK, Heidenhain and
+/// TwinCAT, whose readers refuse other words beside a frame command; a block without a
+/// frame command is left whole (up to a NUL byte, which ends it). `out` receives the text
+/// NUL-terminated.
+///
+/// No allocation, no panic, time linear in `len`.
+///
+/// Returns 0, or with `out` untouched: `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_BAD_ARGUMENT` (an unknown `dialect`), `CNCROT_STATUS_LINE_TOO_LONG` (a
+/// `len` longer than the dialect reads, with its line end), `CNCROT_STATUS_NO_ROOM` (`cap`
+/// not above the text's length; `len + 1` always suffices).
+///
+/// # Safety
+/// `line` points to `len` readable bytes, `out` to `cap` writable ones (they may overlap).
+///
+/// ```c
+/// char keep[260];
+/// cncrot_program_rest(CNCROT_DIALECT_FANUC, "G91 G28 Z0. G69", 15, keep, sizeof keep);
+/// // keep: "G91 G28 Z0.", then the target's cancel
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_program_rest(
+    dialect: i32,
+    line: *const c_char,
+    len: usize,
+    out: *mut c_char,
+    cap: usize,
+) -> i32 {
+    guard(|| {
+        non_null(&[line.is_null(), out.is_null()])?;
+        let d = Dialect::from_code(dialect)?;
+        if len > d.max_line() + 2 {
+            return Err(cncrot_status::LineTooLong);
+        }
+        let text = core::slice::from_raw_parts(line.cast::<u8>(), len);
+        // Into a buffer of its own: `out` is written whole or not at all, and may be `line`.
+        let mut buf = [0u8; REST_MAX];
+        let n = program::rest(d, text, &mut buf)?;
+        let Some(body) = buf.get(..n) else {
+            return Err(cncrot_status::Internal);
+        };
+        if cap <= n {
+            return Err(cncrot_status::NoRoom);
+        }
+        let dst = core::slice::from_raw_parts_mut(out.cast::<u8>(), n + 1);
+        let (head, nul) = dst.split_at_mut(n);
+        head.copy_from_slice(body);
+        if let Some(z) = nul.first_mut() {
+            *z = 0;
+        }
+        Ok(cncrot_status::Ok)
+    })
+}
+
+/// The longest block any dialect reads, with its line end: what a block's rest can hold.
+const REST_MAX: usize = 514;
+const _: () = {
+    let mut k = 0;
+    while k < Dialect::ALL.len() {
+        assert!(Dialect::ALL[k].max_line() + 2 <= REST_MAX);
+        k += 1;
+    }
+};
+
 /// Whether a translator writes two blocks read one after the other — the first from
 /// `before` to `after`, the next from `after` to `next`, each read by `cncrot_program_line`
 /// with status 0 — as one change: `cncrot_program_write_block` from `before` to `next` with

@@ -1132,6 +1132,53 @@ fn programs() -> Vec<Call> {
             ));
             t.status(join);
         }),
+        ("cncrot_program_rest", |t| unsafe {
+            // A cancel among a retract's words, a tilt with its motion mode and feed, a
+            // cancel alone, a SINUMERIK block; then the errors, `out` untouched by each.
+            for (d, l) in [
+                (CNCROT_DIALECT_FANUC, &b"G91 G28 Z0. G69"[..]),
+                (
+                    CNCROT_DIALECT_SYNTEC,
+                    b"N40 G1 G68.2 X0 Y0 Z0 I0 J30 K0 F300.",
+                ),
+                (CNCROT_DIALECT_HAAS, b"G269 (CANCEL)"),
+                (CNCROT_DIALECT_SINUMERIK, b"CYCLE800()"),
+            ] {
+                let mut out = [0xAAu8; 64];
+                t.status(cncrot_program_rest(
+                    d,
+                    l.as_ptr().cast(),
+                    l.len(),
+                    out.as_mut_ptr().cast(),
+                    out.len(),
+                ));
+                t.bytes(&out);
+            }
+            let l = b"G0 G69 G90";
+            let mut out = [0xAAu8; 8];
+            for (d, text, n, cap) in [
+                (CNCROT_DIALECT_FANUC, null(), 0, 8),
+                (0, l.as_ptr(), l.len(), 8),
+                (CNCROT_DIALECT_FANUC, l.as_ptr(), 300, 8),
+                (CNCROT_DIALECT_FANUC, l.as_ptr(), l.len(), 6),
+            ] {
+                t.status(cncrot_program_rest(
+                    d,
+                    text.cast(),
+                    n,
+                    out.as_mut_ptr().cast(),
+                    cap,
+                ));
+            }
+            t.status(cncrot_program_rest(
+                CNCROT_DIALECT_FANUC,
+                l.as_ptr().cast(),
+                l.len(),
+                null_mut(),
+                8,
+            ));
+            t.bytes(&out);
+        }),
         ("cncrot_program_write_block", |t| unsafe {
             // A safety cancel and a zero shift with nothing active, a cycle's first line, a
             // tilt: each block read, then what a translator writes for it.
