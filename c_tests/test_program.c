@@ -854,8 +854,10 @@ static void restated_blocks(void) {
       {CNCROT_DIALECT_HEIDENHAIN, "CYCL DEF 7.0 DATUM SHIFT", CNCROT_DIALECT_FANUC, "G68.2", ""},
       /* A turn with no tilt active: the axes to the untilted plane. */
       {CNCROT_DIALECT_FANUC, "G53.1", CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", "PLANE RESET TURN FMAX"},
+      /* A zero tilt that turns: whatever was active cancelled (the block is a cancel), the zero
+       * G68.2 and its turn, then the cancel again (the target untilted, as the state). */
       {CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+0 SPB+0 SPC+0 TURN FMAX", CNCROT_DIALECT_FANUC, "G68.2",
-       "G68.2 X0. Y0. Z0. I0. J0. K0.\nG53.1"},
+       "G69\nG68.2 X0. Y0. Z0. I0. J0. K0.\nG53.1\nG69"},
   };
   char out[CNCROT_PROGRAM_CHANGE_MAX + 1];
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {

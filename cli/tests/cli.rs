@@ -1588,6 +1588,32 @@ fn program_to(prog: &str, from: &str, to: &str) -> Vec<String> {
     r.stdout.lines().map(String::from).collect()
 }
 
+/// `PLANE RESET TURN` into Fanuc: the tilt cancelled, a zero `G68.2` and its `G53.1` turn the
+/// axes, then `G69` again, so that the `G52` of the cycle 7 that follows is not written in
+/// `G68.2` mode (which Fanuc refuses) and the next tilt over none (a helper's find).
+#[test]
+fn program_to_cancels_after_a_zero_tilt_that_turns() {
+    let prog = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX\nPLANE RESET TURN FMAX\n\
+                CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+10\n\
+                PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN FMAX\nPLANE RESET STAY\n";
+    assert_eq!(
+        program_to(prog, "heidenhain", "fanuc"),
+        [
+            // SPB+30, Ry(30°), as Euler Z-X-Z: Rz(90°)·Rx(30°)·Rz(-90°).
+            "G68.2 X0. Y0. Z0. I90. J30. K-90.",
+            "G53.1",
+            "G69",
+            "G68.2 X0. Y0. Z0. I0. J0. K0.",
+            "G53.1",
+            "G69",
+            "G52 X10. Y0. Z0.",
+            "G68.2 X0. Y0. Z0. I90. J45. K-90.",
+            "G53.1",
+            "G69"
+        ]
+    );
+}
+
 /// The other words of a tilt or cancel block stay (a helper's shop programs: a TECH STAR
 /// header, a generator's `G1 G68.2 … F300.`): the retract `G91 G28 Z0.` beside `G69` and the
 /// motion mode and feed beside `G68.2` on a line of their own before the translation, the

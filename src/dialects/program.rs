@@ -1217,7 +1217,9 @@ fn change(
             && p.direct.is_none()
             && p.positioning != Positioning::Stay
     };
-    let rewrite = rewrite || (moved && (zero_turn(before) || zero_turn(after)));
+    // Where a block of its own turns the axes, the zero tilt is cancelled after it (below):
+    // nothing is left to take back.
+    let rewrite = rewrite || (moved && ((zero_turn(before) && !turn_block) || zero_turn(after)));
     let mut tilt_written = false;
     let tilt = |out: &mut Out| match d1 {
         Some(d) => dialect
@@ -1241,7 +1243,7 @@ fn change(
             // (`G68.2`, `G268`): cancelled first (`G69`, `G269`), which means the same where
             // the control replaces the tilt and is what a control that refuses a tilt in
             // tilt mode needs [choice]. A `PLANE`, a `G158` replace it.
-            let over = (t0 != Frame::IDENTITY || d0.is_some()) && active;
+            let over = (t0 != Frame::IDENTITY || d0.is_some()) && (active || zero_turn(after));
             if replaced && over && turn_block {
                 next(out);
                 tilt_block(dialect, spec, &Frame::IDENTITY, stay(), decimals, out)?;
@@ -1292,6 +1294,13 @@ fn change(
         if let Some(text) = dialect.positioning_block(spec, how()) {
             next(out);
             out.text(text);
+            // A zero tilt that turned the axes (`G68.2` of zeros, `G53.1`): cancelled, so that
+            // the target is untilted as the state is — a Fanuc refuses `G52` in `G68.2` mode,
+            // and the next tilt is written over none [choice].
+            if !active {
+                next(out);
+                tilt_block(dialect, spec, &Frame::IDENTITY, stay(), decimals, out)?;
+            }
         }
     }
     Ok(singular)
