@@ -1552,7 +1552,8 @@ int32_t cncrot_machine_inverse(const struct cncrot_machine *machine,
 /**
  * The axis positions to move to for the orientation of `frame`, seen from the current
  * positions `current_deg`: every solution brought to the whole turn nearest to the
- * current position (computed 10°, current 750° → 730°), or within the travel limits, and
+ * current position (computed 10°, current 750° → 730°; of two half a turn away, the one
+ * nearer 0: -90° from 90°, not 270°), or within the travel limits, and
  * snapped to Hirth grids; solutions outside the travel are skipped. A position computed
  * within `CNCROT_MACHINE_TRAVEL_TOLERANCE_DEG` beyond an end of the travel is taken exactly
  * at that end (a target made at an end is reached there; `axes_deg` never lies outside

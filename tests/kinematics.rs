@@ -407,6 +407,25 @@ fn choice_rules_limits_and_hirth() {
         "{plus:?}"
     );
 
+    // Half a turn either way: the turn nearer 0. From B = 90° the B = -90° solution of a
+    // 90° tilt is as far at -90° as at 270°: -90° (SEQ- after SEQ+; 270° drifted on to
+    // 360° and 380° in the blocks after it), and from B = -90° the B = 90° one is 90°.
+    let tilt90 = elementary(Axis::Y, 90.0);
+    let minus = free
+        .choose(&tilt90, [0.0, 90.0, 0.0], Rule::Minus(1))
+        .unwrap();
+    assert!((minus.axes[1] + 90.0).abs() < 1e-9, "{minus:?}");
+    assert!((minus.axes[0].abs() - 180.0).abs() < 1e-9, "{minus:?}");
+    let plus = free
+        .choose(&tilt90, [0.0, -90.0, 0.0], Rule::Plus(1))
+        .unwrap();
+    assert!((plus.axes[1] - 90.0).abs() < 1e-9, "{plus:?}");
+    // Not a tie: the nearest turn, however far from 0.
+    let far = free
+        .choose(&tilt90, [0.0, 200.0, 0.0], Rule::Minus(1))
+        .unwrap();
+    assert!((far.axes[1] - 270.0).abs() < 1e-9, "{far:?}");
+
     // With B limited to 0..100, "minus" cannot have B = -30 and takes the other.
     let mut b2 = b;
     b2.limits = Some([0.0, 100.0]);

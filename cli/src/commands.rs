@@ -9,8 +9,8 @@ use cncrot::dialects::cycle600::{self, Call, State};
 use cncrot::dialects::head_def::HeadTable;
 use cncrot::dialects::heidenhain::cycle_head;
 use cncrot::dialects::program::{
-    joins, rest, write_block, write_change, write_line, AxisChoice, Dialect, DirectAxes, Program,
-    Remark, MAX_CHANGE,
+    joins, rest, write_block, write_change, write_line, AxisChoice, Dialect, DirectAxes,
+    Positioning, Program, Remark, MAX_CHANGE,
 };
 use cncrot::kinematics::{Machine, RotaryAxis, Rule, Side, MAX_AXES};
 use cncrot::{
@@ -1516,7 +1516,12 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     }
                     match axes {
                         Some(Ok(c)) => {
-                            current = c.axes;
+                            // The axes are where the last block that moved them left them: a
+                            // block that stays (`STAY`, a `G68.2` before its `G53.1`, a
+                            // cancel, a datum shift) shows where its plane needs them.
+                            if p.positioning != Positioning::Stay {
+                                current = c.axes;
+                            }
                             let shown = c.axes.get(..n).unwrap_or(&c.axes);
                             row += &format!("  axes: {}", nums(shown, d));
                             if c.free {

@@ -145,7 +145,8 @@ enum Command {
     #[command(
         after_help = "One row per block that concerns the frame (line number, block, origin, \
                             tool direction; with --carr or --axis the rotary positions, chosen \
-                            closest to the positions before, and any travel violation), then a \
+                            from where the last block that moved the axes left them, and any \
+                            travel violation), then a \
                             summary of the blocks passed over. A block that changes the frame in \
                             a way cncrot does not follow (a work offset, preset, datum shift, \
                             mirroring) is flagged. --to writes the whole program with its tilt \

@@ -1575,6 +1575,49 @@ fn program_to_writes_datum_shifts() {
     );
 }
 
+/// Each block's positions are chosen from where the axes are: the last block that moved
+/// them (`TURN`, `G53.1`), not a block that stays (`STAY`, a cancel, a datum shift, a
+/// `G68.2` before its `G53.1`), whose row shows where its plane needs them (a helper's
+/// checks on a fork head C on B). From C 87, B -20 the plane (0.5, 0, 0.866) is C 0, B 30
+/// (87² + 50² = 10069 away) or C 180, B -30 (93² + 10² = 8749): the latter, also after a
+/// datum shift or a `STAY`; and `G53.1 P1` turns the master axis up from where it is.
+#[test]
+fn program_positions_follow_the_blocks_that_move_the_axes() {
+    let axes = |prog: &str, dialect: &str, machine: &[&str], current: &str| -> Vec<String> {
+        let mut args = vec!["program", "-", "--dialect", dialect, "--current", current];
+        args.extend_from_slice(machine);
+        let r = cncrot(&args, prog);
+        assert_eq!(r.code, 0, "{}", r.stderr);
+        r.stdout
+            .lines()
+            .filter_map(|l| l.split("axes: ").nth(1))
+            .map(String::from)
+            .collect()
+    };
+    let fork = ["--axis", "tool:0,0,1", "--axis", "tool:0,1,0"];
+    let shifted = "CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+10\n\
+                   PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX\n";
+    let got = axes(shifted, "heidenhain", &fork, "87,-20");
+    assert_eq!(
+        got.last().map(String::as_str),
+        Some("180.0000 -30.0000"),
+        "{got:?}"
+    );
+    let stayed = "PLANE SPATIAL SPA+0 SPB-60 SPC+0 STAY\n\
+                  PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX\n";
+    let got = axes(stayed, "heidenhain", &fork, "87,-20");
+    assert_eq!(
+        got.last().map(String::as_str),
+        Some("180.0000 -30.0000"),
+        "{got:?}"
+    );
+    // An AC table from A 0, C 0: the G68.2 row (not moved to) shows the closest, A -30; then
+    // G53.1 P1 turns A (the master axis) up: A 30 (C 180) rather than A -30 330° up.
+    let ac = ["--axis", "work:1,0,0", "--axis", "work:0,0,1"];
+    let got = axes("G68.2 X0 Y0 Z0 I0 J30 K0\nG53.1 P1\n", "fanuc", &ac, "0,0");
+    assert_eq!(got, ["-30.0000 0.0000", "30.0000 -180.0000"]);
+}
+
 /// `cncrot program - --dialect FROM --to TO` on `prog`.
 fn translate(prog: &str, from: &str, to: &str) -> Run {
     cncrot(&["program", "-", "--dialect", from, "--to", to], prog)

@@ -81,12 +81,20 @@ pub(crate) fn place(axis: &Stored, angle: f64, current: f64) -> Option<(f64, f64
     fits.then_some((x, x - exact + 0.0))
 }
 
-/// The turn of `angle` that [`place`] starts from: the one nearest `current`, on an axis
-/// with travel `limits` the one nearest it within them (or within [`TRAVEL_TOLERANCE`]
-/// beyond an end, not yet taken onto it).
+/// The turn of `angle` that [`place`] starts from: the one nearest `current` (of two half a
+/// turn away, within [`TRAVEL_TOLERANCE`], the one nearer 0), on an axis with travel
+/// `limits` the one nearest it within them (or within [`TRAVEL_TOLERANCE`] beyond an end,
+/// not yet taken onto it).
 #[inline(always)]
 pub(crate) fn unwound(limits: Option<[f64; 2]>, angle: f64, current: f64) -> f64 {
     let mut x = angle + turns_toward(angle, current) + 0.0;
+    // Half a turn either way (up to rounding): the turn nearer 0, whichever side `current`
+    // lies on, so that SEQ- after SEQ+ on a tilt of 90° puts A at -90°, not at 270° (and the
+    // next plane at 380°) [choice].
+    let other = if x > current { x - 360.0 } else { x + 360.0 };
+    if abs(abs(x - current) - 180.0) <= TRAVEL_TOLERANCE && abs(other) < abs(x) {
+        x = other;
+    }
     if let Some([lo, hi]) = limits {
         if x > hi + TRAVEL_TOLERANCE {
             x -= 360.0 * ceil((x - hi - TRAVEL_TOLERANCE) / 360.0);
@@ -143,7 +151,8 @@ impl Machine {
     /// positions (degrees; unused axes 0).
     ///
     /// Every solution of [`Machine::inverse`] is brought to the whole turn nearest to the
-    /// current position (computed 10°, current 750° → 730°), or, on an axis with travel
+    /// current position (computed 10°, current 750° → 730°; of two half a turn away, the
+    /// one nearer 0: −90° from 90°, not 270°), or, on an axis with travel
     /// limits, to the turn nearest to it within them, and snapped to the axis' Hirth grid;
     /// a solution that does not fit the travel is skipped and the other taken. A position
     /// within [`super::TRAVEL_TOLERANCE`] beyond an end of the travel is taken exactly at
