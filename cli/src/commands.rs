@@ -1224,6 +1224,9 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     let (mut applied, mut passed, mut unfollowed, mut refused) = (0, 0, 0, 0);
     // Blocks read but not written in the target (its form has no words for the change).
     let mut uncarried = 0;
+    // A block refused since the last one that set the frame: the control's tilt is not the
+    // state's, and a block that only turns the axes to it (`G53.1`) cannot be carried across.
+    let mut lost = false;
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
     let mut ok = true;
@@ -1281,6 +1284,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
             Ok(r) => r,
             Err(e) => {
                 refused += 1;
+                lost = true;
                 ok = false;
                 let message = input::block_message(block, &e);
                 let why = format!("line {line}, column {}: {message}", e.column);
@@ -1350,7 +1354,24 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     }
                 }
                 let next = ahead.get(k + 1).copied().flatten();
-                if let Some(t) = &target {
+                // A turn to the plane and nothing else (a cancel, which moves nothing, sets the
+                // frame again: the state is the control's once more).
+                let turns_only = p.positioning != Positioning::Stay
+                    && p != before
+                    && (p.frame, p.shift, p.direct) == (before.frame, before.shift, before.direct);
+                lost &= turns_only;
+                if let (Some(t), true) = (&target, lost) {
+                    // Written as a turn it would turn the axes to the state's plane, not to
+                    // the refused one the control has: the block as it stands, flagged.
+                    uncarried += 1;
+                    ok = false;
+                    eprintln!(
+                        "cncrot: line {line}: not carried across as {} {}: it moves the machine to a tilt refused above: {block}",
+                        input::dialect_name(t.dialect),
+                        t.form
+                    );
+                    Some(block.to_string())
+                } else if let Some(t) = &target {
                     let mut buf = [0u8; MAX_CHANGE];
                     // What the block holds besides the frame's words, kept as it stands.
                     let kept = {

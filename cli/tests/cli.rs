@@ -1618,6 +1618,34 @@ fn program_positions_follow_the_blocks_that_move_the_axes() {
     assert_eq!(got, ["-30.0000 0.0000", "30.0000 -180.0000"]);
 }
 
+/// A turn to a tilt refused above (Hurco's `G68.2 … U V W`, then `G53.1`) is not written as
+/// a turn to the plane the state has (the untilted one: `PLANE RESET TURN` would move the
+/// machine where the source does not): kept as it stands and flagged; a cancel after it sets
+/// the frame again and is written.
+#[test]
+fn program_to_keeps_a_turn_to_a_refused_tilt() {
+    let prog = "G69\nG68.2 X10. Y0. Z-5. I0.866025 J0. K-0.5 U0. V1. W0.\nG53.1\nG0 X0 Y0\nG69\n";
+    let r = translate(prog, "fanuc", "heidenhain");
+    assert_eq!(r.code, 1);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(
+        lines,
+        [
+            "PLANE RESET STAY",
+            "G68.2 X10. Y0. Z-5. I0.866025 J0. K-0.5 U0. V1. W0.",
+            "G53.1",
+            "G0 X0 Y0",
+            "PLANE RESET STAY"
+        ]
+    );
+    assert!(
+        r.stderr.contains("line 3: not carried across as heidenhain PLANE SPATIAL: it moves the machine to a tilt refused above")
+            && r.stderr.contains("1 refused, 1 not carried across"),
+        "{}",
+        r.stderr
+    );
+}
+
 /// `cncrot program - --dialect FROM --to TO` on `prog`.
 fn translate(prog: &str, from: &str, to: &str) -> Run {
     cncrot(&["program", "-", "--dialect", from, "--to", to], prog)
