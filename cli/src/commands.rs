@@ -248,8 +248,8 @@ fn choice_name(c: AxisChoice) -> String {
     };
     match c {
         AxisChoice::Closest => "the closest".to_string(),
-        AxisChoice::Minus(k) => format!("the lower position of {}", axis(k)),
-        AxisChoice::Plus(k) => format!("the higher position of {}", axis(k)),
+        AxisChoice::Minus(k) => format!("{} at its lower angle", axis(k)),
+        AxisChoice::Plus(k) => format!("{} at its higher angle", axis(k)),
         AxisChoice::PositiveTurn(k) => format!("{} turning only up", axis(k)),
         AxisChoice::NegativeTurn(k) => format!("{} turning only down", axis(k)),
     }

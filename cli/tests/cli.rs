@@ -1738,7 +1738,7 @@ fn program_to_joins_commands_spread_over_lines() {
     );
     let r = translate(prog, "heidenhain", "fanuc");
     assert!(
-        r.stderr.contains("line 6: the choice of solution (the lower position of the master axis) has no word in fanuc"),
+        r.stderr.contains("line 6: the choice of solution (the master axis at its lower angle) has no word in fanuc"),
         "{}",
         r.stderr
     );
