@@ -283,7 +283,7 @@ enum Command {
         #[arg(long, value_name = "[X,Y,Z,]A,B,C")]
         current: Option<String>,
         /// Which solution: closest (continuous with the row before), or a priority axis
-        /// minus:K / plus:K (its lower / higher position), up:K / down:K (it turns only
+        /// minus:K / plus:K (its lower / higher angle), up:K / down:K (it turns only
         /// up / only down, as G53.1 P1 / P2 ask), or inverse.
         #[arg(long, default_value = "closest")]
         rule: String,
