@@ -612,7 +612,7 @@ pub(crate) const FANUC_FRAME_WORDS: &[(u32, &[u8])] = &[
     (520, b"XYZ"),
 ];
 
-/// The words of an ISO-style block that are not its frame commands' (`table`: each
+/// The words of an ISO-style block that are not its frame commands' (`tables`: each
 /// command's G-code in tenths with the address letters it takes), appended to `out` as
 /// they stand: the motion, feed, compensation and mode words a post writes beside a tilt
 /// or a cancel (`G91 G28 Z0.` of `G91 G28 Z0. G69`, `N40 G1 F300.` of `N40 G1 G68.2 …
@@ -620,7 +620,7 @@ pub(crate) const FANUC_FRAME_WORDS: &[(u32, &[u8])] = &[
 /// takes belongs to it up to the next G-code (`F` on a `G68.2` is the feed of the moves
 /// that follow: kept). A value after blanks or in brackets (`X 10.`, `J[30.]`) goes with
 /// its letter. Whether a word other than the block number is left.
-pub(crate) fn iso_rest(text: &[u8], table: &[(u32, &[u8])], out: &mut Out) -> bool {
+pub(crate) fn iso_rest(text: &[u8], tables: &[&[(u32, &[u8])]], out: &mut Out) -> bool {
     let comments = Comments {
         semicolon: true,
         parens: true,
@@ -652,7 +652,11 @@ pub(crate) fn iso_rest(text: &[u8], table: &[(u32, &[u8])], out: &mut Out) -> bo
             continue;
         }
         let command = match (t.letter, t.code()) {
-            (b'G', Some(code)) => table.iter().find(|(c, _)| *c == code).map(|(_, l)| *l),
+            (b'G', Some(code)) => tables
+                .iter()
+                .flat_map(|t| t.iter())
+                .find(|(c, _)| *c == code)
+                .map(|(_, l)| *l),
             _ => None,
         };
         let frame = match command {
@@ -738,7 +742,7 @@ impl Family for Fanuc {
     ];
 
     fn rest(text: &[u8], out: &mut Out) -> bool {
-        iso_rest(text, FANUC_FRAME_WORDS, out)
+        iso_rest(text, &[FANUC_FRAME_WORDS], out)
     }
 
     /// One block of a Fanuc-style program: `G68.2 X Y Z I J K` (omitted words are 0; a new

@@ -85,7 +85,7 @@ impl Family for Haas {
     fn rest(text: &[u8], out: &mut Out) -> bool {
         const WORDS: &[(u32, &[u8])] =
             &[(2680, b"XYZIJKQ"), (2690, b""), (2530, b""), (520, b"XYZ")];
-        fanuc::iso_rest(text, WORDS, out)
+        fanuc::iso_rest(text, &[WORDS], out)
     }
 
     /// One block of a Haas program: `G268 X Y Z I J K Q` (omitted `X … K` are 0; `Q` is

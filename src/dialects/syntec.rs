@@ -175,17 +175,8 @@ impl Family for Syntec {
 
     /// `G158` and the commands of its `G68.2` mode left out.
     fn rest(text: &[u8], out: &mut Out) -> bool {
-        const WORDS: &[(u32, &[u8])] = &[
-            (1580, b"LPXYZABCUVW"),
-            (682, b"XYZIJKPQR"),
-            (684, b"XYZIJKPQR"),
-            (680, b"XYZIJKR"),
-            (690, b""),
-            (531, b"P"),
-            (536, b"P"),
-            (520, b"XYZ"),
-        ];
-        fanuc::iso_rest(text, WORDS, out)
+        const G158: &[(u32, &[u8])] = &[(1580, b"LPXYZABCUVW")];
+        fanuc::iso_rest(text, &[G158, fanuc::FANUC_FRAME_WORDS], out)
     }
 
     /// One block of a Syntec program: `G158 L P X Y Z A B C U V W` (omitted words are 0,
