@@ -184,8 +184,9 @@ pub enum AxisChoice {
     /// No words: the dialect's default, the solution closest to the current positions.
     #[default]
     Closest,
-    /// The lower angle (in (−180°, 180°]) of an axis: 1..=3 in chain order, or 0 for the machine's master
-    /// axis (for a head the axis nearest the tool, else the axis nearest the machine base).
+    /// The lower angle (in (−180°, 180°]) of an axis: 1..=3 in chain order, or 0 for the
+    /// machine's master axis (for a head the axis nearest the tool, else the axis nearest
+    /// the machine base).
     Minus(u8),
     /// The higher angle of an axis (numbered as for `Minus`).
     Plus(u8),
