@@ -693,12 +693,17 @@ fn value_end(text: &[u8], end: usize, empty: bool) -> usize {
         k += 1;
     }
     match text.get(k) {
+        // One constant in brackets; a comment or a string opened inside them is the block's
+        // (the tokens see it so), and the bracket stays with it.
         Some(b'[') => {
             let rest = text.get(k..).unwrap_or(&[]);
-            k + rest
+            match rest
                 .iter()
-                .position(|&c| c == b']')
-                .map_or(rest.len(), |p| p + 1)
+                .position(|&c| matches!(c, b']' | b'(' | b'"' | b';'))
+            {
+                Some(p) if rest.get(p) == Some(&b']') => k + p + 1,
+                _ => end,
+            }
         }
         Some(b'+' | b'-' | b'.' | b'0'..=b'9') => {
             k += 1;
