@@ -1008,6 +1008,11 @@ static void kept_words(void) {
   CHECK_STATUS(cncrot_program_rest(CNCROT_DIALECT_FANUC, b, strlen(b), small, 12), CNCROT_STATUS_OK);
   CHECK(strcmp(small, "G91 G28 Z0.") == 0, "%s", small);
   CHECK_STATUS(cncrot_program_rest(9, b, strlen(b), small, 12), CNCROT_STATUS_BAD_ARGUMENT);
+  /* Longer than Fanuc reads (256 bytes and a line end). */
+  static char long_block[300];
+  memset(long_block, 'G', sizeof long_block);
+  CHECK_STATUS(cncrot_program_rest(CNCROT_DIALECT_FANUC, long_block, sizeof long_block, small, 12),
+               CNCROT_STATUS_LINE_TOO_LONG);
   CHECK_STATUS(cncrot_program_rest(CNCROT_DIALECT_FANUC, NULL, 0, small, 12), CNCROT_STATUS_NULL_POINTER);
   /* In place: the block's own buffer receives its rest. */
   char in_place[] = "G91 G28 Z0. G69";

@@ -1139,9 +1139,7 @@ pub unsafe extern "C" fn cncrot_program_rest(
     guard(|| {
         non_null(&[line.is_null(), out.is_null()])?;
         let d = Dialect::from_code(dialect)?;
-        if len > d.max_line() + 2 {
-            return Err(cncrot_status::LineTooLong);
-        }
+        // `program::rest` refuses a line longer than the dialect reads.
         let text = core::slice::from_raw_parts(line.cast::<u8>(), len);
         // Into a buffer of its own: `out` is written whole or not at all, and may be `line`.
         let mut buf = [0u8; REST_MAX];
