@@ -466,6 +466,16 @@ fn fanuc_and_haas() {
     );
     let e = tilted.line(d, b"G53.6 X1").unwrap_err();
     assert_eq!((e.error, e.column), (Error::UnknownWord, 7));
+    // `G53.6 H<n>`: the tool offset whose tip stays (a generator writes it); no frame word,
+    // and the same state as without it. `G53.1` turns about the pivot: no `H`.
+    assert_eq!(read(d, &["G68.2 X5 J30", "G53.6 H12 (ORIENT TOOL)"]), moved);
+    assert_eq!(read(d, &["G68.2 X5 J30", "G53.6 P0 H0"]), moved);
+    let e = tilted.line(d, b"G53.6 H-1").unwrap_err();
+    assert_eq!((e.error, e.column), (Error::BadArgument, 8));
+    let e = tilted.line(d, b"G53.6 H1.5").unwrap_err();
+    assert_eq!((e.error, e.column), (Error::BadArgument, 8));
+    let e = tilted.line(d, b"G53.1 H1").unwrap_err();
+    assert_eq!((e.error, e.column), (Error::UnknownWord, 7));
     let e = Program::default().line(d, b"G68.3 R0").unwrap_err();
     assert_eq!(e.error, Error::NotAvailable);
 

@@ -216,11 +216,11 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
         };
     } else if let Some(positioning) = turn_code(c) {
         // Turns the tool to the plane: no frame change.
-        let p = address_words(c, *b"P", SYNTAX, false, (true, true));
-        return Some(p.and_then(|w| {
+        let p = g53_words(c, positioning);
+        return Some(p.and_then(|(p, column)| {
             let allowed = "P: 0 (shortest), 1 (positive turn) or 2 (negative turn)";
-            let choice = g53_choice(whole(w.values[0], w.column(0))?)
-                .ok_or(LineError::bad_value(w.column(0), allowed))?;
+            let choice =
+                g53_choice(whole(p, column)?).ok_or(LineError::bad_value(column, allowed))?;
             // A direct mode (Syntec's `G158` mode 2) states the positions themselves: `P`
             // names no solution there; checked, not kept [choice].
             let choice = if m.direct.is_some() { m.choice } else { choice };
@@ -433,6 +433,26 @@ fn turn_code(c: &mut Cursor) -> Option<Positioning> {
     }
 }
 
+/// The words of `G53.1 P` / `G53.6 P H` after the code: `P`'s value (0 when not given) and
+/// column. `H` on `G53.6` is the tool length offset whose tool tip stays in place (a
+/// generator writes `G53.6 H<tool>` \[3rd\]; Fanuc's tool center point retention needs the
+/// tool's length): checked as an offset number (a whole number, 0 or more), not kept (no
+/// frame word). Not on `G53.1`, which turns about the pivot.
+fn g53_words(c: &mut Cursor, positioning: Positioning) -> Result<(f64, usize), LineError> {
+    if positioning != Positioning::Move {
+        let w = address_words(c, *b"P", SYNTAX, false, (true, true))?;
+        return Ok((w.values[0], w.column(0)));
+    }
+    let w = address_words(c, *b"PH", SYNTAX, false, (true, true))?;
+    if w.given[1] && whole(w.values[1], w.column(1))? < 0 {
+        return Err(LineError::bad_value(
+            w.column(1),
+            "H: a tool offset number (0 or more)",
+        ));
+    }
+    Ok((w.values[0], w.column(0)))
+}
+
 /// The choice of `G53.1 P<p>` / `G53.6 P<p>` \[3rd: LinuxCNC's tilted-work-plane remap,
 /// the one public text with a meaning for `P`: "0 (default) shortest distance, 1 positive
 /// rotation only, 2 negative rotation only", of the primary rotary axis, the other axis the
@@ -608,7 +628,7 @@ pub(crate) const FANUC_FRAME_WORDS: &[(u32, &[u8])] = &[
     (680, b"XYZIJKR"),
     (690, b""),
     (531, b"P"),
-    (536, b"P"),
+    (536, b"PH"),
     (520, b"XYZ"),
 ];
 
