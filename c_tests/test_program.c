@@ -40,6 +40,15 @@ static void vendors(void) {
   double v[3] = {40, 10, 0}, back[3];
   for (int k = 0; k < 3; k++) back[k] = r[k] * v[0] + r[3 + k] * v[1] + r[6 + k] * v[2];
   CHECK(fabs(back[0] - 35.3553) < 1e-4 && fabs(back[1] + 21.2132) < 1e-4, "%g %g", back[0], back[1]);
+  /* The manual's zero offset shift: the rotation turns about the whole shift, which G58 sets
+   * (Z omitted: 0) and moves with it. */
+  const char *shifted[] = {"N60 G58 X200 Y200", "N65 ROT Z30", "N80 G58 X0 Y200", "N90 AROT Z15"};
+  CHECK_STATUS(run(CNCROT_DIALECT_TWINCAT, shifted, 4, f), CNCROT_STATUS_OK);
+  rot_of(f, r);
+  elem(3, 45, want);
+  CHECK_NEAR(r, want, 9, 1e-15);
+  double tc_origin[3] = {0, 200, 0}, tc_got[3] = {f[3], f[7], f[11]};
+  CHECK_NEAR(tc_got, tc_origin, 3, 0);
 
   /* Syntec: translate (2, 0, 10), turn X 20, Y' 20, Z'' -30, then (0, 10, 0) in the turned
    * system. */

@@ -771,8 +771,8 @@ typedef struct cncrot_program {
   double angles[3];
   /**
    * The datum shift the program made active (Heidenhain `CYCL DEF 7`, `TRANS DATUM`;
-   * Fanuc-style `G52`), in the workpiece axes before the tilt: part of `origin`, kept
-   * when the tilt is cancelled.
+   * Fanuc-style `G52`; TwinCAT `G58`), in the workpiece axes before the tilt: part of
+   * `origin`, kept when the tilt is cancelled.
    */
   double shift[3];
   /**
@@ -2170,10 +2170,11 @@ int32_t cncrot_program_write(int32_t dialect,
  * - A changed datum shift is written with the dialect's own command: Heidenhain's cycle 7
  *   (`CYCL DEF 7.0 DATUM SHIFT`, `CYCL DEF 7.1 X…`, `7.2 Y…`, `7.3 Z…`), Fanuc, Haas and
  *   Syntec `G52 X… Y… Z…` (an active tilt cancelled first: a shift is programmed untilted),
- *   SINUMERIK `TRANS X=… Y=… Z=…` (`TRANS` for none) when no rotation is active.
+ *   TwinCAT `G58 X… Y… Z…` (its programmable zero offset shift), SINUMERIK `TRANS X=… Y=…
+ *   Z=…` (`TRANS` for none) when no rotation is active.
  * - A form without origin words (every `PLANE`, `ROT`) tilts about the datum: Heidenhain
- *   writes the tilt's origin as the datum shift; SINUMERIK `ROT` and TwinCAT, which keep no
- *   shift apart, refuse it with `CNCROT_STATUS_HAS_ORIGIN`.
+ *   and TwinCAT write the tilt's origin as the datum shift; SINUMERIK `ROT`, which keeps no
+ *   shift apart, refuses it with `CNCROT_STATUS_HAS_ORIGIN`.
  * - A changed tilt, or the same tilt with other choice words, is written as
  *   `cncrot_program_write` writes it, with the choice words the block has: Heidenhain
  *   `SEQ-`/`SEQ+`, CYCLE800 `_DIR` -1/+1 where it swivels (-1 also for no choice: a swivel

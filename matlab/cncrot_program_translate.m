@@ -32,7 +32,7 @@
 %   and is not translated. state: the source program's state after the last block.
 %   A block the source controller could not execute raises its error, as in
 %   cncrot_program_lines; a change the target form cannot write raises its status's error
-%   naming the line (cncrot:hasOrigin for an origin with SINUMERIK 'ROT' or TwinCAT).
+%   naming the line (cncrot:hasOrigin for an origin with SINUMERIK 'ROT').
 %
 %   Example (a hyperMILL-style Heidenhain program for a Fanuc-style control):
 %     prog = {'CYCL DEF 7.0 DATUM SHIFT', 'CYCL DEF 7.1 X+10', ...

@@ -261,6 +261,45 @@ fn twincat_the_manuals_examples() {
         read(d, &["N10 RotExOn", "N1000 RotExOff"]).frame,
         Frame::IDENTITY
     );
+    // The manual's example of a zero offset shift and rotation: "the total zero offset shift
+    // currently active describes the rotation centre". G58 sets its translation whole (Y0
+    // named, Z omitted: 0); the rotation stays about the datum as the shift moves.
+    let p = read(d, &["N20 G55", "N30 G58 X200 Y0"]);
+    assert_eq!(
+        p.frame,
+        Frame::with_translations([200.0, 0.0, 0.0], cncrot::IDENTITY, [0.0; 3])
+    );
+    let p = read(d, &["N30 G58 X200 Y0", "N60 G58 X200 Y200", "N65 ROT Z30"]);
+    assert_eq!(p.frame.translation, [200.0, 200.0, 0.0]);
+    assert!(dist(&p.frame.rotation, &r(Axis::Z, 30.0)) < 1e-15);
+    let q = read(
+        d,
+        &[
+            "N60 G58 X200 Y200",
+            "N65 ROT Z30",
+            "N80 G58 X0 Y200",
+            "N90 AROT Z15",
+        ],
+    );
+    assert_eq!(
+        (q.shift, q.frame.translation),
+        ([0.0, 200.0, 0.0], [0.0, 200.0, 0.0])
+    );
+    assert!(dist(&q.frame.rotation, &r(Axis::Z, 45.0)) < 1e-15);
+    // ROT alone ends the rotation, not the shift; G58 X0 Y0 Z0 ends the shift.
+    let u = read(d, &["G58 X1 Y2 Z3", "ROT Y30", "ROT"]);
+    assert_eq!(
+        u.frame,
+        Frame::with_translations([1.0, 2.0, 3.0], cncrot::IDENTITY, [0.0; 3])
+    );
+    assert_eq!(
+        read(d, &["G58 X1 Y2 Z3", "G58 X0 Y0 Z0"]).frame,
+        Frame::IDENTITY
+    );
+    let e = Program::default().line(d, b"N10 G58").unwrap_err();
+    assert_eq!((e.error, e.column), (Error::MissingWord, 8));
+    let e = Program::default().line(d, b"G58 X1 A2").unwrap_err();
+    assert_eq!((e.error, e.column), (Error::UnknownWord, 8));
 }
 
 #[test]
@@ -1224,6 +1263,10 @@ fn every_block_of_a_program() {
             ("N10 G54", N),
             ("N20 G01 X10 F1000", P),
             ("N30 ROT Z30", A),
+            ("N32 G58 X10 Y0 Z0", A),
+            ("N34 G59 X10 Y0 Z0", N),
+            ("N36 G53", N),
+            ("N38 G1 G58 X10 Y0 Z0", N),
             ("N40 #CS ON [0,0,0,0,0,30]", N),
             ("N50 (a comment)", P),
             ("N60 M30", P),
@@ -2090,7 +2133,7 @@ fn changes_are_written_with_the_targets_own_blocks() {
 /// frames, block by block, for every pair of dialects and forms that can carry the frames.
 #[test]
 fn translated_programs_read_back_as_the_source() {
-    let sources: [(Dialect, &[&str]); 3] = [
+    let sources: [(Dialect, &[&str]); 4] = [
         (
             Dialect::Heidenhain,
             &[
@@ -2122,8 +2165,20 @@ fn translated_programs_read_back_as_the_source() {
                 "TRANS",
             ],
         ),
+        (
+            Dialect::Twincat,
+            &[
+                "N30 G58 X200 Y0",
+                "N65 ROT Z30 X10",
+                "N80 G58 X0 Y200 Z-5",
+                "N90 AROT Y15",
+                "ROT",
+                "G58 X0 Y0 Z0",
+            ],
+        ),
     ];
     let targets = [
+        (Dialect::Twincat, "ROT"),
         (Dialect::Heidenhain, "PLANE SPATIAL"),
         (Dialect::Heidenhain, "PLANE VECTOR"),
         (Dialect::Fanuc, "G68.2"),

@@ -1710,6 +1710,37 @@ fn program_to_keeps_a_blocks_other_words() {
     );
 }
 
+/// TwinCAT NC I's programmable zero offset shift `G58` is the datum `ROT` turns about (its
+/// manual's example): carried across as the target's datum shift, and back. By hand: `ROT
+/// Y30` is `Ry(30°)` = G68.2 `I90. J30. K-90.`; the shift moved under the rotation is
+/// written untilted (the rotation off, the shift, the rotation again).
+#[test]
+fn program_to_carries_twincats_zero_offset_shift() {
+    let prog = "N20 G58 X10 Y20 Z5\nN30 ROT Y30\nN40 G58 X0 Y200\nN50 ROT\nM30\n";
+    assert_eq!(
+        program_to(prog, "twincat", "fanuc"),
+        [
+            "G52 X10. Y20. Z5.",
+            "G68.2 X0. Y0. Z0. I90. J30. K-90.",
+            "G69",
+            "G52 X0. Y200. Z0.",
+            "G68.2 X0. Y0. Z0. I90. J30. K-90.",
+            "G69",
+            "M30"
+        ]
+    );
+    let back = "G52 X10. Y20. Z5.\nG68.2 X0. Y0. Z0. I90. J30. K-90.\nG69\nG52 X0. Y0. Z0.\n";
+    assert_eq!(
+        program_to(back, "fanuc", "twincat"),
+        [
+            "G58 X10 Y20 Z5",
+            "ROT X0 Y30 Z0",
+            "ROT X0 Y0 Z0",
+            "G58 X0 Y0 Z0"
+        ]
+    );
+}
+
 /// A command spread over lines is written as one in the target: cycle 7's axis lines as one
 /// `G52`, a `PLANE … STAY` and the block that turns to it as one `G68.2` with its `G53.1`;
 /// under the tilt, the shift reset once (not once per axis). By hand: `SPB+30` is `Ry(30°)`

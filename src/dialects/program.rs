@@ -51,9 +51,9 @@ pub struct Program {
     /// setting of the machine (iTNC 530 machine parameter 7500 bit 1 = 0, TNC 640
     /// kinematics configuration) that no block changes.
     pub axis_angles: bool,
-    /// The datum shift the program made active (`CYCL DEF 7`, `TRANS DATUM`, `G52`), in the
-    /// workpiece axes before the tilt: part of `frame`'s origin, kept when the tilt is
-    /// cancelled.
+    /// The datum shift the program made active (`CYCL DEF 7`, `TRANS DATUM`, `G52`, `G58`),
+    /// in the workpiece axes before the tilt: part of `frame`'s origin, kept when the tilt
+    /// is cancelled.
     pub shift: [f64; 3],
     /// The solution the active tilt's own words choose for the rotary axes (`SEQ±`,
     /// `_DIR`, `G53.1 P`); [`Program::axes`] follows it.
@@ -635,12 +635,12 @@ fn split(dialect: Dialect, spec: &FormSpec, p: &Program) -> (Vector, Frame) {
 ///
 /// - A changed datum shift is written with the dialect's own command: Heidenhain's cycle 7
 ///   (`CYCL DEF 7.0 DATUM SHIFT`, `7.1 X…`, `7.2 Y…`, `7.3 Z…`), Fanuc, Haas and Syntec
-///   `G52 X… Y… Z…`, after cancelling an active tilt (a shift is programmed untilted);
-///   SINUMERIK's `TRANS X=… Y=… Z=…` (`TRANS` alone for none) when no rotation is active.
+///   `G52 X… Y… Z…`, TwinCAT `G58 X… Y… Z…`, after cancelling an active tilt (a shift is
+///   programmed untilted); SINUMERIK's `TRANS X=… Y=… Z=…` (`TRANS` alone for none) when no
+///   rotation is active.
 /// - A form without origin words (every `PLANE`, `ROT`) tilts about the datum: the tilt's
-///   origin goes into the datum shift (Heidenhain), or the block is refused with
-///   [`Error::HasOrigin`] where the dialect has no shift kept apart (SINUMERIK `ROT`,
-///   TwinCAT).
+///   origin goes into the datum shift (Heidenhain, TwinCAT), or the block is refused with
+///   [`Error::HasOrigin`] where the dialect has no shift kept apart (SINUMERIK `ROT`).
 /// - A changed tilt, or the same tilt with other choice words, is written as [`write_line`]
 ///   writes it, with the choice words the block has: Heidenhain `SEQ-`/`SEQ+`, CYCLE800
 ///   `_DIR` −1/+1 where it swivels (−1 also for no choice: a swivel names one \[choice\]); the

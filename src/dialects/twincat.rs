@@ -91,10 +91,12 @@ use crate::Frame;
 
 const SYNTAX: Syntax = crate::text::scan::G_WORDS;
 
-/// A TwinCAT block that does not start with `ROT`, `AROT`, `ROTEXON`, `ROTEXOFF`: `ROT` or
-/// `AROT` elsewhere on it is refused at its column (the command starts its block), the zero
-/// offsets `G54`–`G59`, `G92` and mirroring `G351`, and the coordinate systems `#CS`, `#ACS`
-/// are not followed, anything else is passed over.
+/// A TwinCAT block that does not start with `ROT`, `AROT`, `ROTEXON`, `ROTEXOFF`, `G58`: `ROT`
+/// or `AROT` elsewhere on it is refused at its column (the command starts its block), the
+/// zero offsets `G53` (all suppressed: modal in NC I), `G54`–`G57` (from the table),
+/// `G58` not at the start, `G59` (the second programmable shift: the state holds one
+/// \[choice\]), `G92` and mirroring `G351`, and the coordinate systems `#CS`, `#ACS` are not
+/// followed, anything else is passed over.
 #[inline(never)]
 fn other_block(text: &[u8]) -> Result<Block, LineError> {
     let comments = Comments {
@@ -112,7 +114,7 @@ fn other_block(text: &[u8]) -> Result<Block, LineError> {
         }
         let offset = matches!(
             t.g_code(),
-            Some(540 | 550 | 560 | 570 | 580 | 590 | 920 | 3510)
+            Some(530 | 540 | 550 | 560 | 570 | 580 | 590 | 920 | 3510)
         );
         if offset || t.is(b"#CS") || t.is(b"#ACS") {
             not_followed = true;
@@ -125,7 +127,22 @@ fn other_block(text: &[u8]) -> Result<Block, LineError> {
     })
 }
 
-/// The TwinCAT NC I family: `ROT`, `AROT`.
+/// `G58 X Y Z` after its code: the first programmable zero offset shift, set whole ("the
+/// new translation value is given by the parameters X, Y, Z" \[doc\]), an omitted word 0
+/// \[choice: the NC I manual's example `G58 X200 Y0` names no Z; the TwinCAT 3 manual calls
+/// all three mandatory\]; at least one word. It adds to the adjustable shift `G54`–`G57`
+/// selects (not followed: a table's), and the rotation turns about the whole shift ("the
+/// total zero offset shift currently active describes the rotation centre" \[doc\]): the
+/// state's datum shift, the rotation kept about it.
+fn read_g58(m: &Modal, c: &mut Cursor) -> Result<Block, LineError> {
+    let w = address_words(c, *b"XYZ", SYNTAX, true, (true, true))?;
+    if !w.given.contains(&true) {
+        return Err(c.missing("X, Y or Z"));
+    }
+    Ok(Block::Frame(m.with_shift(w.values)))
+}
+
+/// The TwinCAT NC I family: `ROT`, `AROT`, `G58`.
 pub(crate) struct Twincat;
 
 impl Family for Twincat {
@@ -138,6 +155,7 @@ impl Family for Twincat {
     }];
 
     /// One block of a TwinCAT NC I program: `ROT X Y Z` (no words: cancel), `AROT X Y Z`,
+    /// `G58 X Y Z` (the programmable zero offset shift: the datum the rotation turns about),
     /// and `RotExOn`/`RotExOff` (no frame change), with a block number and `( … )` or `;`
     /// comments. "The rotation instructions must be programmed in their own block"
     /// \[doc\]: nothing else may stand on the line.
@@ -153,6 +171,8 @@ impl Family for Twincat {
         } else if c.keyword(b"ROTEXON") || c.keyword(b"ROTEXOFF") {
             c.end(true, true)?;
             return Ok(Block::Frame(*m));
+        } else if c.code(b"G58") {
+            return read_g58(m, &mut c);
         } else {
             return other_block(text);
         };
@@ -174,15 +194,17 @@ impl Family for Twincat {
                 expected: None,
             });
         }
+        // About the datum the zero offsets shift to.
         Ok(Block::Frame(Modal {
-            frame: Frame::from_rotation(matrix(angles)),
             angles: angles.map(|a| a + 0.0),
             // Angles add: one axis' increment is a rotation composed with the frame (the
             // same each time a loop repeats it); two or more are not [derived].
             relative: additive && xyz.iter().filter(|a| **a != 0.0).count() == 1,
-            ..*m
+            ..m.with_frame(Frame::from_rotation(matrix(angles)))
         }))
     }
+
+    const KEEPS_SHIFT: bool = true;
 
     /// TwinCAT keeps its programmed angles: the rotation must be theirs.
     fn consistent(m: &Modal) -> bool {
@@ -204,6 +226,20 @@ impl Family for Twincat {
             form: Form::TwincatRot,
             selector: 0,
         })
+    }
+
+    /// `G58 X… Y… Z…` (all three: the command sets the whole translation; zero is its
+    /// reset).
+    fn write_shift(shift: Vector, decimals: i32, out: &mut Out) -> Result<(), Error> {
+        let style = Style {
+            plus: false,
+            point: false,
+        };
+        out.text(b"G58");
+        for (name, &v) in [&b" X"[..], b" Y", b" Z"].iter().zip(&shift) {
+            write_word(out, name, v, decimals, style)?;
+        }
+        Ok(())
     }
 
     /// None of its own: `ROT X0 Y0 Z0` is TwinCAT's rotation off.
