@@ -3,7 +3,7 @@
 
 use crate::input::{self, Failure, Target};
 use crate::output::{num, nums, Json};
-use crate::svg;
+use crate::{labels, svg};
 use crate::{run, Common, Report};
 use cncrot::dialects::cycle600::{self, Call, State};
 use cncrot::dialects::head_def::HeadTable;
@@ -1261,25 +1261,46 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     // first.
     let ahead: Vec<Option<Program>> = if target.is_some() {
         let mut q = p;
+        let mut calls = labels::Labels::new(dialect, &text);
         text.lines()
-            .map(
-                |raw| match q.line(dialect, raw.trim_end_matches('\r').as_bytes()) {
+            .enumerate()
+            .map(|(k, raw)| {
+                calls.enter(k, &mut q);
+                match q.line(dialect, raw.trim_end_matches('\r').as_bytes()) {
                     Ok((next, Remark::Applied)) => {
                         q = next;
                         Some(next)
                     }
+                    Ok((_, Remark::Passed)) => {
+                        calls.after(k, &mut q);
+                        None
+                    }
                     _ => None,
-                },
-            )
+                }
+            })
             .collect()
     } else {
         Vec::new()
     };
+    // Heidenhain's `CALL LBL`: followed through the label (the state after the call is the
+    // one its blocks leave), and a subprogram standing after its calls read from the state
+    // of the first.
+    let mut calls = labels::Labels::new(dialect, &text);
     let mut run: Option<Program> = None;
     for (k, raw) in text.lines().enumerate() {
         let mut rewritten = false;
         let line = k + 1;
         let block = raw.trim_end_matches('\r');
+        let others = calls.enter(k, &mut p);
+        if let (Some(t), false) = (&target, others.is_empty()) {
+            let lines: Vec<String> = others.iter().map(|l| (l + 1).to_string()).collect();
+            eprintln!(
+                "cncrot: line {line}: the subprogram is also called with another frame active ({} {}): its blocks are translated into {} for the frame at its first call: {block}",
+                if lines.len() == 1 { "line" } else { "lines" },
+                lines.join(", "),
+                input::dialect_name(t.dialect)
+            );
+        }
         let (next, remark) = match p.line(dialect, block.as_bytes()) {
             Ok(r) => r,
             Err(e) => {
@@ -1310,6 +1331,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
         let row = match remark {
             Remark::Passed => {
                 passed += 1;
+                calls.after(k, &mut p);
                 target.as_ref().map(|_| block.to_string())
             }
             Remark::NotFollowed => {

@@ -6,6 +6,7 @@
 
 mod commands;
 mod input;
+mod labels;
 mod output;
 mod svg;
 

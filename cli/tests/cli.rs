@@ -1659,6 +1659,55 @@ fn program_to(prog: &str, from: &str, to: &str) -> Vec<String> {
     r.stdout.lines().map(String::from).collect()
 }
 
+/// Heidenhain `CALL LBL` is followed through its label: hyperMILL resets the plane and the
+/// datum in a subprogram after the program's end (`CALL LBL 1 ; RESET WORKING PLANE`).
+/// Before, the second job's cycle 7 was written under the first job's tilt, which the
+/// program still held: `G69`, the `G52`, then the first plane again with its `G53.1` (the
+/// axes back to it) before the second. The subprogram's own blocks are read from the state
+/// of its first call (nothing active), and the other calls are named on standard error.
+#[test]
+fn program_to_follows_calls_to_labels() {
+    let prog = "0 BEGIN PGM HM MM\n1 CALL LBL 1 ; RESET WORKING PLANE\n\
+                2 CYCL DEF 7.0 DATUM SHIFT\n3 CYCL DEF 7.1 X+10\n\
+                4 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX\n5 CALL LBL 1\n\
+                6 CYCL DEF 7.0 DATUM SHIFT\n7 CYCL DEF 7.1 X+20\n\
+                8 PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN FMAX\n9 CALL LBL 1\n10 M30\n\
+                11 LBL 1\n12 CYCL DEF 7.0 DATUM SHIFT\n13 CYCL DEF 7.1 X+0\n\
+                14 PLANE RESET STAY\n15 LBL 0\n16 END PGM HM MM\n";
+    let r = translate(prog, "heidenhain", "fanuc");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let out: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(
+        out,
+        [
+            "0 BEGIN PGM HM MM",
+            "1 CALL LBL 1 ; RESET WORKING PLANE",
+            "G52 X10. Y0. Z0.",
+            // SPB+30, Ry(30°), as Euler Z-X-Z: Rz(90°)·Rx(30°)·Rz(-90°).
+            "G68.2 X0. Y0. Z0. I90. J30. K-90.",
+            "G53.1",
+            "5 CALL LBL 1",
+            "G52 X20. Y0. Z0.",
+            "G68.2 X0. Y0. Z0. I90. J45. K-90.",
+            "G53.1",
+            "9 CALL LBL 1",
+            "10 M30",
+            "11 LBL 1",
+            "G52 X0. Y0. Z0.",
+            "G69",
+            "15 LBL 0",
+            "16 END PGM HM MM"
+        ]
+    );
+    assert!(
+        r.stderr.contains(
+            "line 12: the subprogram is also called with another frame active (lines 6, 10)"
+        ),
+        "{}",
+        r.stderr
+    );
+}
+
 /// `PLANE RESET TURN` into Fanuc: the tilt cancelled, a zero `G68.2` and its `G53.1` turn the
 /// axes, then `G69` again, so that the `G52` of the cycle 7 that follows is not written in
 /// `G68.2` mode (which Fanuc refuses) and the next tilt over none (a helper's find).

@@ -1,0 +1,168 @@
+//! Heidenhain labels and their calls in a whole program. The library reads a program block
+//! by block, and a `CALL LBL` is a block like any other (passed over: it names no frame);
+//! the command has the whole file, and follows the call: the frame after it is the one the
+//! label's blocks leave. CAM systems write a subprogram that resets the plane and the datum
+//! (`CALL LBL 1 ; RESET WORKING PLANE`, the label after the program's end): read in the
+//! order of the file, the program would keep the tilt it had before the call, and a
+//! translation would turn the axes back to it before the next tilt.
+
+use cncrot::dialects::program::{Dialect, Program, Remark};
+
+/// Nested calls followed at most this deep (a label that calls itself stops there).
+const DEPTH: usize = 8;
+
+/// A block's words after its block number, up to a `;` comment, in capitals.
+fn words(block: &str) -> Vec<String> {
+    let text = block.split(';').next().unwrap_or("");
+    let mut w: Vec<String> = text.split_whitespace().map(str::to_uppercase).collect();
+    if w.first()
+        .is_some_and(|n| n.bytes().all(|b| b.is_ascii_digit()))
+    {
+        w.remove(0);
+    }
+    w
+}
+
+/// The label a block defines (`LBL 1`, `LBL "NAME"`), not `LBL 0` (the end of one).
+fn defined(block: &str) -> Option<String> {
+    match words(block).as_slice() {
+        [lbl, name, ..] if lbl == "LBL" && name != "0" => Some(name.clone()),
+        _ => None,
+    }
+}
+
+fn ends(block: &str) -> bool {
+    matches!(words(block).as_slice(), [lbl, zero, ..] if lbl == "LBL" && zero == "0")
+}
+
+/// The label a block calls and how often it repeats it (`CALL LBL 1 REP 2`, the editor's
+/// `REP 2/2`): `(name, repeats)`, 0 without `REP`.
+fn called(block: &str) -> Option<(String, usize)> {
+    match words(block).as_slice() {
+        [call, lbl, name, rest @ ..] if call == "CALL" && lbl == "LBL" => {
+            let rep = match rest {
+                [r, n, ..] if r == "REP" => n.split('/').next()?.parse().ok()?,
+                _ => 0,
+            };
+            Some((name.clone(), rep))
+        }
+        _ => None,
+    }
+}
+
+/// A program's labels: where each is defined, and the states of the calls to a subprogram
+/// that stands after them (the first is the state its blocks are read from).
+pub struct Labels {
+    dialect: Dialect,
+    lines: Vec<String>,
+    defined: Vec<(String, usize)>,
+    /// (the label's line, the call's line, the state at the call), in the order called.
+    entered: Vec<(usize, usize, Program)>,
+}
+
+impl Labels {
+    /// The labels of `text` (a Heidenhain program; none in the other dialects).
+    pub fn new(dialect: Dialect, text: &str) -> Labels {
+        let lines: Vec<String> = text
+            .lines()
+            .map(|l| l.trim_end_matches('\r').to_string())
+            .collect();
+        let defined = if dialect == Dialect::Heidenhain {
+            lines
+                .iter()
+                .enumerate()
+                .filter_map(|(k, l)| defined(l).map(|name| (name, k)))
+                .collect()
+        } else {
+            Vec::new()
+        };
+        Labels {
+            dialect,
+            lines,
+            defined,
+            entered: Vec::new(),
+        }
+    }
+
+    /// Before line `k` (0-based) is read: a subprogram reached after a call to it is read
+    /// from the state of its first call, not from the blocks above it. Returns the lines
+    /// (0-based) of the calls made with another frame active than the first, whose
+    /// translation of the subprogram would differ.
+    pub fn enter(&self, k: usize, p: &mut Program) -> Vec<usize> {
+        let mut calls = self.entered.iter().filter(|(at, _, _)| *at == k);
+        let Some(&(_, _, first)) = calls.next() else {
+            return Vec::new();
+        };
+        *p = first;
+        let frame = |q: &Program| (q.frame, q.shift, q.direct, q.angles);
+        calls
+            .filter(|(_, _, q)| frame(q) != frame(&first))
+            .map(|(_, line, _)| *line)
+            .collect()
+    }
+
+    /// After line `k` was read (and passed over): the state a call there leaves.
+    pub fn after(&mut self, k: usize, p: &mut Program) {
+        let Some((name, rep)) = self.lines.get(k).and_then(|l| called(l)) else {
+            return;
+        };
+        let Some(&(_, at)) = self.defined.iter().find(|(n, _)| *n == name) else {
+            return;
+        };
+        if at > k {
+            self.entered.push((at, k, *p));
+        }
+        self.run(k, at, rep, p, 0);
+    }
+
+    /// Runs the label defined at line `at` as the call at line `k` does: a program section
+    /// above the call without a `LBL 0` between (a repeat: the section again, `rep` times),
+    /// else a subprogram up to its `LBL 0` (once).
+    fn run(&self, k: usize, at: usize, rep: usize, p: &mut Program, depth: usize) {
+        let end = |from: usize| {
+            (from..self.lines.len())
+                .find(|&i| self.lines.get(i).is_some_and(|l| ends(l)))
+                .unwrap_or(self.lines.len())
+        };
+        let section = at < k && end(at + 1) > k;
+        let (body, times) = if section {
+            (at + 1..k, rep)
+        } else {
+            (at + 1..end(at + 1), 1)
+        };
+        for _ in 0..times {
+            for i in body.clone() {
+                let Some(line) = self.lines.get(i) else {
+                    continue;
+                };
+                if let Ok((next, Remark::Applied)) = p.line(self.dialect, line.as_bytes()) {
+                    *p = next;
+                }
+                if depth < DEPTH {
+                    let inner = called(line).and_then(|(n, r)| {
+                        self.defined.iter().find(|(m, _)| *m == n).map(|d| (d.1, r))
+                    });
+                    if let Some((at, r)) = inner {
+                        self.run(i, at, r, p, depth + 1);
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn words_of_labels_and_calls() {
+        assert_eq!(defined("79 LBL 1 ; RESET WORKING PLANE"), Some("1".into()));
+        assert_eq!(defined("LBL \"FACE\""), Some("\"FACE\"".into()));
+        assert_eq!(defined("85 LBL 0"), None);
+        assert!(ends("85 LBL 0"));
+        assert_eq!(called("65 CALL LBL 1 ; RESET"), Some(("1".into(), 0)));
+        assert_eq!(called("12 CALL LBL 2 REP 3/3"), Some(("2".into(), 3)));
+        assert_eq!(called("12 CALL PGM TNC:\\X.H"), None);
+    }
+}
