@@ -1338,7 +1338,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                 unfollowed += 1;
                 let why = "changes the frame in a way cncrot does not follow; cncrot's frame stays as it was";
                 if target.is_some() {
-                    eprintln!("cncrot: line {line}: not carried across (it {why}): {block}");
+                    eprintln!("cncrot: line {line}: not followed, copied as it stands (it {why}): {block}");
                     ok = false;
                     Some(block.to_string())
                 } else if a.json {
