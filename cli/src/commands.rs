@@ -9,8 +9,8 @@ use cncrot::dialects::cycle600::{self, Call, State};
 use cncrot::dialects::head_def::HeadTable;
 use cncrot::dialects::heidenhain::cycle_head;
 use cncrot::dialects::program::{
-    joins, rest, write_block, write_change, write_line, AxisChoice, Dialect, DirectAxes,
-    Positioning, Program, Remark, MAX_CHANGE,
+    joins, rest, write_block, write_change, write_line, AxisChoice, Dialect, DirectAxes, Feed,
+    Positioning, Program, Remark, Retract, MAX_CHANGE,
 };
 use cncrot::kinematics::{Machine, RotaryAxis, Rule, Side, MAX_AXES};
 use cncrot::{
@@ -1438,6 +1438,33 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                 eprintln!(
                                     "cncrot: line {line}: the choice of solution ({}) has no word in {} {}: the control chooses by its own rule: {block}",
                                     choice_name(p.choice),
+                                    input::dialect_name(t.dialect),
+                                    t.form
+                                );
+                            }
+                        }
+                        // A turn of the rotary axes to the plane the target has no word for
+                        // (`ROT`, `G158`): the same text as staying where they are.
+                        let turns = from.positioning != p.positioning
+                            || (from.frame, from.direct) != (p.frame, p.direct);
+                        if let (Ok((len, _)), true) =
+                            (w, p.positioning != Positioning::Stay && turns)
+                        {
+                            let still = Program {
+                                positioning: Positioning::Stay,
+                                retract: Retract::None,
+                                retract_mm: 0.0,
+                                feed: Feed::Rapid,
+                                feed_mm_min: 0.0,
+                                ..p
+                            };
+                            let mut other = [0u8; MAX_CHANGE];
+                            let same =
+                                write_block(t.dialect, form, &from, &still, text, d, &mut other)
+                                    .is_ok_and(|(n, _)| other.get(..n) == buf.get(..len));
+                            if same {
+                                eprintln!(
+                                    "cncrot: line {line}: the turn of the rotary axes to the plane has no word in {} {}: not written: the rotary axes stay where they are until the program moves them: {block}",
                                     input::dialect_name(t.dialect),
                                     t.form
                                 );

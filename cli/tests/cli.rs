@@ -1659,6 +1659,27 @@ fn program_to(prog: &str, from: &str, to: &str) -> Vec<String> {
     r.stdout.lines().map(String::from).collect()
 }
 
+/// A turn of the rotary axes to the plane (`G53.1`) into a form without a word for it
+/// (Syntec's `G158`, TwinCAT's `ROT`) is not written, and standard error says so, as for a
+/// choice of solution; into `G268` it is `G253`, said nothing.
+#[test]
+fn program_to_says_a_turn_it_cannot_write() {
+    let prog = "G68.2 X0 Y0 Z0 I0 J30 K0\nG53.1\nG69\n";
+    let r = translate(prog, "fanuc", "syntec");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(
+        r.stdout.lines().collect::<Vec<_>>(),
+        ["G158 P10157 X0. Y0. Z0. A30. B0. C0. U0. V0. W0.", "G158"]
+    );
+    assert!(
+        r.stderr.contains("line 2: the turn of the rotary axes to the plane has no word in syntec G158: not written"),
+        "{}",
+        r.stderr
+    );
+    let r = translate(prog, "fanuc", "haas");
+    assert!(!r.stderr.contains("no word"), "{}", r.stderr);
+}
+
 /// Heidenhain `CALL LBL` is followed through its label: hyperMILL resets the plane and the
 /// datum in a subprogram after the program's end (`CALL LBL 1 ; RESET WORKING PLANE`).
 /// Before, the second job's cycle 7 was written under the first job's tilt, which the
