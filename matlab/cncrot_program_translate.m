@@ -26,7 +26,9 @@
 %     block's other words (what an ISO-style post writes beside a tilt or a cancel:
 %     'G91 G28 Z0.' of 'G91 G28 Z0. G69', 'N40 G1 F300.' of 'N40 G1 G68.2 ... F300.')
 %     come first, as they stand, on a line of their own (cncrot_program_rest);
-%   - any other block: the block as it stands (remarks says which).
+%   - any other block: the block as it stands (remarks says which). The blocks are read in
+%     the order given: a Heidenhain CALL LBL is passed over, not followed through its
+%     label (the command line's 'cncrot program --to' follows it).
 %   remarks (N-by-1 cell): 'applied', 'passed' or 'not followed' as cncrot_program_lines
 %   says; a 'not followed' block changes the frame in a way the library does not follow
 %   and is not translated. state: the source program's state after the last block.
