@@ -225,7 +225,8 @@
 #define CNCROT_DIALECT_SYNTEC 4
 
 /**
- * Beckhoff TwinCAT NC I: `ROT`, `AROT`; blocks of at most 256 bytes.
+ * Beckhoff TwinCAT NC I: `ROT`, `AROT`, the zero offset shift `G58`; blocks of at most 256
+ * bytes.
  */
 #define CNCROT_DIALECT_TWINCAT 5
 

@@ -26,7 +26,8 @@ pub const CNCROT_DIALECT_HEIDENHAIN: i32 = 2;
 pub const CNCROT_DIALECT_FANUC: i32 = 3;
 /// Syntec: `G158` and its Fanuc-style `G68.2` mode; blocks of at most 256 bytes.
 pub const CNCROT_DIALECT_SYNTEC: i32 = 4;
-/// Beckhoff TwinCAT NC I: `ROT`, `AROT`; blocks of at most 256 bytes.
+/// Beckhoff TwinCAT NC I: `ROT`, `AROT`, the zero offset shift `G58`; blocks of at most 256
+/// bytes.
 pub const CNCROT_DIALECT_TWINCAT: i32 = 5;
 /// Haas: `G268`, `G269`, `G253`; blocks of at most 256 bytes.
 pub const CNCROT_DIALECT_HAAS: i32 = 6;
