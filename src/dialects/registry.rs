@@ -202,7 +202,7 @@ families! {
     Fanuc = 3 => fanuc::Fanuc,
     /// Syntec (`G158`, and its Fanuc-style `G68.2` mode).
     Syntec = 4 => syntec::Syntec,
-    /// Beckhoff TwinCAT NC I (`ROT`, `AROT`).
+    /// Beckhoff TwinCAT NC I (`ROT`, `AROT`, the zero offset shift `G58`).
     Twincat = 5 => twincat::Twincat,
     /// Haas (`G268`, `G269`).
     Haas = 6 => haas::Haas,
