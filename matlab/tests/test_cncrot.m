@@ -246,6 +246,11 @@ function test_cncrot(cases_file)
   check(strcmp(ts{4}, sprintf('TRANS\nCYCLE800(0,"",0,57,10,0,-5,0,30,0,0,0,0,1,0,0)')) && strcmp(ts{6}, sprintf('CYCLE800()\nTRANS X=10 Y=0 Z=-5')), 'translate: into SINUMERIK, _DIR +1');
   th = cncrot_program_translate('fanuc', {'G68.2 X10 Y20 I0 J30 K0'}, 'heidenhain', 'PLANE SPATIAL', 4);
   check(isequal(th, {sprintf('CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+10\nCYCL DEF 7.2 Y+20\nCYCL DEF 7.3 Z+0\nPLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY')}), 'translate: an origin as cycle 7');
+  % TwinCAT's zero offset shift G58 is the datum its ROT turns about: carried both ways.
+  tt = cncrot_program_translate('twincat', {'G58 X10 Y20 Z5', 'ROT Y30'}, 'fanuc', 'G68.2', 4);
+  check(isequal(tt, {'G52 X10. Y20. Z5.'; 'G68.2 X0. Y0. Z0. I90. J30. K-90.'}), 'translate: TwinCAT G58');
+  tt = cncrot_program_translate('fanuc', {'G68.2 X10 Y20 Z5 I90 J30 K-90'}, 'twincat', 'ROT', 4);
+  check(isequal(tt, {sprintf('G58 X10 Y20 Z5\nROT X0 Y30 Z0')}), 'translate: into TwinCAT, the origin as G58');
   % A program's safety cancel and zero shift, with nothing active, are still written (the
   % control may have something active); a cycle's first line restates nothing.
   tc = cncrot_program_translate('heidenhain', {'PLANE RESET STAY', 'CYCL DEF 7.0 DATUM SHIFT', 'CYCL DEF 7.1 X+0', 'L Z+100 FMAX'}, 'fanuc', 'G68.2', 4);
