@@ -1291,15 +1291,23 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
         let mut rewritten = false;
         let line = k + 1;
         let block = raw.trim_end_matches('\r');
-        let others = calls.enter(k, &mut p);
-        if let (Some(t), false) = (&target, others.is_empty()) {
-            let lines: Vec<String> = others.iter().map(|l| (l + 1).to_string()).collect();
-            eprintln!(
-                "cncrot: line {line}: the subprogram is also called with another frame active ({} {}): its blocks are translated into {} for the frame at its first call: {block}",
-                if lines.len() == 1 { "line" } else { "lines" },
-                lines.join(", "),
-                input::dialect_name(t.dialect)
-            );
+        let entered = calls.enter(k, &mut p);
+        if let (Some(t), Some((from, others))) = (&target, &entered) {
+            if !others.is_empty() {
+                let lines: Vec<String> = others.iter().map(|l| (l + 1).to_string()).collect();
+                eprintln!(
+                    "cncrot: line {line}: the subprogram is also called with another frame active ({} {}): its blocks are translated into {} once, from the frame of the call at line {}{}: {block}",
+                    if lines.len() == 1 { "line" } else { "lines" },
+                    lines.join(", "),
+                    input::dialect_name(t.dialect),
+                    from + 1,
+                    if p.frame.rotation != cncrot::IDENTITY || p.direct.is_some() {
+                        " without its turn"
+                    } else {
+                        ""
+                    }
+                );
+            }
         }
         let (next, remark) = match p.line(dialect, block.as_bytes()) {
             Ok(r) => r,

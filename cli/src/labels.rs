@@ -6,7 +6,7 @@
 //! order of the file, the program would keep the tilt it had before the call, and a
 //! translation would turn the axes back to it before the next tilt.
 
-use cncrot::dialects::program::{Dialect, Program, Remark};
+use cncrot::dialects::program::{AxisChoice, Dialect, Feed, Positioning, Program, Remark, Retract};
 
 /// Nested calls followed at most this deep (a label that calls itself stops there).
 const DEPTH: usize = 8;
@@ -40,8 +40,11 @@ fn ends(block: &str) -> bool {
 fn called(block: &str) -> Option<(String, usize)> {
     match words(block).as_slice() {
         [call, lbl, name, rest @ ..] if call == "CALL" && lbl == "LBL" => {
+            // `REP 2`, `REP2`, the editor's `REP 2/2`; a parameter (`REPQ106`): not known, none.
+            let count = |n: &str| n.split('/').next().and_then(|c| c.parse().ok());
             let rep = match rest {
-                [r, n, ..] if r == "REP" => n.split('/').next()?.parse().ok()?,
+                [r, n, ..] if r == "REP" => count(n).unwrap_or(0),
+                [r, ..] if r.starts_with("REP") => count(&r[3..]).unwrap_or(0),
                 _ => 0,
             };
             Some((name.clone(), rep))
@@ -85,20 +88,40 @@ impl Labels {
     }
 
     /// Before line `k` (0-based) is read: a subprogram reached after a call to it is read
-    /// from the state of its first call, not from the blocks above it. Returns the lines
-    /// (0-based) of the calls made with another frame active than the first, whose
-    /// translation of the subprogram would differ.
-    pub fn enter(&self, k: usize, p: &mut Program) -> Vec<usize> {
-        let mut calls = self.entered.iter().filter(|(at, _, _)| *at == k);
-        let Some(&(_, _, first)) = calls.next() else {
-            return Vec::new();
+    /// from the state of a call, not from the blocks above it: the first call made with a
+    /// tilt active, its way of moving and choice of solution cleared (the axes are where that
+    /// call left them), else the first call \[choice: translated from a tilt, a shift in the
+    /// subprogram is written after the target's cancel and the tilt again without a turn,
+    /// which is right whatever the call's frame when the subprogram ends in a cancel, as a
+    /// reset does; from no tilt, a Fanuc would meet its `G52` in `G68.2` mode\]. Returns the
+    /// line (0-based) of that call and those of the calls made with another frame active, for
+    /// which its translation may not fit; `None` where no subprogram starts.
+    pub fn enter(&self, k: usize, p: &mut Program) -> Option<(usize, Vec<usize>)> {
+        let calls: Vec<&(usize, usize, Program)> =
+            self.entered.iter().filter(|(at, _, _)| *at == k).collect();
+        let tilted = |q: &Program| q.frame.rotation != cncrot::IDENTITY || q.direct.is_some();
+        let &&(_, from, q) = calls.iter().find(|(_, _, q)| tilted(q)).or(calls.first())?;
+        let entry = if tilted(&q) {
+            Program {
+                positioning: Positioning::Stay,
+                retract: Retract::None,
+                retract_mm: 0.0,
+                feed: Feed::Rapid,
+                feed_mm_min: 0.0,
+                choice: AxisChoice::Closest,
+                ..q
+            }
+        } else {
+            q
         };
-        *p = first;
+        *p = entry;
         let frame = |q: &Program| (q.frame, q.shift, q.direct, q.angles);
-        calls
-            .filter(|(_, _, q)| frame(q) != frame(&first))
+        let others = calls
+            .iter()
+            .filter(|(_, _, q)| frame(q) != frame(&entry))
             .map(|(_, line, _)| *line)
-            .collect()
+            .collect();
+        Some((from, others))
     }
 
     /// After line `k` was read (and passed over): the state a call there leaves.
@@ -163,6 +186,8 @@ mod tests {
         assert!(ends("85 LBL 0"));
         assert_eq!(called("65 CALL LBL 1 ; RESET"), Some(("1".into(), 0)));
         assert_eq!(called("12 CALL LBL 2 REP 3/3"), Some(("2".into(), 3)));
+        assert_eq!(called("CALL LBL 1 REP6"), Some(("1".into(), 6)));
+        assert_eq!(called("CALL LBL 1 REPQ106 ;"), Some(("1".into(), 0)));
         assert_eq!(called("12 CALL PGM TNC:\\X.H"), None);
     }
 }

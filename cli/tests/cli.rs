@@ -1659,6 +1659,22 @@ fn program_to(prog: &str, from: &str, to: &str) -> Vec<String> {
     r.stdout.lines().map(String::from).collect()
 }
 
+/// A program section repeated by `CALL LBL 1 REP 2` adds its increment twice more: after the
+/// call the plane is SPB+30 (three times 10°), whose tool direction is (sin 30°, 0, cos 30°).
+#[test]
+fn program_repeats_a_section_called_again() {
+    let prog = "0 BEGIN PGM R MM\n1 LBL 1\n2 PLANE RELATIV SPB+10 STAY\n3 CALL LBL 1 REP2\n\
+                4 PLANE RELATIV SPB+0 STAY\n5 END PGM R MM\n";
+    let r = cncrot(&["program", "-", "--dialect", "heidenhain"], prog);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(
+        r.stdout
+            .contains("line 5: 4 PLANE RELATIV SPB+0 STAY\n  origin: 0.0000 0.0000 0.0000  tool direction: 0.5000 0.0000 0.8660"),
+        "{}",
+        r.stdout
+    );
+}
+
 /// A turn of the rotary axes to the plane (`G53.1`) into a form without a word for it
 /// (Syntec's `G158`, TwinCAT's `ROT`) is not written, and standard error says so, as for a
 /// choice of solution; into `G268` it is `G253`, said nothing.
@@ -1685,7 +1701,8 @@ fn program_to_says_a_turn_it_cannot_write() {
 /// Before, the second job's cycle 7 was written under the first job's tilt, which the
 /// program still held: `G69`, the `G52`, then the first plane again with its `G53.1` (the
 /// axes back to it) before the second. The subprogram's own blocks are read from the state
-/// of its first call (nothing active), and the other calls are named on standard error.
+/// of its first call with a tilt active (its turn cleared), and the other calls are named on
+/// standard error.
 #[test]
 fn program_to_follows_calls_to_labels() {
     let prog = "0 BEGIN PGM HM MM\n1 CALL LBL 1 ; RESET WORKING PLANE\n\
@@ -1714,7 +1731,12 @@ fn program_to_follows_calls_to_labels() {
             "9 CALL LBL 1",
             "10 M30",
             "11 LBL 1",
+            // Read from the first call with a tilt (line 6), its turn cleared: the shift
+            // after the cancel, the tilt again without G53.1, then the cancel: the same
+            // whatever frame a call finds.
+            "G69",
             "G52 X0. Y0. Z0.",
+            "G68.2 X0. Y0. Z0. I90. J30. K-90.",
             "G69",
             "15 LBL 0",
             "16 END PGM HM MM"
@@ -1722,7 +1744,7 @@ fn program_to_follows_calls_to_labels() {
     );
     assert!(
         r.stderr.contains(
-            "line 12: the subprogram is also called with another frame active (lines 6, 10)"
+            "line 12: the subprogram is also called with another frame active (lines 2, 10): its blocks are translated into fanuc once, from the frame of the call at line 6 without its turn"
         ),
         "{}",
         r.stderr
