@@ -1284,7 +1284,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     };
     // Heidenhain's `CALL LBL`: followed through the label (the state after the call is the
     // one its blocks leave), and a subprogram standing after its calls read from the state
-    // of the first.
+    // of one of them (`Labels::enter`).
     let mut calls = labels::Labels::new(dialect, &text);
     let mut run: Option<Program> = None;
     for (k, raw) in text.lines().enumerate() {

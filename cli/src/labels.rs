@@ -54,7 +54,7 @@ fn called(block: &str) -> Option<(String, usize)> {
 }
 
 /// A program's labels: where each is defined, and the states of the calls to a subprogram
-/// that stands after them (the first is the state its blocks are read from).
+/// that stands after them (one of them is the state its blocks are read from).
 pub struct Labels {
     dialect: Dialect,
     lines: Vec<String>,
