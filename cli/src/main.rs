@@ -150,7 +150,9 @@ enum Command {
                             travel violation), then a \
                             summary of the blocks passed over. A block that changes the frame in \
                             a way cncrot does not follow (a work offset, preset, datum shift, \
-                            mirroring) is flagged. --to writes the whole program with its tilt \
+                            mirroring) is flagged. A Heidenhain CALL LBL is followed through \
+                            its label (the frame after it is the one the label's blocks leave). \
+                            --to writes the whole program with its tilt \
                             and cancel blocks in the target's language and every other block as \
                             it is, and flags on standard error what it cannot carry across.\n\n\
                             Example:\n  cncrot program part.h --dialect heidenhain --carr head.carr \
