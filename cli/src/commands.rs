@@ -1478,6 +1478,36 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                 );
                             }
                         }
+                        // A retraction before the axes turn the target has no word for
+                        // (`MB`, `_FR` into `G53.1`, `G253`): the same text without it.
+                        if let (Ok((len, _)), true) = (w, p.retract != Retract::None && turns) {
+                            let dry = Program {
+                                retract: Retract::None,
+                                retract_mm: 0.0,
+                                ..p
+                            };
+                            let mut other = [0u8; MAX_CHANGE];
+                            let same =
+                                write_block(t.dialect, form, &from, &dry, text, d, &mut other)
+                                    .is_ok_and(|(n, _)| other.get(..n) == buf.get(..len));
+                            if same {
+                                let how = match p.retract {
+                                    Retract::ToolMax => {
+                                        "along the tool, as far as the travel allows".to_string()
+                                    }
+                                    Retract::Tool => {
+                                        format!("{} mm along the tool", p.retract_mm)
+                                    }
+                                    Retract::MachineZ => "along the machine's Z".to_string(),
+                                    _ => "along the machine's Z, then X and Y".to_string(),
+                                };
+                                eprintln!(
+                                    "cncrot: line {line}: the retraction before the rotary axes turn ({how}) has no word in {} {}: not written: retract the tool before this block: {block}",
+                                    input::dialect_name(t.dialect),
+                                    t.form
+                                );
+                            }
+                        }
                         // An increment the target cannot say: the same text as the plane
                         // it reaches.
                         if let (Ok((len, _)), true) = (w, p.relative) {

@@ -1694,6 +1694,24 @@ fn program_to_says_a_turn_it_cannot_write() {
     );
     let r = translate(prog, "fanuc", "haas");
     assert!(!r.stderr.contains("no word"), "{}", r.stderr);
+    // The retraction before the turn (MB 50) has no word in G68.2's G53.1: said too.
+    let r = translate(
+        "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB50 FMAX\n",
+        "heidenhain",
+        "fanuc",
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("line 1: the retraction before the rotary axes turn (50 mm along the tool) has no word in fanuc G68.2: not written"),
+        "{}",
+        r.stderr
+    );
+    let r = translate(
+        "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB50 FMAX\n",
+        "heidenhain",
+        "sinumerik",
+    );
+    assert!(!r.stderr.contains("retraction"), "{}", r.stderr);
 }
 
 /// Heidenhain `CALL LBL` is followed through its label: hyperMILL resets the plane and the
