@@ -1190,6 +1190,33 @@ pub struct ProgramArgs<'a> {
 
 /// A whole part program, block by block (see the command's help). Exit status 1 when a
 /// block was refused or (with `--to`) could not be carried across.
+/// The tilt's cancel on a block the library does not follow as a whole (`G69 G54`: a work
+/// offset beside it), read alone on `p`: a control cancels the plane whatever else the
+/// block holds, and the state after it is untilted, whatever the offset does. The ISO
+/// dialects only (`G69`, Haas's `G269`); `None` where the block holds none.
+fn cancel_beside(dialect: Dialect, block: &str, p: &Program) -> Option<(Program, &'static str)> {
+    let code = match dialect {
+        Dialect::Fanuc | Dialect::Syntec => "G69",
+        Dialect::Haas => "G269",
+        _ => return None,
+    };
+    let text = block.split(['(', ';']).next().unwrap_or("").to_uppercase();
+    let bytes = text.as_bytes();
+    let found = text.match_indices(code).any(|(at, _)| {
+        let before = at.checked_sub(1).and_then(|k| bytes.get(k));
+        let after = bytes.get(at + code.len());
+        !before.is_some_and(|b| b.is_ascii_alphanumeric() || *b == b'.')
+            && !after.is_some_and(|b| b.is_ascii_digit() || *b == b'.')
+    });
+    if !found {
+        return None;
+    }
+    match p.line(dialect, code.as_bytes()) {
+        Ok((c, Remark::Applied)) => Some((c, code)),
+        _ => None,
+    }
+}
+
 pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     use std::io::Write;
     let dialect = input::dialect(a.dialect).map_err(option("--dialect"))?;
@@ -1275,6 +1302,13 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         calls.after(k, &mut q);
                         None
                     }
+                    Ok((_, Remark::NotFollowed)) => {
+                        let block = raw.trim_end_matches('\r');
+                        if let Some((c, _)) = cancel_beside(dialect, block, &q) {
+                            q = c;
+                        }
+                        None
+                    }
                     _ => None,
                 }
             })
@@ -1344,8 +1378,63 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
             }
             Remark::NotFollowed => {
                 unfollowed += 1;
-                let why = "changes the frame in a way cncrot does not follow; cncrot's frame stays as it was";
-                if target.is_some() {
+                // A cancel beside what is not followed (`G69 G54`) still cancels.
+                let cancel = cancel_beside(dialect, block, &before);
+                let why = if cancel.is_some() {
+                    "changes the frame in a way cncrot does not follow; its cancel is applied"
+                } else {
+                    "changes the frame in a way cncrot does not follow; cncrot's frame stays as it was"
+                };
+                if let Some((c, _)) = cancel {
+                    p = c;
+                    run = None;
+                }
+                if let (Some(t), Some((c, code))) = (&target, cancel) {
+                    ok = false;
+                    let mut buf = [0u8; MAX_CHANGE];
+                    let written = write_block(
+                        t.dialect,
+                        t.form.as_bytes(),
+                        &before,
+                        &c,
+                        code.as_bytes(),
+                        d,
+                        &mut buf,
+                    );
+                    let mut rest_buf = [0u8; MAX_CHANGE];
+                    let kept = match rest(dialect, block.as_bytes(), &mut rest_buf) {
+                        Ok(n) => String::from_utf8_lossy(&rest_buf[..n]).into_owned(),
+                        Err(_) => block.to_string(),
+                    };
+                    match written {
+                        Ok((len, _)) => {
+                            eprintln!(
+                                "cncrot: line {line}: not followed beside its cancel: the rest copied as it stands, the cancel written as {} {}'s (it {why}): {block}",
+                                input::dialect_name(t.dialect),
+                                t.form
+                            );
+                            let mark = skip_mark(block, dialect, t.dialect);
+                            let text = String::from_utf8_lossy(&buf[..len]);
+                            Some(
+                                std::iter::once(kept)
+                                    .filter(|k| !k.is_empty())
+                                    .chain(text.lines().map(|l| format!("{mark}{l}")))
+                                    .collect::<Vec<_>>()
+                                    .join("\n"),
+                            )
+                        }
+                        Err(e) => {
+                            uncarried += 1;
+                            eprintln!(
+                                "cncrot: line {line}: not carried across as {} {}: {}: {block}",
+                                input::dialect_name(t.dialect),
+                                t.form,
+                                e.message()
+                            );
+                            Some(block.to_string())
+                        }
+                    }
+                } else if target.is_some() {
                     eprintln!("cncrot: line {line}: not followed, copied as it stands (it {why}): {block}");
                     ok = false;
                     Some(block.to_string())

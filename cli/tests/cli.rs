@@ -1659,6 +1659,42 @@ fn program_to(prog: &str, from: &str, to: &str) -> Vec<String> {
     r.stdout.lines().map(String::from).collect()
 }
 
+/// A cancel beside a work offset (`G69 G55`) still cancels: the block is not followed as a
+/// whole (the offset is a table's), but the control cancels the plane whatever else the
+/// block holds. Before, the block was copied as it stood and the target stayed tilted: the
+/// plunge after it ran at 45° (a helper's find). Exit status 1: the offset is not followed.
+#[test]
+fn program_to_cancels_beside_a_work_offset() {
+    let prog = "G68.2 X0 Y0 Z0 I0 J45 K0\nG53.1\nG69 G55\nG1 Z-5 F100\n";
+    let r = translate(prog, "fanuc", "haas");
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert_eq!(
+        r.stdout.lines().collect::<Vec<_>>(),
+        [
+            "G268 X0. Y0. Z0. I45. J0. K0. Q123",
+            "G253",
+            "G55",
+            "G269",
+            "G1 Z-5 F100"
+        ]
+    );
+    assert!(
+        r.stderr.contains("line 3: not followed beside its cancel"),
+        "{}",
+        r.stderr
+    );
+    // The report: the frame after it is untilted.
+    let r = cncrot(
+        &["program", "-", "--dialect", "fanuc"],
+        "G68.2 X0 Y0 Z0 I0 J45 K0\nG69 G55\nG68.4 I0 J0 K0\n",
+    );
+    assert!(
+        r.stdout.contains("line 3: G68.4 I0 J0 K0\n  origin: 0.0000 0.0000 0.0000  tool direction: 0.0000 0.0000 1.0000"),
+        "{}",
+        r.stdout
+    );
+}
+
 /// A program section repeated by `CALL LBL 1 REP 2` adds its increment twice more: after the
 /// call the plane is SPB+30 (three times 10°), whose tool direction is (sin 30°, 0, cos 30°).
 #[test]
