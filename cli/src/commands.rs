@@ -1174,6 +1174,26 @@ fn skip_mark(block: &str, from: Dialect, to: Dialect) -> String {
     }
 }
 
+/// The block number (`N20`) of an ISO-style block (after its skip mark), as written; `None`
+/// for Heidenhain, whose leading numbers count lines and are no word of the block.
+fn block_number(block: &str, from: Dialect) -> Option<String> {
+    if from == Dialect::Heidenhain {
+        return None;
+    }
+    let b = block.trim_start();
+    let b = match b.strip_prefix('/') {
+        Some(rest) => rest
+            .trim_start_matches(|c: char| c.is_ascii_digit())
+            .trim_start(),
+        None => b,
+    };
+    let rest = b.strip_prefix(['N', 'n'])?;
+    let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
+    let after = rest.get(digits.len()..).and_then(|r| r.chars().next());
+    let ends = !after.is_some_and(|c| c.is_ascii_alphanumeric() || c == '.');
+    (!digits.is_empty() && ends).then(|| format!("{}{digits}", &b[..1]))
+}
+
 /// What `program` is asked: the file, its dialect, a translation, the positions before.
 pub struct ProgramArgs<'a> {
     pub file: &'a str,
@@ -1502,6 +1522,10 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             _ => None,
                         }
                     };
+                    let number = match (&kept, t.dialect) {
+                        (None, to) if to != Dialect::Heidenhain => block_number(block, dialect),
+                        _ => None,
+                    };
                     // Into another dialect also what the block restates (a cancel, a
                     // datum shift, with nothing active: the control may have something
                     // active); in its own, such a block stays as it stands.
@@ -1635,7 +1659,11 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         // Nothing changes in the target (cycle 7's first line, a
                         // command repeated, a block written with the next): nothing to
                         // write but the block's other words.
-                        Ok((0, _)) => kept.clone(),
+                        // A block number with no other word left (`N20 G68.2 …`) stays,
+                        // alone where nothing is written, on the first line written
+                        // otherwise: a jump (`GOTO20`, `M99 P20`) or a restart by number
+                        // still finds it (not into Heidenhain, which numbers lines itself).
+                        Ok((0, _)) => kept.clone().or(number.clone()),
                         Ok((len, _)) => {
                             rewritten = true;
                             let text = String::from_utf8_lossy(&buf[..len]);
@@ -1646,7 +1674,12 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             Some(
                                 kept.iter()
                                     .cloned()
-                                    .chain(text.lines().map(|l| format!("{mark}{l}")))
+                                    .chain(text.lines().enumerate().map(|(k, l)| {
+                                        match (&number, k) {
+                                            (Some(n), 0) => format!("{mark}{n} {l}"),
+                                            _ => format!("{mark}{l}"),
+                                        }
+                                    }))
                                     .collect::<Vec<_>>()
                                     .join("\n"),
                             )

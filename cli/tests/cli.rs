@@ -1659,6 +1659,33 @@ fn program_to(prog: &str, from: &str, to: &str) -> Vec<String> {
     r.stdout.lines().map(String::from).collect()
 }
 
+/// A block number stays where a tilt or cancel block is translated: on the first line
+/// written for it, or alone where the block writes nothing (the first of a `G68.2` and its
+/// `G53.1`), so that `GOTO20` still finds its block (a helper's find: the control's alarm
+/// "sequence number not found"); into Heidenhain none (it numbers its lines itself).
+#[test]
+fn program_to_keeps_block_numbers() {
+    let prog = "#1=0\nN20 G68.2 X0 Y0 Z0 I0 J30 K0\nN25 G53.1\nN30 G69\n#1=#1+1\n\
+                IF [#1 LT 3] GOTO20\n/N40 G69\nM30\n";
+    assert_eq!(
+        program_to(prog, "fanuc", "haas"),
+        [
+            "#1=0",
+            "N20",
+            "N25 G268 X0. Y0. Z0. I30. J0. K0. Q123",
+            "G253",
+            "N30 G269",
+            "#1=#1+1",
+            "IF [#1 LT 3] GOTO20",
+            "/N40 G269",
+            "M30"
+        ]
+    );
+    assert!(!program_to(prog, "fanuc", "heidenhain")
+        .iter()
+        .any(|l| l.starts_with("N2") || l.starts_with("N3")));
+}
+
 /// A cancel beside a work offset (`G69 G55`) still cancels: the block is not followed as a
 /// whole (the offset is a table's), but the control cancels the plane whatever else the
 /// block holds. Before, the block was copied as it stood and the target stayed tilted: the
@@ -1848,7 +1875,7 @@ fn program_to_keeps_a_blocks_other_words() {
             "G269",
             "N40 G1 F300.",
             // Euler Z-X-Z (0, 30, 0) is Rx(30°): roll 30 about X.
-            "G268 X0. Y0. Z0. I30. J0. K0. Q123",
+            "N50 G268 X0. Y0. Z0. I30. J0. K0. Q123",
             "G253",
             "N70 X10. Y10.",
             "G269"
@@ -1866,12 +1893,12 @@ fn program_to_carries_twincats_zero_offset_shift() {
     assert_eq!(
         program_to(prog, "twincat", "fanuc"),
         [
-            "G52 X10. Y20. Z5.",
-            "G68.2 X0. Y0. Z0. I90. J30. K-90.",
-            "G69",
+            "N20 G52 X10. Y20. Z5.",
+            "N30 G68.2 X0. Y0. Z0. I90. J30. K-90.",
+            "N40 G69",
             "G52 X0. Y200. Z0.",
             "G68.2 X0. Y0. Z0. I90. J30. K-90.",
-            "G69",
+            "N50 G69",
             "M30"
         ]
     );
