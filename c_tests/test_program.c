@@ -49,6 +49,12 @@ static void vendors(void) {
   CHECK_NEAR(r, want, 9, 1e-15);
   double tc_origin[3] = {0, 200, 0}, tc_got[3] = {f[3], f[7], f[11]};
   CHECK_NEAR(tc_got, tc_origin, 3, 0);
+  /* Heidenhain: a datum shift programmed under a tilt shifts the tilted system. SPB+30 is
+   * Ry(30): X' = (cos 30, 0, -sin 30), so X+10 puts the datum at (8.6603, 0, -5). */
+  const char *tilted_shift[] = {"PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY", "CYCL DEF 7.1 X+10"};
+  CHECK_STATUS(run(CNCROT_DIALECT_HEIDENHAIN, tilted_shift, 2, f), CNCROT_STATUS_OK);
+  double ts_want[3] = {5 * sqrt(3.0), 0, -5}, ts_got[3] = {f[3], f[7], f[11]};
+  CHECK_NEAR(ts_got, ts_want, 3, 1e-12);
 
   /* Syntec: translate (2, 0, 10), turn X 20, Y' 20, Z'' -30, then (0, 10, 0) in the turned
    * system. */

@@ -236,6 +236,56 @@ fn sinumerik_reads_back_as_the_control_does() {
     }
 }
 
+/// A datum shift programmed under a tilt shifts the tilted coordinate system (iTNC 530,
+/// cycle 19: "if you program a datum shift after having activated Cycle 19, you are
+/// shifting the tilted coordinate system"; TNC7: `TRANS DATUM` among the transformations of
+/// the working plane system). By hand: SPB+30 is Ry(30°), whose X' is (cos 30°, 0, −sin 30°):
+/// X+10 along it puts the datum at (8.6603, 0, −5). The axes the block does not name keep
+/// their place along the tilted axes; the shift stays where it was put when the tilt is
+/// cancelled [choice].
+#[test]
+fn heidenhain_shift_under_a_tilt_is_along_the_tilted_axes() {
+    let d = Dialect::Heidenhain;
+    let (c, s) = (30f64.to_radians().cos(), 30f64.to_radians().sin());
+    for shift in [
+        &["CYCL DEF 7.0 DATUM SHIFT", "CYCL DEF 7.1 X+10"][..],
+        &["TRANS DATUM AXIS X+10"],
+    ] {
+        let mut lines = vec!["PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY"];
+        lines.extend_from_slice(shift);
+        let p = read(d, &lines);
+        let t = p.frame.translation;
+        assert!(
+            (t[0] - 10.0 * c).abs() < 1e-12
+                && t[1].abs() < 1e-12
+                && (t[2] + 10.0 * s).abs() < 1e-12,
+            "{shift:?}: {t:?}"
+        );
+        assert!(dist(&p.frame.rotation, &r(Axis::Y, 30.0)) < 1e-15);
+        let q = p.line(d, b"PLANE RESET STAY").unwrap().0;
+        assert_eq!(q.frame.translation, t);
+    }
+    // Y+5 under the tilt after X+10 before it: X+10 keeps its place, Y is Y' here.
+    let p = read(
+        d,
+        &[
+            "CYCL DEF 7.1 X+10",
+            "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY",
+            "CYCL DEF 7.2 Y+5",
+        ],
+    );
+    let t = p.frame.translation;
+    assert!(
+        (t[0] - 10.0).abs() < 1e-12 && (t[1] - 5.0).abs() < 1e-12 && t[2].abs() < 1e-12,
+        "{t:?}"
+    );
+    // Untilted as before.
+    assert_eq!(
+        read(d, &["CYCL DEF 7.1 X+10"]).frame.translation,
+        [10.0, 0.0, 0.0]
+    );
+}
+
 #[test]
 fn twincat_the_manuals_examples() {
     let d = Dialect::Twincat;

@@ -1792,6 +1792,7 @@ fn program_to_follows_calls_to_labels() {
                 6 CYCL DEF 7.0 DATUM SHIFT\n7 CYCL DEF 7.1 X+20\n\
                 8 PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN FMAX\n9 CALL LBL 1\n10 M30\n\
                 11 LBL 1\n12 CYCL DEF 7.0 DATUM SHIFT\n13 CYCL DEF 7.1 X+0\n\
+                13 CYCL DEF 7.2 Y+0\n13 CYCL DEF 7.3 Z+0\n\
                 14 PLANE RESET STAY\n15 LBL 0\n16 END PGM HM MM\n";
     let r = translate(prog, "heidenhain", "fanuc");
     assert_eq!(r.code, 0, "{}", r.stderr);

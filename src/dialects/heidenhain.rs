@@ -437,8 +437,11 @@ fn plane_frame(form: Form, w: &[f64]) -> Result<Frame, Error> {
 /// cycle (applied: the state unchanged); each further line sets the axes it names (`IX`
 /// adds to the shift), the others keep theirs \[doc: "only the programmed axes are
 /// shifted"\]; `TRANS DATUM AXIS` sets the shift of the axes it names \[choice: the same
-/// rule\]. The shift is taken along the workpiece axes before any tilt, and a `PLANE` tilts
-/// about the shifted datum \[doc\].
+/// rule\]. The shift is taken along the workpiece axes, and a `PLANE` tilts about the shifted
+/// datum \[doc\]; programmed under a tilt, along the tilted axes ("if you program a datum
+/// shift after having activated Cycle 19, you are shifting the tilted coordinate system"
+/// \[doc\]), then held in the workpiece axes (it stays where it was put when the plane is
+/// cancelled \[choice\]).
 /// A datum table row (`#5`, `TRANS DATUM TABLE`) or another axis (`A`, `U`) is not
 /// followed.
 fn datum_shift(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
@@ -471,7 +474,15 @@ fn datum_shift(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
     } else {
         return Ok(None);
     };
-    let mut shift = m.shift;
+    // Under a tilt, along the tilted axes: the shift as the tilted axes see it, each axis
+    // the block names set there, then back in the workpiece axes.
+    let tilted = m.direct.is_none() && m.frame.rotation != crate::IDENTITY;
+    let r = m.frame.rotation;
+    let mut shift = if tilted {
+        crate::rotate_inverse(&r, m.shift)
+    } else {
+        m.shift
+    };
     let mut any = false;
     loop {
         c.spaces();
@@ -500,6 +511,9 @@ fn datum_shift(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
     }
     if !any {
         return Err(c.missing("X, Y or Z"));
+    }
+    if tilted {
+        shift = crate::rotate(&r, shift);
     }
     if !shift.iter().all(|x| x.is_finite()) {
         return Err(c.error(Error::OutOfRange));
