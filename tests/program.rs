@@ -236,10 +236,10 @@ fn sinumerik_reads_back_as_the_control_does() {
     }
 }
 
-/// A datum shift programmed under a tilt shifts the tilted coordinate system (iTNC 530,
-/// cycle 19: "if you program a datum shift after having activated Cycle 19, you are
-/// shifting the tilted coordinate system"; TNC7: `TRANS DATUM` among the transformations of
-/// the working plane system). By hand: SPB+30 is Ry(30°), whose X' is (cos 30°, 0, −sin 30°):
+/// A datum shift programmed under a tilt shifts the tilted coordinate system (TNC 620:
+/// cycle 7 before tilting is the workpiece system's, "the result … depends on the
+/// programming sequence"; TNC7: `TRANS DATUM` among the transformations "after having
+/// tilted the working plane"). By hand: SPB+30 is Ry(30°), whose X' is (cos 30°, 0, −sin 30°):
 /// X+10 along it puts the datum at (8.6603, 0, −5). The axes the block does not name keep
 /// their place along the tilted axes; the shift stays where it was put when the tilt is
 /// cancelled [choice].

@@ -438,10 +438,11 @@ fn plane_frame(form: Form, w: &[f64]) -> Result<Frame, Error> {
 /// adds to the shift), the others keep theirs \[doc: "only the programmed axes are
 /// shifted"\]; `TRANS DATUM AXIS` sets the shift of the axes it names \[choice: the same
 /// rule\]. The shift is taken along the workpiece axes, and a `PLANE` tilts about the shifted
-/// datum \[doc\]; programmed under a tilt, along the tilted axes ("if you program a datum
-/// shift after having activated Cycle 19, you are shifting the tilted coordinate system"
-/// \[doc\]), then held in the workpiece axes (it stays where it was put when the plane is
-/// cancelled \[choice\]).
+/// datum \[doc\]; programmed under a tilt, along the tilted axes (the TNC 620 manual lists
+/// cycle 7 "shifting before tilting the working plane" among the workpiece system's
+/// transformations, the TNC7's working plane system takes `TRANS DATUM` "after having
+/// tilted the working plane" \[doc\]), then held in the workpiece axes (it stays where it
+/// was put when the plane is cancelled \[choice\]).
 /// A datum table row (`#5`, `TRANS DATUM TABLE`) or another axis (`A`, `U`) is not
 /// followed.
 fn datum_shift(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
