@@ -28,7 +28,9 @@
 %     come first, as they stand, on a line of their own (cncrot_program_rest);
 %   - any other block: the block as it stands (remarks says which). The blocks are read in
 %     the order given: a Heidenhain CALL LBL is passed over, not followed through its
-%     label (the command line's 'cncrot program --to' follows it).
+%     label, and a cancel beside a block not followed (G69 G55) stays in it as it stands
+%     (the command line's 'cncrot program --to' follows the call, writes the cancel and
+%     keeps a tilt block's number).
 %   remarks (N-by-1 cell): 'applied', 'passed' or 'not followed' as cncrot_program_lines
 %   says; a 'not followed' block changes the frame in a way the library does not follow
 %   and is not translated. state: the source program's state after the last block.
