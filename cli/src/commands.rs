@@ -1174,6 +1174,16 @@ fn skip_mark(block: &str, from: Dialect, to: Dialect) -> String {
     }
 }
 
+/// Says on standard error that the block at `line` could not be written as `t`'s, and why.
+fn not_carried(line: usize, t: &Target, e: Error, block: &str) {
+    eprintln!(
+        "cncrot: line {line}: not carried across as {} {}: {}: {block}",
+        input::dialect_name(t.dialect),
+        t.form,
+        e.message()
+    );
+}
+
 /// The block number (`N20`) of an ISO-style block (after its skip mark), as written; `None`
 /// for Heidenhain, whose leading numbers count lines and are no word of the block.
 fn block_number(block: &str, from: Dialect) -> Option<String> {
@@ -1445,12 +1455,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         }
                         Err(e) => {
                             uncarried += 1;
-                            eprintln!(
-                                "cncrot: line {line}: not carried across as {} {}: {}: {block}",
-                                input::dialect_name(t.dialect),
-                                t.form,
-                                e.message()
-                            );
+                            not_carried(line, t, e, block);
                             Some(block.to_string())
                         }
                     }
@@ -1686,12 +1691,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         }
                         Err(e) => {
                             uncarried += 1;
-                            eprintln!(
-                                "cncrot: line {line}: not carried across as {} {}: {}: {block}",
-                                input::dialect_name(t.dialect),
-                                t.form,
-                                e.message()
-                            );
+                            not_carried(line, t, e, block);
                             ok = false;
                             Some(block.to_string())
                         }
