@@ -1554,13 +1554,18 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             AxisChoice::NegativeTurn(k) => Some(AxisChoice::PositiveTurn(k)),
                             AxisChoice::Closest => None,
                         };
-                        if let (Ok((len, _)), Some(choice)) = (w, opposite) {
-                            let flipped = Program { choice, ..p };
+                        // Whether the target writes the same text for `q` as for the
+                        // block's state: what differs between them has no word there.
+                        let unsaid = |q: &Program| {
                             let mut other = [0u8; MAX_CHANGE];
-                            let same =
-                                write_block(t.dialect, form, &from, &flipped, text, d, &mut other)
-                                    .is_ok_and(|(n, _)| other.get(..n) == buf.get(..len));
-                            if len > 0 && same {
+                            w.is_ok_and(|(len, _)| {
+                                write_block(t.dialect, form, &from, q, text, d, &mut other)
+                                    .is_ok_and(|(n, _)| other.get(..n) == buf.get(..len))
+                            })
+                        };
+                        let written = w.is_ok_and(|(len, _)| len > 0);
+                        if let Some(choice) = opposite {
+                            if written && unsaid(&Program { choice, ..p }) {
                                 eprintln!(
                                     "cncrot: line {line}: the choice of solution ({}) has no word in {} {}: the control chooses by its own rule: {block}",
                                     choice_name(p.choice),
@@ -1573,77 +1578,55 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         // (`ROT`, `G158`): the same text as staying where they are.
                         let turns = from.positioning != p.positioning
                             || (from.frame, from.direct) != (p.frame, p.direct);
-                        if let (Ok((len, _)), true) =
-                            (w, p.positioning != Positioning::Stay && turns)
-                        {
-                            let still = Program {
-                                positioning: Positioning::Stay,
-                                retract: Retract::None,
-                                retract_mm: 0.0,
-                                feed: Feed::Rapid,
-                                feed_mm_min: 0.0,
-                                ..p
-                            };
-                            let mut other = [0u8; MAX_CHANGE];
-                            let same =
-                                write_block(t.dialect, form, &from, &still, text, d, &mut other)
-                                    .is_ok_and(|(n, _)| other.get(..n) == buf.get(..len));
-                            if same {
-                                eprintln!(
-                                    "cncrot: line {line}: the turn of the rotary axes to the plane has no word in {} {}: not written: the rotary axes stay where they are until the program moves them: {block}",
-                                    input::dialect_name(t.dialect),
-                                    t.form
-                                );
-                            }
+                        let still = Program {
+                            positioning: Positioning::Stay,
+                            retract: Retract::None,
+                            retract_mm: 0.0,
+                            feed: Feed::Rapid,
+                            feed_mm_min: 0.0,
+                            ..p
+                        };
+                        if p.positioning != Positioning::Stay && turns && unsaid(&still) {
+                            eprintln!(
+                                "cncrot: line {line}: the turn of the rotary axes to the plane has no word in {} {}: not written: the rotary axes stay where they are until the program moves them: {block}",
+                                input::dialect_name(t.dialect),
+                                t.form
+                            );
                         }
                         // A retraction before the axes turn the target has no word for
                         // (`MB`, `_FR` into `G53.1`, `G253`): the same text without it.
-                        if let (Ok((len, _)), true) = (w, p.retract != Retract::None && turns) {
-                            let dry = Program {
-                                retract: Retract::None,
-                                retract_mm: 0.0,
-                                ..p
+                        let dry = Program {
+                            retract: Retract::None,
+                            retract_mm: 0.0,
+                            ..p
+                        };
+                        if p.retract != Retract::None && turns && unsaid(&dry) {
+                            let how = match p.retract {
+                                Retract::ToolMax => {
+                                    "along the tool, as far as the travel allows".to_string()
+                                }
+                                Retract::Tool => format!("{} mm along the tool", p.retract_mm),
+                                Retract::MachineZ => "along the machine's Z".to_string(),
+                                _ => "along the machine's Z, then X and Y".to_string(),
                             };
-                            let mut other = [0u8; MAX_CHANGE];
-                            let same =
-                                write_block(t.dialect, form, &from, &dry, text, d, &mut other)
-                                    .is_ok_and(|(n, _)| other.get(..n) == buf.get(..len));
-                            if same {
-                                let how = match p.retract {
-                                    Retract::ToolMax => {
-                                        "along the tool, as far as the travel allows".to_string()
-                                    }
-                                    Retract::Tool => {
-                                        format!("{} mm along the tool", p.retract_mm)
-                                    }
-                                    Retract::MachineZ => "along the machine's Z".to_string(),
-                                    _ => "along the machine's Z, then X and Y".to_string(),
-                                };
-                                eprintln!(
-                                    "cncrot: line {line}: the retraction before the rotary axes turn ({how}) has no word in {} {}: not written: retract the tool before this block: {block}",
-                                    input::dialect_name(t.dialect),
-                                    t.form
-                                );
-                            }
+                            eprintln!(
+                                "cncrot: line {line}: the retraction before the rotary axes turn ({how}) has no word in {} {}: not written: retract the tool before this block: {block}",
+                                input::dialect_name(t.dialect),
+                                t.form
+                            );
                         }
                         // An increment the target cannot say: the same text as the plane
                         // it reaches.
-                        if let (Ok((len, _)), true) = (w, p.relative) {
-                            let whole = Program {
-                                relative: false,
-                                ..p
-                            };
-                            let mut other = [0u8; MAX_CHANGE];
-                            let same =
-                                write_block(t.dialect, form, &from, &whole, text, d, &mut other)
-                                    .is_ok_and(|(n, _)| other.get(..n) == buf.get(..len));
-                            if len > 0 && same {
-                                eprintln!(
-                                    "cncrot: line {line}: the block adds to the active tilt and {} {} cannot say this increment: written as the plane it reaches, so a loop that repeats the block does not add: {block}",
-                                    input::dialect_name(t.dialect),
-                                    t.form
-                                );
-                            }
+                        let whole = Program {
+                            relative: false,
+                            ..p
+                        };
+                        if p.relative && written && unsaid(&whole) {
+                            eprintln!(
+                                "cncrot: line {line}: the block adds to the active tilt and {} {} cannot say this increment: written as the plane it reaches, so a loop that repeats the block does not add: {block}",
+                                input::dialect_name(t.dialect),
+                                t.form
+                            );
                         }
                         w
                     };
