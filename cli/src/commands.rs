@@ -1204,6 +1204,57 @@ fn block_number(block: &str, from: Dialect) -> Option<String> {
     (!digits.is_empty() && ends).then(|| format!("{}{digits}", &b[..1]))
 }
 
+/// The comments of a block of a `from` program (`( … )` in the ISO-style dialects and
+/// TwinCAT, `;` to the end of the line in all), their texts joined by a space; `None`
+/// without one. SINUMERIK's strings (`"TC1"`) are no comment, whatever they hold.
+fn comments(block: &str, from: Dialect) -> Option<String> {
+    let parens = !matches!(from, Dialect::Sinumerik | Dialect::Heidenhain);
+    let mut found: Vec<String> = Vec::new();
+    let mut chars = block.char_indices();
+    let mut quoted = false;
+    while let Some((at, c)) = chars.next() {
+        match c {
+            '"' if from == Dialect::Sinumerik => quoted = !quoted,
+            _ if quoted => {}
+            ';' => {
+                found.push(block[at + 1..].to_string());
+                break;
+            }
+            '(' if parens => {
+                let text: String = chars
+                    .by_ref()
+                    .map(|(_, c)| c)
+                    .take_while(|&c| c != ')')
+                    .collect();
+                found.push(text);
+            }
+            _ => {}
+        }
+    }
+    let text = found
+        .iter()
+        .flat_map(|t| t.split_whitespace())
+        .collect::<Vec<_>>()
+        .join(" ");
+    (!text.is_empty()).then_some(text)
+}
+
+/// `text` as a comment of `to`'s, to stand at the end of a block: `(TEXT)` where a comment
+/// is a parenthesis (the parentheses inside it left out: a Fanuc comment does not nest),
+/// `; TEXT` in SINUMERIK and Heidenhain.
+fn comment_in(text: &str, to: Dialect) -> String {
+    match to {
+        Dialect::Sinumerik | Dialect::Heidenhain => format!("; {text}"),
+        _ => {
+            let text = text.replace(['(', ')'], " ");
+            format!(
+                "({})",
+                text.split_whitespace().collect::<Vec<_>>().join(" ")
+            )
+        }
+    }
+}
+
 /// What `program` is asked: the file, its dialect, a translation, the positions before.
 pub struct ProgramArgs<'a> {
     pub file: &'a str,
@@ -1531,6 +1582,9 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         (None, to) if to != Dialect::Heidenhain => block_number(block, dialect),
                         _ => None,
                     };
+                    // The block's comment (`(TILT FRONT)`, `; ORIENT TOOL`), which the
+                    // rest leaves out, in the target's own form on the block written for it.
+                    let note = comments(block, dialect).map(|c| comment_in(&c, t.dialect));
                     // Into another dialect also what the block restates (a cancel, a
                     // datum shift, with nothing active: the control may have something
                     // active); in its own, such a block stays as it stands.
@@ -1651,7 +1705,11 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         // alone where nothing is written, on the first line written
                         // otherwise: a jump (`GOTO20`, `M99 P20`) or a restart by number
                         // still finds it (not into Heidenhain, which numbers lines itself).
-                        Ok((0, _)) => kept.clone().or(number.clone()),
+                        // Its comment beside it, or on a line of its own.
+                        Ok((0, _)) => match (kept.clone().or(number.clone()), &note) {
+                            (Some(l), Some(n)) => Some(format!("{l} {n}")),
+                            (l, n) => l.or(n.clone()),
+                        },
                         Ok((len, _)) => {
                             rewritten = true;
                             let text = String::from_utf8_lossy(&buf[..len]);
@@ -1663,9 +1721,13 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                 kept.iter()
                                     .cloned()
                                     .chain(text.lines().enumerate().map(|(k, l)| {
-                                        match (&number, k) {
-                                            (Some(n), 0) => format!("{mark}{n} {l}"),
-                                            _ => format!("{mark}{l}"),
+                                        let n = number.as_ref().filter(|_| k == 0);
+                                        let c = note.as_ref().filter(|_| k == 0);
+                                        match (n, c) {
+                                            (Some(n), Some(c)) => format!("{mark}{n} {l} {c}"),
+                                            (Some(n), None) => format!("{mark}{n} {l}"),
+                                            (None, Some(c)) => format!("{mark}{l} {c}"),
+                                            (None, None) => format!("{mark}{l}"),
                                         }
                                     }))
                                     .collect::<Vec<_>>()

@@ -1686,6 +1686,46 @@ fn program_to_keeps_block_numbers() {
         .any(|l| l.starts_with("N2") || l.starts_with("N3")));
 }
 
+/// A comment on a translated block is carried in the target's form, at the end of the first
+/// line written for the block, or alone where the block writes nothing: CAM posts name each
+/// plane (`(TILT FRONT)`, `; SIDE (B)`), and the translation dropped every such name.
+#[test]
+fn program_to_keeps_comments() {
+    let prog = "N20 G68.2 X0. Y0. Z0. I0. J45. K0. (TILT FRONT)\nN30 G53.1 (ORIENT)\n\
+                N40 G0 X0 Y0\nN50 G69 (CANCEL TILT)\n";
+    assert_eq!(
+        program_to(prog, "fanuc", "haas"),
+        [
+            "N20 (TILT FRONT)",
+            "N30 G268 X0. Y0. Z0. I45. J0. K0. Q123 (ORIENT)",
+            "G253",
+            "N40 G0 X0 Y0",
+            "N50 G269 (CANCEL TILT)"
+        ]
+    );
+    assert_eq!(
+        program_to(prog, "fanuc", "heidenhain"),
+        [
+            "; TILT FRONT",
+            "PLANE SPATIAL SPA+45 SPB+0 SPC+0 TURN FMAX ; ORIENT",
+            "N40 G0 X0 Y0",
+            "PLANE RESET STAY ; CANCEL TILT"
+        ]
+    );
+    // A comment's parentheses, which a Fanuc comment cannot hold; a SINUMERIK string is no
+    // comment, whatever it holds.
+    let prog = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY ; SIDE (B)\n";
+    assert_eq!(
+        program_to(prog, "heidenhain", "fanuc"),
+        ["G68.2 X0. Y0. Z0. I90. J30. K-90. (SIDE B)"]
+    );
+    let prog = "CYCLE800(0,\"T;C\",0,57,0,0,0,0,30,0,0,0,0,0,0,0)\nCYCLE800() ; RESET\n";
+    assert_eq!(
+        program_to(prog, "sinumerik", "fanuc"),
+        ["G68.2 X0. Y0. Z0. I90. J30. K-90.", "G69 (RESET)"]
+    );
+}
+
 /// A cancel beside a work offset (`G69 G55`) still cancels: the block is not followed as a
 /// whole (the offset is a table's), but the control cancels the plane whatever else the
 /// block holds. Before, the block was copied as it stood and the target stayed tilted: the
