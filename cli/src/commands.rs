@@ -1402,6 +1402,9 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     // of one of them (`Labels::enter`).
     let mut calls = labels::Labels::new(dialect, &text);
     let mut run: Option<Program> = None;
+    // The first block of the run that adds to the datum shift (`CYCL DEF 7.1 IX+10`,
+    // `ATRANS`): its line and text.
+    let mut adds: Option<(usize, String)> = None;
     for (k, raw) in text.lines().enumerate() {
         let mut rewritten = false;
         let line = k + 1;
@@ -1588,14 +1591,24 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     // Into another dialect also what the block restates (a cancel, a
                     // datum shift, with nothing active: the control may have something
                     // active); in its own, such a block stays as it stands.
+                    // A block that moves the datum and turns nothing, and read again moves it
+                    // again: it adds to the datum shift.
+                    let origin = |q: &Program| (q.shift, q.frame.translation);
+                    let adds_here = (origin(&p) != origin(&before)
+                        && p.frame.rotation == before.frame.rotation
+                        && matches!(p.line(dialect, block.as_bytes()),
+                            Ok((q, Remark::Applied)) if origin(&q) != origin(&p)))
+                    .then(|| (line, block.to_string()));
                     let written = if t.dialect == dialect {
                         write_change(t.dialect, t.form.as_bytes(), &before, &p, d, &mut buf)
                     } else if next.is_some_and(|n| joins(&before, &p, &n)) {
                         // Written with the next block.
                         run = run.or(Some(before));
+                        adds = adds.take().or(adds_here);
                         Ok((0, false))
                     } else {
                         let from = run.take().unwrap_or(before);
+                        let adds = adds.take().or(adds_here);
                         let text = block.as_bytes();
                         let form = t.form.as_bytes();
                         let w = write_block(t.dialect, form, &from, &p, text, d, &mut buf);
@@ -1675,7 +1688,19 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             relative: false,
                             ..p
                         };
-                        if p.relative && written && unsaid(&whole) {
+                        // Every target's datum shift is the shift reached (`G52`, `TRANS`,
+                        // `CYCL DEF 7` with absolute axes).
+                        if let (Some((line, block)), true) = (adds, written) {
+                            eprintln!(
+                                "cncrot: line {line}: the block adds to the active datum shift and is written as the shift it reaches in {} {}, so a loop that repeats the block does not add: {block}",
+                                input::dialect_name(t.dialect),
+                                t.form
+                            );
+                        }
+                        // (A block that moves the datum alone under such a tilt adds
+                        // nothing to it.)
+                        let turned = p.frame.rotation != from.frame.rotation;
+                        if p.relative && turned && written && unsaid(&whole) {
                             eprintln!(
                                 "cncrot: line {line}: the block adds to the active tilt and {} {} cannot say this increment: written as the plane it reaches, so a loop that repeats the block does not add: {block}",
                                 input::dialect_name(t.dialect),

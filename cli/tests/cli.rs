@@ -2188,6 +2188,35 @@ fn program_reads_direct_modes_through_the_machine() {
     assert_eq!(r.code, 1, "{}", r.stderr);
 }
 
+/// A block that adds to the datum shift (`CYCL DEF 7.1 IX+10`, `ATRANS`) is written as the
+/// shift it reaches (every target's datum shift block is absolute): standard error says so,
+/// since a loop that repeats it no longer adds (it was silent). An absolute shift, and a
+/// datum shift under a tilt set by `AROT` (which adds nothing to the tilt), say nothing.
+#[test]
+fn program_to_names_shift_increments() {
+    let prog = "LBL 1\nCYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 IX+10\nL X+0 Y+0 R0 FMAX\n\
+                CALL LBL 1 REP 2\nCYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+0\n";
+    let r = translate(prog, "heidenhain", "fanuc");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("line 3: the block adds to the active datum shift and is written as the shift it reaches in fanuc G68.2"),
+        "{}",
+        r.stderr
+    );
+    assert!(!r.stderr.contains("line 7"), "{}", r.stderr);
+    let r = translate("ATRANS X10\nG0 X0\nTRANS X5\n", "sinumerik", "heidenhain");
+    assert!(
+        r.stderr
+            .contains("line 1: the block adds to the active datum shift"),
+        "{}",
+        r.stderr
+    );
+    assert!(!r.stderr.contains("line 3"), "{}", r.stderr);
+    let r = translate("ROT Z30\nAROT Z10\nG58 X20 Y0 Z0\n", "twincat", "sinumerik");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(!r.stderr.contains("adds"), "{}", r.stderr);
+}
+
 /// A block that adds to the tilt, in a loop, is written as the target's increment, so that
 /// each pass adds: `PLANE RELATIV SPC+15` is `Rz(15°)`, G68.2's `I15. J0. K0.` as a `G68.4`;
 /// `SPB+30` is `I90. J30. K-90.`. Haas has no incremental `G268`: said on standard error.
