@@ -1688,6 +1688,28 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             relative: false,
                             ..p
                         };
+                        // Heidenhain's way for the rotary axes from now on, beside a turn
+                        // to the plane (`L A+Q120 C+Q122 R0 FMAX M126`): a machine parameter
+                        // elsewhere, no word of the block written for it.
+                        let rotary_m = (dialect == Dialect::Heidenhain)
+                            .then(|| {
+                                let code = block.split(';').next().unwrap_or("").to_uppercase();
+                                let words = code.split_whitespace().collect::<Vec<_>>();
+                                ["M126", "M127"].into_iter().find(|m| words.contains(m))
+                            })
+                            .flatten();
+                        if let (Some(m), true) = (rotary_m, written) {
+                            let how = if m == "M126" {
+                                "take"
+                            } else {
+                                "no longer take"
+                            };
+                            eprintln!(
+                                "cncrot: line {line}: {m} (the rotary axes {how} the shortest way from now on) has no word in {} {}: not written: {block}",
+                                input::dialect_name(t.dialect),
+                                t.form
+                            );
+                        }
                         // Every target's datum shift is the shift reached (`G52`, `TRANS`,
                         // `CYCL DEF 7` with absolute axes).
                         if let (Some((line, block)), true) = (adds, written) {

@@ -2188,6 +2188,23 @@ fn program_reads_direct_modes_through_the_machine() {
     assert_eq!(r.code, 1, "{}", r.stderr);
 }
 
+/// Heidenhain's `M126` beside the turn to the plane (the rotary axes take the shortest way
+/// from now on) has no word in a `G53.1` or a `CYCLE800`: standard error says so (it was
+/// dropped silently); within Heidenhain the block stays as it stands.
+#[test]
+fn program_to_names_the_rotary_axes_way() {
+    let prog = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY\nL A+Q120 C+Q122 R0 FMAX M126\n";
+    let r = translate(prog, "heidenhain", "fanuc");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("line 2: M126 (the rotary axes take the shortest way from now on) has no word in fanuc G68.2"),
+        "{}",
+        r.stderr
+    );
+    let r = translate(prog, "heidenhain", "heidenhain");
+    assert!(!r.stderr.contains("M126"), "{}", r.stderr);
+}
+
 /// A block that adds to the datum shift (`CYCL DEF 7.1 IX+10`, `ATRANS`) is written as the
 /// shift it reaches (every target's datum shift block is absolute): standard error says so,
 /// since a loop that repeats it no longer adds (it was silent). An absolute shift, and a
