@@ -1374,7 +1374,10 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
             .enumerate()
             .map(|(k, raw)| {
                 calls.enter(k, &mut q);
-                match q.line(dialect, raw.trim_end_matches('\r').as_bytes()) {
+                let raw = raw.trim_end_matches('\r');
+                let resolved = calls.params().resolve(raw, &q);
+                let source = resolved.as_ref().map_or(raw, |(t, _)| t.as_str());
+                match q.line(dialect, source.as_bytes()) {
                     Ok((next, Remark::Applied)) => {
                         q = next;
                         Some(next)
@@ -1384,8 +1387,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         None
                     }
                     Ok((_, Remark::NotFollowed)) => {
-                        let block = raw.trim_end_matches('\r');
-                        if let Some((c, _)) = cancel_beside(dialect, block, &q) {
+                        if let Some((c, _)) = cancel_beside(dialect, source, &q) {
                             q = c;
                         }
                         None
@@ -1427,7 +1429,14 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                 );
             }
         }
-        let (next, remark) = match p.line(dialect, block.as_bytes()) {
+        // A block that uses parameters the program sets once: read with their values
+        // (written so in a translation), said on standard error.
+        let resolved = calls.params().resolve(block, &p);
+        if let Some((_, used)) = &resolved {
+            eprintln!("cncrot: line {line}: read with {used}: {block}");
+        }
+        let source = resolved.as_ref().map_or(block, |(t, _)| t.as_str());
+        let (next, remark) = match p.line(dialect, source.as_bytes()) {
             Ok(r) => r,
             Err(e) => {
                 refused += 1;
@@ -1463,7 +1472,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
             Remark::NotFollowed => {
                 unfollowed += 1;
                 // A cancel beside what is not followed (`G69 G54`) still cancels.
-                let cancel = cancel_beside(dialect, block, &before);
+                let cancel = cancel_beside(dialect, source, &before);
                 let why = if cancel.is_some() {
                     "changes the frame in a way cncrot does not follow; its cancel is applied"
                 } else {
@@ -1486,7 +1495,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         &mut buf,
                     );
                     let mut rest_buf = [0u8; MAX_CHANGE];
-                    let kept = match rest(dialect, block.as_bytes(), &mut rest_buf) {
+                    let kept = match rest(dialect, source.as_bytes(), &mut rest_buf) {
                         Ok(n) => String::from_utf8_lossy(&rest_buf[..n]).into_owned(),
                         Err(_) => block.to_string(),
                     };
@@ -1574,7 +1583,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     // What the block holds besides the frame's words, kept as it stands.
                     let kept = {
                         let mut rest_buf = [0u8; MAX_CHANGE];
-                        match rest(dialect, block.as_bytes(), &mut rest_buf) {
+                        match rest(dialect, source.as_bytes(), &mut rest_buf) {
                             Ok(n) if n > 0 => {
                                 Some(String::from_utf8_lossy(&rest_buf[..n]).into_owned())
                             }
@@ -1596,7 +1605,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     let origin = |q: &Program| (q.shift, q.frame.translation);
                     let adds_here = (origin(&p) != origin(&before)
                         && p.frame.rotation == before.frame.rotation
-                        && matches!(p.line(dialect, block.as_bytes()),
+                        && matches!(p.line(dialect, source.as_bytes()),
                             Ok((q, Remark::Applied)) if origin(&q) != origin(&p)))
                     .then(|| (line, block.to_string()));
                     let written = if t.dialect == dialect {
@@ -1609,7 +1618,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     } else {
                         let from = run.take().unwrap_or(before);
                         let adds = adds.take().or(adds_here);
-                        let text = block.as_bytes();
+                        let text = source.as_bytes();
                         let form = t.form.as_bytes();
                         let w = write_block(t.dialect, form, &from, &p, text, d, &mut buf);
                         // A choice the target has no word for: the same text with the

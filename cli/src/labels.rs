@@ -6,6 +6,7 @@
 //! order of the file, the program would keep the tilt it had before the call, and a
 //! translation would turn the axes back to it before the next tilt.
 
+use crate::params::Params;
 use cncrot::dialects::program::{AxisChoice, Dialect, Feed, Positioning, Program, Remark, Retract};
 
 /// Nested calls followed at most this deep (a label that calls itself stops there).
@@ -61,6 +62,8 @@ pub struct Labels {
     defined: Vec<(String, usize)>,
     /// (the label's line, the call's line, the state at the call), in the order called.
     entered: Vec<(usize, usize, Program)>,
+    /// The parameters the program sets once (a label's blocks are read with them too).
+    params: Params,
 }
 
 impl Labels {
@@ -84,7 +87,13 @@ impl Labels {
             lines,
             defined,
             entered: Vec::new(),
+            params: Params::scan(dialect, text),
         }
+    }
+
+    /// The parameters the program sets once to a number.
+    pub fn params(&self) -> &Params {
+        &self.params
     }
 
     /// Before line `k` (0-based) is read: a subprogram reached after a call to it is read
@@ -158,7 +167,9 @@ impl Labels {
                 let Some(line) = self.lines.get(i) else {
                     continue;
                 };
-                if let Ok((next, Remark::Applied)) = p.line(self.dialect, line.as_bytes()) {
+                let resolved = self.params.resolve(line, p);
+                let text = resolved.as_ref().map_or(line.as_str(), |(t, _)| t.as_str());
+                if let Ok((next, Remark::Applied)) = p.line(self.dialect, text.as_bytes()) {
                     *p = next;
                 }
                 if depth < DEPTH {

@@ -8,6 +8,7 @@ mod commands;
 mod input;
 mod labels;
 mod output;
+mod params;
 mod svg;
 
 use clap::{Args, Parser, Subcommand};

@@ -2188,6 +2188,66 @@ fn program_reads_direct_modes_through_the_machine() {
     assert_eq!(r.code, 1, "{}", r.stderr);
 }
 
+/// A parameter the program sets once, to a number, is read where a tilt uses it (the
+/// library reads numbers only, and refused these blocks): `SPB+Q1` with `FN 0: Q1 = +30`
+/// is SPB+30, tool direction (sin 30°, 0, cos 30°); `J-#1` with `#1=30.` is J-30; `_C` of
+/// `-ROT1` with `DEF REAL ROT1` and `ROT1=15` is -15. A parameter set twice (`#3`), by an
+/// expression (`R5=R5+1`) or overwritten by a function (`CalcInvRot[R1; …]`) is not known:
+/// the block stays refused.
+#[test]
+fn program_reads_parameters_set_once() {
+    let r = cncrot(
+        &["program", "-", "--dialect", "heidenhain"],
+        "FN 0: Q1 = +30\nPLANE SPATIAL SPA+0 SPB+Q1 SPC+0 TURN FMAX\n",
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(
+        r.stdout.contains("tool direction: 0.5000 0.0000 0.8660"),
+        "{}",
+        r.stdout
+    );
+    assert!(
+        r.stderr.contains("line 2: read with Q1 = +30 (line 1)"),
+        "{}",
+        r.stderr
+    );
+    assert_eq!(
+        program_to(
+            "#1=30.\nG68.2 X0 Y0 Z0 I0 J-#1 K0 (#1 IS THE TILT)\n",
+            "fanuc",
+            "heidenhain"
+        ),
+        [
+            "#1=30.",
+            "PLANE SPATIAL SPA-30 SPB+0 SPC+0 STAY ; #1 IS THE TILT"
+        ]
+    );
+    assert_eq!(
+        program_to(
+            "DEF REAL ROT1\nROT1=15\nCYCLE800(0,\"\",0,57,0,0,0,0,0,-ROT1,0,0,0,0,0,0)\n",
+            "sinumerik",
+            "fanuc"
+        )[2],
+        // `_C` -15: Rz(-15°), Euler Z-X-Z (-15°, 0, 0).
+        "G68.2 X0. Y0. Z0. I-15. J0. K0."
+    );
+    for (prog, dialect) in [
+        ("#3=1\n#3=2\nG68.2 I#3\n", "fanuc"),
+        (
+            "R5=1\nR5=R5+1\nCYCLE800(0,\"\",0,57,0,0,0,0,R5,0,0,0,0,0,0,0)\n",
+            "sinumerik",
+        ),
+        (
+            "N10 R1=30\nN30 CalcInvRot[R1; R2; R3]\nN40 ROT Z=R1\n",
+            "twincat",
+        ),
+    ] {
+        let r = cncrot(&["program", "-", "--dialect", dialect], prog);
+        assert_eq!(r.code, 1, "{prog}: {}", r.stdout);
+        assert!(r.stdout.contains("error"), "{prog}: {}", r.stdout);
+    }
+}
+
 /// Heidenhain's `M126` beside the turn to the plane (the rotary axes take the shortest way
 /// from now on) has no word in a `G53.1` or a `CYCLE800`: standard error says so (it was
 /// dropped silently); within Heidenhain the block stays as it stands.
