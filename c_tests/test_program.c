@@ -1006,6 +1006,11 @@ static void kept_words(void) {
       {CNCROT_DIALECT_HAAS, "G0 G269 G90", "G0 G90"},
       {CNCROT_DIALECT_SYNTEC, "G1 G158 L1 P10 X0 Y0 Z0 A0 B30 C0 F100.", "G1 F100."},
       {CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN F1000", ""},
+      /* The turn to the plane keeps its M functions but the rotary axes' M126/M127. */
+      {CNCROT_DIALECT_HEIDENHAIN, "2 L B+Q121 C+Q122 R0 FMAX M3 M126 ; SPINDLE", "M3"},
+      {CNCROT_DIALECT_HEIDENHAIN, "L A+Q120 C+Q122 R0 FMAX M126", ""},
+      {CNCROT_DIALECT_HEIDENHAIN, "M3 M8", "M3 M8"},
+      {CNCROT_DIALECT_HEIDENHAIN, "L X+10 R0 FMAX M3", ""},
       {CNCROT_DIALECT_SINUMERIK, "N10 CYCLE800()", ""},
   };
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {

@@ -2238,7 +2238,10 @@ int32_t cncrot_program_write_change(const struct cncrot_program *before,
  * repeated unchanged restates nothing (an empty text). A block that adds to the tilt is
  * written as the target's increment with the block's own numbers (read again on a state
  * with nothing active: `PLANE RELATIV SPC+15` is `G68.4 … I15. J0. K0.` in the shortest
- * exact numbers, where the two states alone give `I14.999999999999996`).
+ * exact numbers, where the two states alone give `I14.999999999999996`). A block that
+ * keeps the tilt and states no way of moving (a datum shift under a plane that turned the
+ * axes) is written as moving nothing: the tilt written again around the shift stays
+ * (`G68.2` without `G53.1`, `CYCLE800` with `_FR` 0 and `_DIR` 0).
  *
  * Returns as `cncrot_program_write_change`, and `CNCROT_STATUS_NULL_POINTER` for a NULL
  * `line`, `CNCROT_STATUS_LINE_TOO_LONG` for a `len` longer than the dialect of `after`
@@ -2272,10 +2275,12 @@ int32_t cncrot_program_write_block(const struct cncrot_program *before,
  * number). Without them a translation drops a retract (`G91 G28 Z0.` of
  * `G91 G28 Z0. G69`) or a feed (`N40 G1 F300.` of `N40 G1 G68.2 … F300.`). Also for the
  * first block of two that `cncrot_program_joins` writes as one. An empty text where
- * nothing but the block number and comments is left, and for SINUMERIK, Heidenhain and
- * TwinCAT, whose readers refuse other words beside a frame command; a block without a
- * frame command is left whole (up to a NUL byte, which ends it). `out` receives the text
- * NUL-terminated.
+ * nothing but the block number and comments is left, and for SINUMERIK and TwinCAT, whose
+ * readers refuse other words beside a frame command; a block without a frame command is
+ * left whole (up to a NUL byte, which ends it). Heidenhain's rest is the M functions of the
+ * turn to the plane (`M3` of `L B+Q121 C+Q122 R0 FMAX M3`; not `M126`/`M127`, the rotary
+ * axes' way, a machine parameter elsewhere) or of a block of M functions alone, else empty.
+ * `out` receives the text NUL-terminated.
  *
  * No allocation, no panic, time linear in `len`.
  *

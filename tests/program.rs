@@ -2736,6 +2736,9 @@ fn heidenhain_turns_to_the_plane_through_q120_to_q122() {
         ("56 L A+Q120 C+Q122 R0 FMAX M126", (Feed::Rapid, 0.0)),
         ("56 L B+Q121 C+Q122 F MAX", (Feed::Rapid, 0.0)),
         ("L A+Q120 B+Q121 C+Q122 R0 F500 ; turn", (Feed::Rate, 500.0)),
+        // The spindle and coolant switched on the same block: still the turn (a translation
+        // keeps `M3 M8` as the block's rest).
+        ("L A+Q120 C+Q122 R0 FMAX M3 M8", (Feed::Rapid, 0.0)),
     ] {
         let p = remarks(Dialect::Heidenhain, &[(tilt, A), (turn, A)]);
         let before = read(Dialect::Heidenhain, &[tilt]);
@@ -2750,7 +2753,7 @@ fn heidenhain_turns_to_the_plane_through_q120_to_q122() {
     for other in [
         "L A+Q121 C+Q122 R0 FMAX",
         "L X+10 A+Q120 R0 FMAX",
-        "L A+Q120 C+Q122 R0 FMAX M3",
+        "L A+Q120 C+Q122 R0 FMAX M3.5",
         "L A+0 C+90 R0 FMAX",
         "L R0 FMAX",
     ] {
@@ -2789,6 +2792,54 @@ fn heidenhain_turns_to_the_plane_through_q120_to_q122() {
     )
     .unwrap();
     assert_eq!(&buf[..n], b"G68.2 X0. Y0. Z0. I0. J0. K0.\nG53.1\nG69");
+}
+
+/// A datum shift under a plane that turned the axes (`PLANE … TURN MB MAX`, then cycle 7)
+/// moves no rotary axis on the control: the shift is no positioning block. Written into a
+/// target that says the shift beside the plane again, the plane again stays where it is:
+/// Fanuc's `G68.2` without `G53.1`, SINUMERIK's `CYCLE800` with `_FR` 0 and `_DIR` 0 (no
+/// retraction, no swivel). It was written with the state's `TURN MB MAX` (a helper's find:
+/// `CYCLE800(4,…,1,…)`, a retraction to the travel end and a swivel at a datum shift). The
+/// shift is (10·cos 30°, 0, −10·sin 30°), the tilted X' of SPB+30.
+#[test]
+fn a_shift_under_a_turned_plane_turns_nothing() {
+    let d = Dialect::Heidenhain;
+    let before = read(
+        d,
+        &[
+            "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ+",
+            "CYCL DEF 7.0 DATUM SHIFT",
+        ],
+    );
+    let text = b"CYCL DEF 7.1 X+10";
+    let (after, _) = before.line(d, text).unwrap();
+    assert_eq!(after.positioning, Positioning::Turn);
+    let mut buf = [0u8; 1024];
+    let (n, _) = write_block(Dialect::Fanuc, b"G68.2", &before, &after, text, 4, &mut buf).unwrap();
+    assert_eq!(
+        &buf[..n],
+        b"G69\nG52 X8.6603 Y0. Z-5.\nG68.2 X0. Y0. Z0. I90. J30. K-90."
+    );
+    let (n, _) = write_block(
+        Dialect::Sinumerik,
+        b"CYCLE800",
+        &before,
+        &after,
+        text,
+        4,
+        &mut buf,
+    )
+    .unwrap();
+    assert_eq!(
+        &buf[..n],
+        b"CYCLE800(0,\"\",0,57,8.6603,0,-5,0,30,0,0,0,0,0,0,0)"
+    );
+    // The plane itself still turns, as before.
+    let p0 = Program::default();
+    let plane = b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ+";
+    let (p1, _) = p0.line(d, plane).unwrap();
+    let (n, _) = write_block(Dialect::Fanuc, b"G68.2", &p0, &p1, plane, 4, &mut buf).unwrap();
+    assert_eq!(&buf[..n], b"G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1");
 }
 
 /// The iTNC 530 manual's table of `SEQ` on an A/C table machine (A about X carrying C about

@@ -1204,18 +1204,22 @@ fn block_number(block: &str, from: Dialect) -> Option<String> {
     (!digits.is_empty() && ends).then(|| format!("{}{digits}", &b[..1]))
 }
 
-/// The comments of a block of a `from` program (`( … )` in the ISO-style dialects and
-/// TwinCAT, `;` to the end of the line in all), their texts joined by a space; `None`
-/// without one. SINUMERIK's strings (`"TC1"`) are no comment, whatever they hold.
-fn comments(block: &str, from: Dialect) -> Option<String> {
+/// A block of a `from` program split into its code and its comments (`( … )` in the
+/// ISO-style dialects and TwinCAT, `;` to the end of the line in all): the code as it
+/// stands without them, and the comments' texts joined by a space (`None` without one).
+/// SINUMERIK's strings (`"TC1"`) are no comment, whatever they hold.
+fn split_comments(block: &str, from: Dialect) -> (String, Option<String>) {
     let parens = !matches!(from, Dialect::Sinumerik | Dialect::Heidenhain);
-    let mut found: Vec<String> = Vec::new();
+    let (mut code, mut found) = (String::new(), Vec::new());
     let mut chars = block.char_indices();
     let mut quoted = false;
     while let Some((at, c)) = chars.next() {
         match c {
-            '"' if from == Dialect::Sinumerik => quoted = !quoted,
-            _ if quoted => {}
+            '"' if from == Dialect::Sinumerik => {
+                quoted = !quoted;
+                code.push(c);
+            }
+            _ if quoted => code.push(c),
             ';' => {
                 found.push(block[at + 1..].to_string());
                 break;
@@ -1227,8 +1231,9 @@ fn comments(block: &str, from: Dialect) -> Option<String> {
                     .take_while(|&c| c != ')')
                     .collect();
                 found.push(text);
+                code.push(' ');
             }
-            _ => {}
+            _ => code.push(c),
         }
     }
     let text = found
@@ -1236,7 +1241,29 @@ fn comments(block: &str, from: Dialect) -> Option<String> {
         .flat_map(|t| t.split_whitespace())
         .collect::<Vec<_>>()
         .join(" ");
-    (!text.is_empty()).then_some(text)
+    (code, (!text.is_empty()).then_some(text))
+}
+
+/// The comments of a block (see [`split_comments`]).
+fn comments(block: &str, from: Dialect) -> Option<String> {
+    split_comments(block, from).1
+}
+
+/// What a translation keeps of a block (its rest), written with the target's comments: a
+/// parenthesis is no comment in SINUMERIK or Heidenhain, a `;` ends an ISO block. `None`
+/// where nothing is left.
+fn kept_in(kept: &str, from: Dialect, to: Dialect) -> Option<String> {
+    let parens = |d: Dialect| !matches!(d, Dialect::Sinumerik | Dialect::Heidenhain);
+    if parens(from) == parens(to) {
+        return Some(kept.to_string());
+    }
+    let (code, note) = split_comments(kept, from);
+    let code = code.split_whitespace().collect::<Vec<_>>().join(" ");
+    match (code.is_empty(), note.map(|n| comment_in(&n, to))) {
+        (true, note) => note,
+        (false, Some(n)) => Some(format!("{code} {n}")),
+        (false, None) => Some(code),
+    }
 }
 
 /// `text` as a comment of `to`'s, to stand at the end of a block: `(TEXT)` where a comment
@@ -1496,7 +1523,10 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     );
                     let mut rest_buf = [0u8; MAX_CHANGE];
                     let kept = match rest(dialect, source.as_bytes(), &mut rest_buf) {
-                        Ok(n) => String::from_utf8_lossy(&rest_buf[..n]).into_owned(),
+                        Ok(n) => {
+                            kept_in(&String::from_utf8_lossy(&rest_buf[..n]), dialect, t.dialect)
+                                .unwrap_or_default()
+                        }
                         Err(_) => block.to_string(),
                     };
                     match written {
@@ -1584,9 +1614,11 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     let kept = {
                         let mut rest_buf = [0u8; MAX_CHANGE];
                         match rest(dialect, source.as_bytes(), &mut rest_buf) {
-                            Ok(n) if n > 0 => {
-                                Some(String::from_utf8_lossy(&rest_buf[..n]).into_owned())
-                            }
+                            Ok(n) if n > 0 => kept_in(
+                                &String::from_utf8_lossy(&rest_buf[..n]),
+                                dialect,
+                                t.dialect,
+                            ),
                             _ => None,
                         }
                     };
@@ -1596,7 +1628,13 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     };
                     // The block's comment (`(TILT FRONT)`, `; ORIENT TOOL`), which the
                     // rest leaves out, in the target's own form on the block written for it.
-                    let note = comments(block, dialect).map(|c| comment_in(&c, t.dialect));
+                    // (Kept already where the rest holds it: `N50 G90 (TILT)`.)
+                    let note = comments(block, dialect)
+                        .filter(|_| {
+                            kept.as_ref()
+                                .map_or(true, |k| comments(k, dialect).is_none())
+                        })
+                        .map(|c| comment_in(&c, t.dialect));
                     // Into another dialect also what the block restates (a cancel, a
                     // datum shift, with nothing active: the control may have something
                     // active); in its own, such a block stays as it stands.
@@ -1609,7 +1647,21 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             Ok((q, Remark::Applied)) if origin(&q) != origin(&p)))
                     .then(|| (line, block.to_string()));
                     let written = if t.dialect == dialect {
-                        write_change(t.dialect, t.form.as_bytes(), &before, &p, d, &mut buf)
+                        // What changes is written as `write_block` writes it (a datum shift
+                        // under a tilt does not turn the axes again).
+                        let form = t.form.as_bytes();
+                        match write_change(t.dialect, form, &before, &p, d, &mut buf) {
+                            Ok((0, s)) => Ok((0, s)),
+                            _ => write_block(
+                                t.dialect,
+                                form,
+                                &before,
+                                &p,
+                                source.as_bytes(),
+                                d,
+                                &mut buf,
+                            ),
+                        }
                     } else if next.is_some_and(|n| joins(&before, &p, &n)) {
                         // Written with the next block.
                         run = run.or(Some(before));
@@ -1640,8 +1692,13 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             })
                         };
                         let written = w.is_ok_and(|(len, _)| len > 0);
+                        // Whether the rotary axes turn at this block: a way of moving stated,
+                        // or another tilt under the one kept (a datum shift under a tilt
+                        // turns nothing).
+                        let turns = from.positioning != p.positioning
+                            || (from.frame.rotation, from.direct) != (p.frame.rotation, p.direct);
                         if let Some(choice) = opposite {
-                            if written && unsaid(&Program { choice, ..p }) {
+                            if written && turns && unsaid(&Program { choice, ..p }) {
                                 eprintln!(
                                     "cncrot: line {line}: the choice of solution ({}) has no word in {} {}: the control chooses by its own rule: {block}",
                                     choice_name(p.choice),
@@ -1652,8 +1709,6 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         }
                         // A turn of the rotary axes to the plane the target has no word for
                         // (`ROT`, `G158`): the same text as staying where they are.
-                        let turns = from.positioning != p.positioning
-                            || (from.frame, from.direct) != (p.frame, p.direct);
                         let still = Program {
                             positioning: Positioning::Stay,
                             retract: Retract::None,

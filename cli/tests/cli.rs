@@ -1724,6 +1724,38 @@ fn program_to_keeps_comments() {
         program_to(prog, "sinumerik", "fanuc"),
         ["G68.2 X0. Y0. Z0. I90. J30. K-90.", "G69 (RESET)"]
     );
+    // The words kept beside a tilt hold their comment in the target's form: a parenthesis
+    // is no comment in SINUMERIK (it was copied so).
+    assert_eq!(
+        program_to(
+            "N50 G90 G68.2 X0 Y0 Z0 I0 J30 K0 (TILT)\n",
+            "fanuc",
+            "sinumerik"
+        ),
+        [
+            "N50 G90 ; TILT",
+            "CYCLE800(0,\"\",0,57,0,0,0,30,0,0,0,0,0,0,0,0)"
+        ]
+    );
+}
+
+/// A spindle or coolant M function on Heidenhain's turn to the plane (`L B+Q121 C+Q122 R0
+/// FMAX M3`) leaves the block the turn it is: it was passed over as a move, so the target got
+/// no `G53.1` (the axes never turned) and the TNC's `Q121`/`Q122` copied as they stood. The
+/// M function is kept on a line before the turn (the TNC switches it at the block's start).
+#[test]
+fn program_to_keeps_the_m_functions_of_a_turn() {
+    let prog = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY SEQ+\nL B+Q121 C+Q122 R0 FMAX M3\n\
+                L X+0 Y+0 R0 FMAX\n";
+    assert_eq!(
+        program_to(prog, "heidenhain", "fanuc"),
+        [
+            "M3",
+            "G68.2 X0. Y0. Z0. I90. J30. K-90.",
+            "G53.1",
+            "L X+0 Y+0 R0 FMAX"
+        ]
+    );
 }
 
 /// A cancel beside a work offset (`G69 G55`) still cancels: the block is not followed as a
@@ -1957,7 +1989,7 @@ fn program_to_carries_twincats_zero_offset_shift() {
 
 /// A command spread over lines is written as one in the target: cycle 7's axis lines as one
 /// `G52`, a `PLANE … STAY` and the block that turns to it as one `G68.2` with its `G53.1`;
-/// under the tilt, the shift reset once (not once per axis). By hand: `SPB+30` is `Ry(30°)`
+/// under the tilt, the shift reset once (not once per axis), the tilt again without a turn. By hand: `SPB+30` is `Ry(30°)`
 /// = `Rz(90°)·Rx(30°)·Rz(−90°)`, Fanuc's `I90. J30. K-90.`. `SEQ-` has no word in `G68.2`:
 /// said on standard error.
 #[test]
@@ -1976,8 +2008,8 @@ fn program_to_joins_commands_spread_over_lines() {
             "L X+0 Y+0 R0 FMAX",
             "G69",
             "G52 X0. Y0. Z0.",
+            // The tilt again around the shift: the axes are there already (no `G53.1`).
             tilt,
-            "G53.1",
             "G69"
         ]
     );
@@ -2246,6 +2278,32 @@ fn program_reads_parameters_set_once() {
         assert_eq!(r.code, 1, "{prog}: {}", r.stdout);
         assert!(r.stdout.contains("error"), "{prog}: {}", r.stdout);
     }
+}
+
+/// A datum shift under a plane that turned the axes moves nothing on the control: its
+/// translation writes the plane again without a turn (no `G53.1`), and says nothing of a turn,
+/// retraction or choice the shift does not make (a helper's find: `G53.1` again and "retract the
+/// tool before this block" at `CYCL DEF 7.1 X+10`).
+#[test]
+fn program_to_turns_nothing_at_a_shift_under_a_tilt() {
+    let prog = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ+\nL Z+2 R0 FMAX\n\
+                CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+10\nPLANE RESET STAY\n";
+    let r = translate(prog, "heidenhain", "fanuc");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(
+        r.stdout.lines().collect::<Vec<_>>(),
+        [
+            "G68.2 X0. Y0. Z0. I90. J30. K-90.",
+            "G53.1",
+            "L Z+2 R0 FMAX",
+            "G69",
+            "G52 X8.6603 Y0. Z-5.",
+            "G68.2 X0. Y0. Z0. I90. J30. K-90.",
+            "G69"
+        ]
+    );
+    assert!(!r.stderr.contains("line 4"), "{}", r.stderr);
+    assert!(r.stderr.contains("line 1: the retraction"), "{}", r.stderr);
 }
 
 /// Heidenhain's `M126` beside the turn to the plane (the rotary axes take the shortest way

@@ -560,7 +560,21 @@ fn translated(
                 && (0..3)
                     .any(|i| (0..3).any(|j| p.rotation[3 * i + j] != f64::from(u8::from(i == j))))
         };
-        if says && rotated(after) && rotated(state) {
+        // A block that keeps the tilt and changes no way of moving (a datum shift under a
+        // plane that turned the axes) moves nothing: written as staying, it may read back so.
+        let motion = |p: &cncrot_program| {
+            (
+                p.positioning,
+                p.retract,
+                p.retract_mm.to_bits(),
+                p.feed,
+                p.feed_mm_min.to_bits(),
+            )
+        };
+        let still = (before.rotation, before.active) == (after.rotation, after.active)
+            && motion(before) == motion(after)
+            && motion(state) == (0, CNCROT_RETRACT_NONE, 0, CNCROT_FEED_RAPID, 0);
+        if says && rotated(after) && rotated(state) && !still {
             assert_eq!(
                 state.positioning, after.positioning,
                 "{form:?} in dialect {dialect}: {text}"
@@ -573,7 +587,7 @@ fn translated(
             [CNCROT_CHOOSE_POSITIVE_TURN, CNCROT_CHOOSE_NEGATIVE_TURN].contains(&after.choice);
         let worded = (*dialect == 2 && sided)
             || (says && *dialect != 2 && turning && after.positioning != 0);
-        if worded && after.reference_axis == 0 && rotated(after) && rotated(state) {
+        if worded && after.reference_axis == 0 && rotated(after) && rotated(state) && !still {
             assert_eq!(
                 (state.choice, state.reference_axis),
                 (after.choice, 0),
@@ -584,7 +598,7 @@ fn translated(
         // CYCLE800's _FR and _FR_I; a retraction along machine Z is MB MAX in a PLANE), the
         // feed in a PLANE.
         let cycle800 = form.to_bytes().starts_with(b"CYCLE800");
-        if (*dialect == 2 || cycle800) && rotated(after) && rotated(state) {
+        if (*dialect == 2 || cycle800) && rotated(after) && rotated(state) && !still {
             let machine_z = [CNCROT_RETRACT_MACHINE_Z, CNCROT_RETRACT_MACHINE_Z_XY];
             let want = if *dialect == 2 && machine_z.contains(&after.retract) {
                 CNCROT_RETRACT_TOOL_MAX

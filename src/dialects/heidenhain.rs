@@ -575,9 +575,10 @@ pub fn cycle_head(block: &[u8]) -> bool {
 /// the plane that CAM output writes after `PLANE … STAY` and cycle 19 \[doc: `STAY` "saves
 /// the positions in Q120 to Q122", to be approached in a separate positioning block\].
 /// Each letter with its own parameter (A Q120, B Q121, C Q122), besides them only `R0`, the
-/// feed (`FMAX`, `F MAX`, `F n`, `F AUTO`) and `M126`/`M127` (which way a rotary axis
-/// turns). Returns the feed, or `None` for any other block (an `L` with `X`, another
-/// parameter, a spindle M function: passed over as a move). Not inlined (stack bound).
+/// feed (`FMAX`, `F MAX`, `F n`, `F AUTO`) and M functions (`M126`/`M127`: which way a
+/// rotary axis turns; `M3`, `M8`: switched at the block's start, kept by a translator as
+/// the block's rest). Returns the feed, or `None` for any other block (an `L` with `X`,
+/// another parameter: passed over as a move). Not inlined (stack bound).
 #[inline(never)]
 fn turn_to_plane(c: &mut Cursor) -> Option<(Feed, f64)> {
     if !c.keyword(b"L") {
@@ -613,8 +614,15 @@ fn turn_to_plane(c: &mut Cursor) -> Option<(Feed, f64)> {
                     _ => return None,
                 }
             };
-        } else if !(c.code(b"R0") || c.code(b"M126") || c.code(b"M127")) {
-            // A word beyond the turn's (R0 and the rotary M functions change nothing).
+        } else if c.word(b"M") {
+            // An M function (`M126`: which way the rotary axes turn; `M3`, `M8`: the spindle,
+            // the coolant, switched at the block's start): the block still turns the axes.
+            match c.number(SYNTAX) {
+                Ok(m) if m >= 0.0 && m == crate::math::round(m) => {}
+                _ => return None,
+            }
+        } else if !c.code(b"R0") {
+            // A word beyond the turn's (R0 changes nothing).
             return None;
         }
     }
@@ -751,11 +759,56 @@ pub(crate) const HEIDENHAIN_PATH: super::family::PathWords = {
     }
 };
 
+/// The M functions of a block (after its line number, before its comment) as they stand,
+/// joined by a blank, the rotary axes' `M126`/`M127` left out (no other control has them:
+/// a machine parameter there), when the block is the turn to the plane or holds nothing
+/// else; whether one was written. What a translator keeps of a turn block: `M3` of
+/// `L B+Q121 C+Q122 R0 FMAX M3`.
+fn m_functions(text: &[u8], out: &mut Out) -> bool {
+    let mut c = Cursor::new(text);
+    past_block_number(&mut c);
+    let start = c.column().saturating_sub(1);
+    let turn = turn_to_plane(&mut c).is_some();
+    let code = text.get(start..).unwrap_or(&[]);
+    let code = code.split(|&b| b == b';').next().unwrap_or(&[]);
+    let words = || {
+        code.split(|b| b.is_ascii_whitespace())
+            .filter(|w| !w.is_empty())
+    };
+    let m_word = |w: &[u8]| {
+        w.len() > 1
+            && matches!(w.first(), Some(b'M' | b'm'))
+            && w.iter().skip(1).all(u8::is_ascii_digit)
+    };
+    if !(turn || words().all(m_word)) {
+        return false;
+    }
+    let kept = |w: &[u8]| {
+        let digits = w.get(1..).unwrap_or(&[]);
+        let digits = &digits[digits.iter().take_while(|&&b| b == b'0').count()..];
+        m_word(w) && digits != b"126" && digits != b"127"
+    };
+    let mut written = false;
+    for w in words().filter(|w| kept(w)) {
+        if written {
+            out.byte(b' ');
+        }
+        out.text(w);
+        written = true;
+    }
+    written
+}
+
 impl Family for Heidenhain {
     const TOOL_PATH: Option<&'static super::family::PathWords> = Some(&HEIDENHAIN_PATH);
     const MAX_LINE: usize = 254;
     const KEEPS_SHIFT: bool = true;
     const POSITIONING_IN_BLOCK: bool = true;
+
+    fn rest(text: &[u8], out: &mut Out) -> bool {
+        m_functions(text, out)
+    }
+
     const FORMS: &'static [FormInfo] = &[
         FormInfo {
             form: Form::PlaneSpatial,

@@ -778,6 +778,9 @@ pub(crate) fn change_length_with(
 /// a state where the tilt, or the shift, is something else: a block that leaves no tilt
 /// there is a cancel, one that changes the shift there sets it. A block that only names a
 /// cycle (`CYCL DEF 7.0`) or a tilt repeated unchanged restates nothing: an empty text.
+/// A block that keeps the tilt and states no way of moving (a datum shift under a plane
+/// that turned the axes) is written as moving nothing: the tilt written again around the
+/// shift stays where it is, without the turn or retraction the state keeps.
 /// Refused as [`write_change`].
 ///
 /// ```
@@ -806,12 +809,54 @@ pub fn write_block(
     let mut from = *before;
     restate(&mut from, after, text);
     let step = added_step(&from, after, text);
+    // A block that moves no rotary axis is written so: the tilt again after a datum shift
+    // under it stays where it is, whatever way of moving the state keeps from the tilt.
+    let stays;
+    let after = if moves_nothing(&from, after, text) {
+        stays = Program {
+            positioning: Positioning::Stay,
+            retract: Retract::None,
+            retract_mm: 0.0,
+            feed: Feed::Rapid,
+            feed_mm_min: 0.0,
+            ..*after
+        };
+        &stays
+    } else {
+        after
+    };
     let c = Change {
         before: &from,
         after,
         step: step.as_ref(),
     };
     write_change_with(dialect, &spec, &c, decimals, buf)
+}
+
+/// Whether the block `text`, read from `from` to `after`, moves no rotary axis although
+/// the state keeps a way of moving (`TURN`, `G53.1`) from the tilt before it: the tilt is
+/// the same, and read on a state that stays, the block stays (a datum shift under
+/// `PLANE … TURN` — cycle 7's lines, `TRANS DATUM`, `G52` — states no way of moving; the
+/// tilt written again around it must not turn or retract again, where the control moves
+/// nothing). Not inlined, like [`leaves_untilted`] (stack bound).
+#[inline(never)]
+fn moves_nothing(from: &Program, after: &Program, text: &[u8]) -> bool {
+    let Some(dialect) = after.dialect else {
+        return false;
+    };
+    let same_tilt = (from.frame.rotation, from.direct) == (after.frame.rotation, after.direct);
+    if !same_tilt || after.positioning == Positioning::Stay {
+        return false;
+    }
+    let still = Program {
+        positioning: Positioning::Stay,
+        retract: Retract::None,
+        retract_mm: 0.0,
+        feed: Feed::Rapid,
+        feed_mm_min: 0.0,
+        ..of_no_dialect(from)
+    };
+    matches!(still.line(dialect, text), Ok((q, Remark::Applied)) if q.positioning == Positioning::Stay)
 }
 
 /// The words of a block of a `dialect` program that are not the frame's, as they stand:
@@ -821,8 +866,10 @@ pub fn write_block(
 /// retract (`G91 G28 Z0.` of `G91 G28 Z0. G69`) or a feed (`N40 G1 F300.` of
 /// `N40 G1 G68.2 … F300.`). Empty where nothing but the block number and comments is left,
 /// and in the dialects whose readers refuse other words beside a frame command (SINUMERIK,
-/// Heidenhain, TwinCAT). A block that holds no frame command is left whole (up to a NUL
-/// byte, which ends it as it ends a C string).
+/// TwinCAT). A block that holds no frame command is left whole (up to a NUL byte, which
+/// ends it as it ends a C string). Heidenhain's: the M functions of the turn to the plane
+/// (`M3` of `L B+Q121 C+Q122 R0 FMAX M3`, switched at the block's start; not `M126`/`M127`,
+/// the rotary axes' way, which no other control writes) or of a block of M functions alone.
 ///
 /// Errors: [`Error::LineTooLong`] (a text longer than the dialect reads, with a line end),
 /// [`Error::NoRoom`] (`buf` too small: the text's length always suffices).
