@@ -30,7 +30,8 @@
 %     the order given: a Heidenhain CALL LBL is passed over, not followed through its
 %     label, and a cancel beside a block not followed (G69 G55) stays in it as it stands
 %     (the command line's 'cncrot program --to' follows the call, writes the cancel and
-%     keeps a tilt block's number and comment).
+%     keeps a tilt block's number and comment, reads parameters set once to a number,
+%     and names a turn or retraction the target has no word for).
 %   remarks (N-by-1 cell): 'applied', 'passed' or 'not followed' as cncrot_program_lines
 %   says; a 'not followed' block changes the frame in a way the library does not follow
 %   and is not translated. state: the source program's state after the last block.

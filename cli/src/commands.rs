@@ -1359,6 +1359,8 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     let (mut applied, mut passed, mut unfollowed, mut refused) = (0, 0, 0, 0);
     // Blocks read but not written in the target (its form has no words for the change).
     let mut uncarried = 0;
+    // Blocks written without a turn, a tip kept in place or a retraction the source has.
+    let mut moved_otherwise = 0;
     // A block refused since the last one that set the frame: the control's tilt is not the
     // state's, and a block that only turns the axes to it (`G53.1`) cannot be carried across.
     let mut lost = false;
@@ -1717,9 +1719,46 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             feed_mm_min: 0.0,
                             ..p
                         };
-                        if p.positioning != Positioning::Stay && turns && unsaid(&still) {
+                        let turn_lost =
+                            p.positioning != Positioning::Stay && turns && unsaid(&still);
+                        if turn_lost {
                             eprintln!(
                                 "cncrot: line {line}: the turn of the rotary axes to the plane has no word in {} {}: not written: the rotary axes stay where they are until the program moves them: {block}",
+                                input::dialect_name(t.dialect),
+                                t.form
+                            );
+                        }
+                        // A turn that keeps the tool tip in place (`MOVE`, `G53.6`) the target
+                        // says only as a turn about the pivot (`G253`): the linear axes stay.
+                        let pivot = Program {
+                            positioning: Positioning::Turn,
+                            ..p
+                        };
+                        let tip_lost = !turn_lost
+                            && p.positioning == Positioning::Move
+                            && turns
+                            && unsaid(&pivot);
+                        if tip_lost {
+                            eprintln!(
+                                "cncrot: line {line}: the turn that keeps the tool tip in place (the linear axes following) has no word in {} {}: written as a turn about the pivot, the linear axes staying: {block}",
+                                input::dialect_name(t.dialect),
+                                t.form
+                            );
+                        }
+                        // The feed of the turn (`F2000`, `_FR`'s feed) the target has no word
+                        // for: the control turns at its own rate.
+                        let rapid = Program {
+                            feed: Feed::Rapid,
+                            feed_mm_min: 0.0,
+                            ..p
+                        };
+                        if !turn_lost && p.feed != Feed::Rapid && turns && unsaid(&rapid) {
+                            let how = match p.feed {
+                                Feed::Rate => format!("F{}", p.feed_mm_min),
+                                _ => "the feed programmed before".to_string(),
+                            };
+                            eprintln!(
+                                "cncrot: line {line}: the feed of the turn ({how}) has no word in {} {}: not written: the control turns at its own rate: {block}",
                                 input::dialect_name(t.dialect),
                                 t.form
                             );
@@ -1731,7 +1770,14 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             retract_mm: 0.0,
                             ..p
                         };
-                        if p.retract != Retract::None && turns && unsaid(&dry) {
+                        let retract_lost = p.retract != Retract::None && turns && unsaid(&dry);
+                        // What moves the machine otherwise than the source: counted, and the
+                        // exit status 1 (a batch run sees it).
+                        if turn_lost || tip_lost || retract_lost {
+                            moved_otherwise += 1;
+                            ok = false;
+                        }
+                        if retract_lost {
                             let how = match p.retract {
                                 Retract::ToolMax => {
                                     "along the tool, as far as the travel allows".to_string()
@@ -1947,7 +1993,9 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
         "{total} blocks: {applied} concerning the frame, {passed} passed over, {unfollowed} not followed, {refused} refused"
     );
     if target.is_some() {
-        summary += &format!(", {uncarried} not carried across");
+        summary += &format!(
+            ", {uncarried} not carried across, {moved_otherwise} with a way of moving left out"
+        );
     }
     match (&target, a.json) {
         (Some(_), _) => eprintln!("cncrot: {summary}"),

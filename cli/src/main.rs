@@ -155,7 +155,10 @@ enum Command {
                             its label (the frame after it is the one the label's blocks leave). \
                             --to writes the whole program with its tilt \
                             and cancel blocks in the target's language and every other block as \
-                            it is, and flags on standard error what it cannot carry across.\n\n\
+                            it is, and flags on standard error what it cannot carry across \
+                            and a turn, tip kept in place or retraction the target has no word \
+                            for (exit status 1). Parameters set once to a number (Q1, #1, R1) \
+                            are read where a tilt uses them.\n\n\
                             Example:\n  cncrot program part.h --dialect heidenhain --carr head.carr \
                             --current 0,0\n  cncrot program part.h --dialect heidenhain --to fanuc"
     )]

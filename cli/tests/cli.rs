@@ -869,7 +869,13 @@ fn program_reads_a_whole_program_on_a_machine() {
         &["program", p, "--dialect", "heidenhain", "--to", "fanuc"],
         "",
     );
-    assert_eq!(r.code, 0, "{}", r.stderr);
+    // A retraction or turn the target has no word for: exit status 1.
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains(", 1 with a way of moving left out"),
+        "{}",
+        r.stderr
+    );
     let lines: Vec<&str> = r.stdout.lines().collect();
     // Cycle 7's first line changes nothing in a Fanuc program: it is left out; TURN is
     // G53.1 after the G68.2; the next plane cancels this one first.
@@ -1508,7 +1514,13 @@ fn program_to_writes_datum_shifts() {
         &["program", "-", "--dialect", "heidenhain", "--to", "fanuc"],
         prog,
     );
-    assert_eq!(r.code, 0, "{}", r.stderr);
+    // A retraction or turn the target has no word for: exit status 1.
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains(", 1 with a way of moving left out"),
+        "{}",
+        r.stderr
+    );
     let want = [
         "0 BEGIN PGM TILT MM",
         "1 TOOL CALL 1 Z S5000",
@@ -1812,12 +1824,20 @@ fn program_repeats_a_section_called_again() {
 
 /// A turn of the rotary axes to the plane (`G53.1`) into a form without a word for it
 /// (Syntec's `G158`, TwinCAT's `ROT`) is not written, and standard error says so, as for a
-/// choice of solution; into `G268` it is `G253`, said nothing.
+/// choice of solution; into `G268` it is `G253`, said nothing. The machine then moves
+/// otherwise than the source says: counted in the summary, exit status 1 (it was 0). So is a
+/// turn that keeps the tool tip in place (`MOVE`) written as `G253`, a turn about the pivot.
 #[test]
 fn program_to_says_a_turn_it_cannot_write() {
     let prog = "G68.2 X0 Y0 Z0 I0 J30 K0\nG53.1\nG69\n";
     let r = translate(prog, "fanuc", "syntec");
-    assert_eq!(r.code, 0, "{}", r.stderr);
+    // A retraction or turn the target has no word for: exit status 1.
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains(", 1 with a way of moving left out"),
+        "{}",
+        r.stderr
+    );
     assert_eq!(
         r.stdout.lines().collect::<Vec<_>>(),
         ["G158 P10157 X0. Y0. Z0. A30. B0. C0. U0. V0. W0.", "G158"]
@@ -1835,7 +1855,7 @@ fn program_to_says_a_turn_it_cannot_write() {
         "heidenhain",
         "fanuc",
     );
-    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(r.code, 1, "{}", r.stderr);
     assert!(
         r.stderr.contains("line 1: the retraction before the rotary axes turn (50 mm along the tool) has no word in fanuc G68.2: not written"),
         "{}",
@@ -1847,6 +1867,30 @@ fn program_to_says_a_turn_it_cannot_write() {
         "sinumerik",
     );
     assert!(!r.stderr.contains("retraction"), "{}", r.stderr);
+    let r = translate(
+        "PLANE SPATIAL SPA+0 SPB+30 SPC+0 MOVE DIST50 F2000\n",
+        "heidenhain",
+        "haas",
+    );
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("line 1: the turn that keeps the tool tip in place (the linear axes following) has no word in haas G268"),
+        "{}",
+        r.stderr
+    );
+    assert!(
+        r.stderr
+            .contains("line 1: the feed of the turn (F2000) has no word in haas G268"),
+        "{}",
+        r.stderr
+    );
+    // Fanuc's G53.6 keeps the tip: nothing to say of it.
+    let r = translate(
+        "PLANE SPATIAL SPA+0 SPB+30 SPC+0 MOVE DIST50 FMAX\n",
+        "heidenhain",
+        "fanuc",
+    );
+    assert!(!r.stderr.contains("tool tip"), "{}", r.stderr);
 }
 
 /// Heidenhain `CALL LBL` is followed through its label: hyperMILL resets the plane and the
@@ -2289,7 +2333,13 @@ fn program_to_turns_nothing_at_a_shift_under_a_tilt() {
     let prog = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ+\nL Z+2 R0 FMAX\n\
                 CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+10\nPLANE RESET STAY\n";
     let r = translate(prog, "heidenhain", "fanuc");
-    assert_eq!(r.code, 0, "{}", r.stderr);
+    // A retraction or turn the target has no word for: exit status 1.
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains(", 1 with a way of moving left out"),
+        "{}",
+        r.stderr
+    );
     assert_eq!(
         r.stdout.lines().collect::<Vec<_>>(),
         [
