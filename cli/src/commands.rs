@@ -1492,10 +1492,20 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
         };
         let before = p;
         p = next;
+        let mut remark = remark;
+        if remark == Remark::Passed {
+            calls.after(k, &mut p);
+            // A call that changes the frame (`CALL LBL 1 ; RESET WORKING PLANE`) has its row
+            // in the report, as the blocks that change it have: the state after the call.
+            // (A translation copies the call: the label's blocks are translated where they
+            // stand.)
+            if target.is_none() && p != before {
+                remark = Remark::Applied;
+            }
+        }
         let row = match remark {
             Remark::Passed => {
                 passed += 1;
-                calls.after(k, &mut p);
                 target.as_ref().map(|_| block.to_string())
             }
             Remark::NotFollowed => {

@@ -1822,6 +1822,30 @@ fn program_repeats_a_section_called_again() {
     );
 }
 
+/// A call that changes the frame (hyperMILL's `CALL LBL 1 ; RESET WORKING PLANE`, the label
+/// after `M30`) has its row in the report, with the frame after the call: untilted. Before,
+/// the report showed no row there, and the reset only at the label's own line after `M30`,
+/// so the moves after the call read as still under the tilt (a helper's find).
+#[test]
+fn program_lists_a_call_that_changes_the_frame() {
+    let prog = "0 BEGIN PGM M3 MM\n1 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX\n\
+                2 CALL LBL 1 ; RESET WORKING PLANE\n3 L Z+100 R0 FMAX M91\n4 M30\n\
+                5 LBL 1 ; RESET WORKING PLANE\n6 PLANE RESET STAY\n7 LBL 0\n8 END PGM M3 MM\n";
+    let r = cncrot(&["program", "-", "--dialect", "heidenhain"], prog);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(
+        r.stdout.contains("line 3: 2 CALL LBL 1 ; RESET WORKING PLANE\n  origin: 0.0000 0.0000 0.0000  tool direction: 0.0000 0.0000 1.0000"),
+        "{}",
+        r.stdout
+    );
+    // A call that changes nothing has none.
+    let r = cncrot(
+        &["program", "-", "--dialect", "heidenhain"],
+        "1 CALL LBL 1\n2 M30\n3 LBL 1\n4 L X+0 R0 FMAX\n5 LBL 0\n",
+    );
+    assert!(!r.stdout.contains("CALL"), "{}", r.stdout);
+}
+
 /// A turn of the rotary axes to the plane (`G53.1`) into a form without a word for it
 /// (Syntec's `G158`, TwinCAT's `ROT`) is not written, and standard error says so, as for a
 /// choice of solution; into `G268` it is `G253`, said nothing. The machine then moves
