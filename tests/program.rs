@@ -3179,6 +3179,17 @@ fn direct_modes_keep_the_positions_and_the_machine_gives_the_frame() {
         .line(Dialect::Syntec, b"G68.4 I0 J10 K0")
         .unwrap_err();
     assert_eq!(e.error, Error::NotAvailable);
+    // A direct-mode CYCLE800 with a third angle (SprutCAM writes one): refused at `_C`, with
+    // what may stand there (the data set's two axes), not a missing machine.
+    let block = "CYCLE800(0,\"\",100000,249,12.5,0,-20,0,-90,90,0,0,0,-1,0,0)";
+    let e = Program::default()
+        .line(Dialect::Sinumerik, block.as_bytes())
+        .unwrap_err();
+    assert_eq!((e.error, e.column), (Error::NotAvailable, 43));
+    assert_eq!(
+        e.expected,
+        Some("0: a direct mode turns rotary axes 1 and 2 (_A, _B) only")
+    );
     // Without the machine the frame is not known: the C boundary says so (test_program.c).
 }
 

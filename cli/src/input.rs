@@ -91,6 +91,10 @@ pub fn block_message(text: &str, e: &cncrot::dialects::program::LineError) -> St
             "the line is longer than the controller reads ({} characters at most)",
             e.column.saturating_sub(1)
         ),
+        // Not a machine's lack: a word the reader does not follow here, and what may stand.
+        (Error::NotAvailable, Some(allowed), Some(w)) => {
+            format!("{w}: not followed by cncrot (it takes {allowed})")
+        }
         (other, Some(allowed), Some(w)) => {
             format!("{w}: {} ({allowed})", other.message())
         }

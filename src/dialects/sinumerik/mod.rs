@@ -731,12 +731,16 @@ fn cycle800_direct(
     additive: bool,
     w: &[f64; 9],
 ) -> Result<Modal, LineError> {
-    let unread = [(additive, 2), (w[5] != 0.0, 9)]
+    // What may stand there instead, said with the refusal (`cncrot_program_expected`).
+    const ADDITIVE: &str = "_ST units digit 0: a direct mode is not added to";
+    const THIRD: &str = "0: a direct mode turns rotary axes 1 and 2 (_A, _B) only";
+    const AFTER: &str = "0: a translation after a direct mode's turn needs the machine";
+    let unread = [(additive, 2, ADDITIVE), (w[5] != 0.0, 9, THIRD)]
         .into_iter()
-        .chain((6..9).map(|k| (w[k] != 0.0, 4 + k)));
-    for (refused, k) in unread {
-        if refused {
-            return Err(at(args.column(k))(Error::NotAvailable));
+        .chain((6..9).map(|k| (w[k] != 0.0, 4 + k, AFTER)));
+    for (unread, k, allowed) in unread {
+        if unread {
+            return Err(refused(args.column(k), allowed)(Error::NotAvailable));
         }
     }
     let direct = Direct {
