@@ -148,15 +148,17 @@ impl Labels {
     }
 
     /// Runs the label defined at line `at` as the call at line `k` does: a program section
-    /// above the call without a `LBL 0` between (a repeat: the section again, `rep` times),
-    /// else a subprogram up to its `LBL 0` (once).
+    /// above the call, repeated (`REP`: the section again, `rep` times, whatever `LBL 0` stands
+    /// in it — the TNC's dialog makes a call with `REP` a section repeat, one without a
+    /// subprogram call) or without a `LBL 0` between, else a subprogram up to its `LBL 0`
+    /// (once).
     fn run(&self, k: usize, at: usize, rep: usize, p: &mut Program, depth: usize) {
         let end = |from: usize| {
             (from..self.lines.len())
                 .find(|&i| self.lines.get(i).is_some_and(|l| ends(l)))
                 .unwrap_or(self.lines.len())
         };
-        let section = at < k && end(at + 1) > k;
+        let section = at < k && (rep > 0 || end(at + 1) > k);
         let (body, times) = if section {
             (at + 1..k, rep)
         } else {

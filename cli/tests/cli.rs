@@ -1820,6 +1820,16 @@ fn program_repeats_a_section_called_again() {
         "{}",
         r.stdout
     );
+    // A call with REP repeats the section whatever `LBL 0` stands in it (the TNC's dialog:
+    // with REP a section repeat, without a subprogram call): three passes of SPB+10 again.
+    let prog = "1 LBL 1\n2 PLANE RELATIV SPB+10 STAY\n3 LBL 0\n4 CALL LBL 1 REP2\n\
+                5 PLANE RELATIV SPB+0 STAY\n";
+    let r = cncrot(&["program", "-", "--dialect", "heidenhain"], prog);
+    assert!(
+        r.stdout.contains("line 5: 5 PLANE RELATIV SPB+0 STAY\n  origin: 0.0000 0.0000 0.0000  tool direction: 0.5000 0.0000 0.8660"),
+        "{}",
+        r.stdout
+    );
 }
 
 /// A call that changes the frame (hyperMILL's `CALL LBL 1 ; RESET WORKING PLANE`, the label
