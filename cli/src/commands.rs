@@ -1704,6 +1704,13 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             })
                         };
                         let written = w.is_ok_and(|(len, _)| len > 0);
+                        // What the target has no word for, and what follows from it.
+                        let target_name = format!("{} {}", input::dialect_name(t.dialect), t.form);
+                        let say = |what: &str, then: &str| {
+                            eprintln!(
+                                "cncrot: line {line}: {what} has no word in {target_name}: {then}: {block}"
+                            );
+                        };
                         // Whether the rotary axes turn at this block: a way of moving stated,
                         // or another tilt under the one kept (a datum shift under a tilt
                         // turns nothing).
@@ -1711,11 +1718,9 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             || (from.frame.rotation, from.direct) != (p.frame.rotation, p.direct);
                         if let Some(choice) = opposite {
                             if written && turns && unsaid(&Program { choice, ..p }) {
-                                eprintln!(
-                                    "cncrot: line {line}: the choice of solution ({}) has no word in {} {}: the control chooses by its own rule: {block}",
-                                    choice_name(p.choice),
-                                    input::dialect_name(t.dialect),
-                                    t.form
+                                say(
+                                    &format!("the choice of solution ({})", choice_name(p.choice)),
+                                    "the control chooses by its own rule",
                                 );
                             }
                         }
@@ -1732,10 +1737,9 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         let turn_lost =
                             p.positioning != Positioning::Stay && turns && unsaid(&still);
                         if turn_lost {
-                            eprintln!(
-                                "cncrot: line {line}: the turn of the rotary axes to the plane has no word in {} {}: not written: the rotary axes stay where they are until the program moves them: {block}",
-                                input::dialect_name(t.dialect),
-                                t.form
+                            say(
+                                "the turn of the rotary axes to the plane",
+                                "not written: the rotary axes stay where they are until the program moves them",
                             );
                         }
                         // A turn that keeps the tool tip in place (`MOVE`, `G53.6`) the target
@@ -1749,10 +1753,9 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             && turns
                             && unsaid(&pivot);
                         if tip_lost {
-                            eprintln!(
-                                "cncrot: line {line}: the turn that keeps the tool tip in place (the linear axes following) has no word in {} {}: written as a turn about the pivot, the linear axes staying: {block}",
-                                input::dialect_name(t.dialect),
-                                t.form
+                            say(
+                                "the turn that keeps the tool tip in place (the linear axes following)",
+                                "written as a turn about the pivot, the linear axes staying",
                             );
                         }
                         // The feed of the turn (`F2000`, `_FR`'s feed) the target has no word
@@ -1767,10 +1770,9 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                 Feed::Rate => format!("F{}", p.feed_mm_min),
                                 _ => "the feed programmed before".to_string(),
                             };
-                            eprintln!(
-                                "cncrot: line {line}: the feed of the turn ({how}) has no word in {} {}: not written: the control turns at its own rate: {block}",
-                                input::dialect_name(t.dialect),
-                                t.form
+                            say(
+                                &format!("the feed of the turn ({how})"),
+                                "not written: the control turns at its own rate",
                             );
                         }
                         // A retraction before the axes turn the target has no word for
@@ -1796,18 +1798,11 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                 Retract::MachineZ => "along the machine's Z".to_string(),
                                 _ => "along the machine's Z, then X and Y".to_string(),
                             };
-                            eprintln!(
-                                "cncrot: line {line}: the retraction before the rotary axes turn ({how}) has no word in {} {}: not written: retract the tool before this block: {block}",
-                                input::dialect_name(t.dialect),
-                                t.form
+                            say(
+                                &format!("the retraction before the rotary axes turn ({how})"),
+                                "not written: retract the tool before this block",
                             );
                         }
-                        // An increment the target cannot say: the same text as the plane
-                        // it reaches.
-                        let whole = Program {
-                            relative: false,
-                            ..p
-                        };
                         // Heidenhain's way for the rotary axes from now on, beside a turn
                         // to the plane (`L A+Q120 C+Q122 R0 FMAX M126`): a machine parameter
                         // elsewhere, no word of the block written for it.
@@ -1824,10 +1819,11 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             } else {
                                 "no longer take"
                             };
-                            eprintln!(
-                                "cncrot: line {line}: {m} (the rotary axes {how} the shortest way from now on) has no word in {} {}: not written: {block}",
-                                input::dialect_name(t.dialect),
-                                t.form
+                            say(
+                                &format!(
+                                    "{m} (the rotary axes {how} the shortest way from now on)"
+                                ),
+                                "not written",
                             );
                         }
                         // Every target's datum shift is the shift reached (`G52`, `TRANS`,
@@ -1839,8 +1835,13 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                 t.form
                             );
                         }
-                        // (A block that moves the datum alone under such a tilt adds
-                        // nothing to it.)
+                        // An increment the target cannot say: the same text as the plane
+                        // it reaches (a block that moves the datum alone under such a tilt
+                        // adds nothing to it).
+                        let whole = Program {
+                            relative: false,
+                            ..p
+                        };
                         let turned = p.frame.rotation != from.frame.rotation;
                         if p.relative && turned && written && unsaid(&whole) {
                             eprintln!(

@@ -785,7 +785,8 @@ fn m_functions(text: &[u8], out: &mut Out) -> bool {
     }
     let kept = |w: &[u8]| {
         let digits = w.get(1..).unwrap_or(&[]);
-        let digits = &digits[digits.iter().take_while(|&&b| b == b'0').count()..];
+        let zeros = digits.iter().take_while(|&&b| b == b'0').count();
+        let digits = digits.get(zeros..).unwrap_or(&[]);
         m_word(w) && digits != b"126" && digits != b"127"
     };
     let mut written = false;
