@@ -2842,6 +2842,74 @@ fn a_shift_under_a_turned_plane_turns_nothing() {
     assert_eq!(&buf[..n], b"G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1");
 }
 
+/// A swivel to the plane the state is at already (a post's tool change: the same `CYCLE800`
+/// again, or `G53.1` again, after the program moved the rotary axes) turns the axes again on
+/// the control: it is written as that turn, though the state does not change. It was
+/// written as nothing (a helper's find: the head stayed at B0 C0 after the tool change and
+/// the program went on in the tilted frame). By hand: `_B` 30 of mode 57 is Ry(30°), SPB+30.
+#[test]
+fn a_swivel_to_the_same_plane_turns_again() {
+    let d = Dialect::Sinumerik;
+    let text = "CYCLE800(0,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,-1,0,0)";
+    let before = read(d, &[text, "T2 M6", "G0 B0 C0"]);
+    let (after, _) = before.line(d, text.as_bytes()).unwrap();
+    assert_eq!(after, before);
+    let mut buf = [0u8; 1024];
+    let (n, _) = write_block(
+        Dialect::Heidenhain,
+        b"PLANE SPATIAL",
+        &before,
+        &after,
+        text.as_bytes(),
+        4,
+        &mut buf,
+    )
+    .unwrap();
+    assert_eq!(
+        &buf[..n],
+        b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX SEQ-"
+    );
+    let (n, _) = write_block(
+        Dialect::Fanuc,
+        b"G68.2",
+        &before,
+        &after,
+        text.as_bytes(),
+        4,
+        &mut buf,
+    )
+    .unwrap();
+    assert_eq!(&buf[..n], b"G53.1");
+    // Fanuc's `G53.1` again, into Heidenhain: the plane again with TURN.
+    let f = Dialect::Fanuc;
+    let before = read(f, &["G68.2 X0 Y0 Z0 I0 J30 K0", "G53.1", "T2 M6"]);
+    let (after, _) = before.line(f, b"G53.1").unwrap();
+    let (n, _) = write_block(
+        Dialect::Heidenhain,
+        b"PLANE SPATIAL",
+        &before,
+        &after,
+        b"G53.1",
+        4,
+        &mut buf,
+    )
+    .unwrap();
+    assert_eq!(&buf[..n], b"PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN FMAX");
+    // A block that states no way of moving under the same tilt stays written as nothing.
+    let (after, _) = before.line(f, b"G0 X10").unwrap();
+    let (n, _) = write_block(
+        Dialect::Heidenhain,
+        b"PLANE SPATIAL",
+        &before,
+        &after,
+        b"G0 X10",
+        4,
+        &mut buf,
+    )
+    .unwrap();
+    assert_eq!(n, 0);
+}
+
 /// The iTNC 530 manual's table of `SEQ` on an A/C table machine (A about X carrying C about
 /// Z, no limit switches), `PLANE SPATIAL SPA+0 SPB+45 SPC+0`: from A0 C0 `SEQ+` gives
 /// A+45 C+90, `SEQ-` A−45 C−90; without `SEQ` A+45 C+90 from A0 C0 (both are as far) and

@@ -1703,6 +1703,20 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                     .is_ok_and(|(n, _)| other.get(..n) == buf.get(..len))
                             })
                         };
+                        // Whether the target's tilt, written from no tilt, is the same text
+                        // for `q` as for the block's state: a way of moving it has no word for
+                        // (compared so, not after this block's state before, where the writer
+                        // may write the turn alone for one and the plane again for the other).
+                        let unsaid_moving = |q: &Program| {
+                            let (mut a, mut b) = ([0u8; MAX_CHANGE], [0u8; MAX_CHANGE]);
+                            let untilted = Program::default();
+                            let one = write_change(t.dialect, form, &untilted, &p, d, &mut a);
+                            let two = write_change(t.dialect, form, &untilted, q, d, &mut b);
+                            match (one, two) {
+                                (Ok((n, _)), Ok((m, _))) => a.get(..n) == b.get(..m),
+                                _ => false,
+                            }
+                        };
                         let written = w.is_ok_and(|(len, _)| len > 0);
                         // What the target has no word for, and what follows from it.
                         let target_name = format!("{} {}", input::dialect_name(t.dialect), t.form);
@@ -1714,10 +1728,21 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         // Whether the rotary axes turn at this block: a way of moving stated,
                         // or another tilt under the one kept (a datum shift under a tilt
                         // turns nothing).
+                        let staying = Program {
+                            positioning: Positioning::Stay,
+                            retract: Retract::None,
+                            retract_mm: 0.0,
+                            feed: Feed::Rapid,
+                            feed_mm_min: 0.0,
+                            ..from
+                        };
                         let turns = from.positioning != p.positioning
-                            || (from.frame.rotation, from.direct) != (p.frame.rotation, p.direct);
+                            || (from.frame.rotation, from.direct) != (p.frame.rotation, p.direct)
+                            // The same swivel again (a tool change's): it turns again.
+                            || matches!(staying.line(dialect, text),
+                                Ok((q, Remark::Applied)) if q.positioning != Positioning::Stay);
                         if let Some(choice) = opposite {
-                            if written && turns && unsaid(&Program { choice, ..p }) {
+                            if written && turns && unsaid_moving(&Program { choice, ..p }) {
                                 say(
                                     &format!("the choice of solution ({})", choice_name(p.choice)),
                                     "the control chooses by its own rule",
@@ -1735,7 +1760,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             ..p
                         };
                         let turn_lost =
-                            p.positioning != Positioning::Stay && turns && unsaid(&still);
+                            p.positioning != Positioning::Stay && turns && unsaid_moving(&still);
                         if turn_lost {
                             say(
                                 "the turn of the rotary axes to the plane",
@@ -1751,7 +1776,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         let tip_lost = !turn_lost
                             && p.positioning == Positioning::Move
                             && turns
-                            && unsaid(&pivot);
+                            && unsaid_moving(&pivot);
                         if tip_lost {
                             say(
                                 "the turn that keeps the tool tip in place (the linear axes following)",
@@ -1765,7 +1790,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             feed_mm_min: 0.0,
                             ..p
                         };
-                        if !turn_lost && p.feed != Feed::Rapid && turns && unsaid(&rapid) {
+                        if !turn_lost && p.feed != Feed::Rapid && turns && unsaid_moving(&rapid) {
                             let how = match p.feed {
                                 Feed::Rate => format!("F{}", p.feed_mm_min),
                                 _ => "the feed programmed before".to_string(),
@@ -1782,7 +1807,8 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             retract_mm: 0.0,
                             ..p
                         };
-                        let retract_lost = p.retract != Retract::None && turns && unsaid(&dry);
+                        let retract_lost =
+                            p.retract != Retract::None && turns && unsaid_moving(&dry);
                         // What moves the machine otherwise than the source: counted, and the
                         // exit status 1 (a batch run sees it).
                         if turn_lost || tip_lost || retract_lost {

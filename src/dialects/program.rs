@@ -777,7 +777,9 @@ pub(crate) fn change_length_with(
 /// as the target's datum shift. What a block restates is found by reading it once more on
 /// a state where the tilt, or the shift, is something else: a block that leaves no tilt
 /// there is a cancel, one that changes the shift there sets it. A block that only names a
-/// cycle (`CYCL DEF 7.0`) or a tilt repeated unchanged restates nothing: an empty text.
+/// cycle (`CYCL DEF 7.0`) or a tilt repeated unchanged that stays restates nothing: an empty
+/// text. A tilt repeated unchanged that turns the axes (the same `CYCLE800`, or `G53.1`
+/// again: a tool change's swivel, after the program moved the axes) is written as that turn.
 /// A block that keeps the tilt and states no way of moving (a datum shift under a plane
 /// that turned the axes) is written as moving nothing: the tilt written again around the
 /// shift stays where it is, without the turn or retraction the state keeps.
@@ -809,10 +811,24 @@ pub fn write_block(
     let mut from = *before;
     restate(&mut from, after, text);
     let step = added_step(&from, after, text);
+    let states = stated_motion(&from, after, text);
+    // A block that turns the axes to the plane the state says they are at (a tool change's
+    // swivel again, after the program moved them: the same `CYCLE800`, `G68.2` and `G53.1`
+    // again) is written as that turn: from a state that stays.
+    if states == Some(true) && from.positioning != Positioning::Stay {
+        from = Program {
+            positioning: Positioning::Stay,
+            retract: Retract::None,
+            retract_mm: 0.0,
+            feed: Feed::Rapid,
+            feed_mm_min: 0.0,
+            ..from
+        };
+    }
     // A block that moves no rotary axis is written so: the tilt again after a datum shift
     // under it stays where it is, whatever way of moving the state keeps from the tilt.
     let stays;
-    let after = if moves_nothing(&from, after, text) {
+    let after = if states == Some(false) {
         stays = Program {
             positioning: Positioning::Stay,
             retract: Retract::None,
@@ -833,20 +849,19 @@ pub fn write_block(
     write_change_with(dialect, &spec, &c, decimals, buf)
 }
 
-/// Whether the block `text`, read from `from` to `after`, moves no rotary axis although
-/// the state keeps a way of moving (`TURN`, `G53.1`) from the tilt before it: the tilt is
-/// the same, and read on a state that stays, the block stays (a datum shift under
-/// `PLANE … TURN` — cycle 7's lines, `TRANS DATUM`, `G52` — states no way of moving; the
-/// tilt written again around it must not turn or retract again, where the control moves
-/// nothing). Not inlined, like [`leaves_untilted`] (stack bound).
+/// Whether the block `text`, read from `from` to `after` with the tilt the same and a way of
+/// moving after it (`TURN`, `G53.1`), states that way itself: read on a state that stays,
+/// it moves (`Some(true)`: the same `CYCLE800` or `G53.1` again, which turns the axes again
+/// wherever the program moved them) or it stays (`Some(false)`: a datum shift under
+/// `PLANE … TURN` — cycle 7's lines, `TRANS DATUM`, `G52` — whose tilt written again around
+/// it must not turn or retract again, where the control moves nothing). `None`: another
+/// tilt, or no way of moving. Not inlined, like [`leaves_untilted`] (stack bound).
 #[inline(never)]
-fn moves_nothing(from: &Program, after: &Program, text: &[u8]) -> bool {
-    let Some(dialect) = after.dialect else {
-        return false;
-    };
+fn stated_motion(from: &Program, after: &Program, text: &[u8]) -> Option<bool> {
+    let dialect = after.dialect?;
     let same_tilt = (from.frame.rotation, from.direct) == (after.frame.rotation, after.direct);
     if !same_tilt || after.positioning == Positioning::Stay {
-        return false;
+        return None;
     }
     let still = Program {
         positioning: Positioning::Stay,
@@ -856,7 +871,10 @@ fn moves_nothing(from: &Program, after: &Program, text: &[u8]) -> bool {
         feed_mm_min: 0.0,
         ..of_no_dialect(from)
     };
-    matches!(still.line(dialect, text), Ok((q, Remark::Applied)) if q.positioning == Positioning::Stay)
+    match still.line(dialect, text) {
+        Ok((q, Remark::Applied)) => Some(q.positioning != Positioning::Stay),
+        _ => None,
+    }
 }
 
 /// The words of a block of a `dialect` program that are not the frame's, as they stand:

@@ -1044,7 +1044,9 @@ unsafe fn write_change_into(
 /// shift set to the value it already has (`G52 X0 Y0`, `TRANS DATUM RESET`, cycle 7 with
 /// zeros) as the target's datum shift. Found by reading the block again on a state with
 /// another tilt or shift. A block that only names a cycle (`CYCL DEF 7.0`) or a tilt
-/// repeated unchanged restates nothing (an empty text). A block that adds to the tilt is
+/// repeated unchanged that stays restates nothing (an empty text); one that turns the axes
+/// (the same `CYCLE800` or `G53.1` again, a tool change's swivel) is written as that turn
+/// again, wherever the program moved the axes since. A block that adds to the tilt is
 /// written as the target's increment with the block's own numbers (read again on a state
 /// with nothing active: `PLANE RELATIV SPC+15` is `G68.4 … I15. J0. K0.` in the shortest
 /// exact numbers, where the two states alone give `I14.999999999999996`). A block that
