@@ -1296,25 +1296,31 @@ pub struct ProgramArgs<'a> {
     pub svg: Option<&'a str>,
 }
 
-/// A whole part program, block by block (see the command's help). Exit status 1 when a
-/// block was refused or (with `--to`) could not be carried across.
 /// The tilt's cancel on a block the library does not follow as a whole (`G69 G54`: a work
-/// offset beside it), read alone on `p`: a control cancels the plane whatever else the
-/// block holds, and the state after it is untilted, whatever the offset does. The ISO
-/// dialects only (`G69`, Haas's `G269`); `None` where the block holds none.
+/// offset beside it; SINUMERIK's `SCALE X2`, `MIRROR X0`, which replace the programmable
+/// frame, its rotation with it), read alone on `p`: a control cancels the plane whatever
+/// else the block holds, and the state after it is untilted, whatever the offset, scale or
+/// mirror does. The ISO dialects (`G69`, Haas's `G269`) and SINUMERIK (read as `TRANS`,
+/// which replaces the frame as they do); `None` where the block holds none.
 fn cancel_beside(dialect: Dialect, block: &str, p: &Program) -> Option<(Program, &'static str)> {
-    let code = match dialect {
-        Dialect::Fanuc | Dialect::Syntec => "G69",
-        Dialect::Haas => "G269",
+    let (words, code): (&[&str], &'static str) = match dialect {
+        Dialect::Fanuc | Dialect::Syntec => (&["G69"], "G69"),
+        Dialect::Haas => (&["G269"], "G269"),
+        // Not `ASCALE`, `AMIRROR` (they add to the frame) nor the frame functions `CSCALE`,
+        // `CMIRROR` of a frame variable's value.
+        Dialect::Sinumerik => (&["SCALE", "MIRROR"], "TRANS"),
         _ => return None,
     };
     let text = block.split(['(', ';']).next().unwrap_or("").to_uppercase();
     let bytes = text.as_bytes();
-    let found = text.match_indices(code).any(|(at, _)| {
-        let before = at.checked_sub(1).and_then(|k| bytes.get(k));
-        let after = bytes.get(at + code.len());
-        !before.is_some_and(|b| b.is_ascii_alphanumeric() || *b == b'.')
-            && !after.is_some_and(|b| b.is_ascii_digit() || *b == b'.')
+    let name = |b: &u8| b.is_ascii_alphanumeric() || *b == b'_';
+    let found = words.iter().any(|word| {
+        text.match_indices(word).any(|(at, _)| {
+            let before = at.checked_sub(1).and_then(|k| bytes.get(k));
+            let after = bytes.get(at + word.len());
+            !before.is_some_and(|b| name(b) || *b == b'.' || *b == b'$')
+                && !after.is_some_and(|b| name(b) || *b == b'.')
+        })
     });
     if !found {
         return None;
@@ -1325,6 +1331,8 @@ fn cancel_beside(dialect: Dialect, block: &str, p: &Program) -> Option<(Program,
     }
 }
 
+/// A whole part program, block by block (see the command's help). Exit status 1 when a
+/// block was refused or (with `--to`) could not be carried across.
 pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     use std::io::Write;
     let dialect = input::dialect(a.dialect).map_err(option("--dialect"))?;
@@ -1534,7 +1542,12 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         &mut buf,
                     );
                     let mut rest_buf = [0u8; MAX_CHANGE];
+                    // (SINUMERIK's rest is empty: its frame commands stand alone; the block
+                    // beside the cancel, `SCALE X2`, is all there is to keep.)
                     let kept = match rest(dialect, source.as_bytes(), &mut rest_buf) {
+                        Ok(_) if dialect == Dialect::Sinumerik => {
+                            kept_in(block, dialect, t.dialect).unwrap_or_default()
+                        }
                         Ok(n) => {
                             kept_in(&String::from_utf8_lossy(&rest_buf[..n]), dialect, t.dialect)
                                 .unwrap_or_default()
@@ -1852,15 +1865,6 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                 "not written",
                             );
                         }
-                        // Every target's datum shift is the shift reached (`G52`, `TRANS`,
-                        // `CYCL DEF 7` with absolute axes).
-                        if let (Some((line, block)), true) = (adds, written) {
-                            eprintln!(
-                                "cncrot: line {line}: the block adds to the active datum shift and is written as the shift it reaches in {} {}, so a loop that repeats the block does not add: {block}",
-                                input::dialect_name(t.dialect),
-                                t.form
-                            );
-                        }
                         // An increment the target cannot say: the same text as the plane
                         // it reaches (a block that moves the datum alone under such a tilt
                         // adds nothing to it).
@@ -1868,6 +1872,18 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             relative: false,
                             ..p
                         };
+                        // The target wrote the block's increment (`G68.4 X20.` for `ATRANS
+                        // X20` under a `CYCLE800`): it adds as often as the source.
+                        let incremental = p.relative && !unsaid(&whole);
+                        // Every target's datum shift is the shift reached (`G52`, `TRANS`,
+                        // `CYCL DEF 7` with absolute axes).
+                        if let (Some((line, block)), true, false) = (adds, written, incremental) {
+                            eprintln!(
+                                "cncrot: line {line}: the block adds to the active datum shift and is written as the shift it reaches in {} {}, so a loop that repeats the block does not add: {block}",
+                                input::dialect_name(t.dialect),
+                                t.form
+                            );
+                        }
                         let turned = p.frame.rotation != from.frame.rotation;
                         if p.relative && turned && written && unsaid(&whole) {
                             eprintln!(

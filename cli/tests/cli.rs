@@ -1794,6 +1794,24 @@ fn program_to_cancels_beside_a_work_offset() {
         "{}",
         r.stderr
     );
+    // SINUMERIK's SCALE and MIRROR replace the programmable frame, its rotation with it
+    // (substituting commands, as TRANS and ROT): the tilt is cancelled, the block kept
+    // (a helper's find: the Heidenhain translation stayed tilted to the program's end).
+    let r = translate(
+        "ROTS X10 Y20\nSCALE X2\nG0 X10\nASCALE X2\n",
+        "sinumerik",
+        "heidenhain",
+    );
+    assert_eq!(
+        r.stdout.lines().collect::<Vec<_>>(),
+        [
+            "PLANE SPATIAL SPA+9.408 SPB+20 SPC+0 STAY",
+            "SCALE X2",
+            "PLANE RESET STAY",
+            "G0 X10",
+            "ASCALE X2"
+        ]
+    );
     // The report: the frame after it is untilted.
     let r = cncrot(
         &["program", "-", "--dialect", "fanuc"],
@@ -2388,6 +2406,24 @@ fn program_to_turns_nothing_at_a_shift_under_a_tilt() {
     );
     assert!(!r.stderr.contains("line 4"), "{}", r.stderr);
     assert!(r.stderr.contains("line 1: the retraction"), "{}", r.stderr);
+}
+
+/// A post's tool change on the same plane (`G68.2` and `G53.1` again, no `G69` between, the
+/// program having moved the axes) swivels again: its translation writes the plane again with
+/// its turn (it was dropped: the head stayed where the tool change left it).
+#[test]
+fn program_to_swivels_again_at_a_tool_change() {
+    let prog = "N20 G68.2 X0 Y0 Z0 I90. J45. K-90.\nN25 G53.1\nN40 G100 T02 Z15. G43 H02 M03\n\
+                N45 G68.2 X0 Y0 Z0 I90. J45. K-90.\nN50 G53.1\nN65 G69\n";
+    assert_eq!(
+        program_to(prog, "fanuc", "heidenhain"),
+        [
+            "PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN FMAX",
+            "N40 G100 T02 Z15. G43 H02 M03",
+            "PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN FMAX",
+            "PLANE RESET STAY"
+        ]
+    );
 }
 
 /// Heidenhain's `M126` beside the turn to the plane (the rotary axes take the shortest way
