@@ -1282,6 +1282,9 @@ fn every_block_of_a_program() {
             ("N50 G1 X10 Y10 F1000", P),
             ("N60 MIRROR X0", N),
             ("N70 $P_UIFR[1]=CTRANS(X,10)", N),
+            // Frame functions in the value (`CROT(`, `CROTS(`) are no frame commands.
+            ("N71 $P_UIFR[1]=CTRANS(X,10,Y,20):CROT(Z,30)", N),
+            ("N72 $P_BFRAME=CROTS(X,10,Y,5)", N),
             ("N80 R1=5 ; ROT in a comment", P),
             ("N90 MSG(\"TRANS and ROT in a string\")", P),
             ("N100 TOROT", N),

@@ -821,7 +821,8 @@ fn angle_mode(selector: i32) -> Result<AngleMode, Error> {
 
 /// A SINUMERIK block that does not start with a command the library reads (`rest`, which
 /// starts at byte `offset` of the line). A frame command elsewhere on it is refused at its
-/// column ("frame instructions are programmed in their own block" \[doc\]). Not followed:
+/// column ("frame instructions are programmed in their own block" \[doc\]); its name before
+/// `(` is a frame function in an expression (`CROT(Z,30)`), not refused. Not followed:
 /// the settable frames `G54`–`G57`, `G505`–`G599` and `G500`, the axial offsets `G58`/`G59`,
 /// mirroring and scaling (`MIRROR`, `AMIRROR`, `SCALE`, `ASCALE`), frames from the tool
 /// orientation (`TOROT`, `TOROTX`/`Y`/`Z`, `TOFRAME`, `TOFRAMEX`/`Y`/`Z`, `TOROTOF`) and from
@@ -881,7 +882,12 @@ fn other_block(m: &Modal, rest: &[u8], offset: usize) -> Result<Block, LineError
         if let Some(p) = t.g_code().and_then(Plane::of_code) {
             plane = p;
         }
-        if COMMANDS.iter().any(|name| t.is(name)) {
+        // A frame command's name before `(` is the frame function of an expression
+        // (`$P_UIFR[1]=CTRANS(X,10):CROT(Z,30)`, `$P_BFRAME=CROTS(X,10,Y,5)`), no command.
+        let after = (t.column + t.value.len()).saturating_sub(1);
+        let function =
+            rest.get(after) == Some(&b'(') && COMMANDS.iter().take(8).any(|name| t.is(name));
+        if COMMANDS.iter().any(|name| t.is(name)) && !function {
             return Err(LineError {
                 error: Error::UnknownWord,
                 column: offset + t.column,
