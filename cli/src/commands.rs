@@ -1698,6 +1698,38 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         let text = source.as_bytes();
                         let form = t.form.as_bytes();
                         let w = write_block(t.dialect, form, &from, &p, text, d, &mut buf);
+                        // A direct mode (rotary positions: `G158 P10200`, `CYCLE800` direct,
+                        // `PLANE AXIAL`) into a target without one: with the machine given,
+                        // the plane its positions give there.
+                        let w = match (w, &machine) {
+                            (Err(Error::NotAvailable), Some(m)) => {
+                                let on = |q: &Program| match q.direct {
+                                    None => Some(*q),
+                                    Some(_) => q.frame_on(m).ok().map(|f| Program {
+                                        frame: f,
+                                        direct: None,
+                                        angles: [0.0; 3],
+                                        dialect: None,
+                                        table_rot: false,
+                                        ..*q
+                                    }),
+                                };
+                                match (on(&from), on(&p)) {
+                                    (Some(a), Some(b)) => {
+                                        let r =
+                                            write_block(t.dialect, form, &a, &b, text, d, &mut buf);
+                                        if r.is_ok() && p.direct.is_some() {
+                                            eprintln!(
+                                                "cncrot: line {line}: the rotary positions written as the plane they give on the machine described (--carr, --axis): {block}"
+                                            );
+                                        }
+                                        r
+                                    }
+                                    _ => Err(Error::NotAvailable),
+                                }
+                            }
+                            (w, _) => w,
+                        };
                         // A choice the target has no word for: the same text with the
                         // opposite choice.
                         let opposite = match p.choice {

@@ -2426,6 +2426,46 @@ fn program_to_swivels_again_at_a_tool_change() {
     );
 }
 
+/// A direct mode (rotary positions: Syntec's `G158 P10200`) into a target without one is
+/// written as the plane the positions give on the machine described, when one is: a C head
+/// (about Z) carrying a B head (about Y) at C45 B30 points the tool along
+/// Rz(45°)·Ry(30°)·e_z = (sin 30° cos 45°, sin 30° sin 45°, cos 30°) = (0.3536, 0.3536,
+/// 0.8660), G68.2's Euler Z-X-Z (135°, 30°, −90°) by hand. Without the machine it is not
+/// carried across (exit status 1), as before.
+#[test]
+fn program_to_writes_a_direct_mode_on_the_machine_given() {
+    let prog = "G158 P10200 X10. Y0 Z0 A0 B30. C45.\nG0 X0 Y0\n";
+    let r = cncrot(
+        &[
+            "program",
+            "-",
+            "--dialect",
+            "syntec",
+            "--axis",
+            "tool:0,0,1",
+            "--axis",
+            "tool:0,1,0",
+            "--to",
+            "fanuc",
+        ],
+        prog,
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(
+        r.stdout.lines().collect::<Vec<_>>(),
+        ["G68.2 X10. Y0. Z0. I135. J30. K-90.", "G53.1", "G0 X0 Y0"]
+    );
+    assert!(
+        r.stderr
+            .contains("line 1: the rotary positions written as the plane they give on the machine"),
+        "{}",
+        r.stderr
+    );
+    let r = translate(prog, "syntec", "fanuc");
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(r.stderr.contains("not carried across"), "{}", r.stderr);
+}
+
 /// Heidenhain's `M126` beside the turn to the plane (the rotary axes take the shortest way
 /// from now on) has no word in a `G53.1` or a `CYCLE800`: standard error says so (it was
 /// dropped silently); within Heidenhain the block stays as it stands.
