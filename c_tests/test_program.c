@@ -886,6 +886,26 @@ static void restated_blocks(void) {
                  CNCROT_STATUS_OK);
     CHECK(strcmp(out, cases[k].want) == 0, "%s: %s", b, out);
   }
+  /* A swivel to the plane the state is at already (a tool change's CYCLE800 again) turns the
+   * axes again: written as that turn. A datum shift under a plane that turned moves nothing:
+   * the plane again without G53.1. */
+  {
+    cncrot_program p;
+    memset(&p, 0, sizeof p);
+    const char *swivel = "CYCLE800(0,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,-1,0,0)";
+    CHECK_STATUS(cncrot_program_line(&p, CNCROT_DIALECT_SINUMERIK, swivel, strlen(swivel)), CNCROT_STATUS_OK);
+    cncrot_program again = p;
+    CHECK_STATUS(cncrot_program_line(&again, CNCROT_DIALECT_SINUMERIK, swivel, strlen(swivel)), CNCROT_STATUS_OK);
+    CHECK_STATUS(cncrot_program_write_block(&p, &again, swivel, strlen(swivel), CNCROT_DIALECT_HEIDENHAIN,
+                                            "PLANE SPATIAL", 4, out, sizeof out),
+                 CNCROT_STATUS_OK);
+    CHECK(strcmp(out, "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX SEQ-") == 0, "%s", out);
+    cncrot_program shifted = p;
+    CHECK_STATUS(cncrot_program_line(&shifted, CNCROT_DIALECT_SINUMERIK, "ATRANS X10", 10), CNCROT_STATUS_OK);
+    int32_t s = cncrot_program_write_block(&p, &shifted, "ATRANS X10", 10, CNCROT_DIALECT_FANUC, "G68.2", 4, out,
+                                           sizeof out);
+    CHECK(s >= 0 && strstr(out, "G68.4 X10.") != NULL && strstr(out, "G53.1") == NULL, "%d: %s", (int)s, out);
+  }
   /* A change: the text of cncrot_program_write_change. */
   cncrot_program before, after;
   memset(&before, 0, sizeof before);

@@ -808,45 +808,46 @@ pub fn write_block(
     buf: &mut [u8],
 ) -> Result<(usize, bool), Error> {
     let spec = dialect.parse_form(form_text)?;
-    let mut from = *before;
-    restate(&mut from, after, text);
-    let step = added_step(&from, after, text);
-    let states = stated_motion(&from, after, text);
-    // A block that turns the axes to the plane the state says they are at (a tool change's
-    // swivel again, after the program moved them: the same `CYCLE800`, `G68.2` and `G53.1`
-    // again) is written as that turn: from a state that stays.
-    if states == Some(true) && from.positioning != Positioning::Stay {
-        from = Program {
-            positioning: Positioning::Stay,
-            retract: Retract::None,
-            retract_mm: 0.0,
-            feed: Feed::Rapid,
-            feed_mm_min: 0.0,
-            ..from
-        };
-    }
-    // A block that moves no rotary axis is written so: the tilt again after a datum shift
-    // under it stays where it is, whatever way of moving the state keeps from the tilt.
-    let stays;
-    let after = if states == Some(false) {
-        stays = Program {
-            positioning: Positioning::Stay,
-            retract: Retract::None,
-            retract_mm: 0.0,
-            feed: Feed::Rapid,
-            feed_mm_min: 0.0,
-            ..*after
-        };
-        &stays
-    } else {
-        after
-    };
+    let (mut from, mut to) = (*before, *after);
+    let step = block_states(&mut from, &mut to, text);
     let c = Change {
         before: &from,
-        after,
+        after: &to,
         step: step.as_ref(),
     };
     write_change_with(dialect, &spec, &c, decimals, buf)
+}
+
+/// The states [`write_block`] writes the change between, made in place from the states
+/// before and after the block `text` (`from`, `to`), and the tilt's step where the block adds
+/// to it ([`added_step`]): what the block restates ([`restate`]); a block that turns the axes
+/// to the plane the state says they are at (a tool change's swivel again, after the program
+/// moved them: the same `CYCLE800`, `G68.2` and `G53.1` again) from a state that stays, so
+/// that the turn is written; a block that moves no rotary axis (a datum shift under a plane
+/// that turned) to a state that stays, so that the tilt written again around it does not
+/// turn or retract again. The C boundary's `cncrot_program_write_block` writes the same.
+pub(crate) fn block_states(from: &mut Program, to: &mut Program, text: &[u8]) -> Option<Frame> {
+    restate(from, to, text);
+    let step = added_step(from, to, text);
+    match stated_motion(from, to, text) {
+        Some(true) if from.positioning != Positioning::Stay => *from = staying(from),
+        Some(false) => *to = staying(to),
+        _ => {}
+    }
+    step
+}
+
+/// `p` without a way of moving: staying, no retraction, at rapid (as a reader leaves a state
+/// that stays).
+fn staying(p: &Program) -> Program {
+    Program {
+        positioning: Positioning::Stay,
+        retract: Retract::None,
+        retract_mm: 0.0,
+        feed: Feed::Rapid,
+        feed_mm_min: 0.0,
+        ..*p
+    }
 }
 
 /// Whether the block `text`, read from `from` to `after` with the tilt the same and a way of
@@ -863,14 +864,7 @@ fn stated_motion(from: &Program, after: &Program, text: &[u8]) -> Option<bool> {
     if !same_tilt || after.positioning == Positioning::Stay {
         return None;
     }
-    let still = Program {
-        positioning: Positioning::Stay,
-        retract: Retract::None,
-        retract_mm: 0.0,
-        feed: Feed::Rapid,
-        feed_mm_min: 0.0,
-        ..of_no_dialect(from)
-    };
+    let still = staying(&of_no_dialect(from));
     match still.line(dialect, text) {
         Ok((q, Remark::Applied)) => Some(q.positioning != Positioning::Stay),
         _ => None,
@@ -983,7 +977,7 @@ pub fn joins(before: &Program, after: &Program, next: &Program) -> bool {
 /// what it restates, or `after` has no dialect. The changed state is of no dialect, which
 /// passes [`Program::check`] whatever the program's dialect (no programmed angles, no direct
 /// mode).
-pub(crate) fn restate(from: &mut Program, after: &Program, text: &[u8]) {
+fn restate(from: &mut Program, after: &Program, text: &[u8]) {
     let Some(dialect) = after.dialect else {
         return;
     };
@@ -1203,7 +1197,7 @@ fn increment(before: &Frame, after: &Frame, step: Option<&Frame>) -> Frame {
 /// second line of a joined pair). Not inlined: the probe's state is on the stack only while
 /// it reads.
 #[inline(never)]
-pub(crate) fn added_step(before: &Program, after: &Program, text: &[u8]) -> Option<Frame> {
+fn added_step(before: &Program, after: &Program, text: &[u8]) -> Option<Frame> {
     let dialect = after.dialect.filter(|_| after.relative)?;
     let probe = Program {
         frame: Frame::IDENTITY,

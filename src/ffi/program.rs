@@ -1089,7 +1089,7 @@ pub unsafe extern "C" fn cncrot_program_write_block(
             out.is_null(),
         ])?;
         let mut p0 = load_at(before)?;
-        let p1 = load_at(after)?;
+        let mut p1 = load_at(after)?;
         let d = Dialect::from_code(dialect)?;
         if p1.dialect.is_some_and(|source| len > source.max_line() + 2) {
             return Err(cncrot_status::LineTooLong);
@@ -1101,8 +1101,7 @@ pub unsafe extern "C" fn cncrot_program_write_block(
         };
         // The form is read whole before `out` is touched (they may be the same memory).
         let spec = d.parse_form(form_of(form)?)?;
-        program::restate(&mut p0, &p1, text);
-        let step = program::added_step(&p0, &p1, text);
+        let step = program::block_states(&mut p0, &mut p1, text);
         write_change_into(d, &spec, &p0, &p1, step.as_ref(), decimals, out, cap)
     })
 }
