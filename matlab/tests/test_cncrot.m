@@ -246,6 +246,15 @@ function test_cncrot(cases_file)
   check(strcmp(ts{4}, sprintf('TRANS\nCYCLE800(0,"",0,57,10,0,-5,0,30,0,0,0,0,1,0,0)')) && strcmp(ts{6}, sprintf('CYCLE800()\nTRANS X=10 Y=0 Z=-5')), 'translate: into SINUMERIK, _DIR +1');
   th = cncrot_program_translate('fanuc', {'G68.2 X10 Y20 I0 J30 K0'}, 'heidenhain', 'PLANE SPATIAL', 4);
   check(isequal(th, {sprintf('CYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+10\nCYCL DEF 7.2 Y+20\nCYCL DEF 7.3 Z+0\nPLANE SPATIAL SPA+30 SPB+0 SPC+0 STAY')}), 'translate: an origin as cycle 7');
+  % A tool change's swivel to the same plane turns the axes again: written again; a datum
+  % shift under a plane that turned turns nothing (no G53.1 with the plane again); the M3 of
+  % the turn block is kept.
+  tr = cncrot_program_translate('sinumerik', {'CYCLE800(0,"TC1",0,57,0,0,0,0,30,0,0,0,0,-1,0,0)', 'T2 M6', 'CYCLE800(0,"TC1",0,57,0,0,0,0,30,0,0,0,0,-1,0,0)'}, 'heidenhain', 'PLANE SPATIAL', 4);
+  check(isequal(tr{3}, 'PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX SEQ-'), 'translate: the swivel again');
+  tr = cncrot_program_translate('heidenhain', {'PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX', 'CYCL DEF 7.0 DATUM SHIFT', 'CYCL DEF 7.1 X+10'}, 'fanuc', 'G68.2', 4);
+  check(isequal(tr{3}, sprintf('G69\nG52 X8.6603 Y0. Z-5.\nG68.2 X0. Y0. Z0. I90. J30. K-90.')), 'translate: a shift under a turned plane');
+  tr = cncrot_program_translate('heidenhain', {'PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY', 'L B+Q121 C+Q122 R0 FMAX M3'}, 'fanuc', 'G68.2', 4);
+  check(isequal(tr{2}, sprintf('M3\nG68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1')), 'translate: M3 of the turn kept');
   % TwinCAT's zero offset shift G58 is the datum its ROT turns about: carried both ways.
   tt = cncrot_program_translate('twincat', {'G58 X10 Y20 Z5', 'ROT Y30'}, 'fanuc', 'G68.2', 4);
   check(isequal(tt, {'G52 X10. Y20. Z5.'; 'G68.2 X0. Y0. Z0. I90. J30. K-90.'}), 'translate: TwinCAT G58');
