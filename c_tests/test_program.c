@@ -1022,6 +1022,8 @@ static void kept_words(void) {
       {CNCROT_DIALECT_FANUC, "N50 G90 G68.2 X 10. Y[0.] Z0 I0 J30 K0 (TILT)", "N50 G90 (TILT)"},
       {CNCROT_DIALECT_FANUC, "N60 G69 (CANCEL)", ""},
       {CNCROT_DIALECT_FANUC, "N70 G53.6 H12 (ORIENT TOOL)", ""},
+      /* LinuxCNC's G53.3: the turn, and a move to X Y Z in the plane (kept). */
+      {CNCROT_DIALECT_FANUC, "G53.3 P1 X10 Y20 Z30", "X10 Y20 Z30"},
       {CNCROT_DIALECT_FANUC, "G1 X10. Y10.", "G1 X10. Y10."},
       {CNCROT_DIALECT_HAAS, "G0 G269 G90", "G0 G90"},
       {CNCROT_DIALECT_SYNTEC, "G1 G158 L1 P10 X0 Y0 Z0 A0 B30 C0 F100.", "G1 F100."},

@@ -1847,6 +1847,21 @@ fn choice_words_are_kept_and_followed() {
     assert_eq!(g53("G53.6 P2").choice, AxisChoice::NegativeTurn(0));
     assert_eq!(g53("G53.1 P0").choice, AxisChoice::Closest);
     assert_eq!(g53("G53.1").choice, AxisChoice::Closest);
+    // LinuxCNC's G53.3: the turn with a move to X Y Z in the plane (the move no frame word,
+    // the rest of the block).
+    let moved = g53("G53.3 P1 X10 Y20 Z30");
+    assert_eq!(
+        (moved.positioning, moved.choice, moved.frame),
+        (
+            Positioning::Turn,
+            AxisChoice::PositiveTurn(0),
+            g53("G53.1").frame
+        )
+    );
+    let mut buf = [0u8; 64];
+    let n =
+        cncrot::dialects::program::rest(Dialect::Fanuc, b"G53.3 P1 X10 Y20 Z30", &mut buf).unwrap();
+    assert_eq!(&buf[..n], b"X10 Y20 Z30");
     let up = at(&g53("G53.1 P1"));
     assert!(
         (up[0] - 0.0).abs() < 1e-9 && (up[1] - 30.0).abs() < 1e-9,

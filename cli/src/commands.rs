@@ -1958,23 +1958,30 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             // An optional block stays optional: its skip mark on each line.
                             let mark = skip_mark(block, dialect, t.dialect);
                             // The block's other words (a retract beside a cancel, the
-                            // motion mode and feed beside a tilt) first, as they stand.
-                            Some(
-                                kept.iter()
-                                    .cloned()
-                                    .chain(text.lines().enumerate().map(|(k, l)| {
-                                        let n = number.as_ref().filter(|_| k == 0);
-                                        let c = note.as_ref().filter(|_| k == 0);
-                                        match (n, c) {
-                                            (Some(n), Some(c)) => format!("{mark}{n} {l} {c}"),
-                                            (Some(n), None) => format!("{mark}{n} {l}"),
-                                            (None, Some(c)) => format!("{mark}{l} {c}"),
-                                            (None, None) => format!("{mark}{l}"),
-                                        }
-                                    }))
-                                    .collect::<Vec<_>>()
-                                    .join("\n"),
-                            )
+                            // motion mode and feed beside a tilt) first, as they stand; after
+                            // it where they are the move of LinuxCNC's `G53.3 X Y Z` (to a
+                            // point in the plane, with the turn).
+                            let written = text.lines().enumerate().map(|(k, l)| {
+                                let n = number.as_ref().filter(|_| k == 0);
+                                let c = note.as_ref().filter(|_| k == 0);
+                                match (n, c) {
+                                    (Some(n), Some(c)) => format!("{mark}{n} {l} {c}"),
+                                    (Some(n), None) => format!("{mark}{n} {l}"),
+                                    (None, Some(c)) => format!("{mark}{l} {c}"),
+                                    (None, None) => format!("{mark}{l}"),
+                                }
+                            });
+                            let moves_after = split_comments(block, dialect)
+                                .0
+                                .to_uppercase()
+                                .split_whitespace()
+                                .any(|w| w == "G53.3");
+                            let lines: Vec<String> = if moves_after {
+                                written.chain(kept.iter().cloned()).collect()
+                            } else {
+                                kept.iter().cloned().chain(written).collect()
+                            };
+                            Some(lines.join("\n"))
                         }
                         Err(e) => {
                             uncarried += 1;

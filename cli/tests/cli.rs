@@ -2466,6 +2466,22 @@ fn program_to_writes_a_direct_mode_on_the_machine_given() {
     assert!(r.stderr.contains("not carried across"), "{}", r.stderr);
 }
 
+/// LinuxCNC's `G53.3 X Y Z` turns the axes to the plane and moves to the point: the turn,
+/// then the move (it was passed over: the axes never turned).
+#[test]
+fn program_to_turns_and_moves_at_g53_3() {
+    let prog = "G68.2 X0 Y0 Z0 I0 J30 K0\nG53.3 X10 Y20 Z30\nG69\n";
+    assert_eq!(
+        program_to(prog, "fanuc", "haas"),
+        [
+            "G268 X0. Y0. Z0. I30. J0. K0. Q123",
+            "G253",
+            "X10 Y20 Z30",
+            "G269"
+        ]
+    );
+}
+
 /// Heidenhain's `M126` beside the turn to the plane (the rotary axes take the shortest way
 /// from now on) has no word in a `G53.1` or a `CYCLE800`: standard error says so (it was
 /// dropped silently); within Heidenhain the block stays as it stands.

@@ -214,9 +214,9 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
             Err(e) if e.error == Error::Parse => Some(Err(e)),
             Err(_) => None,
         };
-    } else if let Some(positioning) = turn_code(c) {
+    } else if let Some((positioning, moves)) = turn_code(c) {
         // Turns the tool to the plane: no frame change.
-        let p = g53_words(c, positioning);
+        let p = g53_words(c, positioning, moves);
         return Some(p.and_then(|(p, column)| {
             let allowed = "P: 0 (shortest), 1 (positive turn) or 2 (negative turn)";
             let choice =
@@ -420,14 +420,19 @@ fn in_plane(
     Ok(Block::Frame(m.with_frame(Frame::about_point(turn, centre))))
 }
 
-/// `G53.1` (the rotary axes turn the tool to the plane) or `G53.6` (the same, the tool tip
+/// `G53.1` (the rotary axes turn the tool to the plane), `G53.6` (the same, the tool tip
 /// kept in place \[3rd: LinuxCNC's remap, "with TCP"; Fanuc's tool center point
-/// retention\]) at the cursor.
-fn turn_code(c: &mut Cursor) -> Option<Positioning> {
+/// retention\]) or LinuxCNC's `G53.3` (the turn with a move to `X Y Z` in the plane) at the
+/// cursor, and whether the block moves to a point too.
+fn turn_code(c: &mut Cursor) -> Option<(Positioning, bool)> {
     if c.code(b"G53.1") {
-        Some(Positioning::Turn)
+        Some((Positioning::Turn, false))
     } else if c.code(b"G53.6") {
-        Some(Positioning::Move)
+        Some((Positioning::Move, false))
+    } else if c.code(b"G53.3") {
+        // LinuxCNC's: "same as G53.1 but with simultaneous move to the XYZ coords on the
+        // twp plane" [3rd: its tilted-work-plane remap]; the move is no frame word.
+        Some((Positioning::Turn, true))
     } else {
         None
     }
@@ -438,7 +443,16 @@ fn turn_code(c: &mut Cursor) -> Option<Positioning> {
 /// generator writes `G53.6 H<tool>` \[3rd\]; Fanuc's tool center point retention needs the
 /// tool's length): checked as an offset number (a whole number, 0 or more), not kept (no
 /// frame word). Not on `G53.1`, which turns about the pivot.
-fn g53_words(c: &mut Cursor, positioning: Positioning) -> Result<(f64, usize), LineError> {
+fn g53_words(
+    c: &mut Cursor,
+    positioning: Positioning,
+    moves: bool,
+) -> Result<(f64, usize), LineError> {
+    if moves {
+        // `G53.3 P X Y Z`: the point moved to in the plane (a move, not kept).
+        let w = address_words(c, *b"PXYZ", SYNTAX, false, (true, true))?;
+        return Ok((w.values[0], w.column(0)));
+    }
     if positioning != Positioning::Move {
         let w = address_words(c, *b"P", SYNTAX, false, (true, true))?;
         return Ok((w.values[0], w.column(0)));
@@ -628,6 +642,7 @@ pub(crate) const FANUC_FRAME_WORDS: &[(u32, &[u8])] = &[
     (680, b"XYZIJKR"),
     (690, b""),
     (531, b"P"),
+    (533, b"P"),
     (536, b"PH"),
     (520, b"XYZ"),
 ];
@@ -802,7 +817,7 @@ impl Family for Fanuc {
                 return in_block_plane(m, text, result);
             }
         }
-        iso_block(m, text, &[682, 683, 684, 531, 536], &[690], &[])
+        iso_block(m, text, &[682, 683, 684, 531, 533, 536], &[690], &[])
     }
 
     fn parse_form(text: &[u8]) -> Result<FormSpec, Error> {

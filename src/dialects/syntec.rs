@@ -243,7 +243,7 @@ impl Family for Syntec {
                 return fanuc::in_block_plane(m, text, result);
             }
         }
-        fanuc::iso_block(m, text, &[1580, 682, 683, 684, 531, 536], &[690], &[])
+        fanuc::iso_block(m, text, &[1580, 682, 683, 684, 531, 533, 536], &[690], &[])
     }
 
     /// `G158` (`P10157`), `G158 P<p>`, `G68.2`.
