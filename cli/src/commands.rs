@@ -807,7 +807,11 @@ fn machine(a: &MachineArgs) -> Result<Machine, Failure> {
         m.push_axis(RotaryAxis::new(side, dir, point))
             .map_err(|e| {
                 let why = match e {
-                    Error::BadArgument => "a zero direction, or parallel to the axis before it",
+                    Error::BadArgument => {
+                        "a zero direction, or parallel to its neighbour in the chain from the \
+                         workpiece through the table's axes to the bed and through the head's \
+                         axes to the tool (the outermost table and head axes are neighbours)"
+                    }
                     Error::TableFull => "a machine has at most three rotary axes",
                     e => e.message(),
                 };

@@ -51,8 +51,8 @@ pub struct Tcp {
 /// The pose of a CL point (a tool tip and a tool direction in workpiece coordinates, as
 /// CAM systems write them and [`Machine::tcp_inverse`] takes them): the translation `tip`,
 /// the third column `direction` made a unit vector, X' the workpiece's X made
-/// perpendicular to it, or Y for a direction with an X component of 0.9 or more
-/// \[choice: only the direction counts for a machine of fewer than three rotary axes; with
+/// perpendicular to it, or Y for a unit direction whose X component is 0.9 or more in
+/// magnitude (either way along X) \[choice: only the direction counts for a machine of fewer than three rotary axes; with
 /// three, the turn about the tool is this frame's\], Y' = Z' × X'. A zero or non-finite
 /// direction: [`Error::Degenerate`].
 ///
