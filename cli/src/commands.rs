@@ -1777,14 +1777,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         // Whether the rotary axes turn at this block: a way of moving stated,
                         // or another tilt under the one kept (a datum shift under a tilt
                         // turns nothing).
-                        let staying = Program {
-                            positioning: Positioning::Stay,
-                            retract: Retract::None,
-                            retract_mm: 0.0,
-                            feed: Feed::Rapid,
-                            feed_mm_min: 0.0,
-                            ..from
-                        };
+                        let staying = from.staying();
                         let turns = from.positioning != p.positioning
                             || (from.frame.rotation, from.direct) != (p.frame.rotation, p.direct)
                             // The same swivel again (a tool change's): it turns again.
@@ -1800,14 +1793,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         }
                         // A turn of the rotary axes to the plane the target has no word for
                         // (`ROT`, `G158`): the same text as staying where they are.
-                        let still = Program {
-                            positioning: Positioning::Stay,
-                            retract: Retract::None,
-                            retract_mm: 0.0,
-                            feed: Feed::Rapid,
-                            feed_mm_min: 0.0,
-                            ..p
-                        };
+                        let still = p.staying();
                         let turn_lost =
                             p.positioning != Positioning::Stay && turns && unsaid_moving(&still);
                         if turn_lost {

@@ -7,7 +7,7 @@
 //! translation would turn the axes back to it before the next tilt.
 
 use crate::params::Params;
-use cncrot::dialects::program::{AxisChoice, Dialect, Feed, Positioning, Program, Remark, Retract};
+use cncrot::dialects::program::{AxisChoice, Dialect, Program, Remark};
 
 /// Nested calls followed at most this deep (a label that calls itself stops there).
 const DEPTH: usize = 8;
@@ -112,13 +112,8 @@ impl Labels {
         let &&(_, from, q) = calls.iter().find(|(_, _, q)| tilted(q)).or(calls.first())?;
         let entry = if tilted(&q) {
             Program {
-                positioning: Positioning::Stay,
-                retract: Retract::None,
-                retract_mm: 0.0,
-                feed: Feed::Rapid,
-                feed_mm_min: 0.0,
                 choice: AxisChoice::Closest,
-                ..q
+                ..q.staying()
             }
         } else {
             q

@@ -342,6 +342,28 @@ impl Program {
 }
 
 impl Program {
+    /// The state without a way of moving to its tilt: staying, no retraction, at rapid, as a
+    /// reader leaves a tilt that moves no axis (the choice of solution kept). What a
+    /// translator writes a block from or to where the axes are already at the plane.
+    ///
+    /// ```
+    /// use cncrot::dialects::program::{Dialect, Positioning, Program, Retract};
+    /// let p = Program::default();
+    /// let (p, _) = p.line(Dialect::Heidenhain, b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB50 FMAX").unwrap();
+    /// let s = p.staying();
+    /// assert_eq!((s.positioning, s.retract, s.frame), (Positioning::Stay, Retract::None, p.frame));
+    /// ```
+    pub fn staying(&self) -> Program {
+        Program {
+            positioning: Positioning::Stay,
+            retract: Retract::None,
+            retract_mm: 0.0,
+            feed: Feed::Rapid,
+            feed_mm_min: 0.0,
+            ..*self
+        }
+    }
+
     /// How the machine moves to the active tilt, as the tilt block says it.
     fn motion(&self) -> Motion {
         Motion {
@@ -830,24 +852,11 @@ pub(crate) fn block_states(from: &mut Program, to: &mut Program, text: &[u8]) ->
     restate(from, to, text);
     let step = added_step(from, to, text);
     match stated_motion(from, to, text) {
-        Some(true) if from.positioning != Positioning::Stay => *from = staying(from),
-        Some(false) => *to = staying(to),
+        Some(true) if from.positioning != Positioning::Stay => *from = from.staying(),
+        Some(false) => *to = to.staying(),
         _ => {}
     }
     step
-}
-
-/// `p` without a way of moving: staying, no retraction, at rapid (as a reader leaves a state
-/// that stays).
-fn staying(p: &Program) -> Program {
-    Program {
-        positioning: Positioning::Stay,
-        retract: Retract::None,
-        retract_mm: 0.0,
-        feed: Feed::Rapid,
-        feed_mm_min: 0.0,
-        ..*p
-    }
 }
 
 /// Whether the block `text`, read from `from` to `after` with the tilt the same and a way of
@@ -864,7 +873,7 @@ fn stated_motion(from: &Program, after: &Program, text: &[u8]) -> Option<bool> {
     if !same_tilt || after.positioning == Positioning::Stay {
         return None;
     }
-    let still = staying(&of_no_dialect(from));
+    let still = of_no_dialect(from).staying();
     match still.line(dialect, text) {
         Ok((q, Remark::Applied)) => Some(q.positioning != Positioning::Stay),
         _ => None,
