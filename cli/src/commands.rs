@@ -1336,7 +1336,8 @@ fn cancel_beside(dialect: Dialect, block: &str, p: &Program) -> Option<(Program,
 }
 
 /// A whole part program, block by block (see the command's help). Exit status 1 when a
-/// block was refused or (with `--to`) could not be carried across.
+/// block was refused or (with `--to`) could not be carried across, or was written without a
+/// turn, a tip kept in place or a retraction it states.
 pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     use std::io::Write;
     let dialect = input::dialect(a.dialect).map_err(option("--dialect"))?;
@@ -1664,9 +1665,6 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                 .map_or(true, |k| comments(k, dialect).is_none())
                         })
                         .map(|c| comment_in(&c, t.dialect));
-                    // Into another dialect also what the block restates (a cancel, a
-                    // datum shift, with nothing active: the control may have something
-                    // active); in its own, such a block stays as it stands.
                     // A block that moves the datum and turns nothing, and read again moves it
                     // again: it adds to the datum shift.
                     let origin = |q: &Program| (q.shift, q.frame.translation);
@@ -1675,6 +1673,9 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         && matches!(p.line(dialect, source.as_bytes()),
                             Ok((q, Remark::Applied)) if origin(&q) != origin(&p)))
                     .then(|| (line, block.to_string()));
+                    // Into another dialect also what the block restates (a cancel, a
+                    // datum shift, with nothing active: the control may have something
+                    // active); in its own, such a block stays as it stands.
                     let written = if t.dialect == dialect {
                         // What changes is written as `write_block` writes it (a datum shift
                         // under a tilt does not turn the axes again).
