@@ -856,6 +856,14 @@ fn write(d: Dialect, form: &str, f: &Frame, decimals: i32) -> Result<String, Err
 
 /// Every writer's line reads back, in the same dialect, as the same frame: shortest numbers
 /// to rounding (1e-12), rounded ones to their decimals.
+/// What `write_block` writes into `to` (form `form`, 4 decimals) for `text`, read from
+/// `before` to `after`.
+fn block_in(to: Dialect, form: &str, before: &Program, after: &Program, text: &[u8]) -> String {
+    let mut buf = [0u8; 1024];
+    let (n, _) = write_block(to, form.as_bytes(), before, after, text, 4, &mut buf).unwrap();
+    String::from_utf8_lossy(&buf[..n]).into_owned()
+}
+
 #[test]
 fn every_writer_reads_back() {
     for f in frames() {
@@ -2832,32 +2840,22 @@ fn a_shift_under_a_turned_plane_turns_nothing() {
     let text = b"CYCL DEF 7.1 X+10";
     let (after, _) = before.line(d, text).unwrap();
     assert_eq!(after.positioning, Positioning::Turn);
-    let mut buf = [0u8; 1024];
-    let (n, _) = write_block(Dialect::Fanuc, b"G68.2", &before, &after, text, 4, &mut buf).unwrap();
     assert_eq!(
-        &buf[..n],
-        b"G69\nG52 X8.6603 Y0. Z-5.\nG68.2 X0. Y0. Z0. I90. J30. K-90."
+        block_in(Dialect::Fanuc, "G68.2", &before, &after, text),
+        "G69\nG52 X8.6603 Y0. Z-5.\nG68.2 X0. Y0. Z0. I90. J30. K-90."
     );
-    let (n, _) = write_block(
-        Dialect::Sinumerik,
-        b"CYCLE800",
-        &before,
-        &after,
-        text,
-        4,
-        &mut buf,
-    )
-    .unwrap();
     assert_eq!(
-        &buf[..n],
-        b"CYCLE800(0,\"\",0,57,8.6603,0,-5,0,30,0,0,0,0,0,0,0)"
+        block_in(Dialect::Sinumerik, "CYCLE800", &before, &after, text),
+        "CYCLE800(0,\"\",0,57,8.6603,0,-5,0,30,0,0,0,0,0,0,0)"
     );
     // The plane itself still turns, as before.
     let p0 = Program::default();
     let plane = b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ+";
     let (p1, _) = p0.line(d, plane).unwrap();
-    let (n, _) = write_block(Dialect::Fanuc, b"G68.2", &p0, &p1, plane, 4, &mut buf).unwrap();
-    assert_eq!(&buf[..n], b"G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1");
+    assert_eq!(
+        block_in(Dialect::Fanuc, "G68.2", &p0, &p1, plane),
+        "G68.2 X0. Y0. Z0. I90. J30. K-90.\nG53.1"
+    );
 }
 
 /// A swivel to the plane the state is at already (a post's tool change: the same `CYCLE800`
@@ -2872,60 +2870,29 @@ fn a_swivel_to_the_same_plane_turns_again() {
     let before = read(d, &[text]);
     let (after, _) = before.line(d, text.as_bytes()).unwrap();
     assert_eq!(after, before);
-    let mut buf = [0u8; 1024];
-    let (n, _) = write_block(
-        Dialect::Heidenhain,
-        b"PLANE SPATIAL",
-        &before,
-        &after,
-        text.as_bytes(),
-        4,
-        &mut buf,
-    )
-    .unwrap();
+    let text = text.as_bytes();
+    let heidenhain = |b: &Program, a: &Program, t: &[u8]| {
+        block_in(Dialect::Heidenhain, "PLANE SPATIAL", b, a, t)
+    };
     assert_eq!(
-        &buf[..n],
-        b"PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX SEQ-"
+        heidenhain(&before, &after, text),
+        "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX SEQ-"
     );
-    let (n, _) = write_block(
-        Dialect::Fanuc,
-        b"G68.2",
-        &before,
-        &after,
-        text.as_bytes(),
-        4,
-        &mut buf,
-    )
-    .unwrap();
-    assert_eq!(&buf[..n], b"G53.1");
+    assert_eq!(
+        block_in(Dialect::Fanuc, "G68.2", &before, &after, text),
+        "G53.1"
+    );
     // Fanuc's `G53.1` again, into Heidenhain: the plane again with TURN.
     let f = Dialect::Fanuc;
     let before = read(f, &["G68.2 X0 Y0 Z0 I0 J30 K0", "G53.1", "T2 M6"]);
     let (after, _) = before.line(f, b"G53.1").unwrap();
-    let (n, _) = write_block(
-        Dialect::Heidenhain,
-        b"PLANE SPATIAL",
-        &before,
-        &after,
-        b"G53.1",
-        4,
-        &mut buf,
-    )
-    .unwrap();
-    assert_eq!(&buf[..n], b"PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN FMAX");
+    assert_eq!(
+        heidenhain(&before, &after, b"G53.1"),
+        "PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN FMAX"
+    );
     // A block that states no way of moving under the same tilt stays written as nothing.
     let (after, _) = before.line(f, b"G0 X10").unwrap();
-    let (n, _) = write_block(
-        Dialect::Heidenhain,
-        b"PLANE SPATIAL",
-        &before,
-        &after,
-        b"G0 X10",
-        4,
-        &mut buf,
-    )
-    .unwrap();
-    assert_eq!(n, 0);
+    assert_eq!(heidenhain(&before, &after, b"G0 X10"), "");
 }
 
 /// The iTNC 530 manual's table of `SEQ` on an A/C table machine (A about X carrying C about

@@ -1797,15 +1797,16 @@ fn program_to_cancels_beside_a_work_offset() {
     // SINUMERIK's SCALE and MIRROR replace the programmable frame, its rotation with it
     // (substituting commands, as TRANS and ROT): the tilt is cancelled, the block kept
     // (a helper's find: the Heidenhain translation stayed tilted to the program's end).
+    // `ROT Y30` is Ry(30°), SPB+30.
     let r = translate(
-        "ROTS X10 Y20\nSCALE X2\nG0 X10\nASCALE X2\n",
+        "ROT Y30\nSCALE X2\nG0 X10\nASCALE X2\n",
         "sinumerik",
         "heidenhain",
     );
     assert_eq!(
         r.stdout.lines().collect::<Vec<_>>(),
         [
-            "PLANE SPATIAL SPA+9.408 SPB+20 SPC+0 STAY",
+            "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY",
             "SCALE X2",
             "PLANE RESET STAY",
             "G0 X10",
