@@ -143,10 +143,11 @@ struct Bench {
 }
 
 impl Bench {
-    /// The calls for a row: all of them, or none when `--only` names another row.
+    /// The calls for a row: all of them, or none when `--only` names other rows.
     fn n(&self, function: &str, class: &str) -> usize {
+        let row = format!("{function}/{class}");
         match &self.only {
-            Some(row) if *row != format!("{function}/{class}") => 0,
+            Some(rows) if !rows.split(',').any(|r| r == row) => 0,
             _ => self.calls,
         }
     }
@@ -1150,7 +1151,7 @@ fn main() {
         .nth(1)
         .map(|n| n.parse().expect("--calls N"))
         .unwrap_or(10_000_000);
-    // `--only "FUNCTION/CLASS"` runs that row alone (benches/instructions.sh counts its
+    // `--only "FUNCTION/CLASS[,FUNCTION/CLASS…]"` runs those rows alone (benches/instructions.sh counts a row's
     // instructions under callgrind); the other rows get no calls and are not printed.
     let only: Option<String> = std::env::args().skip_while(|a| a != "--only").nth(1);
     let ns = ns_per_tick();
