@@ -905,6 +905,21 @@ static void restated_blocks(void) {
     int32_t s = cncrot_program_write_block(&p, &shifted, "ATRANS X10", 10, CNCROT_DIALECT_FANUC, "G68.2", 4, out,
                                            sizeof out);
     CHECK(s >= 0 && strstr(out, "G68.4 X10.") != NULL && strstr(out, "G53.1") == NULL, "%d: %s", (int)s, out);
+    /* Cycle 19's first line under a plane that turned changes nothing and states no turn:
+     * nothing to write (it was the plane again, in G68.2 mode). */
+    cncrot_program h;
+    memset(&h, 0, sizeof h);
+    const char *cycle[] = {"CYCL DEF 19.0 WORKING PLANE", "CYCL DEF 19.1 B+30 C+0", "L B+Q121 C+Q122 R0 FMAX"};
+    for (size_t k = 0; k < 3; k++) {
+      CHECK_STATUS(cncrot_program_line(&h, CNCROT_DIALECT_HEIDENHAIN, cycle[k], strlen(cycle[k])), CNCROT_STATUS_OK);
+    }
+    cncrot_program head = h;
+    CHECK_STATUS(cncrot_program_line(&head, CNCROT_DIALECT_HEIDENHAIN, cycle[0], strlen(cycle[0])), CNCROT_STATUS_OK);
+    strcpy(out, "untouched");
+    CHECK_STATUS(cncrot_program_write_block(&h, &head, cycle[0], strlen(cycle[0]), CNCROT_DIALECT_FANUC, "G68.2", 4,
+                                            out, sizeof out),
+                 CNCROT_STATUS_OK);
+    CHECK(strcmp(out, "") == 0, "%s", out);
   }
   /* A change: the text of cncrot_program_write_change. */
   cncrot_program before, after;

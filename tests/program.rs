@@ -2895,6 +2895,39 @@ fn a_swivel_to_the_same_plane_turns_again() {
     assert_eq!(heidenhain(&before, &after, b"G0 X10"), "");
 }
 
+/// A block that changes nothing and states no way of moving under a plane that turned is
+/// written as nothing: cycle 19's first line (`CYCL DEF 19.0 WORKING PLANE`, which only
+/// names the cycle) where a program switches the cycle off after `L B+Q121 C+Q122`. It was
+/// written as the plane again without its turn (`G68.2 …` in `G68.2` mode, just before the
+/// `G69` of the cancel).
+#[test]
+fn a_block_that_changes_nothing_writes_nothing() {
+    let h = Dialect::Heidenhain;
+    let before = read(
+        h,
+        &[
+            "CYCL DEF 19.0 WORKING PLANE",
+            "CYCL DEF 19.1 B+30 C+0",
+            "L B+Q121 C+Q122 R0 FMAX",
+        ],
+    );
+    assert_eq!(before.positioning, Positioning::Turn);
+    let text = b"CYCL DEF 19.0 WORKING PLANE";
+    let (after, _) = before.line(h, text).unwrap();
+    assert_eq!(after, before);
+    assert_eq!(block_in(Dialect::Fanuc, "G68.2", &before, &after, text), "");
+    assert_eq!(
+        block_in(Dialect::Sinumerik, "CYCLE800", &before, &after, text),
+        ""
+    );
+    // The cancel that follows is the cancel.
+    let (off, _) = after.line(h, b"CYCL DEF 19.1").unwrap();
+    assert_eq!(
+        block_in(Dialect::Fanuc, "G68.2", &after, &off, b"CYCL DEF 19.1"),
+        "G69"
+    );
+}
+
 /// The iTNC 530 manual's table of `SEQ` on an A/C table machine (A about X carrying C about
 /// Z, no limit switches), `PLANE SPATIAL SPA+0 SPB+45 SPC+0`: from A0 C0 `SEQ+` gives
 /// A+45 C+90, `SEQ-` A−45 C−90; without `SEQ` A+45 C+90 from A0 C0 (both are as far) and

@@ -853,7 +853,10 @@ pub(crate) fn block_states(from: &mut Program, to: &mut Program, text: &[u8]) ->
     let step = added_step(from, to, text);
     match stated_motion(from, to, text) {
         Some(true) if from.positioning != Positioning::Stay => *from = from.staying(),
-        Some(false) => *to = to.staying(),
+        // A block that changed nothing and restates nothing (`CYCL DEF 19.0`, which only
+        // names the cycle; a `G68.2` again before its `G53.1`) writes nothing: written as
+        // staying, the tilt came out again.
+        Some(false) if from != to => *to = to.staying(),
         _ => {}
     }
     step
