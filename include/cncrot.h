@@ -1926,7 +1926,8 @@ int32_t cncrot_program_init(struct cncrot_program *program, uint32_t options);
  * tables and frame variables such as `G10 L2`, `#5221=`, `$P_UIFR[1]=`, `FN 17`; datum
  * shifts from tables such as `CYCL DEF 7.1 #5`, `TRANS DATUM TABLE`; mirroring, scaling
  * and rotations that need more than the state keeps such as `MIRROR`, `G51.1`,
- * `CYCL DEF 10`, Haas's `G68`; a tilt through the machine's axes such as `TOROT`).
+ * `CYCL DEF 10`, Haas's `G68`; a tilt through the machine's axes such as `TOROT`, Fanuc's
+ * `G68.3`).
  * Heidenhain's `CYCL DEF 19` (WORKING PLANE) is read with spatial angles, as `PLANE
  * SPATIAL`, or as the rotary axes' positions when the state was initialised with
  * `CNCROT_PROGRAM_HEIDENHAIN_AXIS_ANGLES`. A block that selects another working plane
@@ -1942,7 +1943,7 @@ int32_t cncrot_program_init(struct cncrot_program *program, uint32_t options);
  * `CNCROT_STATUS_LINE_TOO_LONG`, `CNCROT_STATUS_BAD_ARGUMENT` (unknown dialect, a dialect
  * other than the program's, a value outside its set such as `_ST`, a `P` or `Q` that is no
  * whole number, an invalid `_MIHEAD`), `CNCROT_STATUS_BAD_STATE` (a state this library did
- * not write), `CNCROT_STATUS_NOT_AVAILABLE` (`G68.3`; a direct mode that is
+ * not write), `CNCROT_STATUS_NOT_AVAILABLE` (a direct mode that is
  * additive, incremental or turns after its rotation, and an incremental command such as
  * `PLANE RELATIV`, `G68.4`, `AROT` on an active direct mode: they need the machine's
  * kinematics), `CNCROT_STATUS_OUT_OF_RANGE` (a number of magnitude 1e100 or

@@ -565,8 +565,12 @@ fn fanuc_and_haas() {
     assert_eq!((e.error, e.column), (Error::BadArgument, 8));
     let e = tilted.line(d, b"G53.1 H1").unwrap_err();
     assert_eq!((e.error, e.column), (Error::UnknownWord, 7));
-    let e = Program::default().line(d, b"G68.3 R0").unwrap_err();
-    assert_eq!(e.error, Error::NotAvailable);
+    // `G68.3`: the plane of the tool direction where the machine stands, which the program
+    // does not state: not followed, the state unchanged; its words checked.
+    let (p, remark) = tilted.line(d, b"G68.3 X10 Y0 Z0 R30").unwrap();
+    assert_eq!((p, remark), (tilted, Remark::NotFollowed));
+    let e = Program::default().line(d, b"G68.3 R0 A1").unwrap_err();
+    assert_eq!((e.error, e.column), (Error::UnknownWord, 10));
 
     let d = Dialect::Haas;
     let f = rot(d, &["G268 X0 Y0 Z0 I0 J30 K0 Q123"]);

@@ -197,7 +197,8 @@ pub(crate) struct Fanuc;
 /// ([`g68_2_rpy`], `G68.4 P1` incrementally). `P2` (three points), `P3` (two vectors), `P4`
 /// (projection angles) and LinuxCNC's `R` are forms whose words the library does not read
 /// (their blocks are defined in no text found): such a block is [`Block::NotFollowed`],
-/// never a guessed frame.
+/// never a guessed frame. So is `G68.3 X Y Z R`, the plane of the tool direction where the
+/// machine stands (its rotary positions are not the program's).
 /// `G53.1`/`G53.6 P`: the direction the priority (master) axis turns, kept as the
 /// state's choice ([`g53_choice`]).
 pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineError>> {
@@ -233,12 +234,11 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
     } else if c.code(b"G52") {
         return Some(read_g52(m, c));
     } else if c.code(b"G68.3") {
-        // The tool direction comes from the machine's position: needs the kinematics.
-        return Some(Err(LineError {
-            error: Error::NotAvailable,
-            column,
-            expected: None,
-        }));
+        // The plane of the tool direction where the machine stands: a frame the program
+        // does not state (the rotary positions are the machine's), not followed [choice:
+        // never a guessed frame]; its words checked as those of a command the family reads.
+        let words = address_words(c, *b"XYZRF", SYNTAX, false, (true, true));
+        return Some(words.map(|_| Block::NotFollowed));
     } else {
         return None;
     };
@@ -787,8 +787,9 @@ impl Family for Fanuc {
 
     /// One block of a Fanuc-style program: `G68.2 X Y Z I J K` (omitted words are 0; a new
     /// `G68.2` replaces the active plane \[choice\]), `G68.4` (the same, on the active
-    /// plane), `G68 X Y Z I J K R` (the 3-D coordinate conversion), `G69` (cancel), `G53.1`/`G53.6` (no frame change), `G68.3` (needs the tool
-    /// direction from the machine: [`Error::NotAvailable`]), with a block number, `/`,
+    /// plane), `G68 X Y Z I J K R` (the 3-D coordinate conversion), `G69` (cancel), `G53.1`/`G53.6` (no frame change), `G68.3` (the plane of
+    /// the tool direction where the machine stands, a frame the program does not state: not
+    /// followed, its words checked), with a block number, `/`,
     /// `( … )` and `;`. Numbers without a point are whole units (calculator-type input
     /// \[choice: a parameter of the control; write the point to be safe\]). These commands
     /// start the block (after its number); `G69` may stand among other words. Every other
