@@ -920,6 +920,22 @@ static void restated_blocks(void) {
                                             out, sizeof out),
                  CNCROT_STATUS_OK);
     CHECK(strcmp(out, "") == 0, "%s", out);
+    /* A reset that turns the axes home beside a datum shift: the cancel the shift needs first
+     * is that turn (it was CYCLE800(), the turn lost). */
+    cncrot_program d;
+    memset(&d, 0, sizeof d);
+    const char *datum[] = {"TRANS DATUM AXIS X+50", "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX"};
+    for (size_t k = 0; k < 2; k++) {
+      CHECK_STATUS(cncrot_program_line(&d, CNCROT_DIALECT_HEIDENHAIN, datum[k], strlen(datum[k])),
+                   CNCROT_STATUS_OK);
+    }
+    const char *reset = "PLANE RESET TURN MB MAX FMAX";
+    cncrot_program home = d;
+    CHECK_STATUS(cncrot_program_line(&home, CNCROT_DIALECT_HEIDENHAIN, reset, strlen(reset)), CNCROT_STATUS_OK);
+    CHECK_STATUS(cncrot_program_write_block(&d, &home, reset, strlen(reset), CNCROT_DIALECT_SINUMERIK, "CYCLE800",
+                                            4, out, sizeof out),
+                 CNCROT_STATUS_OK);
+    CHECK(strcmp(out, "CYCLE800(4,\"\",0,57,0,0,0,0,0,0,0,0,0,-1,0,0)\nTRANS X=50 Y=0 Z=0") == 0, "%s", out);
   }
   /* A change: the text of cncrot_program_write_change. */
   cncrot_program before, after;

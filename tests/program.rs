@@ -2932,6 +2932,57 @@ fn a_block_that_changes_nothing_writes_nothing() {
     );
 }
 
+/// A reset that turns the axes home while a datum shift changes or stays apart from the
+/// tilt: the cancel the shift needs first is that turn. Two helpers' finds: `PLANE RESET TURN
+/// MB MAX` after `TRANS DATUM AXIS X+50` and a plane, into SINUMERIK, was `CYCLE800()` (the
+/// turn lost, with a note that it had no word: `CYCLE800` of zeros with `_DIR` says it);
+/// a `CYCLE800` of zeros with `_DIR` −1 after a swivel with `_Z0` 50 and `CYCLE800()`, into
+/// Heidenhain, was `PLANE RESET STAY` and cycle 7 (the swivel home lost, no note).
+#[test]
+fn a_reset_that_turns_home_beside_a_shift_turns() {
+    let h = Dialect::Heidenhain;
+    let before = read(
+        h,
+        &[
+            "TRANS DATUM AXIS X+50",
+            "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX",
+        ],
+    );
+    let text = b"PLANE RESET TURN MB MAX FMAX";
+    let (after, _) = before.line(h, text).unwrap();
+    assert_eq!(
+        block_in(Dialect::Sinumerik, "CYCLE800", &before, &after, text),
+        "CYCLE800(4,\"\",0,57,0,0,0,0,0,0,0,0,0,-1,0,0)\nTRANS X=50 Y=0 Z=0"
+    );
+    // From a shift alone, the turn home is the zero tilt that turns, then the shift.
+    let shifted = read(h, &["TRANS DATUM AXIS X+50"]);
+    let text = b"PLANE RESET TURN FMAX";
+    let (home, _) = shifted.line(h, text).unwrap();
+    assert_eq!(
+        block_in(Dialect::Sinumerik, "CYCLE800", &shifted, &home, text),
+        "CYCLE800(0,\"\",0,57,0,0,0,0,0,0,0,0,0,-1,0,0)\nTRANS X=50 Y=0 Z=0"
+    );
+    let s = Dialect::Sinumerik;
+    let before = read(
+        s,
+        &[
+            "CYCLE800(1,\"TC1\",0,57,0,0,50,0,30,0,0,0,0,-1)",
+            "CYCLE800()",
+        ],
+    );
+    let text = b"CYCLE800(1,\"TC1\",0,57,0,0,0,0,0,0,0,0,0,-1)";
+    let (after, _) = before.line(s, text).unwrap();
+    let tilted = read(s, &["CYCLE800(1,\"TC1\",0,57,0,0,50,0,30,0,0,0,0,-1)"]);
+    // The cancel and the swivel home written as one (a translator joins them).
+    let mut buf = [0u8; 1024];
+    let (n, _) = write_change(h, b"PLANE SPATIAL", &tilted, &after, 4, &mut buf).unwrap();
+    assert_eq!(
+        String::from_utf8_lossy(&buf[..n]),
+        "PLANE RESET TURN MB MAX FMAX\nCYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+0\n\
+         CYCL DEF 7.2 Y+0\nCYCL DEF 7.3 Z+0"
+    );
+}
+
 /// The iTNC 530 manual's table of `SEQ` on an A/C table machine (A about X carrying C about
 /// Z, no limit switches), `PLANE SPATIAL SPA+0 SPB+45 SPC+0`: from A0 C0 `SEQ+` gives
 /// A+45 C+90, `SEQ-` A−45 C−90; without `SEQ` A+45 C+90 from A0 C0 (both are as far) and

@@ -856,7 +856,9 @@ pub(crate) fn block_states(from: &mut Program, to: &mut Program, text: &[u8]) ->
         // A block that changed nothing and restates nothing (`CYCL DEF 19.0`, which only
         // names the cycle; a `G68.2` again before its `G53.1`) writes nothing: written as
         // staying, the tilt came out again.
-        Some(false) if from != to => *to = to.staying(),
+        // Untilted (the axes turned home by a zero tilt): no tilt is written again around a
+        // datum shift, so nothing to keep from turning.
+        Some(false) if from != to && !untilted(to) => *to = to.staying(),
         _ => {}
     }
     step
@@ -1292,6 +1294,12 @@ fn change(
     // nothing is left to take back.
     let rewrite = rewrite || (moved && ((zero_turn(before) && !turn_block) || zero_turn(after)));
     let mut tilt_written = false;
+    // The axes turned home with the cancel a new datum shift needs first, where the tilt
+    // block says how to move (`PLANE RESET TURN MB MAX`, a `CYCLE800` of zeros with `_DIR`):
+    // the cancel is that turn, written before the shift; nothing is left to write after it.
+    // It was the cancel that stays (`PLANE RESET STAY`, `CYCLE800()`), and the turn was lost.
+    let home = !active && zero_turn(after) && dialect.positioning_in_block();
+    let cancel_how = || if home { how() } else { stay() };
     let tilt = |out: &mut Out| match d1 {
         Some(d) => dialect
             .write_direct(spec, t1.translation, d, how(), decimals, out)
@@ -1299,17 +1307,18 @@ fn change(
         None => tilt_block(dialect, spec, &t1, how(), decimals, out),
     };
     if dialect.keeps_shift() {
+        let mut homed = false;
         if s0 != s1 {
             if t0 != Frame::IDENTITY || d0.is_some() {
                 next(out);
-                tilt_block(dialect, spec, &Frame::IDENTITY, stay(), decimals, out)?;
-                (t0, d0) = (Frame::IDENTITY, None);
+                tilt_block(dialect, spec, &Frame::IDENTITY, cancel_how(), decimals, out)?;
+                (t0, d0, homed) = (Frame::IDENTITY, None, home);
             }
             next(out);
             dialect.write_shift(s1, decimals, out)?;
         }
         let replaced = (t0, d0) != (t1, d1);
-        if replaced || rewrite {
+        if (replaced || rewrite) && !homed {
             // A new tilt over an active one where a block of its own turns the axes
             // (`G68.2`, `G268`): cancelled first (`G69`, `G269`), which means the same where
             // the control replaces the tilt and is what a control that refuses a tilt in
@@ -1333,9 +1342,12 @@ fn change(
         let tilted0 = t0 != Frame::IDENTITY || d0.is_some();
         let shifted0 = !tilted0 && s0 != [0.0; 3];
         if t1 == Frame::IDENTITY && d1.is_none() && (s1 != [0.0; 3] || shifted0) {
-            if tilted0 {
+            // A tilt cancelled, or the axes turned home from no tilt (`PLANE RESET TURN`
+            // after a datum shift alone): the cancel, or the zero tilt that turns them, then
+            // the shift alone.
+            if tilted0 || (home && moved) {
                 next(out);
-                tilt_block(dialect, spec, &Frame::IDENTITY, stay(), decimals, out)?;
+                tilt_block(dialect, spec, &Frame::IDENTITY, cancel_how(), decimals, out)?;
             }
             next(out);
             match dialect.write_shift(s1, decimals, out) {
