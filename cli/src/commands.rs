@@ -1374,7 +1374,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     let mut uncarried = 0;
     // Blocks written without a turn, a tip kept in place or a retraction the source has.
     let mut moved_otherwise = 0;
-    // A block refused since the last one that set the frame: the control's tilt is not the
+    // A block refused or not followed since the last one that set the frame: the control's tilt is not the
     // state's, and a block that only turns the axes to it (`G53.1`) cannot be carried across.
     let mut lost = false;
     let stdout = std::io::stdout();
@@ -1530,6 +1530,10 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                 } else {
                     "changes the frame in a way cncrot does not follow; cncrot's frame stays as it was"
                 };
+                // The control's tilt is no longer the state's, unless the cancel beside sets
+                // it again: a turn to the plane after it (`G53.1` after `G68.2 P3`) is not
+                // carried across.
+                lost = cancel.is_none();
                 if let Some((c, _)) = cancel {
                     p = c;
                     run = None;
@@ -1633,7 +1637,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     uncarried += 1;
                     ok = false;
                     eprintln!(
-                        "cncrot: line {line}: not carried across as {} {}: it moves the machine to a tilt refused above: {block}",
+                        "cncrot: line {line}: not carried across as {} {}: it moves the machine to a tilt refused or not followed above: {block}",
                         input::dialect_name(t.dialect),
                         t.form
                     );

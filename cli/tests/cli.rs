@@ -1630,6 +1630,38 @@ fn program_positions_follow_the_blocks_that_move_the_axes() {
     assert_eq!(got, ["-30.0000 0.0000", "30.0000 -180.0000"]);
 }
 
+/// A turn to a tilt not followed above (Fanuc's two vectors, `G68.2 P3`, whose words no text
+/// found defines; then `G53.1`) is not written as a turn to the plane the state has: it was
+/// `PLANE RESET TURN FMAX`, which turns the axes home where the control turns them to the
+/// `P3` plane (a helper's find). Kept as it stands and flagged; a tilt after it is written.
+#[test]
+fn program_to_keeps_a_turn_to_a_tilt_not_followed() {
+    let prog = "G68.2 P3 Q1 X10. Y0. Z0. I1. J0. K0.\nG68.2 P3 Q2 I0. J-0.5 K0.866\nG0 X0\nG53.1\nG69\nG68.2 X0 Y0 Z0 I0 J30 K0\nG53.1\n";
+    let r = translate(prog, "fanuc", "heidenhain");
+    assert_eq!(r.code, 1);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(
+        lines,
+        [
+            "G68.2 P3 Q1 X10. Y0. Z0. I1. J0. K0.",
+            "G68.2 P3 Q2 I0. J-0.5 K0.866",
+            "G0 X0",
+            "G53.1",
+            "PLANE RESET STAY",
+            "PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN FMAX"
+        ]
+    );
+    assert!(
+        r.stderr.contains("line 4: not carried across as heidenhain PLANE SPATIAL: it moves the machine to a tilt refused or not followed above"),
+        "{}",
+        r.stderr
+    );
+    // A work offset beside a cancel sets the frame again: the turn after it is written.
+    let prog = "G69 G54\nG68.2 X0 Y0 Z0 I0 J30 K0\nG53.1\n";
+    let r = translate(prog, "fanuc", "heidenhain");
+    assert!(!r.stderr.contains("not carried across as"), "{}", r.stderr);
+}
+
 /// A turn to a tilt refused above (Hurco's `G68.2 … U V W`, then `G53.1`) is not written as
 /// a turn to the plane the state has (the untilted one: `PLANE RESET TURN` would move the
 /// machine where the source does not): kept as it stands and flagged; a cancel after it sets
@@ -1651,7 +1683,7 @@ fn program_to_keeps_a_turn_to_a_refused_tilt() {
         ]
     );
     assert!(
-        r.stderr.contains("line 3: not carried across as heidenhain PLANE SPATIAL: it moves the machine to a tilt refused above")
+        r.stderr.contains("line 3: not carried across as heidenhain PLANE SPATIAL: it moves the machine to a tilt refused or not followed above")
             && r.stderr.contains("1 refused, 1 not carried across"),
         "{}",
         r.stderr
