@@ -1335,6 +1335,66 @@ fn cancel_beside(dialect: Dialect, block: &str, p: &Program) -> Option<(Program,
     }
 }
 
+/// The work offsets a block selects (`G54`–`G59`, not `G54.1`), when they are all that is
+/// not followed in it (the block read without them is not "not followed"): their numbers.
+/// `None` for any other block.
+fn work_offsets(dialect: Dialect, block: &str, p: &Program) -> Option<Vec<u32>> {
+    if dialect == Dialect::Heidenhain {
+        return None;
+    }
+    let code = block.split(['(', ';']).next().unwrap_or("");
+    let comment = &block[code.len()..];
+    let upper = code.to_uppercase();
+    let bytes = upper.as_bytes();
+    let mut found = Vec::new();
+    let mut kept = String::new();
+    let mut k = 0;
+    while k < bytes.len() {
+        let starts = bytes.get(k) == Some(&b'G')
+            && !k
+                .checked_sub(1)
+                .and_then(|j| bytes.get(j))
+                .is_some_and(|b| b.is_ascii_alphanumeric() || *b == b'_' || *b == b'$');
+        let digits: String = upper[k + 1..]
+            .chars()
+            .take_while(|c| c.is_ascii_digit() || *c == '.')
+            .collect();
+        if starts {
+            if let Ok(n) = digits.parse::<u32>() {
+                if (54..=59).contains(&n) {
+                    found.push(n);
+                    kept.push(' ');
+                    k += 1 + digits.len();
+                    continue;
+                }
+            }
+        }
+        kept.push(char::from(bytes[k]));
+        k += 1;
+    }
+    if found.is_empty() {
+        return None;
+    }
+    kept.push_str(comment);
+    match p.line(dialect, kept.trim().as_bytes()) {
+        Ok((_, Remark::NotFollowed)) | Err(_) => None,
+        Ok(_) => Some(found),
+    }
+}
+
+/// Whether the work offsets `offsets` (`G54`–`G59`) of a `from` program select the same in
+/// `to`: `G54`–`G59` among the ISO-style dialects (Fanuc, Haas, Syntec), `G54`–`G57` also in
+/// SINUMERIK (settable frames) and TwinCAT (zero offsets from the table), whose `G58`/`G59`
+/// are other commands; Heidenhain has none.
+fn offsets_same(from: Dialect, to: Dialect, offsets: &[u32]) -> bool {
+    let iso = |d: Dialect| matches!(d, Dialect::Fanuc | Dialect::Haas | Dialect::Syntec);
+    let table = |d: Dialect| iso(d) || matches!(d, Dialect::Sinumerik | Dialect::Twincat);
+    if !(table(from) && table(to)) {
+        return false;
+    }
+    offsets.iter().all(|&n| n <= 57 || (iso(from) && iso(to)))
+}
+
 /// A whole part program, block by block (see the command's help). Exit status 1 when a
 /// block was refused or (with `--to`) could not be carried across, or was written without a
 /// turn, a tip kept in place or a retraction it states.
@@ -1530,16 +1590,24 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                 } else {
                     "changes the frame in a way cncrot does not follow; cncrot's frame stays as it was"
                 };
+                let why = format!("it {why}");
+                // A work offset alone (`G54`): the tilt stays the control's; copied into a
+                // target where it selects the same, it is carried across.
+                let offsets = work_offsets(dialect, source, &before);
+                let same = match (&offsets, &target) {
+                    (Some(o), Some(t)) => offsets_same(dialect, t.dialect, o),
+                    _ => false,
+                };
                 // The control's tilt is no longer the state's, unless the cancel beside sets
                 // it again: a turn to the plane after it (`G53.1` after `G68.2 P3`) is not
                 // carried across.
-                lost = cancel.is_none();
+                lost = cancel.is_none() && offsets.is_none();
                 if let Some((c, _)) = cancel {
                     p = c;
                     run = None;
                 }
                 if let (Some(t), Some((c, code))) = (&target, cancel) {
-                    ok = false;
+                    ok &= same;
                     let mut buf = [0u8; MAX_CHANGE];
                     let written = write_block(
                         t.dialect,
@@ -1565,8 +1633,13 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     };
                     match written {
                         Ok((len, _)) => {
+                            let (what, why) = if same {
+                                ("a work offset", "it selects the same there")
+                            } else {
+                                ("not followed", why.as_str())
+                            };
                             eprintln!(
-                                "cncrot: line {line}: not followed beside its cancel: the rest copied as it stands, the cancel written as {} {}'s (it {why}): {block}",
+                                "cncrot: line {line}: {what} beside its cancel: the rest copied as it stands, the cancel written as {} {}'s ({why}): {block}",
                                 input::dialect_name(t.dialect),
                                 t.form
                             );
@@ -1586,8 +1659,16 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             Some(block.to_string())
                         }
                     }
+                } else if let (Some(t), true) = (&target, same) {
+                    eprintln!(
+                        "cncrot: line {line}: a work offset, copied as it stands: it selects the same in {}: {block}",
+                        input::dialect_name(t.dialect)
+                    );
+                    Some(block.to_string())
                 } else if target.is_some() {
-                    eprintln!("cncrot: line {line}: not followed, copied as it stands (it {why}): {block}");
+                    eprintln!(
+                        "cncrot: line {line}: not followed, copied as it stands ({why}): {block}"
+                    );
                     ok = false;
                     Some(block.to_string())
                 } else if a.json {
@@ -1600,7 +1681,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         .text(),
                     )
                 } else {
-                    Some(format!("line {line}: not followed: {block}\n  (it {why})"))
+                    Some(format!("line {line}: not followed: {block}\n  ({why})"))
                 }
             }
             Remark::Applied => {

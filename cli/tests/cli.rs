@@ -1805,12 +1805,20 @@ fn program_to_keeps_the_m_functions_of_a_turn() {
 /// A cancel beside a work offset (`G69 G55`) still cancels: the block is not followed as a
 /// whole (the offset is a table's), but the control cancels the plane whatever else the
 /// block holds. Before, the block was copied as it stood and the target stayed tilted: the
-/// plunge after it ran at 45° (a helper's find). Exit status 1: the offset is not followed.
+/// plunge after it ran at 45° (a helper's find). The offset, copied, selects the same on a
+/// Haas (exit status 0); into Heidenhain, which has no `G55`, it is not carried (status 1).
 #[test]
 fn program_to_cancels_beside_a_work_offset() {
     let prog = "G68.2 X0 Y0 Z0 I0 J45 K0\nG53.1\nG69 G55\nG1 Z-5 F100\n";
-    let r = translate(prog, "fanuc", "haas");
+    let r = translate(prog, "fanuc", "heidenhain");
     assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("line 3: not followed beside its cancel"),
+        "{}",
+        r.stderr
+    );
+    let r = translate(prog, "fanuc", "haas");
+    assert_eq!(r.code, 0, "{}", r.stderr);
     assert_eq!(
         r.stdout.lines().collect::<Vec<_>>(),
         [
@@ -1822,7 +1830,7 @@ fn program_to_cancels_beside_a_work_offset() {
         ]
     );
     assert!(
-        r.stderr.contains("line 3: not followed beside its cancel"),
+        r.stderr.contains("line 3: a work offset beside its cancel"),
         "{}",
         r.stderr
     );
@@ -1852,6 +1860,38 @@ fn program_to_cancels_beside_a_work_offset() {
     );
     assert!(
         r.stdout.contains("line 3: G68.4 I0 J0 K0\n  origin: 0.0000 0.0000 0.0000  tool direction: 0.0000 0.0000 1.0000"),
+        "{}",
+        r.stdout
+    );
+}
+
+/// A work offset (`G54`–`G59`) copied into a target where it selects the same (Fanuc to
+/// Haas, SINUMERIK, TwinCAT for `G54`–`G57`) is carried across: exit status 0, a note; into
+/// Heidenhain, or `G59` into SINUMERIK (an axial offset there), or `G54.1 P3`, it is not (a
+/// helper's find: every program that selects `G54` exited 1, so a batch run could not tell).
+#[test]
+fn program_to_carries_a_work_offset_that_means_the_same() {
+    let prog = "N1 G90 G54 G00 X0 Y0 Z200.\nG68.2 X0 Y0 Z0 I0 J30 K0\nG53.1\nG69\nM30\n";
+    for (to, code) in [("haas", 0), ("sinumerik", 0), ("heidenhain", 1)] {
+        let r = translate(prog, "fanuc", to);
+        assert_eq!(r.code, code, "{to}: {}", r.stderr);
+        assert_eq!(r.stdout.lines().next(), Some("N1 G90 G54 G00 X0 Y0 Z200."));
+    }
+    let r = translate(prog, "fanuc", "haas");
+    assert!(
+        r.stderr
+            .contains("line 1: a work offset, copied as it stands: it selects the same in haas"),
+        "{}",
+        r.stderr
+    );
+    assert_eq!(translate("G59\n", "fanuc", "haas").code, 0);
+    assert_eq!(translate("G57\n", "fanuc", "twincat").code, 0);
+    assert_eq!(translate("G59\n", "fanuc", "sinumerik").code, 1);
+    assert_eq!(translate("G54.1 P3\n", "fanuc", "haas").code, 1);
+    // The report still says the library does not follow it.
+    let r = cncrot(&["program", "-", "--dialect", "fanuc"], "G54\n");
+    assert!(
+        r.stdout.contains("line 1: not followed: G54"),
         "{}",
         r.stdout
     );
