@@ -573,6 +573,16 @@ fn fanuc_and_haas() {
     assert_eq!((e.error, e.column), (Error::UnknownWord, 10));
 
     let d = Dialect::Haas;
+    // Fanuc's tilts are no Haas commands (a Haas writes `G268`): a Fanuc program read as a
+    // Haas one is flagged, not passed over.
+    for fanuc in ["G68.2 X0 Y0 Z0 I0 J45 K0", "G68.4 J10", "G68.3 R0"] {
+        let (q, remark) = Program::default().line(d, fanuc.as_bytes()).unwrap();
+        assert_eq!(
+            (q, remark),
+            (Program::default(), Remark::NotFollowed),
+            "{fanuc}"
+        );
+    }
     let f = rot(d, &["G268 X0 Y0 Z0 I0 J30 K0 Q123"]);
     assert!(dist(&f, &r(Axis::Y, 30.0)) < 1e-15);
     // Q321 and Q123 agree on a turn about Z alone.

@@ -132,13 +132,15 @@ impl Family for Haas {
             });
         }
         // Haas adds `G154` (work offsets P1–P99), `G100`/`G101` (mirroring), `G254`/`G255`
-        // (dynamic work offsets) to the ISO codes the library does not follow.
+        // (dynamic work offsets) to the ISO codes the library does not follow, and Fanuc's
+        // tilts `G68.2`, `G68.3`, `G68.4`, which are not a Haas's (it writes `G268`): a
+        // program read in the wrong dialect is flagged, not passed over in silence.
         fanuc::iso_block(
             m,
             text,
             &[2680, 2530],
             &[2690],
-            &[1540, 1000, 1010, 2540, 2550],
+            &[1540, 1000, 1010, 2540, 2550, 682, 683, 684],
         )
     }
 
