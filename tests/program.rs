@@ -565,6 +565,17 @@ fn fanuc_and_haas() {
     assert_eq!((e.error, e.column), (Error::BadArgument, 8));
     let e = tilted.line(d, b"G53.1 H1").unwrap_err();
     assert_eq!((e.error, e.column), (Error::UnknownWord, 7));
+    // A tilt beside a work offset (`G54 G68.2 …`): the frame is one the library does not
+    // follow, as with a cancel beside one; a tilt after another word stays misplaced.
+    let block = b"N10 G0 G90 G54 G68.2 X0. Y0. Z0. I0. J90. K0.";
+    assert_eq!(
+        Program::default().line(d, block).unwrap(),
+        (Program::default(), Remark::NotFollowed)
+    );
+    let e = Program::default()
+        .line(d, b"N10 G0 X10. G68.2 X0. J90.")
+        .unwrap_err();
+    assert_eq!((e.error, e.column), (Error::UnknownWord, 13));
     // `G68.3`: the plane of the tool direction where the machine stands, which the program
     // does not state: not followed, the state unchanged; its words checked.
     let (p, remark) = tilted.line(d, b"G68.3 X10 Y0 Z0 R30").unwrap();

@@ -1336,8 +1336,8 @@ fn cancel_beside(dialect: Dialect, block: &str, p: &Program) -> Option<(Program,
 }
 
 /// The work offsets a block selects (`G54`–`G59`, not `G54.1`), when they are all that is
-/// not followed in it (the block read without them is not "not followed"): their numbers.
-/// `None` for any other block.
+/// not followed in it (the block read without them is passed over, or a cancel): their
+/// numbers. `None` for any other block.
 fn work_offsets(dialect: Dialect, block: &str, p: &Program) -> Option<Vec<u32>> {
     if dialect == Dialect::Heidenhain {
         return None;
@@ -1376,9 +1376,12 @@ fn work_offsets(dialect: Dialect, block: &str, p: &Program) -> Option<Vec<u32>> 
         return None;
     }
     kept.push_str(comment);
+    // Beside nothing else of the frame's, or beside a cancel (`G69 G55`, which the command
+    // applies); beside a tilt (`G54 G68.2 …`) the block is more than an offset.
     match p.line(dialect, kept.trim().as_bytes()) {
-        Ok((_, Remark::NotFollowed)) | Err(_) => None,
-        Ok(_) => Some(found),
+        Ok((_, Remark::Passed)) => Some(found),
+        Ok((_, Remark::Applied)) if cancel_beside(dialect, block, p).is_some() => Some(found),
+        _ => None,
     }
 }
 

@@ -555,7 +555,8 @@ fn offset_variable(code: u32) -> bool {
 /// What a block of an ISO-style program (Fanuc, Haas, Syntec) does when it does not start
 /// with a command its family reads: a plane selection (`G17`–`G19`) and a cancel among
 /// other words (`cancels`) apply; a command the family reads standing elsewhere
-/// (`commands`) is refused at its column; a
+/// (`commands`) is refused at its column, unless the block holds a word not followed (`G54
+/// G68.2 …`: then the whole block is not followed); a
 /// G-code of [`ISO_NOT_FOLLOWED`] or `more`, or a write to a work-offset variable, is
 /// [`Block::NotFollowed`] (it wins over a cancel on the same block: the library's state is
 /// then not the control's either way); anything else is [`Block::Passed`].
@@ -572,6 +573,7 @@ pub(crate) fn iso_block(
         parens: true,
     };
     let (mut cancel, mut not_followed) = (false, false);
+    let mut misplaced = None;
     let mut plane = m.plane;
     for t in Tokens::new(text, comments, true) {
         match (t.letter, t.code()) {
@@ -580,11 +582,7 @@ pub(crate) fn iso_block(
                 plane = Plane::of_code(code).unwrap_or(plane)
             }
             (b'G', Some(code)) if commands.contains(&code) => {
-                return Err(LineError {
-                    error: Error::UnknownWord,
-                    column: t.column,
-                    expected: None,
-                })
+                misplaced = misplaced.or(Some(t.column));
             }
             (b'G', Some(code)) if ISO_NOT_FOLLOWED.contains(&code) || more.contains(&code) => {
                 not_followed = true
@@ -592,6 +590,16 @@ pub(crate) fn iso_block(
             (b'#', Some(code)) if t.assigned && offset_variable(code) => not_followed = true,
             _ => {}
         }
+    }
+    // A command after a word not followed (`G54 G68.2 …`: a work offset and a tilt in one
+    // block) leaves the frame one the library does not follow: the block is not followed as
+    // a whole, as a cancel beside one is. Elsewhere it is misplaced.
+    if let (Some(column), false) = (misplaced, not_followed) {
+        return Err(LineError {
+            error: Error::UnknownWord,
+            column,
+            expected: None,
+        });
     }
     Ok(if not_followed {
         Block::NotFollowed
