@@ -1880,6 +1880,20 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                 );
                             }
                         }
+                        // `TABLE ROT` (a rotary table parallel to the tool makes the turn about
+                        // it) the target has no word for: its control turns the coordinates. A
+                        // choice of positions for the same plane, as `SEQ`: named, not counted.
+                        let coord = Program {
+                            table_rot: false,
+                            ..p
+                        };
+                        let table_lost = p.table_rot && turns && unsaid_moving(&coord);
+                        if table_lost {
+                            say(
+                                "TABLE ROT (the rotary table making the turn about the tool)",
+                                "not written: the control turns the coordinates instead (COORD ROT), the table staying",
+                            );
+                        }
                         // A turn of the rotary axes to the plane the target has no word for
                         // (`ROT`, `G158`): the same text as staying where they are.
                         let still = p.staying();
