@@ -1967,6 +1967,22 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                 "not written: retract the tool before this block",
                             );
                         }
+                        // A retraction along the machine's Z (`_FR` 1, 2) the target writes as
+                        // one along the tool (Heidenhain's `MB MAX`): named, not counted (the
+                        // tool still retracts, from a tilted tool along another line).
+                        let along_tool = Program {
+                            retract: Retract::ToolMax,
+                            retract_mm: 0.0,
+                            ..p
+                        };
+                        let machine_z =
+                            matches!(p.retract, Retract::MachineZ | Retract::MachineZThenXy);
+                        if machine_z && !retract_lost && turns && unsaid_moving(&along_tool) {
+                            say(
+                                "the retraction along the machine's Z before the rotary axes turn",
+                                "written as one along the tool axis, as far as the travel allows: the same line only while the tool is vertical",
+                            );
+                        }
                         // Heidenhain's way for the rotary axes from now on, beside a turn
                         // to the plane (`L A+Q120 C+Q122 R0 FMAX M126`): a machine parameter
                         // elsewhere, no word of the block written for it.

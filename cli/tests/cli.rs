@@ -1886,6 +1886,24 @@ fn program_to_names_a_table_rot_left_out() {
     assert!(!r.stderr.contains("TABLE ROT"), "{}", r.stderr);
 }
 
+/// SINUMERIK's retraction along the machine's Z (`_FR` 1) is Heidenhain's `MB MAX` along the
+/// tool: named (two helpers' find: changed without a word), not counted.
+#[test]
+fn program_to_names_a_retraction_along_another_line() {
+    let prog = "CYCLE800(1,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,-1)\nCYCLE800()\n";
+    let r = translate(prog, "sinumerik", "heidenhain");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(
+        r.stdout.lines().next(),
+        Some("PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-")
+    );
+    assert!(
+        r.stderr.contains("line 1: the retraction along the machine's Z before the rotary axes turn has no word in heidenhain PLANE SPATIAL"),
+        "{}",
+        r.stderr
+    );
+}
+
 /// A work offset (`G54`–`G59`) copied into a target where it selects the same (Fanuc to
 /// Haas, SINUMERIK, TwinCAT for `G54`–`G57`) is carried across: exit status 0, a note; into
 /// Heidenhain, or `G59` into SINUMERIK (an axial offset there), or `G54.1 P3`, it is not (a
