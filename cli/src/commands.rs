@@ -1947,9 +1947,39 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         };
                         let retract_lost =
                             p.retract != Retract::None && turns && unsaid_moving(&dry);
+                        // Heidenhain's `DIST n` (`ABST n`): `MOVE` turns about a point n mm
+                        // from the tool tip, which no other control's words say (`G53.6`
+                        // keeps the tip itself): read, not kept, named here and counted (the
+                        // tip moves otherwise).
+                        let dist = (dialect == Dialect::Heidenhain
+                            && t.dialect != Dialect::Heidenhain
+                            && p.positioning == Positioning::Move)
+                            .then(|| {
+                                let code = block.split(';').next().unwrap_or("").to_uppercase();
+                                let words: Vec<&str> = code.split_whitespace().collect();
+                                words.iter().enumerate().find_map(|(k, w)| {
+                                    let v = ["DIST", "ABST"]
+                                        .iter()
+                                        .find_map(|d| w.strip_prefix(d))
+                                        .map(|v| match v {
+                                            "" => words.get(k + 1).copied().unwrap_or(""),
+                                            v => v,
+                                        })?;
+                                    v.trim_start_matches('+').parse::<f64>().ok()
+                                })
+                            })
+                            .flatten()
+                            .filter(|d| *d != 0.0);
+                        let dist_lost = dist.is_some() && written && turns;
+                        if let (Some(d), true) = (dist, dist_lost) {
+                            say(
+                                &format!("the turn about a point {d} mm from the tool tip (DIST)"),
+                                "written as the turn that keeps the tool tip itself in place",
+                            );
+                        }
                         // What moves the machine otherwise than the source: counted, and the
                         // exit status 1 (a batch run sees it).
-                        if turn_lost || tip_lost || retract_lost {
+                        if turn_lost || tip_lost || retract_lost || dist_lost {
                             moved_otherwise += 1;
                             ok = false;
                         }

@@ -1904,6 +1904,24 @@ fn program_to_names_a_retraction_along_another_line() {
     );
 }
 
+/// Heidenhain's `MOVE` about a point `DIST`/`ABST` mm from the tool tip is written as the turn
+/// that keeps the tip itself (`G53.6`): named and counted (a helper's find: dropped without a
+/// word); `DIST+0` is the tip.
+#[test]
+fn program_to_names_a_pivot_distance_left_out() {
+    let prog = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 MOVE ABST50 FMAX\nPLANE RESET STAY\n";
+    let r = translate(prog, "heidenhain", "fanuc");
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("line 1: the turn about a point 50 mm from the tool tip (DIST) has no word in fanuc G68.2")
+            && r.stderr.contains("1 with a way of moving left out"),
+        "{}",
+        r.stderr
+    );
+    let r = translate(&prog.replace("ABST50", "DIST+0"), "heidenhain", "fanuc");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+}
+
 /// A work offset (`G54`–`G59`) copied into a target where it selects the same (Fanuc to
 /// Haas, SINUMERIK, TwinCAT for `G54`–`G57`) is carried across: exit status 0, a note; into
 /// Heidenhain, or `G59` into SINUMERIK (an axial offset there), or `G54.1 P3`, it is not (a
@@ -2048,13 +2066,19 @@ fn program_to_says_a_turn_it_cannot_write() {
         "{}",
         r.stderr
     );
-    // Fanuc's G53.6 keeps the tip: nothing to say of it.
+    // Fanuc's G53.6 keeps the tip: nothing to say of that (its `DIST` is another matter:
+    // `program_to_names_a_pivot_distance_left_out`).
     let r = translate(
         "PLANE SPATIAL SPA+0 SPB+30 SPC+0 MOVE DIST50 FMAX\n",
         "heidenhain",
         "fanuc",
     );
-    assert!(!r.stderr.contains("tool tip"), "{}", r.stderr);
+    assert!(
+        !r.stderr
+            .contains("the turn that keeps the tool tip in place"),
+        "{}",
+        r.stderr
+    );
 }
 
 /// Heidenhain `CALL LBL` is followed through its label: hyperMILL resets the plane and the
