@@ -1,10 +1,12 @@
-//! Heidenhain labels and their calls in a whole program. The library reads a program block
-//! by block, and a `CALL LBL` is a block like any other (passed over: it names no frame);
-//! the command has the whole file, and follows the call: the frame after it is the one the
-//! label's blocks leave. CAM systems write a subprogram that resets the plane and the datum
-//! (`CALL LBL 1 ; RESET WORKING PLANE`, the label after the program's end): read in the
-//! order of the file, the program would keep the tilt it had before the call, and a
-//! translation would turn the axes back to it before the next tilt.
+//! Labels, subprograms and their calls in a whole program. The library reads a program
+//! block by block, and a call is a block like any other (passed over: it names no frame); the
+//! command has the whole file, and follows the call: the frame after it is the one the
+//! called blocks leave. CAM systems write a subprogram that resets the plane and the datum
+//! (Heidenhain `CALL LBL 1 ; RESET WORKING PLANE`, the label after the program's end), and
+//! people put a face's tilt in a subprogram (Fanuc `M98 P2000` … `O2000` … `G68.4 …` …
+//! `M99`): read in the order of the file, the program would keep the frame it had before the
+//! call, and a translation would turn the axes back to it, or write an increment from the
+//! wrong plane.
 
 use crate::params::Params;
 use cncrot::dialects::program::{AxisChoice, Dialect, Program, Remark};
@@ -24,21 +26,102 @@ fn words(block: &str) -> Vec<String> {
     w
 }
 
-/// The label a block defines (`LBL 1`, `LBL "NAME"`), not `LBL 0` (the end of one).
-fn defined(block: &str) -> Option<String> {
+/// The address words of an ISO-style block (Fanuc, Haas, Syntec), comments left out, with or
+/// without blanks between them: `M98P2000L3` is `[('M', "98"), ('P', "2000"), ('L', "3")]`;
+/// a program number `:2000` is `('O', "2000")`.
+fn iso_words(block: &str) -> Vec<(char, String)> {
+    let mut out: Vec<(char, String)> = Vec::new();
+    let mut comment = false;
+    for c in block.chars() {
+        match c {
+            '(' => comment = true,
+            ')' => comment = false,
+            ';' if !comment => break,
+            _ if comment => {}
+            c if c.is_ascii_alphabetic() || c == ':' => {
+                let letter = if c == ':' {
+                    'O'
+                } else {
+                    c.to_ascii_uppercase()
+                };
+                out.push((letter, String::new()));
+            }
+            c if c.is_ascii_digit() || matches!(c, '.' | '+' | '-') => {
+                if let Some((_, v)) = out.last_mut() {
+                    v.push(c);
+                }
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+/// The value of word `letter` of `w`.
+fn iso_word<'a>(w: &'a [(char, String)], letter: char) -> Option<&'a str> {
+    w.iter()
+        .find(|(l, _)| *l == letter)
+        .map(|(_, v)| v.as_str())
+}
+
+/// Whether `w` holds the M function `m`.
+fn iso_has_m(w: &[(char, String)], m: u32) -> bool {
+    w.iter()
+        .any(|(l, v)| *l == 'M' && v.parse::<u32>().is_ok_and(|n| n == m))
+}
+
+/// The label a block defines (`LBL 1`, `LBL "NAME"`, not `LBL 0`, the end of one), or the
+/// subprogram an ISO block starts (`O2000`, `:2000`: `O2000`; for Haas's `M97` also a block
+/// number, `N1000`: `N1000`).
+fn defined(dialect: Dialect, block: &str) -> Option<String> {
+    if dialect != Dialect::Heidenhain {
+        let w = iso_words(block);
+        return match w.first() {
+            Some(('O', v)) => v.parse::<u32>().ok().map(|n| format!("O{n}")),
+            Some(('N', v)) if dialect == Dialect::Haas => {
+                v.parse::<u32>().ok().map(|n| format!("N{n}"))
+            }
+            _ => None,
+        };
+    }
     match words(block).as_slice() {
         [lbl, name, ..] if lbl == "LBL" && name != "0" => Some(name.clone()),
         _ => None,
     }
 }
 
-fn ends(block: &str) -> bool {
+/// Whether a block ends a subprogram: `LBL 0`, or an ISO `M99`.
+fn ends(dialect: Dialect, block: &str) -> bool {
+    if dialect != Dialect::Heidenhain {
+        return iso_has_m(&iso_words(block), 99);
+    }
     matches!(words(block).as_slice(), [lbl, zero, ..] if lbl == "LBL" && zero == "0")
 }
 
-/// The label a block calls and how often it repeats it (`CALL LBL 1 REP 2`, the editor's
-/// `REP 2/2`): `(name, repeats)`, 0 without `REP`.
-fn called(block: &str) -> Option<(String, usize)> {
+/// The label a block calls and how often: `(name, repeats)`. Heidenhain's `CALL LBL 1 REP 2`
+/// (the editor's `REP 2/2`): the repeats after the first run, 0 without `REP`. An ISO
+/// subprogram call, `M98 P2000` with `L3` or `K3` (Fanuc, Syntec, Haas; the older
+/// `M98 P32000`, a count in the first digits, is read as program 32000), Haas's `M97 P1000`
+/// (the local subprogram at `N1000`): the runs, at least 1.
+fn called(dialect: Dialect, block: &str) -> Option<(String, usize)> {
+    if dialect != Dialect::Heidenhain {
+        let w = iso_words(block);
+        let local = dialect == Dialect::Haas && iso_has_m(&w, 97);
+        if !(local || iso_has_m(&w, 98)) {
+            return None;
+        }
+        let p = iso_word(&w, 'P')?;
+        let n: u32 = p.parse().ok()?;
+        let times = iso_word(&w, 'L')
+            .or_else(|| iso_word(&w, 'K'))
+            .and_then(|t| t.parse::<usize>().ok());
+        let name = if local {
+            format!("N{n}")
+        } else {
+            format!("O{n}")
+        };
+        return Some((name, times.unwrap_or(1).max(1)));
+    }
     match words(block).as_slice() {
         [call, lbl, name, rest @ ..] if call == "CALL" && lbl == "LBL" => {
             // `REP 2`, `REP2`, the editor's `REP 2/2`; a parameter (`REPQ106`): not known, none.
@@ -67,21 +150,19 @@ pub struct Labels {
 }
 
 impl Labels {
-    /// The labels of `text` (a Heidenhain program; none in the other dialects).
+    /// The labels and subprograms of `text` (Heidenhain labels; ISO-style program numbers,
+    /// and Haas's block numbers for `M97`; none in SINUMERIK and TwinCAT, whose subprograms
+    /// are files of their own).
     pub fn new(dialect: Dialect, text: &str) -> Labels {
         let lines: Vec<String> = text
             .lines()
             .map(|l| l.trim_end_matches('\r').to_string())
             .collect();
-        let defined = if dialect == Dialect::Heidenhain {
-            lines
-                .iter()
-                .enumerate()
-                .filter_map(|(k, l)| defined(l).map(|name| (name, k)))
-                .collect()
-        } else {
-            Vec::new()
-        };
+        let defined = lines
+            .iter()
+            .enumerate()
+            .filter_map(|(k, l)| defined(dialect, l).map(|name| (name, k)))
+            .collect();
         Labels {
             dialect,
             lines,
@@ -130,16 +211,37 @@ impl Labels {
 
     /// After line `k` was read (and passed over): the state a call there leaves.
     pub fn after(&mut self, k: usize, p: &mut Program) {
-        let Some((name, rep)) = self.lines.get(k).and_then(|l| called(l)) else {
+        if !matches!(
+            self.dialect,
+            Dialect::Heidenhain | Dialect::Fanuc | Dialect::Haas | Dialect::Syntec
+        ) {
+            return;
+        }
+        let Some((name, rep)) = self.lines.get(k).and_then(|l| called(self.dialect, l)) else {
             return;
         };
-        let Some(&(_, at)) = self.defined.iter().find(|(n, _)| *n == name) else {
+        // Haas's `M97 P1000` jumps to the block numbered so: the first such after the call's
+        // line or, failing that, any (block numbers repeat in programs).
+        let Some(at) = self.find(&name, k) else {
             return;
         };
         if at > k {
             self.entered.push((at, k, *p));
         }
         self.run(k, at, rep, p, 0);
+    }
+
+    /// The line that defines `name`, for a call at line `k`: the first definition after the
+    /// call, else the first.
+    fn find(&self, name: &str, k: usize) -> Option<usize> {
+        let mut at = self.defined.iter().filter(|(n, _)| n == name).map(|d| d.1);
+        let first = at.next()?;
+        Some(
+            std::iter::once(first)
+                .chain(at)
+                .find(|&a| a > k)
+                .unwrap_or(first),
+        )
     }
 
     /// Runs the label defined at line `at` as the call at line `k` does: a program section
@@ -150,14 +252,26 @@ impl Labels {
     fn run(&self, k: usize, at: usize, rep: usize, p: &mut Program, depth: usize) {
         let end = |from: usize| {
             (from..self.lines.len())
-                .find(|&i| self.lines.get(i).is_some_and(|l| ends(l)))
+                .find(|&i| self.lines.get(i).is_some_and(|l| ends(self.dialect, l)))
                 .unwrap_or(self.lines.len())
         };
-        let section = at < k && (rep > 0 || end(at + 1) > k);
+        let iso = self.dialect != Dialect::Heidenhain;
+        // An ISO subprogram runs from its first block (Haas's `N1000` is one) to its `M99`,
+        // as often as the call says; a Heidenhain label from the block after it.
+        let numbered = self
+            .lines
+            .get(at)
+            .is_some_and(|l| iso_words(l).first().is_some_and(|w| w.0 == 'O'));
+        let (first, times) = if iso {
+            (at + usize::from(numbered), rep)
+        } else {
+            (at + 1, 1)
+        };
+        let section = !iso && at < k && (rep > 0 || end(at + 1) > k);
         let (body, times) = if section {
             (at + 1..k, rep)
         } else {
-            (at + 1..end(at + 1), 1)
+            (first..end(first), times)
         };
         for _ in 0..times {
             for i in body.clone() {
@@ -170,9 +284,8 @@ impl Labels {
                     *p = next;
                 }
                 if depth < DEPTH {
-                    let inner = called(line).and_then(|(n, r)| {
-                        self.defined.iter().find(|(m, _)| *m == n).map(|d| (d.1, r))
-                    });
+                    let inner = called(self.dialect, line)
+                        .and_then(|(n, r)| self.find(&n, i).map(|at| (at, r)));
                     if let Some((at, r)) = inner {
                         self.run(i, at, r, p, depth + 1);
                     }
@@ -188,14 +301,32 @@ mod tests {
 
     #[test]
     fn words_of_labels_and_calls() {
-        assert_eq!(defined("79 LBL 1 ; RESET WORKING PLANE"), Some("1".into()));
-        assert_eq!(defined("LBL \"FACE\""), Some("\"FACE\"".into()));
-        assert_eq!(defined("85 LBL 0"), None);
-        assert!(ends("85 LBL 0"));
-        assert_eq!(called("65 CALL LBL 1 ; RESET"), Some(("1".into(), 0)));
-        assert_eq!(called("12 CALL LBL 2 REP 3/3"), Some(("2".into(), 3)));
-        assert_eq!(called("CALL LBL 1 REP6"), Some(("1".into(), 6)));
-        assert_eq!(called("CALL LBL 1 REPQ106 ;"), Some(("1".into(), 0)));
-        assert_eq!(called("12 CALL PGM TNC:\\X.H"), None);
+        let h = Dialect::Heidenhain;
+        assert_eq!(
+            defined(h, "79 LBL 1 ; RESET WORKING PLANE"),
+            Some("1".into())
+        );
+        assert_eq!(defined(h, "LBL \"FACE\""), Some("\"FACE\"".into()));
+        assert_eq!(defined(h, "85 LBL 0"), None);
+        assert!(ends(h, "85 LBL 0"));
+        assert_eq!(called(h, "65 CALL LBL 1 ; RESET"), Some(("1".into(), 0)));
+        assert_eq!(called(h, "12 CALL LBL 2 REP 3/3"), Some(("2".into(), 3)));
+        assert_eq!(called(h, "CALL LBL 1 REP6"), Some(("1".into(), 6)));
+        assert_eq!(called(h, "CALL LBL 1 REPQ106 ;"), Some(("1".into(), 0)));
+        assert_eq!(called(h, "12 CALL PGM TNC:\\X.H"), None);
+        // ISO subprograms: `O2000` … `M99`, called by `M98 P2000` (`L`/`K` the runs);
+        // Haas's `M97 P1000` to its block `N1000`.
+        let (f, haas) = (Dialect::Fanuc, Dialect::Haas);
+        assert_eq!(defined(f, "O2000 (FACE B)"), Some("O2000".into()));
+        assert_eq!(defined(f, ":2000"), Some("O2000".into()));
+        assert_eq!(defined(f, "N1000 G0 X0"), None);
+        assert_eq!(defined(haas, "N1000 G0 X0"), Some("N1000".into()));
+        assert!(ends(f, "N90 M99") && ends(f, "M99 (BACK)") && !ends(f, "M98 P2000"));
+        assert_eq!(called(f, "N20 M98 P2000"), Some(("O2000".into(), 1)));
+        assert_eq!(called(f, "M98P2000L3"), Some(("O2000".into(), 3)));
+        assert_eq!(called(f, "M98 P2000 K2 (TWICE)"), Some(("O2000".into(), 2)));
+        assert_eq!(called(haas, "M97 P1000"), Some(("N1000".into(), 1)));
+        assert_eq!(called(f, "M97 P1000"), None);
+        assert_eq!(called(f, "(M98 P2000)"), None);
     }
 }

@@ -152,7 +152,8 @@ enum Command {
                             summary of the blocks passed over. A block that changes the frame in \
                             a way cncrot does not follow (a work offset, preset, datum shift, \
                             mirroring) is flagged. A Heidenhain CALL LBL is followed through \
-                            its label (the frame after it is the one the label's blocks leave). \
+                            its label (the frame after it is the one the label's blocks leave), \
+                            an M98 P (Haas also M97 P) through its subprogram in the same file. \
                             --to writes the whole program with its tilt \
                             and cancel blocks in the target's language and every other block as \
                             it is, and flags on standard error what it cannot carry across \

@@ -1922,6 +1922,49 @@ fn program_to_names_a_pivot_distance_left_out() {
     assert_eq!(r.code, 0, "{}", r.stderr);
 }
 
+/// A Fanuc subprogram in the same file (`M98 P2000` … `O2000` … `M99`) is followed: its
+/// `G68.4` adds to the plane of the call (a helper's find: read from no tilt, `G68.4 I90` was
+/// written as Haas's `G268 … I0 J0 K90`, the tool swung from horizontal back to vertical). By
+/// hand: `G68.2 J90` is Rx(90°), the tool along −Y; `G68.4 I90` adds Rz(90°) on it, about
+/// the tool: Rx(90°)·Rz(90°) takes X to +Z, which Haas's `Q123` writes as `I90 J-90 K0`
+/// (Ry(−90°)·Rx(90°) takes X to +Z and Z to −Y). `L2` runs it twice: Rz(180°) on Rx(90°).
+#[test]
+fn program_follows_an_iso_subprogram() {
+    let prog = "N10 G68.2 X0 Y0 Z0 I0 J90. K0\nN20 G53.1\nN30 M98 P2000\nN40 G69\nN50 M30\n\
+                O2000\nN100 G68.4 X0 Y0 Z0 I90. J0 K0\nN110 G53.1\nN120 M99\n";
+    let r = translate(prog, "fanuc", "haas");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert!(
+        lines.contains(&"G268 X0. Y0. Z0. I90. J-90. K0. Q123"),
+        "{lines:?}"
+    );
+    // `L2` runs it twice: the plane after the call is the one the same blocks written twice
+    // in place reach (an increment after it is written from there).
+    let after = |p: &str| {
+        let r = translate(p, "fanuc", "haas");
+        let lines: Vec<String> = r.stdout.lines().map(String::from).collect();
+        let k = lines.iter().position(|l| l.starts_with("N40")).unwrap_or(0);
+        lines[k..k + 3].join("\n")
+    };
+    let called = "N10 G68.2 X0 Y0 Z0 I0 J90. K0\nN20 G53.1\nN30 M98 P2000 L2\n\
+                  N40 G68.4 X0 Y0 Z0 I0 J30. K0\nN50 M30\n\
+                  O2000\nN100 G68.4 X0 Y0 Z0 I90. J0 K0\nN120 M99\n";
+    let inline = "N10 G68.2 X0 Y0 Z0 I0 J90. K0\nN20 G53.1\nN31 G68.4 X0 Y0 Z0 I90. J0 K0\n\
+                  N32 G68.4 X0 Y0 Z0 I90. J0 K0\nN40 G68.4 X0 Y0 Z0 I0 J30. K0\nN50 M30\n";
+    assert_eq!(after(called), after(inline));
+    assert_ne!(after(called), after(&called.replace(" L2", "")));
+    // Haas's local subprogram, `M97 P1000` to `N1000`.
+    let haas = "G268 X0 Y0 Z0 I90. J0 K0 Q123\nG253\nM97 P1000\nG269\nM30\n\
+                N1000 G269\nM99\n";
+    let r = cncrot(&["program", "-", "--dialect", "haas"], haas);
+    assert!(
+        r.stdout.contains("line 3: M97 P1000\n  origin: 0.0000 0.0000 0.0000  tool direction: 0.0000 0.0000 1.0000"),
+        "{}",
+        r.stdout
+    );
+}
+
 /// A work offset (`G54`–`G59`) copied into a target where it selects the same (Fanuc to
 /// Haas, SINUMERIK, TwinCAT for `G54`–`G57`) is carried across: exit status 0, a note; into
 /// Heidenhain, or `G59` into SINUMERIK (an axial offset there), or `G54.1 P3`, it is not (a
