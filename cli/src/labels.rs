@@ -58,7 +58,7 @@ fn iso_words(block: &str) -> Vec<(char, String)> {
 }
 
 /// The value of word `letter` of `w`.
-fn iso_word<'a>(w: &'a [(char, String)], letter: char) -> Option<&'a str> {
+fn iso_word(w: &[(char, String)], letter: char) -> Option<&str> {
     w.iter()
         .find(|(l, _)| *l == letter)
         .map(|(_, v)| v.as_str())
