@@ -2048,17 +2048,35 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         let incremental = p.relative && !unsaid(&whole);
                         // Every target's datum shift is the shift reached (`G52`, `TRANS`,
                         // `CYCL DEF 7` with absolute axes).
+                        // Run more than once through the program's calls (a section
+                        // repeated, a subprogram called again): the target's runs after the
+                        // first do not add, and the program is not carried across.
+                        let repeated = |line: usize| {
+                            calls
+                                .repeated(line.saturating_sub(1))
+                                .map_or(String::new(), |n| {
+                                    format!(" (the program runs it {n} times: not carried across)")
+                                })
+                        };
                         if let (Some((line, block)), true, false) = (adds, written, incremental) {
+                            let again = repeated(line);
+                            if !again.is_empty() {
+                                (ok, uncarried) = (false, uncarried + 1);
+                            }
                             eprintln!(
-                                "cncrot: line {line}: the block adds to the active datum shift and is written as the shift it reaches in {} {}, so a loop that repeats the block does not add: {block}",
+                                "cncrot: line {line}: the block adds to the active datum shift and is written as the shift it reaches in {} {}, so a loop that repeats the block does not add{again}: {block}",
                                 input::dialect_name(t.dialect),
                                 t.form
                             );
                         }
                         let turned = p.frame.rotation != from.frame.rotation;
                         if p.relative && turned && written && unsaid(&whole) {
+                            let again = repeated(line);
+                            if !again.is_empty() {
+                                (ok, uncarried) = (false, uncarried + 1);
+                            }
                             eprintln!(
-                                "cncrot: line {line}: the block adds to the active tilt and {} {} cannot say this increment: written as the plane it reaches, so a loop that repeats the block does not add: {block}",
+                                "cncrot: line {line}: the block adds to the active tilt and {} {} cannot say this increment: written as the plane it reaches, so a loop that repeats the block does not add{again}: {block}",
                                 input::dialect_name(t.dialect),
                                 t.form
                             );

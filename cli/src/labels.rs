@@ -147,6 +147,10 @@ pub struct Labels {
     entered: Vec<(usize, usize, Program)>,
     /// The parameters the program sets once (a label's blocks are read with them too).
     params: Params,
+    /// The lines each call runs and how often in all (a section above its call counts the
+    /// pass in the file's order too): a block run more than once that adds to the frame adds
+    /// each time.
+    runs: Vec<(std::ops::Range<usize>, usize)>,
 }
 
 impl Labels {
@@ -163,13 +167,49 @@ impl Labels {
             .enumerate()
             .filter_map(|(k, l)| defined(dialect, l).map(|name| (name, k)))
             .collect();
-        Labels {
+        let mut labels = Labels {
             dialect,
             lines,
             defined,
             entered: Vec::new(),
             params: Params::scan(dialect, text),
+            runs: Vec::new(),
+        };
+        if labels.follows() {
+            for k in 0..labels.lines.len() {
+                let call = labels.lines.get(k).and_then(|l| called(dialect, l));
+                let Some((name, rep)) = call else {
+                    continue;
+                };
+                if let Some(at) = labels.find(&name, k) {
+                    let (body, times, section) = labels.body(k, at, rep);
+                    let total = times + usize::from(section);
+                    match labels.runs.iter_mut().find(|(b, _)| *b == body) {
+                        Some((_, n)) => *n += total,
+                        None => labels.runs.push((body, total)),
+                    }
+                }
+            }
         }
+        labels
+    }
+
+    /// Whether the dialect's calls are followed (its subprograms stand in the same file).
+    fn follows(&self) -> bool {
+        matches!(
+            self.dialect,
+            Dialect::Heidenhain | Dialect::Fanuc | Dialect::Haas | Dialect::Syntec
+        )
+    }
+
+    /// How often the program runs line `k` (0-based) through its calls, if more than once.
+    pub fn repeated(&self, k: usize) -> Option<usize> {
+        self.runs
+            .iter()
+            .filter(|(body, _)| body.contains(&k))
+            .map(|(_, n)| *n)
+            .max()
+            .filter(|n| *n > 1)
     }
 
     /// The parameters the program sets once to a number.
@@ -211,10 +251,7 @@ impl Labels {
 
     /// After line `k` was read (and passed over): the state a call there leaves.
     pub fn after(&mut self, k: usize, p: &mut Program) {
-        if !matches!(
-            self.dialect,
-            Dialect::Heidenhain | Dialect::Fanuc | Dialect::Haas | Dialect::Syntec
-        ) {
+        if !self.follows() {
             return;
         }
         let Some((name, rep)) = self.lines.get(k).and_then(|l| called(self.dialect, l)) else {
@@ -244,35 +281,39 @@ impl Labels {
         )
     }
 
+    /// The lines the call at line `k` to the label at line `at` runs, how often, and whether
+    /// they are a section above the call (read once in the file's order before it): see
+    /// [`Labels::run`].
+    fn body(&self, k: usize, at: usize, rep: usize) -> (std::ops::Range<usize>, usize, bool) {
+        let end = |from: usize| {
+            (from..self.lines.len())
+                .find(|&i| self.lines.get(i).is_some_and(|l| ends(self.dialect, l)))
+                .unwrap_or(self.lines.len())
+        };
+        if self.dialect != Dialect::Heidenhain {
+            // An ISO subprogram runs from its first block (Haas's `N1000` is one) to its
+            // `M99`, as often as the call says.
+            let numbered = self
+                .lines
+                .get(at)
+                .is_some_and(|l| iso_words(l).first().is_some_and(|w| w.0 == 'O'));
+            let first = at + usize::from(numbered);
+            return (first..end(first), rep, false);
+        }
+        if at < k && (rep > 0 || end(at + 1) > k) {
+            (at + 1..k, rep, true)
+        } else {
+            (at + 1..end(at + 1), 1, false)
+        }
+    }
+
     /// Runs the label defined at line `at` as the call at line `k` does: a program section
     /// above the call, repeated (`REP`: the section again, `rep` times, whatever `LBL 0` stands
     /// in it — the TNC's dialog makes a call with `REP` a section repeat, one without a
     /// subprogram call) or without a `LBL 0` between, else a subprogram up to its `LBL 0`
     /// (once).
     fn run(&self, k: usize, at: usize, rep: usize, p: &mut Program, depth: usize) {
-        let end = |from: usize| {
-            (from..self.lines.len())
-                .find(|&i| self.lines.get(i).is_some_and(|l| ends(self.dialect, l)))
-                .unwrap_or(self.lines.len())
-        };
-        let iso = self.dialect != Dialect::Heidenhain;
-        // An ISO subprogram runs from its first block (Haas's `N1000` is one) to its `M99`,
-        // as often as the call says; a Heidenhain label from the block after it.
-        let numbered = self
-            .lines
-            .get(at)
-            .is_some_and(|l| iso_words(l).first().is_some_and(|w| w.0 == 'O'));
-        let (first, times) = if iso {
-            (at + usize::from(numbered), rep)
-        } else {
-            (at + 1, 1)
-        };
-        let section = !iso && at < k && (rep > 0 || end(at + 1) > k);
-        let (body, times) = if section {
-            (at + 1..k, rep)
-        } else {
-            (first..end(first), times)
-        };
+        let (body, times, _) = self.body(k, at, rep);
         for _ in 0..times {
             for i in body.clone() {
                 let Some(line) = self.lines.get(i) else {

@@ -1965,6 +1965,38 @@ fn program_follows_an_iso_subprogram() {
     );
 }
 
+/// An increment the target cannot say (Haas's `G268`), in a section the program repeats
+/// (`CALL LBL 1 REP 2`: three runs) or a subprogram called twice (`M98 P2000 L2`): not
+/// carried across, exit status 1 (a helper's find: exit 0 with a note, every pass after the
+/// first machining the same face). Run once, the note alone.
+#[test]
+fn program_to_counts_an_increment_the_program_repeats() {
+    let section = "0 BEGIN PGM R MM\n1 PLANE SPATIAL SPA+0 SPB+90 SPC+0 STAY\n2 LBL 1\n\
+                   3 L Z+50 R0 FMAX\n4 PLANE RELATIV SPA+90 STAY\n5 CALL LBL 1 REP 2\n\
+                   6 PLANE RESET STAY\n7 END PGM R MM\n";
+    let r = translate(section, "heidenhain", "haas");
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr
+            .contains("does not add (the program runs it 3 times: not carried across)")
+            && r.stderr.contains("1 not carried across"),
+        "{}",
+        r.stderr
+    );
+    let sub = "G68.2 X0 Y0 Z0 I0 J90. K0\nG53.1\nM98 P2000 L2\nM30\nO2000\n\
+               G68.4 X0 Y0 Z0 I90. J0 K0\nM99\n";
+    let r = translate(sub, "fanuc", "haas");
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("(the program runs it 2 times"),
+        "{}",
+        r.stderr
+    );
+    let r = translate(&sub.replace(" L2", ""), "fanuc", "haas");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(r.stderr.contains("does not add: G68.4"), "{}", r.stderr);
+}
+
 /// A work offset (`G54`–`G59`) copied into a target where it selects the same (Fanuc to
 /// Haas, SINUMERIK, TwinCAT for `G54`–`G57`) is carried across: exit status 0, a note; into
 /// Heidenhain, or `G59` into SINUMERIK (an axial offset there), or `G54.1 P3`, it is not (a
@@ -2680,14 +2712,15 @@ fn program_to_names_the_rotary_axes_way() {
 
 /// A block that adds to the datum shift (`CYCL DEF 7.1 IX+10`, `ATRANS`) is written as the
 /// shift it reaches (every target's datum shift block is absolute): standard error says so,
-/// since a loop that repeats it no longer adds (it was silent). An absolute shift, and a
-/// datum shift under a tilt set by `AROT` (which adds nothing to the tilt), say nothing.
+/// since a loop that repeats it no longer adds (it was silent); here the program repeats it
+/// (`CALL LBL 1 REP 2`), so it is not carried across (exit status 1). An absolute shift, and
+/// a datum shift under a tilt set by `AROT` (which adds nothing to the tilt), say nothing.
 #[test]
 fn program_to_names_shift_increments() {
     let prog = "LBL 1\nCYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 IX+10\nL X+0 Y+0 R0 FMAX\n\
                 CALL LBL 1 REP 2\nCYCL DEF 7.0 DATUM SHIFT\nCYCL DEF 7.1 X+0\n";
     let r = translate(prog, "heidenhain", "fanuc");
-    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(r.code, 1, "{}", r.stderr);
     assert!(
         r.stderr.contains("line 3: the block adds to the active datum shift and is written as the shift it reaches in fanuc G68.2"),
         "{}",
