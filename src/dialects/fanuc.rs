@@ -234,11 +234,7 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
     } else if c.code(b"G52") {
         return Some(read_g52(m, c));
     } else if c.code(b"G68.3") {
-        // The plane of the tool direction where the machine stands: a frame the program
-        // does not state (the rotary positions are the machine's), not followed [choice:
-        // never a guessed frame]; its words checked as those of a command the family reads.
-        let words = address_words(c, *b"XYZRF", SYNTAX, false, (true, true));
-        return Some(words.map(|_| Block::NotFollowed));
+        return Some(read_g68_3(c));
     } else {
         return None;
     };
@@ -286,6 +282,15 @@ pub(crate) fn read_g68(m: &Modal, c: &mut Cursor) -> Option<Result<Block, LineEr
         };
         Ok(Block::Frame(m.with_tilt(tilt, incremental)))
     }))
+}
+
+/// `G68.3 X Y Z R` after its code: the plane of the tool direction where the machine stands,
+/// a frame the program does not state (the rotary positions are the machine's): not followed
+/// \[choice: never a guessed frame\], its words checked as those of a command the family
+/// reads. Not inlined: its words stay out of the reader's frame (stack bound).
+#[inline(never)]
+fn read_g68_3(c: &mut Cursor) -> Result<Block, LineError> {
+    address_words(c, *b"XYZRF", SYNTAX, false, (true, true)).map(|_| Block::NotFollowed)
 }
 
 /// `G68` at the cursor (`rest`: the block from the cursor, `block`: the whole block):

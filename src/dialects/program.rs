@@ -853,12 +853,7 @@ pub(crate) fn block_states(from: &mut Program, to: &mut Program, text: &[u8]) ->
     let step = added_step(from, to, text);
     match stated_motion(from, to, text) {
         Some(true) if from.positioning != Positioning::Stay => *from = from.staying(),
-        // A block that changed nothing and restates nothing (`CYCL DEF 19.0`, which only
-        // names the cycle; a `G68.2` again before its `G53.1`) writes nothing: written as
-        // staying, the tilt came out again.
-        // Untilted (the axes turned home by a zero tilt): no tilt is written again around a
-        // datum shift, so nothing to keep from turning.
-        Some(false) if from != to && !untilted(to) => *to = to.staying(),
+        Some(false) => *to = to.staying(),
         _ => {}
     }
     step
@@ -880,7 +875,12 @@ fn stated_motion(from: &Program, after: &Program, text: &[u8]) -> Option<bool> {
     }
     let still = of_no_dialect(from).staying();
     match still.line(dialect, text) {
-        Ok((q, Remark::Applied)) => Some(q.positioning != Positioning::Stay),
+        Ok((q, Remark::Applied)) if q.positioning != Positioning::Stay => Some(true),
+        // A block that changed nothing and restates nothing (`CYCL DEF 19.0`, which only
+        // names the cycle) writes nothing: written as staying, the tilt came out again.
+        // Untilted (the axes turned home by a zero tilt), no tilt is written again around a
+        // datum shift: nothing to keep from turning.
+        Ok((_, Remark::Applied)) if from != after && !untilted(after) => Some(false),
         _ => None,
     }
 }
