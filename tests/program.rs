@@ -448,6 +448,10 @@ fn fanuc_coordinate_conversion() {
         (Dialect::Fanuc, "G68 X0 Y0 I0 J1. K0 R30."),
         (Dialect::Haas, "G68 X0 Y0 Z0 I0 J0 K1 R90."),
         (Dialect::Syntec, "G68 X0 Y0 Z0 I0 J0 K1 R90."),
+        // TwinCAT CNC's contour rotation in the plane (Beckhoff's TF5200 manual, "Rotate
+        // the coordinate system in the plane"): not the state's, flagged.
+        (Dialect::Twincat, "G68 R30 X0 Y0"),
+        (Dialect::Twincat, "#ROTATION ON [ANGLE=30]"),
     ] {
         let (_, remark) = Program::default().line(d, line.as_bytes()).unwrap();
         assert_eq!(remark, Remark::NotFollowed, "{line}");

@@ -95,8 +95,10 @@ const SYNTAX: Syntax = crate::text::scan::G_WORDS;
 /// or `AROT` elsewhere on it is refused at its column (the command starts its block), the
 /// zero offsets `G53` (all suppressed: modal in NC I), `G54`–`G57` (from the table),
 /// `G58` not at the start, `G59` (the second programmable shift: the state holds one
-/// \[choice\]), `G92` and mirroring `G351`, and the coordinate systems `#CS`, `#ACS` are not
-/// followed, anything else is passed over.
+/// \[choice\]), `G92` and mirroring `G351`, the coordinate systems `#CS`, `#ACS`, and the
+/// contour rotation in the plane `G68 R X Y` and `#ROTATION ON`/`OFF` (TwinCAT CNC: its
+/// centre the current position where not written) are not followed, anything else is passed
+/// over (`G69`, which ends a contour rotation the state never held).
 #[inline(never)]
 fn other_block(text: &[u8]) -> Result<Block, LineError> {
     let comments = Comments {
@@ -114,9 +116,9 @@ fn other_block(text: &[u8]) -> Result<Block, LineError> {
         }
         let offset = matches!(
             t.g_code(),
-            Some(530 | 540 | 550 | 560 | 570 | 580 | 590 | 920 | 3510)
+            Some(530 | 540 | 550 | 560 | 570 | 580 | 590 | 680 | 920 | 3510)
         );
-        if offset || t.is(b"#CS") || t.is(b"#ACS") {
+        if offset || t.is(b"#CS") || t.is(b"#ACS") || t.is(b"#ROTATION") {
             not_followed = true;
         }
     }
