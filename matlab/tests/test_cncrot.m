@@ -521,7 +521,11 @@ function test_cncrot(cases_file)
   catch err
     check(~isempty(strfind(err.message, 'line 2, column 19')), ['column reported: ' err.message]);
   end
-  expect_error('cncrot:notAvailable', @() cncrot_program_lines(d.FANUC, 'G68.3 R0'), 'G68.3');
+  % G68.3: the plane of the tool direction where the machine stands, which the program does not
+  % state: not followed, the frame unchanged (a malformed one still refused).
+  [F3, ~, ~, r3] = cncrot_program_lines(d.FANUC, {'G68.2 X0 Y0 Z0 I0 J30 K0', 'G68.3 X0 Y0 Z0 R0'});
+  check(isequal(r3, {'applied'; 'not followed'}) && isequal(F3, cncrot_program_lines(d.FANUC, 'G68.2 X0 Y0 Z0 I0 J30 K0')), 'G68.3 not followed');
+  expect_error('cncrot:unknownWord', @() cncrot_program_lines(d.FANUC, 'G68.3 R0 A1'), 'G68.3 with a word it has not');
   expect_error('cncrot:badArgument', @() cncrot_program_lines(9, 'G69'), 'bad dialect');
   expect_error('cncrot:badState', @() cncrot_program_lines(d.FANUC, 'G69', struct('active', 2)), 'bad state');
   % The state is sealed: an edited field is refused; options start a new program.
