@@ -1897,8 +1897,27 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         // A turn of the rotary axes to the plane the target has no word for
                         // (`ROT`, `G158`): the same text as staying where they are.
                         let still = p.staying();
-                        let turn_lost =
-                            p.positioning != Positioning::Stay && turns && unsaid_moving(&still);
+                        // A turn home (the untilted plane, `PLANE RESET TURN`): written from no
+                        // tilt it is no tilt either way; lost where the target says no turn
+                        // at all (the same text for a tilt that turns and one that stays).
+                        let home = p.frame.rotation == cncrot::IDENTITY && p.direct.is_none();
+                        let says_no_turn = || {
+                            let f = Dialect::Fanuc;
+                            let probe = Program::default()
+                                .line(f, b"G68.2 X0 Y0 Z0 I0 J30 K0")
+                                .and_then(|(q, _)| q.line(f, b"G53.1"));
+                            probe.is_ok_and(|(q, _)| {
+                                let (mut a, mut b) = ([0u8; MAX_CHANGE], [0u8; MAX_CHANGE]);
+                                let untilted = Program::default();
+                                let one = write_change(t.dialect, form, &untilted, &q, d, &mut a);
+                                let two =
+                                    write_change(t.dialect, form, &untilted, &q.staying(), d, &mut b);
+                                matches!((one, two), (Ok((n, _)), Ok((m, _))) if a.get(..n) == b.get(..m))
+                            })
+                        };
+                        let turn_lost = p.positioning != Positioning::Stay
+                            && turns
+                            && (unsaid_moving(&still) || (home && says_no_turn()));
                         if turn_lost {
                             say(
                                 "the turn of the rotary axes to the plane",
@@ -1977,9 +1996,32 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                 "written as the turn that keeps the tool tip itself in place",
                             );
                         }
+                        // A retraction along the machine's Z (`_FR` 1, 2) the target writes as
+                        // one along the tool (Heidenhain's `MB MAX`): from a tilted tool along
+                        // another line (and `_FR` 2's X and Y left out): named and counted.
+                        let along_tool = Program {
+                            retract: Retract::ToolMax,
+                            retract_mm: 0.0,
+                            ..p
+                        };
+                        let machine_z =
+                            matches!(p.retract, Retract::MachineZ | Retract::MachineZThenXy);
+                        let retract_line =
+                            machine_z && !retract_lost && turns && unsaid_moving(&along_tool);
+                        if retract_line {
+                            let what = if p.retract == Retract::MachineZ {
+                                "the retraction along the machine's Z before the rotary axes turn"
+                            } else {
+                                "the retraction along the machine's Z, then X and Y, before the rotary axes turn"
+                            };
+                            say(
+                                what,
+                                "written as one along the tool axis, as far as the travel allows: the same line only while the tool is vertical",
+                            );
+                        }
                         // What moves the machine otherwise than the source: counted, and the
                         // exit status 1 (a batch run sees it).
-                        if turn_lost || tip_lost || retract_lost || dist_lost {
+                        if turn_lost || tip_lost || retract_lost || dist_lost || retract_line {
                             moved_otherwise += 1;
                             ok = false;
                         }
@@ -1995,22 +2037,6 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             say(
                                 &format!("the retraction before the rotary axes turn ({how})"),
                                 "not written: retract the tool before this block",
-                            );
-                        }
-                        // A retraction along the machine's Z (`_FR` 1, 2) the target writes as
-                        // one along the tool (Heidenhain's `MB MAX`): named, not counted (the
-                        // tool still retracts, from a tilted tool along another line).
-                        let along_tool = Program {
-                            retract: Retract::ToolMax,
-                            retract_mm: 0.0,
-                            ..p
-                        };
-                        let machine_z =
-                            matches!(p.retract, Retract::MachineZ | Retract::MachineZThenXy);
-                        if machine_z && !retract_lost && turns && unsaid_moving(&along_tool) {
-                            say(
-                                "the retraction along the machine's Z before the rotary axes turn",
-                                "written as one along the tool axis, as far as the travel allows: the same line only while the tool is vertical",
                             );
                         }
                         // Heidenhain's way for the rotary axes from now on, beside a turn

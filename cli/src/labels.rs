@@ -14,6 +14,10 @@ use cncrot::dialects::program::{AxisChoice, Dialect, Program, Remark};
 /// Nested calls followed at most this deep (a label that calls itself stops there).
 const DEPTH: usize = 8;
 
+/// Blocks read for one call at most (its repeats and nested calls included): `L9999` three
+/// deep would be 10¹² blocks.
+const BUDGET: usize = 1_000_000;
+
 /// A block's words after its block number, up to a `;` comment, in capitals.
 fn words(block: &str) -> Vec<String> {
     let text = block.split(';').next().unwrap_or("");
@@ -176,19 +180,30 @@ impl Labels {
             runs: Vec::new(),
         };
         if labels.follows() {
+            // Each call's body and runs; a body's total is the sum over the calls to it of
+            // their runs times the runs of the body each call stands in (nested calls
+            // multiply), found by passes up to the nesting followed.
+            let mut calls = Vec::new();
             for k in 0..labels.lines.len() {
                 let call = labels.lines.get(k).and_then(|l| called(dialect, l));
-                let Some((name, rep)) = call else {
-                    continue;
-                };
-                if let Some(at) = labels.find(&name, k) {
-                    let (body, times, section) = labels.body(k, at, rep);
-                    let total = times + usize::from(section);
-                    match labels.runs.iter_mut().find(|(b, _)| *b == body) {
-                        Some((_, n)) => *n += total,
-                        None => labels.runs.push((body, total)),
+                if let Some((at, rep)) = call.and_then(|c| labels.target(c, k)) {
+                    calls.push((k, labels.body(k, at, rep)));
+                }
+            }
+            for _ in 0..=DEPTH {
+                let mut runs: Vec<(std::ops::Range<usize>, usize)> = Vec::new();
+                for (k, (body, times, section)) in &calls {
+                    let outer = labels.repeated(*k).unwrap_or(1);
+                    let total = (times + usize::from(*section)).saturating_mul(outer);
+                    match runs.iter_mut().find(|(b, _)| b == body) {
+                        Some((_, n)) => *n = n.saturating_add(total),
+                        None => runs.push((body.clone(), total)),
                     }
                 }
+                if runs == labels.runs {
+                    break;
+                }
+                labels.runs = runs;
             }
         }
         labels
@@ -254,18 +269,34 @@ impl Labels {
         if !self.follows() {
             return;
         }
-        let Some((name, rep)) = self.lines.get(k).and_then(|l| called(self.dialect, l)) else {
-            return;
-        };
+        let call = self.lines.get(k).and_then(|l| called(self.dialect, l));
         // Haas's `M97 P1000` jumps to the block numbered so: the first such after the call's
         // line or, failing that, any (block numbers repeat in programs).
-        let Some(at) = self.find(&name, k) else {
+        let Some((at, rep)) = call.and_then(|c| self.target(c, k)) else {
             return;
         };
         if at > k {
             self.entered.push((at, k, *p));
         }
-        self.run(k, at, rep, p, 0);
+        let mut budget = BUDGET;
+        self.run(k, at, rep, p, 0, &mut budget);
+    }
+
+    /// The line a call `(name, runs)` at line `k` goes to, and its runs: the label or
+    /// subprogram of that name or, for an ISO `M98 P` of more than four digits whose program
+    /// is not in the file, the older form: the last four digits the program, the first the
+    /// count (`M98 P32000`: `O2000` three times \[doc: Fanuc's `M98 P68003`, `O8003` six
+    /// times\]). Runs beyond 9 999 (the most `L` says) are 9 999.
+    fn target(&self, (name, runs): (String, usize), k: usize) -> Option<(usize, usize)> {
+        let runs = runs.min(9_999);
+        if let Some(at) = self.find(&name, k) {
+            return Some((at, runs));
+        }
+        let n: u32 = name.strip_prefix('O')?.parse().ok()?;
+        let at = (n >= 10_000)
+            .then(|| self.find(&format!("O{}", n % 10_000), k))
+            .flatten()?;
+        Some((at, (n / 10_000) as usize))
     }
 
     /// The line that defines `name`, for a call at line `k`: the first definition after the
@@ -312,10 +343,23 @@ impl Labels {
     /// in it — the TNC's dialog makes a call with `REP` a section repeat, one without a
     /// subprogram call) or without a `LBL 0` between, else a subprogram up to its `LBL 0`
     /// (once).
-    fn run(&self, k: usize, at: usize, rep: usize, p: &mut Program, depth: usize) {
+    fn run(
+        &self,
+        k: usize,
+        at: usize,
+        rep: usize,
+        p: &mut Program,
+        depth: usize,
+        budget: &mut usize,
+    ) {
         let (body, times, _) = self.body(k, at, rep);
         for _ in 0..times {
             for i in body.clone() {
+                // A bounded follow: calls that would read more blocks than that stop there.
+                let Some(left) = budget.checked_sub(1) else {
+                    return;
+                };
+                *budget = left;
                 let Some(line) = self.lines.get(i) else {
                     continue;
                 };
@@ -325,10 +369,9 @@ impl Labels {
                     *p = next;
                 }
                 if depth < DEPTH {
-                    let inner = called(self.dialect, line)
-                        .and_then(|(n, r)| self.find(&n, i).map(|at| (at, r)));
+                    let inner = called(self.dialect, line).and_then(|c| self.target(c, i));
                     if let Some((at, r)) = inner {
-                        self.run(i, at, r, p, depth + 1);
+                        self.run(i, at, r, p, depth + 1, budget);
                     }
                 }
             }

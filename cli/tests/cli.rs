@@ -1887,12 +1887,13 @@ fn program_to_names_a_table_rot_left_out() {
 }
 
 /// SINUMERIK's retraction along the machine's Z (`_FR` 1) is Heidenhain's `MB MAX` along the
-/// tool: named (two helpers' find: changed without a word), not counted.
+/// tool: from a tilted tool another line, so named and counted (two helpers' find: changed
+/// without a word).
 #[test]
 fn program_to_names_a_retraction_along_another_line() {
     let prog = "CYCLE800(1,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,-1)\nCYCLE800()\n";
     let r = translate(prog, "sinumerik", "heidenhain");
-    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(r.code, 1, "{}", r.stderr);
     assert_eq!(
         r.stdout.lines().next(),
         Some("PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-")
@@ -1995,6 +1996,56 @@ fn program_to_counts_an_increment_the_program_repeats() {
     let r = translate(&sub.replace(" L2", ""), "fanuc", "haas");
     assert_eq!(r.code, 0, "{}", r.stderr);
     assert!(r.stderr.contains("does not add: G68.4"), "{}", r.stderr);
+}
+
+/// Calls as programs write them (a helper's finds): Fanuc's older `M98 P32000` runs `O2000`
+/// three times; a call inside a subprogram run three times runs its own three times too
+/// (counted: "runs it 3 times"); runs of `L` beyond reason are bounded (three `L9999` deep
+/// returned only after minutes).
+#[test]
+fn program_follows_calls_as_programs_write_them() {
+    let old = "G68.2 X0 Y0 Z0 I90. J0 K0\nM98 P32000\nG68.4 X0 Y0 Z0 I0 J0 K0\nM30\n\
+               O2000\nG68.4 X0 Y0 Z0 I10. J0 K0\nM99\n";
+    let r = translate(old, "fanuc", "haas");
+    assert!(
+        r.stderr.contains("(the program runs it 3 times"),
+        "{}",
+        r.stderr
+    );
+    let nested = "G68.2 X0 Y0 Z0 I0 J90. K0\nM98 P2000 L3\nM30\nO2000\nM98 P3000\nM99\n\
+                  O3000\nG68.4 X0 Y0 Z0 I0 J0 K30.\nM99\n";
+    let r = translate(nested, "fanuc", "haas");
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("(the program runs it 3 times"),
+        "{}",
+        r.stderr
+    );
+    let loops = "G68.2 X0 Y0 Z0 I0 J30. K0\nM98 P2000 L9999\nM30\nO2000\nM98 P3000 L9999\nM99\n\
+                 O3000\nM98 P4000 L9999\nM99\nO4000\nG0 X0\nM99\n";
+    let start = std::time::Instant::now();
+    let r = cncrot(&["program", "-", "--dialect", "fanuc"], loops);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(start.elapsed().as_secs() < 20);
+}
+
+/// A turn home (`PLANE RESET TURN`) into a target that says no turn (Syntec's `G158`,
+/// TwinCAT's `ROT`) is a turn left out: named and counted (a helper's find: written from no
+/// tilt it compared as no tilt either way, and went unsaid).
+#[test]
+fn program_to_counts_a_turn_home_left_out() {
+    let prog = "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY\nPLANE RESET TURN FMAX\n";
+    for to in ["syntec", "twincat"] {
+        let r = translate(prog, "heidenhain", to);
+        assert_eq!(r.code, 1, "{to}: {}", r.stderr);
+        assert!(
+            r.stderr
+                .contains("line 2: the turn of the rotary axes to the plane has no word"),
+            "{to}: {}",
+            r.stderr
+        );
+    }
+    assert_eq!(translate(prog, "heidenhain", "fanuc").code, 0);
 }
 
 /// A work offset (`G54`–`G59`) copied into a target where it selects the same (Fanuc to
