@@ -1440,6 +1440,10 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     // A block refused or not followed since the last one that set the frame: the control's tilt is not the
     // state's, and a block that only turns the axes to it (`G53.1`) cannot be carried across.
     let mut lost = false;
+    // The lines of a subprogram also called with another frame active, and the call its
+    // translation is made from: a block whose text depends on the frame there is not
+    // carried across.
+    let mut varied: (std::ops::Range<usize>, usize) = (0..0, 0);
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
     let mut ok = true;
@@ -1518,6 +1522,9 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
         let block = raw.trim_end_matches('\r');
         let entered = calls.enter(k, &mut p);
         if let (Some(t), Some((from, others))) = (&target, &entered) {
+            if !others.is_empty() && !calls.only_resets(k, &p) {
+                varied = (calls.body_of(k), *from);
+            }
             if !others.is_empty() {
                 let lines: Vec<String> = others.iter().map(|l| (l + 1).to_string()).collect();
                 eprintln!(
@@ -2093,6 +2100,28 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                 "cncrot: line {line}: the block adds to the active datum shift and is written as the shift it reaches in {} {}, so a loop that repeats the block does not add{again}: {block}",
                                 input::dialect_name(t.dialect),
                                 t.form
+                            );
+                        }
+                        // In a subprogram also called with another frame active: a block
+                        // written for the frame of one call (a datum shift under its tilt,
+                        // written with the tilt again; an increment written as the plane it
+                        // reaches) is wrong for the others.
+                        let tilted_before =
+                            from.frame.rotation != cncrot::IDENTITY || from.direct.is_some();
+                        let shift_under_tilt = tilted_before
+                            && (p.frame.rotation, p.direct) == (from.frame.rotation, from.direct)
+                            && p.shift != from.shift;
+                        let absolute = p.relative && !incremental;
+                        if varied.0.contains(&(line - 1))
+                            && written
+                            && (shift_under_tilt || absolute)
+                        {
+                            (ok, uncarried) = (false, uncarried + 1);
+                            eprintln!(
+                                "cncrot: line {line}: not carried across as {} {}: written for the frame of the call at line {}, the subprogram is also called with another frame active: {block}",
+                                input::dialect_name(t.dialect),
+                                t.form,
+                                varied.1 + 1
                             );
                         }
                         let turned = p.frame.rotation != from.frame.rotation;

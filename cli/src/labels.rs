@@ -227,6 +227,31 @@ impl Labels {
             .filter(|n| *n > 1)
     }
 
+    /// The lines of the subprogram that starts at line `at` (0-based): what a call runs.
+    pub fn body_of(&self, at: usize) -> std::ops::Range<usize> {
+        self.body(0, at, 1).0
+    }
+
+    /// Whether the subprogram at line `at`, read from `p`, only sets the frame and ends
+    /// untilted (hyperMILL's reset: cycle 7's zeros, `PLANE RESET`): its translation from one
+    /// call's frame is then right from any, nothing moving in between.
+    pub fn only_resets(&self, at: usize, p: &Program) -> bool {
+        let mut q = *p;
+        for i in self.body_of(at) {
+            let Some(line) = self.lines.get(i) else {
+                continue;
+            };
+            if line.trim().is_empty() {
+                continue;
+            }
+            match q.line(self.dialect, line.as_bytes()) {
+                Ok((next, Remark::Applied)) => q = next,
+                _ => return false,
+            }
+        }
+        q.frame.rotation == cncrot::IDENTITY && q.direct.is_none()
+    }
+
     /// The parameters the program sets once to a number.
     pub fn params(&self) -> &Params {
         &self.params

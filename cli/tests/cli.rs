@@ -2048,6 +2048,30 @@ fn program_to_counts_a_turn_home_left_out() {
     assert_eq!(translate(prog, "heidenhain", "fanuc").code, 0);
 }
 
+/// A subprogram called from two planes that shifts the datum under them and moves (a face's
+/// pattern): its translation, made once from the first call's frame, writes that call's
+/// tilt again around each shift, wrong for the other call: not carried across, exit status
+/// 1 (a helper's find: exit 0 with a note). hyperMILL's reset label (frame blocks only,
+/// ending untilted) stays right from any call (`program_to_follows_calls_to_labels`).
+#[test]
+fn program_to_flags_a_subprogram_written_for_one_frame() {
+    let prog = "0 BEGIN PGM T MM\n1 PLANE SPATIAL SPA+0 SPB+90 SPC+0 TURN FMAX\n2 CALL LBL 10\n\
+                3 PLANE SPATIAL SPA+90 SPB+90 SPC+0 TURN FMAX\n4 CALL LBL 10\n\
+                5 PLANE RESET TURN FMAX\n6 M30\n7 LBL 10\n8 CYCL DEF 7.0 DATUM SHIFT\n\
+                9 CYCL DEF 7.1 X+20\n10 L X+0 Y+0 R0 FMAX\n11 CYCL DEF 7.0 DATUM SHIFT\n\
+                12 CYCL DEF 7.1 X+0\n13 LBL 0\n14 END PGM T MM\n";
+    for to in ["fanuc", "sinumerik"] {
+        let r = translate(prog, "heidenhain", to);
+        assert_eq!(r.code, 1, "{to}: {}", r.stderr);
+        assert!(
+            r.stderr.contains("line 10: not carried across as")
+                && r.stderr.contains("written for the frame of the call at line 3, the subprogram is also called with another frame active: 9 CYCL DEF 7.1 X+20"),
+            "{to}: {}",
+            r.stderr
+        );
+    }
+}
+
 /// A work offset (`G54`–`G59`) copied into a target where it selects the same (Fanuc to
 /// Haas, SINUMERIK, TwinCAT for `G54`–`G57`) is carried across: exit status 0, a note; into
 /// Heidenhain, or `G59` into SINUMERIK (an axial offset there), or `G54.1 P3`, it is not (a
