@@ -2085,11 +2085,17 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         // repeated, a subprogram called again): the target's runs after the
                         // first do not add, and the program is not carried across.
                         let repeated = |line: usize| {
-                            calls
-                                .repeated(line.saturating_sub(1))
-                                .map_or(String::new(), |n| {
+                            let k = line.saturating_sub(1);
+                            match (calls.repeated(k), calls.looped(k)) {
+                                (Some(n), _) => {
                                     format!(" (the program runs it {n} times: not carried across)")
-                                })
+                                }
+                                (None, true) => {
+                                    " (the program repeats it in a loop: not carried across)"
+                                        .to_string()
+                                }
+                                (None, false) => String::new(),
+                            }
                         };
                         if let (Some((line, block)), true, false) = (adds, written, incremental) {
                             let again = repeated(line);

@@ -155,6 +155,141 @@ pub struct Labels {
     /// pass in the file's order too): a block run more than once that adds to the frame adds
     /// each time.
     runs: Vec<(std::ops::Range<usize>, usize)>,
+    /// The lines inside the program's loops (`WHILE … DO1` … `END1`, SINUMERIK `WHILE`,
+    /// `FOR`, `LOOP`, `REPEAT … UNTIL`, `REPEAT LABEL P=n`, LinuxCNC's `o100 repeat`, TwinCAT
+    /// `$WHILE`, Heidenhain's jump back to a label): run as often as their condition says.
+    loops: Vec<std::ops::Range<usize>>,
+}
+
+/// The loops of a program's lines (see [`Labels::looped`]): each opener matched with the
+/// nearest closer of its kind below it; a SINUMERIK `REPEAT LABEL P=n` from the line that
+/// defines `LABEL:`; a Heidenhain conditional jump (`FN 12: IF … GOTO LBL 1`, `IF … GOTO
+/// LBL`) back to a label above it.
+fn loops(dialect: Dialect, lines: &[String]) -> Vec<std::ops::Range<usize>> {
+    let upper: Vec<Vec<String>> = lines
+        .iter()
+        .map(|l| {
+            let code = l.split([';', '(']).next().unwrap_or("");
+            let mut w: Vec<String> = code.split_whitespace().map(str::to_uppercase).collect();
+            // A block number (`N20`, Heidenhain's `12`) is no word of the loop.
+            if w.first().is_some_and(|n| {
+                let digits = n.strip_prefix('N').unwrap_or(n);
+                !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit())
+            }) {
+                w.remove(0);
+            }
+            w
+        })
+        .collect();
+    let first = |k: usize| {
+        upper
+            .get(k)
+            .and_then(|w| w.first().cloned())
+            .unwrap_or_default()
+    };
+    let mut out = Vec::new();
+    let close = |open: usize, closer: &dyn Fn(usize) -> bool| {
+        (open + 1..upper.len())
+            .find(|&k| closer(k))
+            .map(|end| open..end + 1)
+    };
+    for k in 0..upper.len() {
+        let w = upper.get(k).cloned().unwrap_or_default();
+        match dialect {
+            Dialect::Fanuc | Dialect::Haas | Dialect::Syntec => {
+                // `WHILE [#1 LT 4] DO1` … `END1` (with or without blanks: `WHILE[#1LT4]DO1`).
+                let code = w.concat();
+                if code.starts_with("WHILE") {
+                    let n = code
+                        .rfind("DO")
+                        .and_then(|at| code.get(at + 2..))
+                        .unwrap_or("");
+                    if !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()) {
+                        let end = format!("END{n}");
+                        out.extend(close(k, &|i| {
+                            upper.get(i).is_some_and(|x| x.concat() == end)
+                        }));
+                    }
+                }
+                // LinuxCNC: `o100 repeat [3]` … `o100 endrepeat`, `o100 while` … `o100
+                // endwhile`, `o100 do` … `o100 while`.
+                // The keyword's letters alone (`REPEAT[100]`).
+                let letters = |x: &String| -> String {
+                    x.chars().take_while(|c| c.is_ascii_alphabetic()).collect()
+                };
+                if let [o, kind, ..] = w.as_slice() {
+                    if o.starts_with('O') {
+                        let end = match letters(kind).as_str() {
+                            "REPEAT" => Some("ENDREPEAT"),
+                            "WHILE" => Some("ENDWHILE"),
+                            "DO" => Some("WHILE"),
+                            _ => None,
+                        };
+                        if let Some(end) = end {
+                            let o = o.clone();
+                            out.extend(close(k, &|i| {
+                                upper.get(i).is_some_and(|x| {
+                                    x.first() == Some(&o)
+                                        && x.get(1).is_some_and(|y| letters(y) == end)
+                                })
+                            }));
+                        }
+                    }
+                }
+            }
+            Dialect::Sinumerik => {
+                let pairs = [
+                    ("WHILE", "ENDWHILE"),
+                    ("FOR", "ENDFOR"),
+                    ("LOOP", "ENDLOOP"),
+                    ("REPEAT", "UNTIL"),
+                ];
+                for (open, end) in pairs {
+                    // `REPEAT` with a label is the section repeat below.
+                    if first(k) == open && !(open == "REPEAT" && w.len() > 1) {
+                        out.extend(close(k, &|i| first(i) == end));
+                    }
+                }
+                if let (Some(x), Some(label)) = (w.first(), w.get(1)) {
+                    if (x == "REPEAT" || x == "REPEATB") && w.iter().any(|y| y.starts_with("P=")) {
+                        let name = format!("{label}:");
+                        if let Some(at) = (0..k).rev().find(|&i| first(i) == name) {
+                            out.push(at..k + 1);
+                        }
+                    }
+                }
+            }
+            Dialect::Twincat => {
+                for (open, end) in [
+                    ("$WHILE", "$ENDWHILE"),
+                    ("$FOR", "$ENDFOR"),
+                    ("$REPEAT", "$UNTIL"),
+                ] {
+                    if first(k) == open {
+                        out.extend(close(k, &|i| first(i) == end));
+                    }
+                }
+            }
+            Dialect::Heidenhain => {
+                // A conditional jump back to a label above: `FN 12: IF +Q1 LT +4 GOTO LBL 1`.
+                if let Some(g) = w.iter().position(|x| x == "GOTO") {
+                    if w.get(g + 1).is_some_and(|x| x == "LBL") {
+                        if let Some(name) = w.get(g + 2) {
+                            let at = (0..k).rev().find(|&i| {
+                                upper.get(i).is_some_and(|x| {
+                                    x.first().is_some_and(|y| y == "LBL") && x.get(1) == Some(name)
+                                })
+                            });
+                            if let Some(at) = at {
+                                out.push(at..k + 1);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    out
 }
 
 impl Labels {
@@ -178,7 +313,9 @@ impl Labels {
             entered: Vec::new(),
             params: Params::scan(dialect, text),
             runs: Vec::new(),
+            loops: Vec::new(),
         };
+        labels.loops = loops(dialect, &labels.lines);
         if labels.follows() {
             // Each call's body and runs; a body's total is the sum over the calls to it of
             // their runs times the runs of the body each call stands in (nested calls
@@ -225,6 +362,11 @@ impl Labels {
             .map(|(_, n)| *n)
             .max()
             .filter(|n| *n > 1)
+    }
+
+    /// Whether line `k` (0-based) stands in one of the program's loops.
+    pub fn looped(&self, k: usize) -> bool {
+        self.loops.iter().any(|l| l.contains(&k))
     }
 
     /// The lines of the subprogram that starts at line `at` (0-based): what a call runs.
@@ -437,5 +579,36 @@ mod tests {
         assert_eq!(called(haas, "M97 P1000"), Some(("N1000".into(), 1)));
         assert_eq!(called(f, "M97 P1000"), None);
         assert_eq!(called(f, "(M98 P2000)"), None);
+    }
+
+    #[test]
+    fn loops_of_every_dialect() {
+        let lines = |t: &str| t.lines().map(String::from).collect::<Vec<_>>();
+        let f = lines("G68.2 J90.\nN40 WHILE[#1LT4]DO1\nG68.4 K90.\nN90 END1\nM30");
+        assert_eq!(
+            loops(Dialect::Fanuc, &f),
+            vec![std::ops::Range { start: 1, end: 4 }]
+        );
+        let l = lines(
+            "o100 REPEAT[100]\n g68.4 i35\no100 ENDREPEAT\no200 do\nG0 X0\no200 while [#1 lt 3]",
+        );
+        assert_eq!(loops(Dialect::Fanuc, &l), [0..3, 3..6]);
+        let s = lines("SIDE:\nCYCLE800(0,\"\",1,57,0,0,0,90)\nENDSIDE:\nREPEAT SIDE ENDSIDE P=3\nWHILE R1<4\nAROT Z90\nENDWHILE");
+        assert_eq!(loops(Dialect::Sinumerik, &s), [0..4, 4..7]);
+        let t = lines("$FOR P1=0,3,1\nAROT Z90\n$ENDFOR");
+        assert_eq!(
+            loops(Dialect::Twincat, &t),
+            vec![std::ops::Range { start: 0, end: 3 }]
+        );
+        let h = lines(
+            "1 LBL 5\n2 PLANE RELATIV SPC+90 STAY\n3 FN 12: IF +Q1 LT +4 GOTO LBL 5\n4 LBL 0",
+        );
+        assert_eq!(
+            loops(Dialect::Heidenhain, &h),
+            vec![std::ops::Range { start: 0, end: 3 }]
+        );
+        // No loop: a `DO` without `WHILE`, an `END1` alone, a jump forward.
+        let none = lines("G0 X0 (DO1)\nEND1\nIF [#1 GT 0] GOTO 100");
+        assert!(loops(Dialect::Fanuc, &none).is_empty());
     }
 }

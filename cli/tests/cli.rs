@@ -2072,6 +2072,31 @@ fn program_to_flags_a_subprogram_written_for_one_frame() {
     }
 }
 
+/// An increment the target cannot say inside a loop of the program (Fanuc's `WHILE … DO1` …
+/// `END1`, SINUMERIK's `REPEAT SIDE ENDSIDE P=3`): not carried across, exit status 1 (a
+/// helper's find: exit 0 with a note).
+#[test]
+fn program_to_counts_an_increment_in_a_loop() {
+    let fanuc = "G68.2 X0 Y0 Z0 I0 J90. K0\nG53.1\n#1=0\nWHILE[#1LT4]DO1\n\
+                 G68.4 X0 Y0 Z0 I0 J0 K90.\n#1=#1+1\nEND1\nG69\n";
+    let r = translate(fanuc, "fanuc", "haas");
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr
+            .contains("(the program repeats it in a loop: not carried across)"),
+        "{}",
+        r.stderr
+    );
+    let sinumerik = "CYCLE800(0,\"TC1\",0,57,0,0,0,0,90,0,0,0,0,0,,1)\nSIDE:\n\
+                     CYCLE800(0,\"TC1\",1,57,0,0,0,90,0,0,0,0,0,0,,1)\nENDSIDE:\n\
+                     REPEAT SIDE ENDSIDE P=3\nCYCLE800()\n";
+    let r = translate(sinumerik, "sinumerik", "haas");
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    // Outside a loop, the note alone.
+    let once = fanuc.replace("WHILE[#1LT4]DO1\n", "").replace("END1\n", "");
+    assert_eq!(translate(&once, "fanuc", "haas").code, 0);
+}
+
 /// A work offset (`G54`–`G59`) copied into a target where it selects the same (Fanuc to
 /// Haas, SINUMERIK, TwinCAT for `G54`–`G57`) is carried across: exit status 0, a note; into
 /// Heidenhain, or `G59` into SINUMERIK (an axial offset there), or `G54.1 P3`, it is not (a
