@@ -1577,7 +1577,23 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
         p = next;
         let mut remark = remark;
         if remark == Remark::Passed {
-            calls.after(k, &mut p);
+            match calls.after(k, &mut p) {
+                Some(labels::Called::Elsewhere(name)) => eprintln!(
+                    "cncrot: line {line}: calls {name}, which is not in this file: its blocks are not followed (the frame after the call is the one before it): {block}"
+                ),
+                Some(labels::Called::Above(at)) => {
+                    eprintln!(
+                        "cncrot: line {line}: calls the subprogram at line {}, which stands above and was read{} from the frame there, not this call's{}: {block}",
+                        at + 1,
+                        if target.is_some() { " and translated" } else { "" },
+                        if target.is_some() { ": not carried across" } else { "" }
+                    );
+                    if target.is_some() {
+                        (ok, uncarried) = (false, uncarried + 1);
+                    }
+                }
+                None => {}
+            }
             // A call that changes the frame (`CALL LBL 1 ; RESET WORKING PLANE`) has its row
             // in the report, as the blocks that change it have: the state after the call.
             // (A translation copies the call: the label's blocks are translated where they

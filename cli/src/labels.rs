@@ -159,6 +159,20 @@ pub struct Labels {
     /// `FOR`, `LOOP`, `REPEAT … UNTIL`, `REPEAT LABEL P=n`, LinuxCNC's `o100 repeat`, TwinCAT
     /// `$WHILE`, Heidenhain's jump back to a label): run as often as their condition says.
     loops: Vec<std::ops::Range<usize>>,
+    /// The frame each label or subprogram standing above its calls was read from, in the
+    /// file's order.
+    read_from: Vec<(usize, Program)>,
+}
+
+/// What a call that the command cannot follow as the control does leaves to say.
+pub enum Called {
+    /// A subprogram not in the file (`M98 P9011`, `CALL LBL 7` without its label): its blocks
+    /// are not followed.
+    Elsewhere(String),
+    /// A subprogram standing above its call (not a section the call repeats), read and
+    /// translated in the file's order from the frame there (its line), which is not the
+    /// call's.
+    Above(usize),
 }
 
 /// The loops of a program's lines (see [`Labels::looped`]): each opener matched with the
@@ -314,6 +328,7 @@ impl Labels {
             params: Params::scan(dialect, text),
             runs: Vec::new(),
             loops: Vec::new(),
+            read_from: Vec::new(),
         };
         labels.loops = loops(dialect, &labels.lines);
         if labels.follows() {
@@ -408,9 +423,15 @@ impl Labels {
     /// reset does; from no tilt, a Fanuc would meet its `G52` in `G68.2` mode\]. Returns the
     /// line (0-based) of that call and those of the calls made with another frame active, for
     /// which its translation may not fit; `None` where no subprogram starts.
-    pub fn enter(&self, k: usize, p: &mut Program) -> Option<(usize, Vec<usize>)> {
+    pub fn enter(&mut self, k: usize, p: &mut Program) -> Option<(usize, Vec<usize>)> {
         let calls: Vec<&(usize, usize, Program)> =
             self.entered.iter().filter(|(at, _, _)| *at == k).collect();
+        // A label or subprogram reached in the file's order before any call to it: the frame
+        // its blocks are read (and translated) from, for a call below it to compare.
+        if calls.is_empty() && self.defined.iter().any(|d| d.1 == k) {
+            self.read_from.push((k, *p));
+            return None;
+        }
         let tilted = |q: &Program| q.frame.rotation != cncrot::IDENTITY || q.direct.is_some();
         let &&(_, from, q) = calls.iter().find(|(_, _, q)| tilted(q)).or(calls.first())?;
         let entry = if tilted(&q) {
@@ -432,21 +453,30 @@ impl Labels {
     }
 
     /// After line `k` was read (and passed over): the state a call there leaves.
-    pub fn after(&mut self, k: usize, p: &mut Program) {
+    pub fn after(&mut self, k: usize, p: &mut Program) -> Option<Called> {
         if !self.follows() {
-            return;
+            return None;
         }
-        let call = self.lines.get(k).and_then(|l| called(self.dialect, l));
+        let call = self.lines.get(k).and_then(|l| called(self.dialect, l))?;
         // Haas's `M97 P1000` jumps to the block numbered so: the first such after the call's
         // line or, failing that, any (block numbers repeat in programs).
-        let Some((at, rep)) = call.and_then(|c| self.target(c, k)) else {
-            return;
+        let name = call.0.clone();
+        let Some((at, rep)) = self.target(call, k) else {
+            return Some(Called::Elsewhere(name));
         };
         if at > k {
             self.entered.push((at, k, *p));
         }
+        let (_, _, section) = self.body(k, at, rep);
+        let frame = |q: &Program| (q.frame, q.shift, q.direct, q.angles);
+        let above = (at < k && !section)
+            .then(|| self.read_from.iter().find(|r| r.0 == at))
+            .flatten()
+            .filter(|r| frame(&r.1) != frame(p))
+            .map(|r| Called::Above(r.0));
         let mut budget = BUDGET;
         self.run(k, at, rep, p, 0, &mut budget);
+        above
     }
 
     /// The line a call `(name, runs)` at line `k` goes to, and its runs: the label or

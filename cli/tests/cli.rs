@@ -2097,6 +2097,34 @@ fn program_to_counts_an_increment_in_a_loop() {
     assert_eq!(translate(&once, "fanuc", "haas").code, 0);
 }
 
+/// A subprogram standing above its call (Fanuc's `O2000` before the main `O9000`) is read,
+/// and translated, in the file's order from the frame there: wrong for a call under a tilt,
+/// so that call is not carried across (exit status 1); a call to a program not in the file
+/// is named (its blocks are not followed). Both were silent (a helper's finds).
+#[test]
+fn program_names_calls_it_cannot_follow_in_place() {
+    let prog = "O2000\nG68.4 X0 Y0 Z0 I0 J10. K0\nM99\nO9000\nG68.2 X0 Y0 Z0 I0 J90. K0\n\
+                G53.1\nM98 P2000\nG69\nM30\n";
+    let r = translate(prog, "fanuc", "heidenhain");
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("line 7: calls the subprogram at line 1, which stands above and was read and translated from the frame there, not this call's: not carried across"),
+        "{}",
+        r.stderr
+    );
+    let r = cncrot(
+        &["program", "-", "--dialect", "fanuc"],
+        "G68.2 X0 Y0 Z0 I0 J30. K0\nM98 P9011\n",
+    );
+    assert!(
+        r.stderr.contains(
+            "line 2: calls O9011, which is not in this file: its blocks are not followed"
+        ),
+        "{}",
+        r.stderr
+    );
+}
+
 /// A work offset (`G54`–`G59`) copied into a target where it selects the same (Fanuc to
 /// Haas, SINUMERIK, TwinCAT for `G54`–`G57`) is carried across: exit status 0, a note; into
 /// Heidenhain, or `G59` into SINUMERIK (an axial offset there), or `G54.1 P3`, it is not (a
