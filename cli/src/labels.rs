@@ -460,7 +460,11 @@ impl Labels {
         let call = self.lines.get(k).and_then(|l| called(self.dialect, l))?;
         // Haas's `M97 P1000` jumps to the block numbered so: the first such after the call's
         // line or, failing that, any (block numbers repeat in programs).
-        let name = call.0.clone();
+        let name = if self.dialect == Dialect::Heidenhain {
+            format!("LBL {}", call.0)
+        } else {
+            call.0.clone()
+        };
         let Some((at, rep)) = self.target(call, k) else {
             return Some(Called::Elsewhere(name));
         };
