@@ -1344,37 +1344,42 @@ fn work_offsets(dialect: Dialect, block: &str, p: &Program) -> Option<Vec<u32>> 
     }
     let code = block.split(['(', ';']).next().unwrap_or("");
     let comment = &block[code.len()..];
-    let upper = code.to_uppercase();
-    let bytes = upper.as_bytes();
+    // Byte by byte (ASCII upper case only: other bytes, in any code page, stay as they are).
+    let bytes = code.to_ascii_uppercase().into_bytes();
     let mut found = Vec::new();
-    let mut kept = String::new();
+    let mut kept: Vec<u8> = Vec::new();
     let mut k = 0;
-    while k < bytes.len() {
-        let starts = bytes.get(k) == Some(&b'G')
+    while let Some(&b) = bytes.get(k) {
+        let starts = b == b'G'
             && !k
                 .checked_sub(1)
                 .and_then(|j| bytes.get(j))
                 .is_some_and(|b| b.is_ascii_alphanumeric() || *b == b'_' || *b == b'$');
-        let digits: String = upper[k + 1..]
-            .chars()
-            .take_while(|c| c.is_ascii_digit() || *c == '.')
+        let digits: Vec<u8> = bytes
+            .get(k + 1..)
+            .unwrap_or(&[])
+            .iter()
+            .copied()
+            .take_while(|c| c.is_ascii_digit() || *c == b'.')
             .collect();
-        if starts {
-            if let Ok(n) = digits.parse::<u32>() {
-                if (54..=59).contains(&n) {
-                    found.push(n);
-                    kept.push(' ');
-                    k += 1 + digits.len();
-                    continue;
-                }
+        let number = std::str::from_utf8(&digits)
+            .ok()
+            .and_then(|d| d.parse::<u32>().ok());
+        if let (true, Some(n)) = (starts, number) {
+            if (54..=59).contains(&n) {
+                found.push(n);
+                kept.push(b' ');
+                k += 1 + digits.len();
+                continue;
             }
         }
-        kept.push(char::from(bytes[k]));
+        kept.push(b);
         k += 1;
     }
     if found.is_empty() {
         return None;
     }
+    let mut kept = String::from_utf8_lossy(&kept).into_owned();
     kept.push_str(comment);
     // Beside nothing else of the frame's, or beside a cancel (`G69 G55`, which the command
     // applies); beside a tilt (`G54 G68.2 …`) the block is more than an offset.

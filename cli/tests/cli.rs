@@ -2148,6 +2148,11 @@ fn program_to_carries_a_work_offset_that_means_the_same() {
     assert_eq!(translate("G57\n", "fanuc", "twincat").code, 0);
     assert_eq!(translate("G59\n", "fanuc", "sinumerik").code, 1);
     assert_eq!(translate("G54.1 P3\n", "fanuc", "haas").code, 1);
+    // A character of more than one byte after the offset (the first version sliced the
+    // upper-cased text by byte and panicked there).
+    let r = translate("G54 X1 \u{fc}\nG55 (\u{e9})\n", "fanuc", "haas");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(r.stdout.lines().next(), Some("G54 X1 \u{fc}"));
     // The report still says the library does not follow it.
     let r = cncrot(&["program", "-", "--dialect", "fanuc"], "G54\n");
     assert!(
