@@ -2139,6 +2139,22 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             && (p.frame.rotation, p.direct) == (from.frame.rotation, from.direct)
                             && p.shift != from.shift;
                         let absolute = p.relative && !incremental;
+                        // A shift under the tilt in lines the program runs again after an
+                        // increment among them (a side per pass): written with the first
+                        // pass's tilt, wrong for the others.
+                        let passes_turn = calls.repeated_lines(line - 1).iter().any(|r| {
+                            r.clone().any(|i| {
+                                ahead.get(i).copied().flatten().is_some_and(|q| q.relative)
+                            })
+                        });
+                        if shift_under_tilt && written && passes_turn {
+                            (ok, uncarried) = (false, uncarried + 1);
+                            eprintln!(
+                                "cncrot: line {line}: not carried across as {} {}: the program runs it again after an increment of the tilt, and it is written with the tilt of its first pass: {block}",
+                                input::dialect_name(t.dialect),
+                                t.form
+                            );
+                        }
                         if varied.0.contains(&(line - 1))
                             && written
                             && (shift_under_tilt || absolute)

@@ -379,6 +379,17 @@ impl Labels {
             .filter(|n| *n > 1)
     }
 
+    /// The lines run more than once (by calls or a loop) that contain line `k` (0-based).
+    pub fn repeated_lines(&self, k: usize) -> Vec<std::ops::Range<usize>> {
+        let runs = self
+            .runs
+            .iter()
+            .filter(|(b, n)| *n > 1 && b.contains(&k))
+            .map(|(b, _)| b.clone());
+        let loops = self.loops.iter().filter(|l| l.contains(&k)).cloned();
+        runs.chain(loops).collect()
+    }
+
     /// Whether line `k` (0-based) stands in one of the program's loops.
     pub fn looped(&self, k: usize) -> bool {
         self.loops.iter().any(|l| l.contains(&k))

@@ -2125,6 +2125,32 @@ fn program_names_calls_it_cannot_follow_in_place() {
     );
 }
 
+/// A datum shift under the tilt in a section the program repeats after an increment of the
+/// tilt in it (a side per pass: `PLANE RELATIV SPA+90` then `CALL LBL 1 REP 3`): written with
+/// the first pass's tilt around it, wrong for the next sides: not carried across (a
+/// helper's find: exit 0). Repeated without an increment, the same tilt each pass: written.
+#[test]
+fn program_to_flags_a_shift_in_passes_that_turn() {
+    let prog = "0 BEGIN PGM F MM\n1 PLANE SPATIAL SPA+0 SPB+90 SPC+0 TURN FMAX\n2 LBL 1\n\
+                3 CYCL DEF 7.0 DATUM SHIFT\n4 CYCL DEF 7.1 X+10\n5 L Z-5 R0 F200\n\
+                6 CYCL DEF 7.0 DATUM SHIFT\n7 CYCL DEF 7.1 X+0\n8 PLANE RELATIV SPA+90 TURN FMAX\n\
+                9 CALL LBL 1 REP 3\n10 PLANE RESET TURN FMAX\n11 END PGM F MM\n";
+    let r = translate(prog, "heidenhain", "fanuc");
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("line 5: not carried across as fanuc G68.2: the program runs it again after an increment of the tilt"),
+        "{}",
+        r.stderr
+    );
+    let same = prog.replace("8 PLANE RELATIV SPA+90 TURN FMAX\n", "");
+    let r = translate(&same, "heidenhain", "fanuc");
+    assert!(
+        !r.stderr.contains("runs it again after an increment"),
+        "{}",
+        r.stderr
+    );
+}
+
 /// A work offset (`G54`–`G59`) copied into a target where it selects the same (Fanuc to
 /// Haas, SINUMERIK, TwinCAT for `G54`–`G57`) is carried across: exit status 0, a note; into
 /// Heidenhain, or `G59` into SINUMERIK (an axial offset there), or `G54.1 P3`, it is not (a
