@@ -1873,16 +1873,17 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         // for `q` as for the block's state: a way of moving it has no word for
                         // (compared so, not after this block's state before, where the writer
                         // may write the turn alone for one and the plane again for the other).
-                        let unsaid_moving = |q: &Program| {
+                        let same_from_untilted = |one: &Program, two: &Program| {
                             let (mut a, mut b) = ([0u8; MAX_CHANGE], [0u8; MAX_CHANGE]);
                             let untilted = Program::default();
-                            let one = write_change(t.dialect, form, &untilted, &p, d, &mut a);
-                            let two = write_change(t.dialect, form, &untilted, q, d, &mut b);
+                            let one = write_change(t.dialect, form, &untilted, one, d, &mut a);
+                            let two = write_change(t.dialect, form, &untilted, two, d, &mut b);
                             match (one, two) {
                                 (Ok((n, _)), Ok((m, _))) => a.get(..n) == b.get(..m),
                                 _ => false,
                             }
                         };
+                        let unsaid_moving = |q: &Program| same_from_untilted(&p, q);
                         let written = w.is_ok_and(|(len, _)| len > 0);
                         // What the target has no word for, and what follows from it.
                         let target_name = format!("{} {}", input::dialect_name(t.dialect), t.form);
@@ -1934,14 +1935,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             let probe = Program::default()
                                 .line(f, b"G68.2 X0 Y0 Z0 I0 J30 K0")
                                 .and_then(|(q, _)| q.line(f, b"G53.1"));
-                            probe.is_ok_and(|(q, _)| {
-                                let (mut a, mut b) = ([0u8; MAX_CHANGE], [0u8; MAX_CHANGE]);
-                                let untilted = Program::default();
-                                let one = write_change(t.dialect, form, &untilted, &q, d, &mut a);
-                                let two =
-                                    write_change(t.dialect, form, &untilted, &q.staying(), d, &mut b);
-                                matches!((one, two), (Ok((n, _)), Ok((m, _))) if a.get(..n) == b.get(..m))
-                            })
+                            probe.is_ok_and(|(q, _)| same_from_untilted(&q, &q.staying()))
                         };
                         let turn_lost = p.positioning != Positioning::Stay
                             && turns

@@ -105,8 +105,9 @@ fn ends(dialect: Dialect, block: &str) -> bool {
 /// The label a block calls and how often: `(name, repeats)`. Heidenhain's `CALL LBL 1 REP 2`
 /// (the editor's `REP 2/2`): the repeats after the first run, 0 without `REP`. An ISO
 /// subprogram call, `M98 P2000` with `L3` or `K3` (Fanuc, Syntec, Haas; the older
-/// `M98 P32000`, a count in the first digits, is read as program 32000), Haas's `M97 P1000`
-/// (the local subprogram at `N1000`): the runs, at least 1.
+/// `M98 P32000`, a count in the first digits, is named `O32000` here and resolved by
+/// [`Labels::target`]), Haas's `M97 P1000` (the local subprogram at `N1000`): the runs, at
+/// least 1.
 fn called(dialect: Dialect, block: &str) -> Option<(String, usize)> {
     if dialect != Dialect::Heidenhain {
         let w = iso_words(block);
@@ -162,6 +163,14 @@ pub struct Labels {
     /// The frame each label or subprogram standing above its calls was read from, in the
     /// file's order.
     read_from: Vec<(usize, Program)>,
+}
+
+/// Whether a dialect's calls are followed (its subprograms stand in the same file).
+fn follows(dialect: Dialect) -> bool {
+    matches!(
+        dialect,
+        Dialect::Heidenhain | Dialect::Fanuc | Dialect::Haas | Dialect::Syntec
+    )
 }
 
 /// What a call that the command cannot follow as the control does leaves to say.
@@ -315,11 +324,16 @@ impl Labels {
             .lines()
             .map(|l| l.trim_end_matches('\r').to_string())
             .collect();
-        let defined = lines
-            .iter()
-            .enumerate()
-            .filter_map(|(k, l)| defined(dialect, l).map(|name| (name, k)))
-            .collect();
+        // SINUMERIK and TwinCAT subprograms are files of their own: nothing defined here.
+        let defined = if follows(dialect) {
+            lines
+                .iter()
+                .enumerate()
+                .filter_map(|(k, l)| defined(dialect, l).map(|name| (name, k)))
+                .collect()
+        } else {
+            Vec::new()
+        };
         let mut labels = Labels {
             dialect,
             lines,
@@ -331,7 +345,7 @@ impl Labels {
             read_from: Vec::new(),
         };
         labels.loops = loops(dialect, &labels.lines);
-        if labels.follows() {
+        if follows(dialect) {
             // Each call's body and runs; a body's total is the sum over the calls to it of
             // their runs times the runs of the body each call stands in (nested calls
             // multiply), found by passes up to the nesting followed.
@@ -359,14 +373,6 @@ impl Labels {
             }
         }
         labels
-    }
-
-    /// Whether the dialect's calls are followed (its subprograms stand in the same file).
-    fn follows(&self) -> bool {
-        matches!(
-            self.dialect,
-            Dialect::Heidenhain | Dialect::Fanuc | Dialect::Haas | Dialect::Syntec
-        )
     }
 
     /// How often the program runs line `k` (0-based) through its calls, if more than once.
@@ -465,7 +471,7 @@ impl Labels {
 
     /// After line `k` was read (and passed over): the state a call there leaves.
     pub fn after(&mut self, k: usize, p: &mut Program) -> Option<Called> {
-        if !self.follows() {
+        if !follows(self.dialect) {
             return None;
         }
         let call = self.lines.get(k).and_then(|l| called(self.dialect, l))?;

@@ -865,7 +865,9 @@ pub(crate) fn block_states(from: &mut Program, to: &mut Program, text: &[u8]) ->
 /// wherever the program moved them) or it stays (`Some(false)`: a datum shift under
 /// `PLANE … TURN` — cycle 7's lines, `TRANS DATUM`, `G52` — whose tilt written again around
 /// it must not turn or retract again, where the control moves nothing). `None`: another
-/// tilt, or no way of moving. Not inlined, like [`leaves_untilted`] (stack bound).
+/// tilt, no way of moving, a block that changes nothing (`CYCL DEF 19.0`), or a state
+/// untilted after it (no tilt to write again). Not inlined, like [`leaves_untilted`]
+/// (stack bound).
 #[inline(never)]
 fn stated_motion(from: &Program, after: &Program, text: &[u8]) -> Option<bool> {
     let dialect = after.dialect?;
