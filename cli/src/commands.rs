@@ -1597,6 +1597,16 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         (ok, uncarried) = (false, uncarried + 1);
                     }
                 }
+                Some(labels::Called::Cut) => {
+                    eprintln!(
+                        "cncrot: line {line}: the calls from here change the frame in every pass for more than {} blocks: followed that far, so the frame after them is not the control's{}: {block}",
+                        labels::BUDGET,
+                        if target.is_some() { ": not carried across" } else { "" }
+                    );
+                    if target.is_some() {
+                        (ok, uncarried) = (false, uncarried + 1);
+                    }
+                }
                 None => {}
             }
             // A call that changes the frame (`CALL LBL 1 ; RESET WORKING PLANE`) has its row

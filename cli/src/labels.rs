@@ -16,7 +16,7 @@ const DEPTH: usize = 8;
 
 /// Blocks read for one call at most (its repeats and nested calls included): `L9999` three
 /// deep would be 10¹² blocks.
-const BUDGET: usize = 1_000_000;
+pub const BUDGET: usize = 1_000_000;
 
 /// A block's words after its block number, up to a `;` comment, in capitals.
 fn words(block: &str) -> Vec<String> {
@@ -182,6 +182,10 @@ pub enum Called {
     /// translated in the file's order from the frame there (its line), which is not the
     /// call's.
     Above(usize),
+    /// A call whose passes keep changing the frame beyond [`BUDGET`] blocks (nested `L9999`
+    /// around an increment of the tilt): followed that far, so the frame after it is not the
+    /// one the control reaches.
+    Cut,
 }
 
 /// The loops of a program's lines (see [`Labels::looped`]): each opener matched with the
@@ -496,8 +500,8 @@ impl Labels {
             .filter(|r| frame(&r.1) != frame(p))
             .map(|r| Called::Above(r.0));
         let mut budget = BUDGET;
-        self.run(k, at, rep, p, 0, &mut budget);
-        above
+        let whole = self.run(k, at, rep, p, 0, &mut budget);
+        above.or((!whole).then_some(Called::Cut))
     }
 
     /// The line a call `(name, runs)` at line `k` goes to, and its runs: the label or
@@ -560,7 +564,8 @@ impl Labels {
     /// above the call, repeated (`REP`: the section again, `rep` times, whatever `LBL 0` stands
     /// in it — the TNC's dialog makes a call with `REP` a section repeat, one without a
     /// subprogram call) or without a `LBL 0` between, else a subprogram up to its `LBL 0`
-    /// (once).
+    /// (once). A pass that leaves the frame as it found it ends the runs (every further pass
+    /// would too). `false`: the budget ran out first.
     fn run(
         &self,
         k: usize,
@@ -569,13 +574,14 @@ impl Labels {
         p: &mut Program,
         depth: usize,
         budget: &mut usize,
-    ) {
+    ) -> bool {
         let (body, times, _) = self.body(k, at, rep);
         for _ in 0..times {
+            let before = *p;
             for i in body.clone() {
                 // A bounded follow: calls that would read more blocks than that stop there.
                 let Some(left) = budget.checked_sub(1) else {
-                    return;
+                    return false;
                 };
                 *budget = left;
                 let Some(line) = self.lines.get(i) else {
@@ -589,11 +595,17 @@ impl Labels {
                 if depth < DEPTH {
                     let inner = called(self.dialect, line).and_then(|c| self.target(c, i));
                     if let Some((at, r)) = inner {
-                        self.run(i, at, r, p, depth + 1, budget);
+                        if !self.run(i, at, r, p, depth + 1, budget) {
+                            return false;
+                        }
                     }
                 }
             }
+            if *p == before {
+                break;
+            }
         }
+        true
     }
 }
 
