@@ -345,11 +345,18 @@ pub fn line(
     };
     let d = common.decimals;
     let mut last = None;
+    // The first line whose way of moving the machine `line` leaves out (it writes planes):
+    // said once, after the results.
+    let (mut read, mut moving) = (0usize, None);
     let ok = run(common, text.map(str::to_string), |line| {
+        read += 1;
         let (next, remark) = program
             .line(dialect, line.as_bytes())
             .map_err(|e| Failure::at(e.column, input::block_message(line, &e)))?;
         program = next;
+        if moving.is_none() && remark == Remark::Applied && has_way_of_moving(&program) {
+            moving = Some(read);
+        }
         let note = match remark {
             Remark::Applied => None,
             Remark::Passed => Some(("passed", "the block does not concern the frame")),
@@ -380,6 +387,17 @@ pub fn line(
             Json::Obj(vec![]),
         )
     })?;
+    if let Some(k) = moving {
+        let at = if common.batch.is_some() {
+            format!(" (first at line {k})")
+        } else {
+            String::new()
+        };
+        eprintln!(
+            "cncrot: note: the way the line moves the machine (its turn, direction of solution, retraction or feed){at} is not written: `line` writes planes; `cncrot program FILE --dialect {} --to DIALECT` carries it",
+            input::dialect_name(dialect)
+        );
+    }
     if let (Some(path), Some(block)) = (svg, last) {
         let title = match &common.batch {
             Some(_) => "the frame after the last tilt of the program".to_string(),
@@ -404,6 +422,18 @@ pub fn line(
         )?;
     }
     Ok(ok)
+}
+
+/// Whether the state holds a way of moving the machine to its tilt that a plane alone does
+/// not say: a turn or a move, a solution the block chooses, a retraction, a feed, a
+/// table turned to the plane.
+fn has_way_of_moving(p: &Program) -> bool {
+    use cncrot::dialects::program::{AxisChoice, Feed, Positioning, Retract};
+    p.positioning != Positioning::Stay
+        || p.choice != AxisChoice::Closest
+        || p.retract != Retract::None
+        || p.feed != Feed::Rapid
+        || p.table_rot
 }
 
 /// A points file: one point per line; `#` lines, blank lines and a first line that is not

@@ -311,6 +311,49 @@ fn line_translates_between_dialects() {
         assert!(out.lines().any(|l| l.starts_with(name)), "{name}: {out}");
     }
     assert!(out.contains("twincat    ROT X0 Y0 Z30"), "{out}");
+    // `line` writes planes: a way of moving the machine (TURN, SEQ-, MB) is said to be left
+    // out, once, with the command that carries it; a STAY line has none.
+    let r = cncrot(
+        &[
+            "line",
+            "--from",
+            "heidenhain",
+            "--to",
+            "fanuc",
+            "PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB50 FMAX SEQ-",
+        ],
+        "",
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(r.stderr.contains("is not written: `line` writes planes; `cncrot program FILE --dialect heidenhain --to DIALECT` carries it"), "{}", r.stderr);
+    let r = cncrot(
+        &[
+            "line",
+            "--from",
+            "fanuc",
+            "--to",
+            "heidenhain",
+            "--batch",
+            "-",
+        ],
+        "G68.2 X0 Y0 Z0 I0 J30 K0\nG53.1\nG69\nG68.2 X0 Y0 Z0 I0 J20 K0\nG53.1\n",
+    );
+    assert_eq!(
+        r.stderr.matches("(first at line 2)").count(),
+        1,
+        "{}",
+        r.stderr
+    );
+    let r = cncrot(
+        &[
+            "line",
+            "--from",
+            "heidenhain",
+            "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY",
+        ],
+        "",
+    );
+    assert!(r.stderr.is_empty(), "{}", r.stderr);
     // The TwinCAT manual: ROT Z30, then AROT Z15, is 45° about Z. A program's lines carry
     // their modal state in batch mode; a bad line is refused at its column and the next
     // line still sees the state before it.
@@ -2033,7 +2076,8 @@ fn program_follows_calls_as_programs_write_them() {
                    O3000\nG68.4 X0 Y0 Z0 I0 J0 K1.\nM99\n";
     let r = cncrot(&["program", "-", "--dialect", "fanuc"], turning);
     assert!(
-        r.stderr.contains("line 2: the calls from here change the frame in every pass"),
+        r.stderr
+            .contains("line 2: the calls from here change the frame in every pass"),
         "{}",
         r.stderr
     );
