@@ -1627,10 +1627,18 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         (ok, uncarried) = (false, uncarried + 1);
                     }
                 }
-                Some(labels::Called::Cut) => {
+                Some(labels::Called::Cut(cut)) => {
+                    let why = match cut {
+                        labels::Cut::Budget => format!(
+                            "change the frame in every pass for more than {} blocks",
+                            labels::BUDGET
+                        ),
+                        labels::Cut::Depth => {
+                            format!("nest more than {} calls deep", labels::DEPTH)
+                        }
+                    };
                     eprintln!(
-                        "cncrot: line {line}: the calls from here change the frame in every pass for more than {} blocks: followed that far, so the frame after them is not the control's{}: {block}",
-                        labels::BUDGET,
+                        "cncrot: line {line}: the calls from here {why}: followed that far, so the frame after them is not the control's{}: {block}",
                         if target.is_some() { ": not carried across" } else { "" }
                     );
                     if target.is_some() {

@@ -12,7 +12,7 @@ use crate::params::Params;
 use cncrot::dialects::program::{AxisChoice, Dialect, Program, Remark};
 
 /// Nested calls followed at most this deep (a label that calls itself stops there).
-const DEPTH: usize = 8;
+pub const DEPTH: usize = 8;
 
 /// Blocks read for one call at most (its repeats and nested calls included): `L9999` three
 /// deep would be 10¹² blocks.
@@ -182,10 +182,20 @@ pub enum Called {
     /// translated in the file's order from the frame there (its line), which is not the
     /// call's.
     Above(usize),
-    /// A call whose passes keep changing the frame beyond [`BUDGET`] blocks (nested `L9999`
-    /// around an increment of the tilt): followed that far, so the frame after it is not the
-    /// one the control reaches.
-    Cut,
+    /// A call followed only in part: its passes keep changing the frame beyond [`BUDGET`]
+    /// blocks (nested `L9999` around an increment of the tilt), or its calls nest deeper
+    /// than [`DEPTH`] (a label that calls itself); the frame after it is not the one the
+    /// control reaches.
+    Cut(Cut),
+}
+
+/// Where a follow stopped.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Cut {
+    /// At [`BUDGET`] blocks.
+    Budget,
+    /// At a call [`DEPTH`] calls deep.
+    Depth,
 }
 
 /// The loops of a program's lines (see [`Labels::looped`]): each opener matched with the
@@ -501,7 +511,7 @@ impl Labels {
             .map(|r| Called::Above(r.0));
         let mut budget = BUDGET;
         let whole = self.run(k, at, rep, p, 0, &mut budget);
-        above.or((!whole).then_some(Called::Cut))
+        above.or(whole.err().map(Called::Cut))
     }
 
     /// The line a call `(name, runs)` at line `k` goes to, and its runs: the label or
@@ -565,7 +575,7 @@ impl Labels {
     /// in it — the TNC's dialog makes a call with `REP` a section repeat, one without a
     /// subprogram call) or without a `LBL 0` between, else a subprogram up to its `LBL 0`
     /// (once). A pass that leaves the frame as it found it ends the runs (every further pass
-    /// would too). `false`: the budget ran out first.
+    /// would too). An error: where the follow stopped.
     fn run(
         &self,
         k: usize,
@@ -574,14 +584,14 @@ impl Labels {
         p: &mut Program,
         depth: usize,
         budget: &mut usize,
-    ) -> bool {
+    ) -> Result<(), Cut> {
         let (body, times, _) = self.body(k, at, rep);
         for _ in 0..times {
             let before = *p;
             for i in body.clone() {
                 // A bounded follow: calls that would read more blocks than that stop there.
                 let Some(left) = budget.checked_sub(1) else {
-                    return false;
+                    return Err(Cut::Budget);
                 };
                 *budget = left;
                 let Some(line) = self.lines.get(i) else {
@@ -592,20 +602,19 @@ impl Labels {
                 if let Ok((next, Remark::Applied)) = p.line(self.dialect, text.as_bytes()) {
                     *p = next;
                 }
-                if depth < DEPTH {
-                    let inner = called(self.dialect, line).and_then(|c| self.target(c, i));
-                    if let Some((at, r)) = inner {
-                        if !self.run(i, at, r, p, depth + 1, budget) {
-                            return false;
-                        }
+                let inner = called(self.dialect, line).and_then(|c| self.target(c, i));
+                if let Some((at, r)) = inner {
+                    if depth + 1 >= DEPTH {
+                        return Err(Cut::Depth);
                     }
+                    self.run(i, at, r, p, depth + 1, budget)?;
                 }
             }
             if *p == before {
                 break;
             }
         }
-        true
+        Ok(())
     }
 }
 

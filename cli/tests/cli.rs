@@ -2084,6 +2084,17 @@ fn program_follows_calls_as_programs_write_them() {
     let r = translate(turning, "fanuc", "haas");
     assert_eq!(r.code, 1, "{}", r.stderr);
     assert!(r.stderr.contains("followed that far"), "{}", r.stderr);
+    // A subprogram that calls itself (a control stops it with an alarm) is followed 8 calls
+    // deep, and the cut said.
+    let own = "G68.2 X0 Y0 Z0 I0 J30. K0\nM98 P2000\nM30\nO2000\nG68.4 X0 Y0 Z0 I0 J0 K1.\n\
+               M98 P2000\nM99\n";
+    let r = cncrot(&["program", "-", "--dialect", "fanuc"], own);
+    assert!(
+        r.stderr
+            .contains("line 2: the calls from here nest more than 8 calls deep"),
+        "{}",
+        r.stderr
+    );
 }
 
 /// A turn home (`PLANE RESET TURN`) into a target that says no turn (Syntec's `G158`,
