@@ -142,6 +142,307 @@ fn called(dialect: Dialect, block: &str) -> Option<(String, usize)> {
     }
 }
 
+/// SINUMERIK words that stand alone on a block (or with their arguments) and are no call of
+/// a subprogram: transformations, orientation and compensation modes, control words. A block
+/// of one other name is a call (`FACE_SIDE2`, `MYSUB(1, 2)`).
+const SINUMERIK_WORDS: &[&str] = &[
+    "TRAORI",
+    "TRAFOOF",
+    "TRANSMIT",
+    "TRACYL",
+    "TRAANG",
+    "TRACON",
+    "ORIWKS",
+    "ORIMKS",
+    "ORIAXES",
+    "ORIVECT",
+    "ORIPLANE",
+    "ORICONCW",
+    "ORICONCCW",
+    "ORICONIO",
+    "ORICONTO",
+    "ORICURVE",
+    "ORIPATH",
+    "ORIPATHS",
+    "ORIROTA",
+    "ORIROTR",
+    "ORIROTT",
+    "ORIROTC",
+    "ORIEULER",
+    "ORIRPY",
+    "ORIRPY2",
+    "ORIVIRT1",
+    "ORIVIRT2",
+    "ORIAXPOS",
+    "ORISON",
+    "ORISOF",
+    "UPATH",
+    "SPATH",
+    "CFTCP",
+    "CFC",
+    "CFIN",
+    "CUT2D",
+    "CUT2DF",
+    "CUT3DC",
+    "CUT3DF",
+    "CUT3DFS",
+    "CUT3DFF",
+    "CUT3DCC",
+    "CUT3DCCD",
+    "CDON",
+    "CDOF",
+    "CDOF2",
+    "SOFT",
+    "BRISK",
+    "DRIVE",
+    "SOFTA",
+    "BRISKA",
+    "DRIVEA",
+    "FFWON",
+    "FFWOF",
+    "COMPON",
+    "COMPOF",
+    "COMPCURV",
+    "COMPCAD",
+    "COMPSURF",
+    "STOPRE",
+    "RET",
+    "SUPA",
+    "TOFFON",
+    "TOFFOF",
+    "TCOABS",
+    "TCOFR",
+    "TCOFRX",
+    "TCOFRY",
+    "TCOFRZ",
+    "TOROT",
+    "TOROTOF",
+    "TOROTX",
+    "TOROTY",
+    "TOROTZ",
+    "TOFRAME",
+    "TOFRAMEX",
+    "TOFRAMEY",
+    "TOFRAMEZ",
+    "PAROT",
+    "PAROTOF",
+    "DIAMON",
+    "DIAMOF",
+    "DIAM90",
+    "WAITM",
+    "WAITMC",
+    "WAITE",
+    "SETM",
+    "CLRM",
+    "SETMS",
+    "FGROUP",
+    "FNORM",
+    "FLIN",
+    "FCUB",
+    "FPRAON",
+    "FPRAOF",
+    "BSPLINE",
+    "CSPLINE",
+    "ASPLINE",
+    "POLY",
+    "POLYPATH",
+    "PTP",
+    "CP",
+    "PTPG0",
+    "STARTFIFO",
+    "STOPFIFO",
+    "FIFOCTRL",
+    "RMB",
+    "RME",
+    "RMI",
+    "RMN",
+    "REPOSA",
+    "REPOSL",
+    "REPOSQ",
+    "REPOSH",
+    "NORM",
+    "KONT",
+    "KONTC",
+    "KONTT",
+    "ELSE",
+    "ENDIF",
+    "ENDWHILE",
+    "LOOP",
+    "ENDLOOP",
+    "ENDFOR",
+    "REPEAT",
+    "UNTIL",
+    "DISPLOF",
+    "DISPLON",
+    "SBLOF",
+    "SBLON",
+    "MSG",
+    "WORKPIECE",
+    "SETPIECE",
+    "LIFTFAST",
+    "SETAL",
+    "TRANS",
+    "ATRANS",
+    "ROT",
+    "AROT",
+    "ROTS",
+    "AROTS",
+    "CROTS",
+    "SCALE",
+    "ASCALE",
+    "MIRROR",
+    "AMIRROR",
+    "CYCLE800",
+    "MCALL",
+    "GOTOF",
+    "GOTOB",
+    "GOTO",
+    "GOTOC",
+    "GOTOS",
+    "STOPREOF",
+    "SAVE",
+    "ACTBLOCNO",
+    "CPRECON",
+    "CPRECOF",
+    "CSPLINE",
+    "ORIC",
+    "ORID",
+    "OSOF",
+    "OSC",
+    "OSS",
+    "OSSE",
+    "OSD",
+    "OST",
+    "MOVT",
+    "SPOF",
+    "SPON",
+    "SPIF1",
+    "SPIF2",
+    "DILF",
+    "ALF",
+    "LFON",
+    "LFOF",
+    "LFTXT",
+    "LFWP",
+    "LFPOS",
+    "G500",
+    "TRAILON",
+    "TRAILOF",
+    "CALCPOSI",
+    "PROTA",
+    "PROTS",
+    "EXECUTE",
+    "EXECSTRING",
+    "CANCEL",
+    "PUTFTOC",
+    "PUTFTOCF",
+    "SETINT",
+    "DISABLE",
+    "ENABLE",
+    "CLRINT",
+    "RESET",
+    "WRTPR",
+    "RELEASE",
+    "GET",
+    "GETD",
+    "INIT",
+    "START",
+    "STOPRE",
+    "SYNFCT",
+    "FTOC",
+    "AXCTSWE",
+    "AXCTSWED",
+    "AXTOCHAN",
+    "TANG",
+    "TANGON",
+    "TANGOF",
+    "TLIFT",
+    "CHKDNO",
+    "GETSELT",
+    "GETT",
+    "NEWT",
+    "DELT",
+    "SETDNO",
+    "SPI",
+    "LOCK",
+    "UNLOCK",
+    "ACC",
+    "OVRA",
+    "VELOLIM",
+    "JERKLIM",
+    "G601",
+    "G602",
+    "G603",
+];
+
+/// A call to a program that stands in another file, not in this one: Heidenhain's
+/// `CALL PGM name`, `CALL SELECTED PGM`; SINUMERIK's `L123`, `CALL`, `PCALL`, `EXTCALL`,
+/// `MCALL name` (modal: after each motion block) and a block of a program's name alone
+/// (`FACE_SIDE2`, `MYSUB(1, 2)`; the manufacturer's cycles, `CYCLE81` … and the
+/// `POCKET`/`SLOT`/`HOLES` families, left out). The name, as the message gives it.
+fn external(dialect: Dialect, block: &str) -> Option<String> {
+    match dialect {
+        Dialect::Heidenhain => match words(block).as_slice() {
+            [call, pgm, name, ..] if call == "CALL" && pgm == "PGM" => Some(format!("PGM {name}")),
+            [call, sel, pgm, ..] if call == "CALL" && sel == "SELECTED" && pgm == "PGM" => {
+                Some("the selected program (SEL PGM)".into())
+            }
+            _ => None,
+        },
+        Dialect::Sinumerik => {
+            let code = block.split(';').next().unwrap_or("").trim();
+            let mut w: Vec<String> = code.split_whitespace().map(str::to_uppercase).collect();
+            if w.first().is_some_and(|n| {
+                n.strip_prefix('N')
+                    .is_some_and(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+            }) {
+                w.remove(0);
+            }
+            let first = w.first()?.clone();
+            let cycle = |name: &str| {
+                ["CYCLE", "POCKET", "SLOT", "HOLES", "LONGHOLE", "E_", "F_"]
+                    .iter()
+                    .any(|c| name.starts_with(c))
+            };
+            let name_of = |s: &str| {
+                s.trim_matches('"')
+                    .split('(')
+                    .next()
+                    .unwrap_or("")
+                    .to_string()
+            };
+            match first.as_str() {
+                "CALL" | "PCALL" | "EXTCALL" => w.get(1).map(|n| name_of(n)),
+                "MCALL" => w
+                    .get(1)
+                    .map(|n| name_of(n))
+                    .filter(|n| !cycle(n))
+                    .map(|n| format!("{n} (after each motion block: MCALL)")),
+                _ => {
+                    let name = first.split('(').next().unwrap_or("");
+                    let ident = name.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+                        && name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_');
+                    // `L123` (and `L123 P2`); otherwise a name alone on its block, not an
+                    // address with its number (`G17`, `M30`) nor a word of the language.
+                    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+                    let numbered = name.strip_prefix('L').is_some_and(digits);
+                    let address = name.len() > 1
+                        && name.as_bytes()[0].is_ascii_alphabetic()
+                        && digits(&name[1..]);
+                    let alone = w.len() == 1 || numbered && w.len() == 2 && w[1].starts_with('P');
+                    (ident
+                        && alone
+                        && (numbered || !address)
+                        && !cycle(name)
+                        && !SINUMERIK_WORDS.contains(&name))
+                    .then(|| name.to_string())
+                }
+            }
+        }
+        _ => None,
+    }
+}
+
 /// A program's labels: where each is defined, and the states of the calls to a subprogram
 /// that stands after them (one of them is the state its blocks are read from).
 pub struct Labels {
@@ -485,6 +786,9 @@ impl Labels {
 
     /// After line `k` was read (and passed over): the state a call there leaves.
     pub fn after(&mut self, k: usize, p: &mut Program) -> Option<Called> {
+        if let Some(name) = self.lines.get(k).and_then(|l| external(self.dialect, l)) {
+            return Some(Called::Elsewhere(name));
+        }
         if !follows(self.dialect) {
             return None;
         }

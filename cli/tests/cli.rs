@@ -2191,6 +2191,45 @@ fn program_names_calls_it_cannot_follow_in_place() {
         "{}",
         r.stderr
     );
+    // SINUMERIK's subprograms stand in files of their own: every way of calling one is named
+    // (`L…`, a name alone, `CALL`, `PCALL`, `MCALL` of a program), not the manufacturer's
+    // cycles nor the words of the language (a helper's find: passed over in silence).
+    let sin = "N10 CYCLE800(0,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,-1,0,1)\nN20 L9011\nN25 FACE_SIDE2\n\
+               N26 CALL \"SIDE3\"\nN27 PCALL SIDE4\nN28 MCALL SIDE5\nN29 MCALL CYCLE81(10,0,2,-5)\n\
+               N30 TRAORI\nN31 ORIWKS\nN32 G17\nN33 CYCLE832(0.01,3,1)\nN34 MCALL\nN35 L10 P2\n\
+               N36 MYSUB(1,2)\nN37 TRAFOOF\nN38 M30\n";
+    let r = cncrot(&["program", "-", "--dialect", "sinumerik"], sin);
+    let named: Vec<&str> = r
+        .stderr
+        .lines()
+        .filter(|l| l.contains("which is not in this file"))
+        .filter_map(|l| l.split("calls ").nth(1)?.split(", which").next())
+        .collect();
+    assert_eq!(
+        named,
+        [
+            "L9011",
+            "FACE_SIDE2",
+            "SIDE3",
+            "SIDE4",
+            "SIDE5 (after each motion block: MCALL)",
+            "L10",
+            "MYSUB"
+        ],
+        "{}",
+        r.stderr
+    );
+    // Heidenhain's programs called by name.
+    let r = cncrot(
+        &["program", "-", "--dialect", "heidenhain"],
+        "1 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN FMAX\n2 CALL PGM TNC:\\SIDE2.H\n",
+    );
+    assert!(
+        r.stderr
+            .contains("line 2: calls PGM TNC:\\SIDE2.H, which is not in this file"),
+        "{}",
+        r.stderr
+    );
 }
 
 /// A datum shift under the tilt in a section the program repeats after an increment of the
