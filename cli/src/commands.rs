@@ -1242,6 +1242,77 @@ fn block_number(block: &str, from: Dialect) -> Option<String> {
 /// ISO-style dialects and TwinCAT, `;` to the end of the line in all): the code as it
 /// stands without them, and the comments' texts joined by a space (`None` without one).
 /// SINUMERIK's strings (`"TC1"`) are no comment, whatever they hold.
+/// The arguments of the first `CYCLE800(…)` of a SINUMERIK block's code (commas inside
+/// quotes kept), and the byte range of the text between its parentheses; `None` without one.
+fn cycle800_args(code: &str) -> Option<(Vec<String>, std::ops::Range<usize>)> {
+    let at = code.to_uppercase().find("CYCLE800")?;
+    let open = at + code.get(at..)?.find('(')?;
+    let mut quoted = false;
+    let close = code
+        .char_indices()
+        .skip_while(|&(i, _)| i <= open)
+        .find(|&(_, c)| {
+            if c == '"' {
+                quoted = !quoted;
+            }
+            c == ')' && !quoted
+        })?
+        .0;
+    let inner = code.get(open + 1..close)?;
+    let mut args = vec![String::new()];
+    let mut quoted = false;
+    for c in inner.chars() {
+        match c {
+            '"' => {
+                quoted = !quoted;
+                args.last_mut()?.push(c);
+            }
+            ',' if !quoted => args.push(String::new()),
+            c => args.last_mut()?.push(c),
+        }
+    }
+    Some((
+        args.iter().map(|a| a.trim().to_string()).collect(),
+        open + 1..close,
+    ))
+}
+
+/// A `CYCLE800` written for a SINUMERIK source's `CYCLE800`, with the source's own words
+/// that name no plane kept: the swivel data set `_TC`, the digits of `_ST` above the units
+/// (their coding is not public; the units digit, new or additive, is the writer's) and
+/// `_DMODE`. A translation into SINUMERIK from SINUMERIK keeps the data set the program
+/// swivels (a machine with a head and a table has two).
+fn keep_cycle800_words(source: &str, written: &str) -> String {
+    let Some((from, _)) = cycle800_args(source) else {
+        return written.to_string();
+    };
+    let int = |a: &str| a.parse::<i64>().ok();
+    written
+        .lines()
+        .map(|l| {
+            let Some((mut args, range)) = cycle800_args(l) else {
+                return l.to_string();
+            };
+            if args.len() < 3 {
+                return l.to_string();
+            }
+            if let Some(tc) = from.get(1).filter(|t| !t.is_empty()) {
+                args[1] = tc.clone();
+            }
+            if let (Some(src), Some(w)) = (from.get(2).and_then(|a| int(a)), int(&args[2])) {
+                args[2] = (src / 10 * 10 + w % 10).to_string();
+            }
+            if let (Some(dm), Some(slot)) =
+                (from.get(15).filter(|a| !a.is_empty()), args.get_mut(15))
+            {
+                *slot = dm.clone();
+            }
+            format!("{}{}{}", &l[..range.start], args.join(","), &l[range.end..])
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
 fn split_comments(block: &str, from: Dialect) -> (String, Option<String>) {
     let parens = !matches!(from, Dialect::Sinumerik | Dialect::Heidenhain);
     let (mut code, mut found) = (String::new(), Vec::new());
@@ -1470,6 +1541,8 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     let (mut applied, mut passed, mut unfollowed, mut refused) = (0, 0, 0, 0);
     // Blocks read but not written in the target (its form has no words for the change).
     let mut uncarried = 0;
+    // The swivel data sets (`_TC`) named so far that the target has no word for.
+    let mut data_sets: Vec<String> = Vec::new();
     // Blocks written without a turn, a tip kept in place or a retraction the source has.
     let mut moved_otherwise = 0;
     // A block refused or not followed since the last one that set the frame: the control's tilt is not the
@@ -2252,6 +2325,29 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         Ok((len, _)) => {
                             rewritten = true;
                             let text = String::from_utf8_lossy(&buf[..len]);
+                            let code = split_comments(block, dialect).0;
+                            let text = if dialect == Dialect::Sinumerik
+                                && t.dialect == Dialect::Sinumerik
+                            {
+                                keep_cycle800_words(&code, &text)
+                            } else {
+                                text.into_owned()
+                            };
+                            // The data set a SINUMERIK program swivels with: a machine's
+                            // configuration elsewhere (said once per name).
+                            let set = (dialect == Dialect::Sinumerik
+                                && t.dialect != Dialect::Sinumerik)
+                                .then(|| cycle800_args(&code))
+                                .flatten()
+                                .and_then(|(a, _)| a.get(1).cloned())
+                                .filter(|tc| !matches!(tc.as_str(), "" | "\"\"" | "\"0\"" | "0"));
+                            if let Some(tc) = set.filter(|tc| !data_sets.contains(tc)) {
+                                eprintln!(
+                                    "cncrot: line {line}: the swivel data set {tc} (_TC) has no word in {}: the kinematics the control uses is the machine's own (check it is the one this data set describes): {block}",
+                                    input::dialect_name(t.dialect)
+                                );
+                                data_sets.push(tc);
+                            }
                             // An optional block stays optional: its skip mark on each line.
                             let mark = skip_mark(block, dialect, t.dialect);
                             // The block's other words (a retract beside a cancel, the

@@ -2232,6 +2232,52 @@ fn program_names_calls_it_cannot_follow_in_place() {
     );
 }
 
+/// SINUMERIK into SINUMERIK keeps the swivel data set a `CYCLE800` names (`_TC`), `_ST`'s
+/// digits above the units and `_DMODE`: a machine with a head and a table has a data set for
+/// each (a helper's find: written `""`, exit 0). Into another dialect the data set is named
+/// once.
+#[test]
+fn program_keeps_the_swivel_data_set() {
+    let prog = "N10 CYCLE800(1,\"TABLE\",200000,27,0,0,0,30,20,10,0,0,0,1,100,1)\nN20 G0 X0\n\
+                N30 CYCLE800(2,\"HEAD\",0,57,0,0,0,0,20,0,0,0,0,-1,0,1)\n\
+                N35 CYCLE800(2,\"HEAD\",1,57,0,0,0,0,5,0,0,0,0,-1,0,1)\nN40 CYCLE800()\n";
+    let r = translate(prog, "sinumerik", "sinumerik");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert!(
+        lines[0].starts_with("N10 CYCLE800(1,\"TABLE\",200000,57,"),
+        "{}",
+        r.stdout
+    );
+    assert!(lines[0].ends_with(",1,0,1)"), "{}", r.stdout);
+    assert_eq!(
+        lines[2], "N30 CYCLE800(2,\"HEAD\",0,57,0,0,0,0,20,0,0,0,0,-1,0,1)",
+        "{}",
+        r.stdout
+    );
+    // Additive stays additive.
+    assert!(
+        lines[3].starts_with("N35 CYCLE800(2,\"HEAD\",1,57,"),
+        "{}",
+        r.stdout
+    );
+    assert_eq!(lines[4], "N40 CYCLE800()", "{}", r.stdout);
+    let r = translate(prog, "sinumerik", "heidenhain");
+    assert_eq!(
+        r.stderr
+            .matches("the swivel data set \"HEAD\" (_TC) has no word in heidenhain")
+            .count(),
+        1,
+        "{}",
+        r.stderr
+    );
+    assert!(
+        r.stderr.contains("line 1: the swivel data set \"TABLE\""),
+        "{}",
+        r.stderr
+    );
+}
+
 /// A datum shift under the tilt in a section the program repeats after an increment of the
 /// tilt in it (a side per pass: `PLANE RELATIV SPA+90` then `CALL LBL 1 REP 3`): written with
 /// the first pass's tilt around it, wrong for the next sides: not carried across (a
