@@ -1242,6 +1242,102 @@ fn block_number(block: &str, from: Dialect) -> Option<String> {
 /// ISO-style dialects and TwinCAT, `;` to the end of the line in all): the code as it
 /// stands without them, and the comments' texts joined by a space (`None` without one).
 /// SINUMERIK's strings (`"TC1"`) are no comment, whatever they hold.
+/// Where a SINUMERIK program's `CYCLE800` and its frame commands meet: the configuration of
+/// the control decides what the program does there (one programmable frame that each
+/// replaces, as cncrot reads it, or the swivel in system frames that `TRANS`, `ROT` and
+/// `CYCLE800()` leave apart).
+#[derive(Default)]
+struct SinumerikFrames {
+    /// A swivel of `CYCLE800` is active.
+    swivel: bool,
+    /// A frame command left a frame that is not the identity beside the swivel (`TRANS`
+    /// before it, `ATRANS` after it).
+    programmable: bool,
+    /// A `CYCLE800()` that reset the swivel while such a frame was active (its line and
+    /// block): the same either way if the next block sets the frame anew (`TRANS X=…`, as
+    /// the writers write it), else said at that block.
+    reset: Option<(usize, String)>,
+}
+
+impl SinumerikFrames {
+    /// After block `block` at `line` (its code without comments, the states around it, and
+    /// whether it applied): the blocks whose meaning depends on the configuration, with
+    /// what depends.
+    fn step(
+        &mut self,
+        line: usize,
+        block: &str,
+        code: &str,
+        (before, after): (&Program, &Program),
+        applied: bool,
+    ) -> Vec<(usize, String, &'static str)> {
+        let upper = code.trim().to_uppercase();
+        let mut words = upper.split_whitespace();
+        let first = match words.next() {
+            Some(n) if n.starts_with('N') && n[1..].bytes().all(|b| b.is_ascii_digit()) => {
+                words.next().unwrap_or("")
+            }
+            Some(w) => w,
+            None => return Vec::new(),
+        };
+        let command = first.split(['=', '(']).next().unwrap_or("");
+        let replaces = matches!(command, "TRANS" | "ROT" | "ROTS" | "SCALE" | "MIRROR");
+        let mut said = Vec::new();
+        const RESET: &str =
+            "CYCLE800() after TRANS, ROT or ATRANS, and the blocks after it: the control may keep their frame";
+        if let Some((at, b)) = self.reset.take() {
+            let end = ["M30", "M2", "M02", "M17", "RET"].contains(&first);
+            if !(applied && replaces) && !end {
+                said.push((at, b, RESET));
+            }
+        }
+        if !applied {
+            return said;
+        }
+        let changed = before.frame != after.frame || before.direct != after.direct;
+        let untilted = after.frame == cncrot::Frame::IDENTITY && after.direct.is_none();
+        if command == "CYCLE800" {
+            let args = cycle800_args(code).map(|a| a.0).unwrap_or_default();
+            let reset =
+                args.iter().all(|a| a.is_empty()) || args.get(1).is_some_and(|tc| tc == "\"0\"");
+            if self.programmable {
+                if reset {
+                    self.reset = Some((line, block.to_string()));
+                } else {
+                    said.push((
+                        line,
+                        block.to_string(),
+                        "CYCLE800 after TRANS, ROT or ATRANS: the control may keep their frame apart, after the swivel",
+                    ));
+                }
+                self.programmable = false;
+            }
+            self.swivel = !reset && !untilted;
+        } else if replaces {
+            if self.swivel {
+                said.push((
+                    line,
+                    block.to_string(),
+                    "TRANS, ROT, ROTS, SCALE or MIRROR while a CYCLE800 swivel is active: the control may keep the swivel",
+                ));
+                self.swivel = false;
+            }
+            self.programmable = !untilted;
+        } else if changed
+            && matches!(
+                command,
+                "ATRANS" | "AROT" | "AROTS" | "CROTS" | "ASCALE" | "AMIRROR"
+            )
+        {
+            self.programmable = true;
+        }
+        if untilted && self.reset.is_none() {
+            (self.swivel, self.programmable) = (false, false);
+        }
+        said
+    }
+}
+
 /// The arguments of the first `CYCLE800(…)` of a SINUMERIK block's code (commas inside
 /// quotes kept), and the byte range of the text between its parentheses; `None` without one.
 fn cycle800_args(code: &str) -> Option<(Vec<String>, std::ops::Range<usize>)> {
@@ -1541,6 +1637,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     let (mut applied, mut passed, mut unfollowed, mut refused) = (0, 0, 0, 0);
     // Blocks read but not written in the target (its form has no words for the change).
     let mut uncarried = 0;
+    let mut frames = SinumerikFrames::default();
     // The swivel data sets (`_TC`) named so far that the target has no word for.
     let mut data_sets: Vec<String> = Vec::new();
     // Blocks written without a turn, a tip kept in place or a retraction the source has.
@@ -1684,6 +1781,19 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
         let before = p;
         p = next;
         let mut remark = remark;
+        if dialect == Dialect::Sinumerik {
+            let code = split_comments(block, dialect).0;
+            let applied = remark == Remark::Applied;
+            for (at, b, what) in frames.step(line, block, &code, (&before, &p), applied) {
+                eprintln!(
+                    "cncrot: line {at}: {what}: where CYCLE800 keeps its swivel in system frames ($P_WPFRAME, $P_TOOLFRAME: machine data 28082 bits 3 and 4, which SINUMERIK Operate's swivelling asks for) and TRANS, ROT, ATRANS write the programmable frame, each keeps the other; cncrot reads one frame that each replaces [choice]{}: {b}",
+                    if target.is_some() { ": not carried across" } else { ": check on the control" }
+                );
+                if target.is_some() {
+                    (ok, uncarried) = (false, uncarried + 1);
+                }
+            }
+        }
         if remark == Remark::Passed {
             match calls.after(k, &mut p) {
                 Some(labels::Called::Elsewhere(name)) => eprintln!(

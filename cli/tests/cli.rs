@@ -2232,6 +2232,54 @@ fn program_names_calls_it_cannot_follow_in_place() {
     );
 }
 
+/// Where a SINUMERIK program's `CYCLE800` and its `TRANS`/`ROT` meet, the control's
+/// configuration decides (system frames keep the swivel apart; cncrot reads one frame that
+/// each replaces): said, and with `--to` not carried across (a helper's find: `TRANS X10`
+/// after a swivel was read, and translated, as the swivel cancelled, exit 0). A reset set
+/// anew by the next block (`CYCLE800()` then `TRANS X=10`, as the writers write it) means
+/// the same either way.
+#[test]
+fn program_says_where_sinumerik_frames_depend_on_the_control() {
+    let prog = "N10 CYCLE800(0,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,-1,0,1)\nN20 TRANS X10\n\
+                N30 ROT Z45\nN40 CYCLE800()\nN50 M30\n";
+    let r = cncrot(&["program", "-", "--dialect", "sinumerik"], prog);
+    assert!(
+        r.stderr.contains("line 2: TRANS, ROT, ROTS, SCALE or MIRROR while a CYCLE800 swivel is active: the control may keep the swivel"),
+        "{}",
+        r.stderr
+    );
+    assert!(
+        r.stderr.contains(": check on the control: N20 TRANS X10"),
+        "{}",
+        r.stderr
+    );
+    let r = translate(prog, "sinumerik", "heidenhain");
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr
+            .contains("[choice]: not carried across: N20 TRANS X10"),
+        "{}",
+        r.stderr
+    );
+    // A shift before the swivel, an ATRANS after it and the reset that follows.
+    let prog = "N10 TRANS X10\nN20 CYCLE800(0,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,-1,0,1)\n\
+                N30 ATRANS X1\nN40 CYCLE800()\nN50 G0 X0\nN60 M30\n";
+    let r = cncrot(&["program", "-", "--dialect", "sinumerik"], prog);
+    let lines: Vec<&str> = r
+        .stderr
+        .lines()
+        .filter_map(|l| l.strip_prefix("cncrot: line "))
+        .map(|l| l.split(':').next().unwrap_or(""))
+        .collect();
+    assert_eq!(lines, ["2", "4"], "{}", r.stderr);
+    // What the writers write: the reset and the shift set anew, a reset shift before the
+    // swivel that carries the origin.
+    let prog = "N10 CYCLE800(0,\"\",0,57,0,0,0,0,30,0,0,0,0,-1,0,0)\nN20 ATRANS X5\nCYCLE800()\n\
+                TRANS X=10 Y=0 Z=0\nN30 G0 X0\nTRANS\nCYCLE800(0,\"\",0,57,10,0,0,0,20,0,0,0,0,-1,0,0)\n";
+    let r = cncrot(&["program", "-", "--dialect", "sinumerik"], prog);
+    assert!(!r.stderr.contains("the control may keep"), "{}", r.stderr);
+}
+
 /// SINUMERIK into SINUMERIK keeps the swivel data set a `CYCLE800` names (`_TC`), `_ST`'s
 /// digits above the units and `_DMODE`: a machine with a head and a table has a data set for
 /// each (a helper's find: written `""`, exit 0). Into another dialect the data set is named
