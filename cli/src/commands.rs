@@ -1287,7 +1287,7 @@ impl SinumerikFrames {
             "CYCLE800() after TRANS, ROT or ATRANS, and the blocks after it: the control may keep their frame";
         if let Some((at, b)) = self.reset.take() {
             let end = ["M30", "M2", "M02", "M17", "RET"].contains(&first);
-            if !(applied && replaces) && !end {
+            if !(end || applied && replaces) {
                 said.push((at, b, RESET));
             }
         }
