@@ -1554,8 +1554,9 @@ int32_t cncrot_machine_inverse(const struct cncrot_machine *machine,
  * The axis positions to move to for the orientation of `frame`, seen from the current
  * positions `current_deg`: every solution brought to the whole turn nearest to the
  * current position (computed 10°, current 750° → 730°; of two half a turn away, the one
- * nearer 0: -90° from 90°, not 270°), or within the travel limits, and
- * snapped to Hirth grids; solutions outside the travel are skipped. A position computed
+ * nearer 0: -90° from 90°, not 270°), or within the travel limits (without limits within
+ * ±`CNCROT_MACHINE_ANGLE_MAX_DEG`: a turn that would cross it is taken a whole turn back),
+ * and snapped to Hirth grids; solutions outside the travel are skipped. A position computed
  * within `CNCROT_MACHINE_TRAVEL_TOLERANCE_DEG` beyond an end of the travel is taken exactly
  * at that end (a target made at an end is reached there; `axes_deg` never lies outside
  * the travel). `rule`: `CNCROT_CHOOSE_CLOSEST` (`reference_axis` 0), `CNCROT_CHOOSE_MINUS`
@@ -1647,8 +1648,9 @@ int32_t cncrot_machine_follow(const struct cncrot_machine *machine,
  *
  * Returns 0, or with `pose` untouched: `CNCROT_STATUS_NULL_POINTER`,
  * `CNCROT_STATUS_NOT_FINITE` (an axis, `tool_length`), `CNCROT_STATUS_BAD_ARGUMENT` (an
- * unused rotary position not 0), `CNCROT_STATUS_OUT_OF_RANGE` (`tool_length` beyond
- * ±`CNCROT_MACHINE_LENGTH_MAX_MM`, a result that overflows), `CNCROT_STATUS_BAD_ARGUMENT`,
+ * unused rotary position not 0), `CNCROT_STATUS_OUT_OF_RANGE` (`tool_length` or a linear
+ * axis beyond ±`CNCROT_MACHINE_LENGTH_MAX_MM`, a result that overflows),
+ * `CNCROT_STATUS_BAD_ARGUMENT`,
  * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`,
  * `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a machine: see
  * `cncrot_machine`).
@@ -1696,7 +1698,7 @@ int32_t cncrot_machine_tcp_forward(const struct cncrot_machine *machine,
  * `CNCROT_STATUS_OUT_OF_TRAVEL` (only outside the travel limits),
  * `CNCROT_STATUS_BAD_ARGUMENT` (an unused previous rotary position not 0),
  * `CNCROT_STATUS_OUT_OF_RANGE` (a previous rotary position of magnitude
- * `CNCROT_MACHINE_ANGLE_MAX_DEG` or more, `tool_length` beyond
+ * `CNCROT_MACHINE_ANGLE_MAX_DEG` or more, `tool_length` or a coordinate of the tip beyond
  * ±`CNCROT_MACHINE_LENGTH_MAX_MM`, a result that overflows), `CNCROT_STATUS_BAD_ARGUMENT`,
  * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`,
  * `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a machine: see
@@ -1738,8 +1740,9 @@ int32_t cncrot_machine_tcp_inverse(const struct cncrot_machine *machine,
  * `CNCROT_STATUS_NOT_FINITE` (the pose, `tool_length`, `previous`),
  * `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_UNREACHABLE`,
  * `CNCROT_STATUS_OUT_OF_TRAVEL`, `CNCROT_STATUS_OUT_OF_RANGE` (a previous rotary position
- * of magnitude `CNCROT_MACHINE_ANGLE_MAX_DEG` or more, `tool_length` beyond
- * ±`CNCROT_MACHINE_LENGTH_MAX_MM`, a result that overflows), `CNCROT_STATUS_BAD_ARGUMENT`,
+ * of magnitude `CNCROT_MACHINE_ANGLE_MAX_DEG` or more, `tool_length` or a coordinate of
+ * the tip beyond ±`CNCROT_MACHINE_LENGTH_MAX_MM`, a result that overflows),
+ * `CNCROT_STATUS_BAD_ARGUMENT`,
  * `CNCROT_STATUS_BAD_FLAG`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_OUT_OF_RANGE`,
  * `CNCROT_STATUS_NAME_TOO_LONG` (a description that is not a machine: see
  * `cncrot_machine`).

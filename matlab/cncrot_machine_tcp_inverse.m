@@ -16,7 +16,9 @@
 %   rotary solution by RULE as cncrot_machine_choose does: 'closest' (the default: the one
 %   continuous with the row before), 'minus' / 'plus' with REF a priority axis (1-based:
 %   its lower / higher angle in (-180, 180], as SEQ-/SEQ+ ask), 'positive_turn' / 'negative_turn'
-%   (that axis turns only up / only down, as G53.1 P1/P2 ask), 'inverse'.
+%   (that axis turns only up / only down, as G53.1 P1/P2 ask), 'inverse' (the first row the
+%   other solution than the one continuous with PREVIOUS, the rows after it continuous with
+%   it).
 %   [AXES, STATUS] = ... also gives each row's status: 0, 2 (a free axis kept), 3 (a Hirth
 %   axis snapped). A row the machine cannot reach raises an error naming the row.
 %

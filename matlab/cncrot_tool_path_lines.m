@@ -17,8 +17,9 @@
 %   With a machine (as in cncrot_machine_forward) and the tool length L (mm): axes is
 %   N-by-6, the machine's X Y Z and rotary positions for each point (as
 %   cncrot_machine_tcp_inverse: each continuous with the point before, from previous, by
-%   rule 'closest', 'minus', 'plus', 'inverse', 'positive_turn' or 'negative_turn' with
-%   ref), NaN rows elsewhere. Rotary
+%   rule 'closest', 'minus', 'plus', 'inverse' (the first point's; the points after it
+%   continuous with it), 'positive_turn' or 'negative_turn' with ref), NaN rows elsewhere.
+%   Rotary
 %   positions stated by letter go to the machine axis whose direction is nearest (A for X,
 %   B for Y, C for Z).
 %

@@ -1505,3 +1505,88 @@ fn tcp_inverse_near_a_pole_keeps_the_turn_it_chose() {
     let back = m.tcp_forward(t.axes, 0.0).unwrap();
     assert!(back.translation.iter().all(|x| x.abs() < 1e-9), "{back:?}");
 }
+
+/// An axis without limits turns within ±`CLOSEST_MAX` (65 536°), the bound of the positions
+/// a choice accepts as current: a path that winds a table up to it takes the next position
+/// on the other side of a turn, or the other solution, never one beyond (a helper's find: C
+/// 65 540 written, and every row after it refused as out of range).
+#[test]
+fn an_axis_without_limits_stays_within_the_bound() {
+    use cncrot::CLOSEST_MAX;
+    let m = Machine::new(Z)
+        .unwrap()
+        .with_axis(RotaryAxis::new(
+            Side::Work,
+            [1.0, 0.0, 0.0],
+            [0.0, 0.0, 100.0],
+        ))
+        .unwrap()
+        .with_axis(RotaryAxis::new(Side::Work, Z, [0.0; 3]))
+        .unwrap();
+    let a = m.forward([30.0, 20.0, 0.0]).unwrap().rotation;
+    // From C = 65 530: 65 540 lies beyond; the choices left are C = 65 180 (A = 30) and
+    // C = 65 360 (A = -30), the closer.
+    let c = m.choose(&a, [30.0, 65_530.0, 0.0], Rule::Closest).unwrap();
+    let want = [-30.0, 65_360.0, 0.0];
+    assert!(
+        c.axes.iter().zip(want).all(|(x, w)| (x - w).abs() < 1e-9),
+        "{c:?}"
+    );
+    // Both sides of the bound, through the five-axis transformation too.
+    for sign in [1.0, -1.0] {
+        let mut prev = [0.0, 0.0, 0.0, 30.0, sign * (CLOSEST_MAX - 100.0), 0.0];
+        for step in 0..2000 {
+            let c = sign * (CLOSEST_MAX - 100.0) + sign * 0.5 * step as f64;
+            let pose = m.tcp_forward([1.0, 2.0, 3.0, 30.0, c, 0.0], 50.0).unwrap();
+            let t = m.tcp_inverse(&pose, 50.0, prev).unwrap();
+            assert!(t.axes[4].abs() < CLOSEST_MAX, "{t:?}");
+            let chosen = m.choose(&pose.rotation, [prev[3], prev[4], 0.0], Rule::Closest);
+            assert_eq!(chosen.unwrap().axes, [t.axes[3], t.axes[4], t.axes[5]]);
+            let back = m.tcp_forward(t.axes, 50.0).unwrap();
+            let miss = (0..3)
+                .map(|k| (back.translation[k] - pose.translation[k]).abs())
+                .fold(0.0, f64::max);
+            assert!(miss < 1e-9, "{miss}");
+            prev = t.axes;
+        }
+    }
+    // Turning only up from C = 65 530, the next C = 20 lies beyond: no position that way.
+    let up = m.choose(&a, [30.0, 65_530.0, 0.0], Rule::PositiveTurn(1));
+    assert_eq!(up, Err(Error::OutOfTravel));
+}
+
+/// A tool tip or a linear axis beyond ±`LENGTH_MAX` (1 km) is refused as the machine's other
+/// lengths are: there a millimetre's digits are rounding (a helper's find: a tip at 1e20 mm
+/// was accepted, its Z 8 192 mm apart from the next double).
+#[test]
+fn the_transformation_refuses_lengths_beyond_a_kilometre() {
+    use cncrot::kinematics::LENGTH_MAX;
+    let m = Machine::new(Z)
+        .unwrap()
+        .with_axis(RotaryAxis::new(
+            Side::Work,
+            [1.0, 0.0, 0.0],
+            [0.0, 0.0, 100.0],
+        ))
+        .unwrap()
+        .with_axis(RotaryAxis::new(Side::Work, Z, [0.0; 3]))
+        .unwrap();
+    let at = |x: f64| cncrot::Frame {
+        rotation: cncrot::IDENTITY,
+        translation: [x, 0.0, 0.0],
+    };
+    assert!(m.tcp_inverse(&at(LENGTH_MAX), 50.0, [0.0; 6]).is_ok());
+    for x in [1e20, -2e6, 1e308] {
+        assert_eq!(
+            m.tcp_inverse(&at(x), 50.0, [0.0; 6]),
+            Err(Error::OutOfRange)
+        );
+        assert_eq!(
+            m.tcp_forward([0.0, x, 0.0, 0.0, 0.0, 0.0], 50.0),
+            Err(Error::OutOfRange)
+        );
+    }
+    assert!(m
+        .tcp_forward([0.0, -LENGTH_MAX, 0.0, 0.0, 0.0, 0.0], 50.0)
+        .is_ok());
+}

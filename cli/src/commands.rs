@@ -1627,7 +1627,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
             "--current needs a machine: --carr FILE or --axis ...",
         ));
     }
-    let (text, latin1) = input::read_source_as(a.file)?;
+    let (text, latin1, bom) = input::read_source_as(a.file)?;
     let d = a.decimals;
     let mut p = Program {
         euler: a.euler && dialect == Dialect::Sinumerik,
@@ -1656,9 +1656,13 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     // comment in Latin-1 or GBK stays those bytes, CRLF stays CRLF); the report is text.
     let crlf = text.split('\n').next().is_some_and(|l| l.ends_with('\r'));
     let translating = target.is_some();
+    let mut mark = bom;
     let mut put = |s: String| {
         if !translating {
             return writeln!(out, "{s}").is_ok();
+        }
+        if std::mem::take(&mut mark) && out.write_all(b"\xEF\xBB\xBF").is_err() {
+            return false;
         }
         let s = if crlf { s.replace('\n', "\r\n") } else { s };
         let bytes: Vec<u8> = if latin1 {
@@ -2669,7 +2673,10 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
     if !a.tool_length.is_finite() {
         return Err(Failure::new("--tool-length: not a finite number"));
     }
-    let rule = rule(a.rule, n)?;
+    let mut rule = rule(a.rule, n)?;
+    // The other solution (`inverse`) is the first point's: the rows after it are continuous
+    // with it (taken against each row before, they would swap branches every row).
+    let along = |r: Rule| if r == Rule::Inverse { Rule::Closest } else { r };
     // The start: the rotary positions, or X,Y,Z and the rotary positions.
     let mut previous = [0.0; 6];
     if let Some(text) = a.current {
@@ -2700,6 +2707,9 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
             let (next, remark) = state
                 .line(dialect, text.as_bytes())
                 .map_err(|e| Failure::at(e.column, input::block_message(text, &e)))?;
+            // A point the machine does not reach leaves the state as it was: the path goes
+            // on from the last point reached, without the refused block's words.
+            let reached = state;
             state = next;
             if remark != PathRemark::Point {
                 let note = if remark == PathRemark::NotFollowed {
@@ -2713,14 +2723,34 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
                     json: Json::Obj(vec![("point", Json::Bool(false))]),
                 });
             }
-            let t = state.machine_axes(&machine, a.tool_length, previous, rule)?;
+            let t = match state.machine_axes(&machine, a.tool_length, previous, rule) {
+                Ok(t) => t,
+                Err(e) => {
+                    let stated = matches!(
+                        state.orientation,
+                        cncrot::dialects::toolpath::Orientation::Axes(_)
+                    );
+                    state = reached;
+                    return Err(if e == cncrot::Error::BadArgument && stated {
+                        Failure::new(
+                            "the block gives a position to a rotary axis the machine does not have (A, B, C go to the machine's axis whose direction is nearest X, Y, Z)",
+                        )
+                    } else {
+                        e.into()
+                    });
+                }
+            };
             previous = t.axes;
+            rule = along(rule);
             return Ok(path_row(&t, n, d));
         }
         let trimmed = text.trim_start();
+        // Column names hold no number ("x y z i j k", "X;Y;Z;I;J;K"): a first line with
+        // digits is a point, read as one (`X10 Y0 …`, `GOTO/…` are then errors, not
+        // headers skipped in silence).
         let header =
-            first && !trimmed.starts_with(|c: char| c.is_ascii_digit() || "+-.".contains(c));
-        first = false;
+            first && !trimmed.starts_with('#') && !trimmed.bytes().any(|b| b.is_ascii_digit());
+        first = first && trimmed.starts_with('#');
         if trimmed.starts_with('#') || header {
             // A comment or a column header: a blank line keeps the rows aligned.
             return Ok(Report {
@@ -2739,6 +2769,7 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
         let pose = cncrot::kinematics::cl_pose([v[0], v[1], v[2]], k)?;
         let t = machine.tcp_inverse_with(&pose, a.tool_length, previous, rule)?;
         previous = t.axes;
+        rule = along(rule);
         Ok(path_row(&t, n, d))
     })
 }

@@ -312,12 +312,13 @@ pub fn batch_lines(source: &str) -> Result<Vec<(usize, String)>, Failure> {
 
 /// The whole text of a file, or of standard input for `-`: UTF-8, or else Latin-1.
 pub fn read_source(source: &str) -> Result<String, Failure> {
-    read_source_as(source).map(|(text, _)| text)
+    read_source_as(source).map(|(text, _, _)| text)
 }
 
-/// [`read_source`], and whether the file was read as Latin-1 (a translation writes it back
-/// in the bytes it came in).
-pub fn read_source_as(source: &str) -> Result<(String, bool), Failure> {
+/// [`read_source`], whether the file was read as Latin-1 and whether it began with a
+/// byte-order mark (a translation writes it back in the bytes it came in). The mark (what
+/// Windows editors and spreadsheets' "CSV UTF-8" put first) is not part of the text.
+pub fn read_source_as(source: &str) -> Result<(String, bool, bool), Failure> {
     let bytes = if source == "-" {
         let mut v = Vec::new();
         std::io::Read::read_to_end(&mut std::io::stdin(), &mut v)
@@ -330,9 +331,20 @@ pub fn read_source_as(source: &str) -> Result<(String, bool), Failure> {
     // program for a Heidenhain control has "letörés" in one byte per letter): such a file
     // is read byte for byte as Latin-1, so that every block is read (the commands are
     // ASCII either way) instead of the whole file refused.
+    const BOM: &[u8] = b"\xEF\xBB\xBF";
+    let bom = bytes.starts_with(BOM);
+    let bytes = if bom {
+        bytes.get(BOM.len()..).unwrap_or_default().to_vec()
+    } else {
+        bytes
+    };
     Ok(match String::from_utf8(bytes) {
-        Ok(text) => (text, false),
-        Err(e) => (e.into_bytes().into_iter().map(char::from).collect(), true),
+        Ok(text) => (text, false, bom),
+        Err(e) => (
+            e.into_bytes().into_iter().map(char::from).collect(),
+            true,
+            bom,
+        ),
     })
 }
 

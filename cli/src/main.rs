@@ -59,7 +59,7 @@ struct MachineOpts {
     #[arg(long, value_name = "FILE")]
     carr: Option<String>,
     /// Swivel data set number in the --carr file.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, value_parser = whole)]
     set: i32,
     /// A rotary axis (repeatable, at most 3, in chain order): SIDE:DX,DY,DZ[@PX,PY,PZ].
     #[arg(long, value_name = "SIDE:DIR[@POINT]")]
@@ -251,7 +251,7 @@ enum Command {
         #[arg(long, value_name = "FILE")]
         carr: Option<String>,
         /// Swivel data set number in the --carr file.
-        #[arg(long, default_value_t = 1)]
+        #[arg(long, default_value_t = 1, value_parser = whole)]
         set: i32,
         /// Current rotary-axis positions, for positioning.
         #[arg(long, value_name = "A,B,C")]
@@ -285,14 +285,15 @@ enum Command {
         #[command(flatten)]
         machine: MachineOpts,
         /// Tool length, mm: the tip lies this far from the tool adapter along the tool.
-        #[arg(long, default_value_t = 0.0)]
+        #[arg(long, default_value_t = 0.0, value_parser = number)]
         tool_length: f64,
         /// Positions before the first point: the rotary axes (A,B,C) or X,Y,Z then them.
         #[arg(long, value_name = "[X,Y,Z,]A,B,C")]
         current: Option<String>,
         /// Which solution: closest (continuous with the row before), or a priority axis
         /// minus:K / plus:K (its lower / higher angle), up:K / down:K (it turns only
-        /// up / only down, as G53.1 P1 / P2 ask), or inverse.
+        /// up / only down, as G53.1 P1 / P2 ask), or inverse (the first point the other
+        /// solution, the points after it continuous with it).
         #[arg(long, default_value = "closest")]
         rule: String,
         /// FILE is a five-axis part program in this dialect, not CL points.
@@ -506,6 +507,20 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// A number option's value (its shield of [`shield_negative`] skipped).
+fn number(text: &str) -> Result<f64, String> {
+    text.trim()
+        .parse()
+        .map_err(|_| format!("'{}' is not a number", text.trim()))
+}
+
+/// A whole-number option's value (its shield of [`shield_negative`] skipped).
+fn whole(text: &str) -> Result<i32, String> {
+    text.trim()
+        .parse()
+        .map_err(|_| format!("'{}' is not a whole number", text.trim()))
 }
 
 /// A negative number (`-30`, `-5,0,0`, `-.5`) would read as an option: it is given a

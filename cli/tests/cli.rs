@@ -1081,6 +1081,65 @@ fn path_worked_example_alignment_and_the_pole() {
     );
 }
 
+/// `path` as a user's files and options come (a helper's finds): `--rule inverse` takes the
+/// other solution at the first point and stays on that branch (it swapped branches every
+/// row); a byte-order mark before the first point is no header; a first line with numbers
+/// is a point or an error, never a header skipped in silence; a negative `--tool-length`;
+/// a program block the machine refuses leaves no words behind for the blocks after it.
+#[test]
+fn path_rules_marks_headers_and_refused_blocks() {
+    let row = "10 0 0 0.5 0 0.8660254037844386\n";
+    let mut args = vec!["path", "-", "--current", "20,80", "--rule", "inverse"];
+    args.extend(AC);
+    let r = cncrot(&args, &row.repeat(3));
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let rows: Vec<Vec<f64>> = r.stdout.lines().map(numbers).collect();
+    assert_eq!(rows.len(), 3);
+    close(&rows[0][3..], &[-30.0, -90.0], 1e-12);
+    assert!(rows.iter().all(|r| r == &rows[0]), "{}", r.stdout);
+    let mut args = vec!["path", "-", "--tool-length", "-20"];
+    args.extend(&AC[..4]);
+    let r = cncrot(&args, &format!("\u{feff}{row}"));
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    // The worked example's W·tip = (0, 50 + 5√3, 105 − 50√3), the adapter L·b = −20 along
+    // Z from the tip: Z = 85 − 50√3.
+    let s3 = 3f64.sqrt();
+    close(
+        &numbers(&r.stdout)[..3],
+        &[0.0, 50.0 + 5.0 * s3, 85.0 - 50.0 * s3],
+        1e-4,
+    );
+    for first in ["l0 0 0 0 0 1", "X10 Y0 Z0 I0 J0 K1", "GOTO/10,0,0,0,0,1"] {
+        let r = cncrot(&args, &format!("{first}\n{row}"));
+        assert_eq!(r.code, 1, "{first}: {}", r.stdout);
+        assert!(r.stdout.starts_with("error: line 1"), "{}", r.stdout);
+    }
+    let prog = "G43.4 H1\nG1 X10. Y0. Z0. B30. C90.\nG1 B-20.\nG1 X10. Y0. Z0. A30. C90.\n\
+                G1 B-20.\nG49\n";
+    let r = cncrot(
+        &[
+            "path",
+            "-",
+            "--dialect",
+            "fanuc",
+            "--axis",
+            "work:0,1,0@10,0,50",
+            "--axis",
+            "work:0,0,1@5,-3,0",
+            "--tool-length",
+            "50",
+        ],
+        prog,
+    );
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert!(
+        lines[3].contains("a rotary axis the machine does not have"),
+        "{}",
+        r.stdout
+    );
+    assert_eq!(lines[4], lines[2], "{}", r.stdout);
+}
+
 /// `path --json`: one object per input line, numbers at full precision.
 #[test]
 fn path_json() {

@@ -57,6 +57,9 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     for (int c = 0; c < 6; c++) o[r + n * c] = ax[c];
     so[r] = s;
     memcpy(prev, ax, sizeof prev);
+    /* The other solution is the first row's; the rows after it continue from it (taken
+       against each row before, they would swap branches every row). */
+    if (rule == CNCROT_CHOOSE_INVERSE) rule = CNCROT_CHOOSE_CLOSEST;
   }
   plhs[0] = out;
   if (nlhs > 1)

@@ -57,6 +57,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
       }
       for (int j = 0; j < 6; j++) o[k + n * j] = ax[j];
       memcpy(prev, ax, sizeof prev);
+      /* The other solution is the first point's; the points after it continue from it. */
+      if (rule == CNCROT_CHOOSE_INVERSE) rule = CNCROT_CHOOSE_CLOSEST;
     } else {
       for (int j = 0; j < 3; j++) o[k + n * j] = t.tip[j];
       if (t.orientation == CNCROT_ORIENTATION_DIRECTION)

@@ -75,6 +75,9 @@ pub(crate) fn place(axis: &Stored, angle: f64, current: f64) -> Option<(f64, f64
                 x += h.step;
             }
             x = onto_travel(x, lo, hi);
+        } else if abs(x) >= CLOSEST_MAX {
+            // A tooth beyond the bound of an axis without limits: the one before it.
+            x = if x > 0.0 { x - h.step } else { x + h.step };
         }
     }
     let fits = limits.map_or(true, |[lo, hi]| x >= lo && x <= hi);
@@ -101,6 +104,11 @@ pub(crate) fn unwound(limits: Option<[f64; 2]>, angle: f64, current: f64) -> f64
         } else if x < lo - TRAVEL_TOLERANCE {
             x += 360.0 * ceil((lo - TRAVEL_TOLERANCE - x) / 360.0);
         }
+    } else if abs(x) >= CLOSEST_MAX {
+        // An axis without limits turns within ±CLOSEST_MAX, where a position still denotes
+        // its angle to the library's accuracy (and is one the next choice accepts as
+        // current): a turn that would cross it is taken a whole turn back [choice].
+        x = if x > 0.0 { x - 360.0 } else { x + 360.0 };
     }
     x
 }
@@ -123,12 +131,12 @@ pub(crate) fn place_turning(
     // the axis turns.
     let n = ceil((sign * (current - angle) - TRAVEL_TOLERANCE) / 360.0);
     let x = angle + sign * 360.0 * n + 0.0;
-    if let Some([lo, hi]) = axis.limits() {
-        // Written so that NaN refuses: a position beyond the travel the way the axis
-        // turns is never reached (the next turn lies further out).
-        if !(x >= lo - TRAVEL_TOLERANCE && x <= hi + TRAVEL_TOLERANCE) {
-            return None;
-        }
+    // Written so that NaN refuses: a position beyond the travel the way the axis turns is
+    // never reached (the next turn lies further out); without limits the travel is
+    // ±CLOSEST_MAX (see `unwound`).
+    let [lo, hi] = axis.limits().unwrap_or([-CLOSEST_MAX, CLOSEST_MAX]);
+    if !(x >= lo - TRAVEL_TOLERANCE && x <= hi + TRAVEL_TOLERANCE) || abs(x) >= CLOSEST_MAX {
+        return None;
     }
     // On the travel now: `place` only snaps it (the nearest turn of `x` is `x`).
     place(axis, x, x)
@@ -153,7 +161,9 @@ impl Machine {
     /// Every solution of [`Machine::inverse`] is brought to the whole turn nearest to the
     /// current position (computed 10°, current 750° → 730°; of two half a turn away, the
     /// one nearer 0: −90° from 90°, not 270°), or, on an axis with travel
-    /// limits, to the turn nearest to it within them, and snapped to the axis' Hirth grid;
+    /// limits, to the turn nearest to it within them (without limits, within
+    /// ±[`CLOSEST_MAX`]: a turn that would cross it is taken a whole turn back), and snapped
+    /// to the axis' Hirth grid;
     /// a solution that does not fit the travel is skipped and the other taken. A position
     /// within [`super::TRAVEL_TOLERANCE`] beyond an end of the travel is taken exactly at
     /// that end, so a target made at an end is reached there. Of those left, `rule` picks

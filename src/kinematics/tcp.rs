@@ -88,8 +88,8 @@ impl Machine {
     /// tool direction, and as translation the tool tip.
     ///
     /// Errors: [`Error::NotFinite`], [`Error::BadArgument`] (an unused rotary position not
-    /// 0), [`Error::OutOfRange`] (a tool length beyond ±[`LENGTH_MAX`], a result that
-    /// overflows).
+    /// 0), [`Error::OutOfRange`] (a tool length or a linear axis beyond ±[`LENGTH_MAX`], a
+    /// result that overflows).
     ///
     /// ```
     /// use cncrot::kinematics::{Machine, RotaryAxis, Side};
@@ -112,6 +112,11 @@ impl Machine {
         }
         let theta = self.positions([axes[3], axes[4], axes[5]])?;
         length_in_range(tool_length)?;
+        // Beyond a kilometre a millimetre's digits are rounding (and the library's lengths
+        // are bounded alike).
+        if !axes[..3].iter().all(|x| abs(*x) <= LENGTH_MAX) {
+            return Err(Error::OutOfRange);
+        }
         let r = self.turns(theta);
         let at = self.tool_point(&r, self.tip_in_tool(tool_length));
         let machine: Vector = core::array::from_fn(|k| axes[k] + at[k]);
@@ -139,8 +144,8 @@ impl Machine {
     /// Errors: [`Error::Unreachable`], [`Error::OutOfTravel`], [`Error::NotARotation`],
     /// [`Error::NotFinite`], [`Error::BadArgument`] (an unused previous rotary position
     /// not 0), [`Error::OutOfRange`] (a previous rotary position of magnitude
-    /// [`crate::CLOSEST_MAX`] or more, a tool length beyond ±[`LENGTH_MAX`], a result
-    /// that overflows).
+    /// [`crate::CLOSEST_MAX`] or more, a tool length or a coordinate of the tip beyond
+    /// ±[`LENGTH_MAX`], a result that overflows).
     ///
     /// ```
     /// use cncrot::kinematics::{Machine, RotaryAxis, Side};
@@ -199,6 +204,9 @@ impl Machine {
             return Err(Error::NotFinite);
         }
         length_in_range(tool_length)?;
+        if !tip.iter().all(|x| abs(*x) <= LENGTH_MAX) {
+            return Err(Error::OutOfRange);
+        }
         let current = [previous[3], previous[4], previous[5]];
         // Written in place by the way that computes it: no copy of it in each frame between
         // (stack bound).
