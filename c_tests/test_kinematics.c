@@ -605,6 +605,8 @@ static void five_axis_programs(void) {
       {CNCROT_DIALECT_SINUMERIK, {"TRAORI", "ORIEULER", "G1 X10 Y0 Z0 A2=90 B2=30"}},
       {CNCROT_DIALECT_HEIDENHAIN, {"1 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS", "2 L X+10 Y+0 Z+0 A+30 C+90 FMAX", NULL}},
       {CNCROT_DIALECT_HEIDENHAIN, {"1 L Z+100 R0 FMAX M128", "2 LN X+10 Y+0 Z+0 TX+0.5 TY+0 TZ+0.8660254037844386", NULL}},
+      /* AXIS SPAT: B+30 a spatial angle, the direction Ry(30°)·e_z (flags bit 2). */
+      {CNCROT_DIALECT_HEIDENHAIN, {"1 FUNCTION TCPM F TCP AXIS SPAT PATHCTRL AXIS", "2 L X+10 Y+0 Z+0 A+0 B+30 C+0 FMAX", NULL}},
       {CNCROT_DIALECT_FANUC, {"G43.4 H1", "G1 X10. Y0. Z0. A30. C90.", NULL}},
       {CNCROT_DIALECT_SYNTEC, {"G43.5 H1", "G1 X10. Y0. Z0. I0.5 J0. K0.8660254037844386", NULL}},
       {CNCROT_DIALECT_HAAS, {"G234 H1", "G1 X10. Y0. Z0. A30. C90.", NULL}},
@@ -635,6 +637,9 @@ static void five_axis_programs(void) {
   CHECK_STATUS(cncrot_tool_path_line(NULL, CNCROT_DIALECT_FANUC, "G1 X1", 5), CNCROT_STATUS_NULL_POINTER);
   CHECK(memcmp(&t, &before, sizeof t) == 0, "a passed, not followed or refused block changed the state");
   cncrot_tool_path bad = t;
+  bad.flags = 8;
+  CHECK_STATUS(cncrot_tool_path_line(&bad, CNCROT_DIALECT_FANUC, "X1", 2), CNCROT_STATUS_BAD_STATE);
+  bad = t;
   bad.direction[0] = 2;
   bad.orientation = CNCROT_ORIENTATION_DIRECTION;
   CHECK_STATUS(cncrot_tool_path_line(&bad, CNCROT_DIALECT_FANUC, "X1", 2), CNCROT_STATUS_BAD_STATE);

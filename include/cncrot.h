@@ -898,7 +898,8 @@ typedef struct cncrot_tool_path {
    */
   int32_t point;
   /**
-   * Bit 0: SINUMERIK `ORIRPY` (else `ORIEULER`); bit 1: incremental (`G91`).
+   * Bit 0: SINUMERIK `ORIRPY` (else `ORIEULER`); bit 1: incremental (`G91`); bit 2:
+   * Heidenhain `AXIS SPAT` (`A B C` spatial angles, else axis positions).
    */
   int32_t flags;
   /**

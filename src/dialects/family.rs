@@ -663,6 +663,12 @@ pub(crate) struct PathWords {
     pub(crate) incremental: &'static [PathCommand],
     /// See `incremental`.
     pub(crate) absolute: &'static [PathCommand],
+    /// Commands that make the rotary letters `A B C` spatial angles (Heidenhain
+    /// `FUNCTION TCPM … AXIS SPAT`), axis positions again; switching the transformation on
+    /// or off makes them positions.
+    pub(crate) spatial: &'static [PathCommand],
+    /// See `spatial`.
+    pub(crate) positions: &'static [PathCommand],
     /// An `I` before a letter makes that word incremental (Heidenhain `IX`).
     pub(crate) i_prefix: bool,
     /// The first words of the blocks that move in a straight line (Heidenhain `L`, `LN`);
@@ -685,6 +691,8 @@ pub(crate) const fn iso_path(on: &'static [PathCommand], vector: [&'static [u8];
         euler: &[],
         incremental: &[PathCommand::Code(b'G', 910)],
         absolute: &[PathCommand::Code(b'G', 900)],
+        spatial: &[],
+        positions: &[],
         i_prefix: false,
         moves: &[],
         arcs: &[

@@ -732,8 +732,11 @@ pub(crate) struct Heidenhain;
 
 /// Heidenhain's five-axis programs: `M128` or `FUNCTION TCPM …` on, `M129` or
 /// `FUNCTION RESET TCPM` off \[doc\]; `L` blocks with rotary positions `A B C`, `LN` blocks with
-/// the tool vector `TX TY TZ` \[doc\]; `IX`… incremental; circles (`C`, `CR`, `CT`, `CP`) and
-/// moves in machine coordinates (`M91`, `M92`) not followed.
+/// the tool vector `TX TY TZ` \[doc\]; under `FUNCTION TCPM … AXIS SPAT` the `A B C` of `L`
+/// blocks are spatial angles, as `PLANE SPATIAL`'s `SPA SPB SPC` \[doc: TNC7 user's manual,
+/// "FUNCTION TCPM with AXIS SPAT" among the functions that compute with spatial angles;
+/// derived: the tool direction `Rz(C)·Ry(B)·Rx(A)·e_z`\]; `IX`… incremental; circles (`C`,
+/// `CR`, `CT`, `CP`) and moves in machine coordinates (`M91`, `M92`) not followed.
 pub(crate) const HEIDENHAIN_PATH: super::family::PathWords = {
     use super::family::PathCommand::{Code, Name, Phrase};
     super::family::PathWords {
@@ -746,6 +749,8 @@ pub(crate) const HEIDENHAIN_PATH: super::family::PathWords = {
         euler: &[],
         incremental: &[],
         absolute: &[],
+        spatial: &[Phrase(&[b"AXIS", b"SPAT"])],
+        positions: &[Phrase(&[b"AXIS", b"POS"])],
         i_prefix: true,
         moves: &[b"L", b"LN"],
         arcs: &[

@@ -60,6 +60,9 @@ pub struct ToolPath {
     pub rpy: bool,
     /// ISO `G91`: `X Y Z` and the rotary positions add to the last ones.
     pub incremental: bool,
+    /// Heidenhain `FUNCTION TCPM … AXIS SPAT`: the letters `A B C` are spatial angles (the
+    /// tool direction `Rz(C)·Ry(B)·Rx(A)·e_z`, as `PLANE SPATIAL`), not axis positions.
+    pub spatial: bool,
 }
 
 /// What a block did, beside the state it leaves.
@@ -350,9 +353,13 @@ impl ToolPath {
             let hit = |list: &[PathCommand]| list.iter().any(|c| is_command(&w, &it, c));
             arc |= hit(pw.arcs);
             if hit(pw.on) {
-                next.on = true;
+                (next.on, next.spatial) = (true, false);
             } else if hit(pw.off) {
-                next.on = false;
+                (next.on, next.spatial) = (false, false);
+            } else if hit(pw.spatial) {
+                next.spatial = true;
+            } else if hit(pw.positions) {
+                next.spatial = false;
             } else if hit(pw.rpy) {
                 next.rpy = true;
             } else if hit(pw.euler) {
@@ -460,7 +467,11 @@ impl ToolPath {
             }
         }
         if given_axes.is_some() {
-            next.orientation = Orientation::Axes(next.axes);
+            next.orientation = if next.spatial {
+                Orientation::Direction(orirpy_vector(next.axes))
+            } else {
+                Orientation::Axes(next.axes)
+            };
         }
         if let Some((_, column)) = vector.iter().find_map(|v| *v) {
             // Components not written are 0 [choice].
@@ -660,6 +671,36 @@ mod tests {
         assert!(direction_near(out[6].0.orientation, [0.0, 0.6, 0.8]));
         assert_eq!(out[6].0.tip, [1.0, 2.0, 3.0]);
         assert!(out[10].0.on && !out[11].0.on);
+    }
+
+    /// `FUNCTION TCPM … AXIS SPAT`: the `A B C` of `L` blocks are spatial angles (the tool
+    /// direction `Rz(C)·Ry(B)·Rx(A)·e_z`, as `PLANE SPATIAL`); `AXIS POS`, `M128` and the
+    /// cancel make them axis positions again (a helper's find: read as positions).
+    #[test]
+    fn heidenhain_axis_spat() {
+        let out = run(
+            Dialect::Heidenhain,
+            &[
+                "1 FUNCTION TCPM F TCP AXIS SPAT PATHCTRL AXIS",
+                "2 L X+10 Y+0 Z+0 A+0 B+30 C+0 F1000",
+                "3 L C+90",
+                "4 L A+90 B+0 C+0",
+                "5 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS",
+                "6 L B+30 C+0",
+                "7 FUNCTION TCPM F TCP AXIS SPAT PATHCTRL AXIS",
+                "8 FUNCTION RESET TCPM",
+                "9 L Z+100 M128",
+            ],
+        );
+        assert!(out[0].0.spatial && out[0].0.on);
+        // Ry(30°)·e_z; then Rz(90°)·Ry(30°)·e_z = (0, 0.5, 0.866); Rx(90°)·e_z = (0, -1, 0).
+        let h = 3f64.sqrt() / 2.0;
+        assert!(direction_near(out[1].0.orientation, [0.5, 0.0, h]));
+        assert!(direction_near(out[2].0.orientation, [0.0, 0.5, h]));
+        assert!(direction_near(out[3].0.orientation, [0.0, -1.0, 0.0]));
+        assert!(!out[4].0.spatial);
+        assert_eq!(out[5].0.orientation, Orientation::Axes([90.0, 30.0, 0.0]));
+        assert!(out[6].0.spatial && !out[7].0.spatial && !out[8].0.spatial);
     }
 
     #[test]

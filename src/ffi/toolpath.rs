@@ -29,7 +29,8 @@ pub struct cncrot_tool_path {
     /// 1 when the last block read with status 0 was a point: a move with the transformation
     /// on, `tip` and the orientation its CL point; 0 when it only changed the state.
     pub point: i32,
-    /// Bit 0: SINUMERIK `ORIRPY` (else `ORIEULER`); bit 1: incremental (`G91`).
+    /// Bit 0: SINUMERIK `ORIRPY` (else `ORIEULER`); bit 1: incremental (`G91`); bit 2:
+    /// Heidenhain `AXIS SPAT` (`A B C` spatial angles, else axis positions).
     pub flags: i32,
     /// The programmed tool tip, mm, workpiece coordinates.
     pub tip: [f64; 3],
@@ -54,7 +55,7 @@ fn load(c: &cncrot_tool_path) -> Result<ToolPath, cncrot_status> {
     if !(finite
         && (0..=1).contains(&c.on)
         && (0..=1).contains(&c.point)
-        && (0..=3).contains(&c.flags))
+        && (0..=7).contains(&c.flags))
     {
         return Err(bad);
     }
@@ -78,6 +79,7 @@ fn load(c: &cncrot_tool_path) -> Result<ToolPath, cncrot_status> {
         orientation,
         axes: c.axes,
         rpy: c.flags & 1 != 0,
+        spatial: c.flags & 4 != 0,
         incremental: c.flags & 2 != 0,
     })
 }
@@ -92,7 +94,7 @@ fn store(p: &ToolPath, point: bool) -> cncrot_tool_path {
         on: i32::from(p.on),
         orientation,
         point: i32::from(point),
-        flags: i32::from(p.rpy) | (i32::from(p.incremental) << 1),
+        flags: i32::from(p.rpy) | (i32::from(p.incremental) << 1) | (i32::from(p.spatial) << 2),
         tip: p.tip,
         direction,
         axes: p.axes,

@@ -938,6 +938,8 @@ pub(crate) const SINUMERIK_PATH: super::family::PathWords = {
         euler: &[Name(b"ORIEULER")],
         incremental: &[Code(b'G', 910)],
         absolute: &[Code(b'G', 900)],
+        spatial: &[],
+        positions: &[],
         i_prefix: false,
         moves: &[],
         arcs: &[
