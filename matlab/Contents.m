@@ -4,26 +4,26 @@
 % Conventions
 %   cncrot_matrix          - Rotation matrices from angles (degrees).
 %   cncrot_angles          - Angles (degrees) of rotation matrices in a convention.
-%   cncrot_convert         - Converts angles from one convention to another.
-%   cycle600               - The paper's cycle CYCLE600 (recalculation of rotations).
+%   cncrot_convert         - Converts angles (degrees) from one convention to another.
+%   cycle600               - The paper's cycle CYCLE600 (recalculation of rotations), on the C library.
 %
 % Tilted-plane commands of the controllers
-%   cncrot_form_frame      - Frames (4-by-4) of tilted-plane commands (G68.2, PLANE SPATIAL, ...).
-%   cncrot_form_values     - The words of a tilted-plane command for given frames.
-%   cncrot_forms           - The forms' codes, with their selectors and words.
+%   cncrot_form_frame      - Frames (4-by-4) of a controller's tilted-plane command.
+%   cncrot_form_values     - The words of a controller's tilted-plane command for given frames.
+%   cncrot_forms           - The codes of the dialects' tilted-plane forms, with their selector and words.
 %
 % Part programs
 %   cncrot_program_lines   - What program lines do to the active frame, as the controller does.
-%   cncrot_tool_path_lines - A five-axis program's motion blocks as CL points or machine axes.
+%   cncrot_tool_path_lines - A five-axis part program's motion blocks as CL points or machine axes.
 %   cncrot_program_write   - The program line that programs a frame in a controller's language.
 %   cncrot_program_translate - A part program in another controller's language, block by block.
 %   cncrot_program_axes    - The rotary-axis positions a program's active tilt moves a machine to.
 %   cncrot_dialects        - The codes of the controller dialects.
 %
 % Probing
-%   cncrot_probe_flange    - The tilt of a flange from four probed points.
+%   cncrot_probe_flange    - The paper's flange probing: the tilt of a flange from four points.
 %   cncrot_probe_plane     - The least-squares plane through probed points, and its flatness.
-%   cncrot_probe_edge      - The turn about a plane's normal that lays X' along a probed edge.
+%   cncrot_probe_edge      - The turn about a tilted plane's normal that lays X' along a probed edge.
 %
 % Machine kinematics
 %   cncrot_machine_forward - The tool frame of a machine at rotary-axis positions.

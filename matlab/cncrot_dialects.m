@@ -1,5 +1,7 @@
-% CNCROT_DIALECTS  The codes of the controller dialects of cncrot_program_lines and
-%   cncrot_program_write: SINUMERIK 1, HEIDENHAIN 2, FANUC 3, SYNTEC 4, TWINCAT 5, HAAS 6.
+% CNCROT_DIALECTS  The codes of the controller dialects.
+%   d = cncrot_dialects() gives a struct of the codes the program functions
+%   (cncrot_program_lines, cncrot_program_write, ...) take: SINUMERIK 1, HEIDENHAIN 2,
+%   FANUC 3, SYNTEC 4, TWINCAT 5, HAAS 6.
 %   Those functions take the names as well, in any case, char or string: 'sinumerik',
 %   'heidenhain', 'fanuc', 'syntec', 'twincat', 'haas'.
 %

@@ -22,10 +22,10 @@
 %     increment (PLANE RELATIV, G68.4, _ST 1, AROT, G158 P01...), so that a loop repeating
 %     it adds as often (the plane it reaches where the target has none: Haas). A command spread over lines is
 %     written once, at its last line ('' for the others): cycle 7's axis lines as one
-%     G52, a G68.2 and its G53.1 as one PLANE ... TURN (cncrot_program_joins). The
+%     G52, a G68.2 and its G53.1 as one PLANE ... TURN. The
 %     block's other words (what an ISO-style post writes beside a tilt or a cancel:
 %     'G91 G28 Z0.' of 'G91 G28 Z0. G69', 'N40 G1 F300.' of 'N40 G1 G68.2 ... F300.')
-%     come first, as they stand, on a line of their own (cncrot_program_rest);
+%     come first, as they stand, on a line of their own;
 %   - any other block: the block as it stands (remarks says which). The blocks are read in
 %     the order given: a Heidenhain CALL LBL is passed over, not followed through its
 %     label, and a cancel beside a block not followed (G69 G55) stays in it as it stands

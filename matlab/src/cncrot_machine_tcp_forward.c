@@ -7,7 +7,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   machine_arg(prhs[0], 1, &m);
   size_t n = rows_arg(prhs[1], 2, "axes", 6);
   const double *a = real_data(prhs[1], 2, "axes");
-  double len = scalar_arg(prhs[2], 3, "L");
+  double len = finite_arg(scalar_arg(prhs[2], 3, "L"), 3, "L");
   mwSize dims[3] = {4, 4, (mwSize)n};
   mxArray *out = mxCreateNumericArray(3, dims, mxDOUBLE_CLASS, mxREAL);
   double *o = mxGetDoubles(out);

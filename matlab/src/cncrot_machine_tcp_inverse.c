@@ -14,7 +14,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   int cl = mxGetNumberOfDimensions(p) == 2 && d[1] == 6;
   size_t n = cl ? rows_arg(p, 2, "P", 6) : squares_arg(p, 2, "P", 4);
   const double *pd = real_data(p, 2, "P");
-  double len = scalar_arg(prhs[2], 3, "L");
+  double len = finite_arg(scalar_arg(prhs[2], 3, "L"), 3, "L");
   double prev[6] = {0, 0, 0, 0, 0, 0};
   if (nrhs > 3) previous_arg(prhs[3], 4, prev);
   int32_t rule = nrhs > 4 ? rule_arg(prhs[4], 5, "rule") : CNCROT_CHOOSE_CLOSEST;

@@ -15,6 +15,18 @@ static void raise_write(int32_t s, int32_t dialect, const char *form, int32_t de
     for (k = 0; form[k] && k < 64; k++) shown[k] = (unsigned char)form[k] >= 0x20 && (unsigned char)form[k] < 0x7F ? form[k] : '?';
     shown[k] = '\0';
     snprintf(where, sizeof where, "%s '%s'", label(2, "form"), shown);
+    if (s == CNCROT_STATUS_BAD_ARGUMENT) {
+      /* The forms this dialect writes, by their writer's names. */
+      char some[400];
+      int len = 0;
+      some[0] = '\0';
+      for (size_t j = 0; j < COUNT_OF(FORM_TEXTS); j++) {
+        if (cncrot_program_write(dialect, FORM_TEXTS[j], IDENTITY, -1, out, sizeof out) < 0) continue;
+        if (strstr(some, FORM_TEXTS[j]) != NULL) continue;
+        len += snprintf(some + len, sizeof some - len, "%s'%s'", len ? ", " : "", FORM_TEXTS[j]);
+      }
+      fail("cncrot:badArgument", "%s is not a form this dialect writes: one of %s", where, some);
+    }
     raise_at(s, where, NULL, -1, 0);
   }
   if (cncrot_program_write(dialect, form, IDENTITY, decimals, out, sizeof out) == s) {

@@ -13,7 +13,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   int32_t rule = CNCROT_CHOOSE_CLOSEST, ref = 0;
   if (on_machine) {
     machine_arg(prhs[2], 3, &m);
-    len = scalar_arg(prhs[3], 4, "L");
+    len = finite_arg(scalar_arg(prhs[3], 4, "L"), 4, "L");
     if (nrhs > 4) previous_arg(prhs[4], 5, prev);
     if (nrhs > 5) rule = rule_arg(prhs[5], 6, "rule");
     if (nrhs > 6) ref = integer_arg(prhs[6], 7, "ref");
@@ -36,6 +36,11 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     char buf[CNCROT_PROGRAM_LINE_MAX + 3];
     size_t bytes = line_bytes(a, 2, buf, sizeof buf);
     int32_t s = cncrot_tool_path_line(&t, dialect, buf, bytes);
+    if (s == CNCROT_STATUS_NOT_AVAILABLE) {
+      mxDestroyArray(out);
+      mxDestroyArray(kinds);
+      fail("cncrot:notAvailable", "%s: the five-axis programs of this dialect are not read (TwinCAT's)", label(1, "dialect"));
+    }
     if (s < 0) {
       mxDestroyArray(out);
       mxDestroyArray(kinds);
@@ -50,6 +55,14 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     if (on_machine) {
       double ax[6];
       s = cncrot_tool_path_axes(&t, &m, len, prev, rule, ref, ax);
+      if (s == CNCROT_STATUS_BAD_ARGUMENT && t.orientation == CNCROT_ORIENTATION_AXES) {
+        mxDestroyArray(out);
+        mxDestroyArray(kinds);
+        fail("cncrot:badArgument",
+             "%s, line %d: the block gives a position to a rotary axis the machine (argument 3) does not have "
+             "(A, B, C go to the machine's axis whose direction is nearest X, Y, Z)",
+             label(2, "lines"), (int)k + 1);
+      }
       if (s < 0) {
         mxDestroyArray(out);
         mxDestroyArray(kinds);

@@ -565,14 +565,44 @@ static int32_t form_arg(const mxArray *a, int pos, const char *name) {
 }
 
 /* The number of words of a form (the library's table). */
-/* A writer's form name ('G68.2', "PLANE SPATIAL"): text of at most 64 characters without
- * NUL, as the library reads it (characters beyond ASCII become a byte it refuses). */
+/* The writer's name of each form of FORMS, in its order. */
+static const char *const FORM_TEXTS[] = {
+    "CYCLE800",     "ROT", "ROTS", "PLANE SPATIAL", "PLANE EULER", "PLANE VECTOR",   "PLANE POINTS",
+    "G68.2",        "G158", "ROT", "G268",          "G68.3",       "PLANE PROJECTED",
+};
+
+/* A writer's form name ('G68.2', "PLANE SPATIAL", 'G158 P10157'): text of at most 64
+ * characters without NUL, as the library reads it (characters beyond ASCII become a byte it
+ * refuses); or, as everywhere a form is taken, a form's name of cncrot_forms ('g68_2',
+ * 'plane_spatial') or its code of any numeric class, written as the writer names it. */
 static void form_name_arg(const mxArray *a, int pos, char out[65]) {
   size_t m = 0;
   const mxChar *c = chars_of(a, pos, "form", &m);
+  if (c == NULL && (mxIsNumeric(a) || mxIsLogical(a))) {
+    int32_t code = form_arg(a, pos, "form");
+    for (size_t k = 0; k < COUNT_OF(FORMS); k++)
+      if (FORMS[k].code == code) {
+        snprintf(out, 65, "%s", FORM_TEXTS[k]);
+        return;
+      }
+  }
   if (c == NULL)
-    fail("cncrot:badClass", "%s must be text such as 'G68.2' or 'PLANE SPATIAL'; got %s", label(pos, "form"),
-         described(a));
+    fail("cncrot:badClass", "%s must be text such as 'G68.2' or 'PLANE SPATIAL', or a form's code; got %s",
+         label(pos, "form"), described(a));
+  if (m > 0 && m < 32) {
+    uint32_t u[32];
+    char word[32];
+    size_t all = code_points(c, m, u, 32);
+    if (keyword(u, all, word, sizeof word)) {
+      for (char *p = word; *p; p++)
+        if (*p == ' ' || *p == '.' || *p == '-') *p = '_';
+      for (size_t k = 0; k < COUNT_OF(FORMS); k++)
+        if (strcmp(word, FORMS[k].name) == 0) {
+          snprintf(out, 65, "%s", FORM_TEXTS[k]);
+          return;
+        }
+    }
+  }
   if (m > 64) fail("cncrot:badArgument", "%s is longer than 64 characters", label(pos, "form"));
   for (size_t k = 0; k < m; k++) {
     if (char_code(c[k]) == 0) fail("cncrot:badArgument", "%s contains a NUL character", label(pos, "form"));
@@ -655,13 +685,22 @@ static void frame_arg(const mxArray *a, int pos, const char *name, double row_ma
   frame_to_row_major(real_data(a, pos, name), row_major);
 }
 
-/* The previous machine axes of the five-axis transformation: 6 elements (X Y Z and 3 rotary
- * axes). */
+/* A number that must be finite, named in the error when it is not. */
+static double finite_arg(double v, int pos, const char *name) {
+  if (!(v - v == 0)) fail("cncrot:notFinite", "%s must be a finite number; got %s", label(pos, name), number_text(v));
+  return v;
+}
+
+/* The previous machine axes of the five-axis transformation: 6 finite elements (X Y Z and
+ * 3 rotary axes). */
 static void previous_arg(const mxArray *a, int pos, double prev[6]) {
   const double *q = real_data(a, pos, "previous");
   if (mxGetNumberOfElements(a) != 6)
     fail("cncrot:badSize", "%s must have 6 elements (X Y Z and 3 rotary axes); got %s", label(pos, "previous"),
          described(a));
+  for (int k = 0; k < 6; k++)
+    if (!(q[k] - q[k] == 0))
+      fail("cncrot:notFinite", "%s must be finite; element %d is %s", label(pos, "previous"), k + 1, number_text(q[k]));
   memcpy(prev, q, 6 * sizeof(double));
 }
 

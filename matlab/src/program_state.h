@@ -36,6 +36,16 @@ static void from_struct(const mxArray *s, int arg, cncrot_program *p) {
   if (mxIsEmpty(s) && !mxIsStruct(s)) return;
   if (!mxIsStruct(s) || mxGetNumberOfElements(s) != 1)
     fail("cncrot:badClass", "%s must be a 1-by-1 struct from cncrot_program_lines, or []; got %s", label(arg, "state"), described(s));
+  /* A field of another name is a misspelling (struct('Options', 1)): refused, as inputParser
+     refuses an unknown name, rather than left out in silence. */
+  for (int k = 0; k < mxGetNumberOfFields(s); k++) {
+    const char *name = mxGetFieldNameByNumber(s, k);
+    int known = 0;
+    for (size_t j = 0; j < COUNT_OF(FIELDS); j++) known |= strcmp(name, FIELDS[j]) == 0;
+    if (!known)
+      fail("cncrot:badState", "%s: '%s' is not a field of a program state (a new program takes only 'options')",
+           label(arg, "state"), name);
+  }
   double r[9], v[3];
   field(s, arg, "rotation", r, 9);
   to_row_major(r, p->rotation);
@@ -127,8 +137,20 @@ static int32_t frame_of(const cncrot_program *p, const cncrot_machine *m, double
   return s;
 }
 
-/* Program lines as given: one char row or string, a cell array of them, or a string array
- * (its elements as a cell array of char, by MATLAB's cellstr). */
+/* A char row of `len` characters from c (stride `step`) as an mxArray. */
+static mxArray *char_row(const mxChar *c, size_t len, size_t step) {
+  mwSize dims[2] = {1, len};
+  mxArray *row = mxCreateCharArray(2, dims);
+  mxChar *out = mxGetChars(row);
+  for (size_t k = 0; k < len; k++) out[k] = c[k * step];
+  return row;
+}
+
+/* Program lines as given: a cell array of char rows or strings, a string array (its
+ * elements as a cell array of char, by MATLAB's cellstr), a char matrix (a line per row,
+ * trailing blanks dropped, as cellstr takes it), or one text: a char row or string scalar
+ * holding line breaks (what fileread returns) is split at them, a last empty line after a
+ * final break dropped (a CR before a break is the line's, and read as its end). */
 static const mxArray *lines_arg(const mxArray *lines, int pos) {
   if (mxIsClass(lines, "string") && mxGetNumberOfElements(lines) != 1) {
     mxArray *cells = NULL, *in = (mxArray *)lines;
@@ -136,7 +158,38 @@ static const mxArray *lines_arg(const mxArray *lines, int pos) {
       fail("cncrot:badClass", "%s: the strings could not be read (a missing string?)", label(pos, "lines"));
     return cells;
   }
-  return lines;
+  const mxArray *text = lines;
+  if (mxIsClass(lines, "string")) {
+    mxArray *c = NULL, *in = (mxArray *)lines;
+    if (mexCallMATLABWithTrap(1, &c, 1, &in, "char") != NULL || c == NULL || !mxIsChar(c))
+      fail("cncrot:badClass", "%s: the string could not be read (a missing string?)", label(pos, "lines"));
+    text = c;
+  }
+  if (!mxIsChar(text) || mxGetNumberOfDimensions(text) != 2) return lines;
+  size_t m = mxGetM(text), n = mxGetN(text);
+  const mxChar *c = mxGetChars(text);
+  if (m > 1) {
+    mxArray *cells = mxCreateCellMatrix(m, 1);
+    for (size_t r = 0; r < m; r++) {
+      size_t len = n;
+      while (len > 0 && char_code(c[r + (len - 1) * m]) == ' ') len--;
+      mxSetCell(cells, r, char_row(c + r, len, m));
+    }
+    return cells;
+  }
+  size_t breaks = 0;
+  for (size_t k = 0; k < n; k++) breaks += char_code(c[k]) == '\n';
+  if (breaks == 0) return lines;
+  size_t count = breaks + (char_code(c[n - 1]) == '\n' ? 0 : 1);
+  mxArray *cells = mxCreateCellMatrix(count, 1);
+  size_t start = 0, r = 0;
+  for (size_t k = 0; k <= n && r < count; k++) {
+    if (k == n || char_code(c[k]) == '\n') {
+      mxSetCell(cells, r++, char_row(c + start, k - start, 1));
+      start = k + 1;
+    }
+  }
+  return cells;
 }
 
 /* One line of text as bytes (characters beyond ASCII become a byte every dialect refuses):

@@ -227,6 +227,39 @@ function test_cncrot(cases_file)
           '3 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-', '4 L X+10 FMAX', '5 PLANE RESET STAY', '6 END PGM T MM'};
   [Fp, ~, frp, rp] = cncrot_program_lines('heidenhain', prog);
   check(isequal(rp, {'passed'; 'passed'; 'applied'; 'applied'; 'passed'; 'applied'; 'passed'}), 'remarks per block');
+  % The same program as one text, as fileread gives it (CRLF, a final line end), and as a
+  % char matrix: a line each (a helper's find: one text was read as one block, in silence).
+  text = [strjoin(prog, sprintf('\r\n')) sprintf('\r\n')];
+  [Ft, ~, ~, rt] = cncrot_program_lines('heidenhain', text);
+  check(isequal(rt, rp) && isequal(Ft, Fp), 'program lines from one text');
+  [Fm, ~, ~, rm] = cncrot_program_lines('heidenhain', char(prog));
+  check(isequal(rm, rp) && isequal(Fm, Fp), 'program lines from a char matrix');
+  tt = cncrot_program_translate('heidenhain', text, 'fanuc', 'G68.2');
+  check(numel(tt) == numel(prog), 'translation of one text: a line each');
+  % A misspelt field of a state is refused, not left out.
+  expect_message('cncrot:badState', @() cncrot_program_lines('sinumerik', 'ROT X10', struct('Options', 1)), ...
+                 'state: a misspelt field', 'cncrot_program_lines', 'argument 3 (state)', '''Options''');
+  % Forms by the names and codes of cncrot_forms, everywhere a form is taken.
+  F30 = cncrot_program_lines('fanuc', 'G68.2 X0 Y0 Z0 I0 J30 K0');
+  w = cncrot_program_write('fanuc', 'G68.2', F30);
+  check(isequal(cncrot_program_write('fanuc', 'g68_2', F30), w) && isequal(cncrot_program_write('fanuc', 8, F30), w), ...
+        'program write: form names and codes');
+  check(isequal(cncrot_program_translate('fanuc', {'G69'}, 'heidenhain', 'plane_spatial'), ...
+                cncrot_program_translate('fanuc', {'G69'}, 'heidenhain', 'PLANE SPATIAL')), 'translate: form names');
+  expect_message('cncrot:badArgument', @() cncrot_program_write('fanuc', 'PLANE SPATIAL', F30), ...
+                 'program write: a form of another dialect', 'cncrot_program_write', 'argument 2 (form)', '''G68.2''');
+  % The five-axis transformation names the argument that is not finite.
+  acm = [1 1 0 0 0 0 100 0 0 0 0 0; 1 0 0 1 0 0 0 0 0 0 0 0];
+  expect_message('cncrot:notFinite', @() cncrot_machine_tcp_inverse(acm, eye(4), NaN), 'tcp: L NaN', ...
+                 'cncrot_machine_tcp_inverse', 'argument 3 (L)');
+  expect_message('cncrot:notFinite', @() cncrot_machine_tcp_inverse(acm, eye(4), 50, [0 0 0 NaN 0 0]), 'tcp: previous NaN', ...
+                 'cncrot_machine_tcp_inverse', 'argument 4 (previous)', 'element 4');
+  expect_message('cncrot:notFinite', @() cncrot_machine_tcp_forward(acm, [0 0 0 30 90 0], Inf), 'tcp forward: L Inf', ...
+                 'cncrot_machine_tcp_forward', 'argument 3 (L)');
+  % 'inverse' along a path: the other solution at the first row, the rows after it on its branch.
+  cl3 = repmat([10 0 0 0.5 0 sqrt(3)/2], 3, 1);
+  Ainv = cncrot_machine_tcp_inverse(acm, cl3, 50, [0 0 0 20 80 0], 'inverse');
+  check(all(all(abs(Ainv(:, 4:5) - repmat([-30 -90], 3, 1)) < 1e-9)) && max(abs(Ainv(1, :) - Ainv(3, :))) < 1e-9, 'tcp: inverse along a path');
   % A whole program translated: datum shifts in the target's own blocks, SEQ+ as _DIR +1, cancels as
   % cancels, other blocks as they stand; the same texts as the C harness (test_program.c).
   src = {'CYCL DEF 7.0 DATUM SHIFT', 'CYCL DEF 7.1 X+10', 'CYCL DEF 7.3 Z-5', ...
