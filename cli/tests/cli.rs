@@ -2339,6 +2339,16 @@ fn program_says_where_sinumerik_frames_depend_on_the_control() {
     assert!(!r.stderr.contains("the control may keep"), "{}", r.stderr);
 }
 
+/// Fanuc into Fanuc: a `G53.1 P1` (the choice a word of the turn's own block) stays as it
+/// stands, not the tilt written again before it in `G68.2` mode (a helper's find).
+#[test]
+fn program_keeps_a_turn_with_its_choice() {
+    let prog = "N10 G68.2 X10. Y0. Z0. I0. J30. K0.\nN20 G53.1 P1\nN30 G53.1\nN40 G69\n";
+    let r = translate(prog, "fanuc", "fanuc");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(r.stdout, prog);
+}
+
 /// SINUMERIK into SINUMERIK keeps the swivel data set a `CYCLE800` names (`_TC`), `_ST`'s
 /// digits above the units and `_DMODE`: a machine with a head and a table has a data set for
 /// each (a helper's find: written `""`, exit 0). Into another dialect the data set is named

@@ -1263,12 +1263,6 @@ fn change(
         after.direct.map(|d| (d, after.angles)),
     );
     let active = t1 != Frame::IDENTITY || d1.is_some();
-    let words_changed = before.choice != after.choice
-        || before.table_rot != after.table_rot
-        || (before.retract, before.retract_mm.to_bits())
-            != (after.retract, after.retract_mm.to_bits())
-        || (before.feed, before.feed_mm_min.to_bits()) != (after.feed, after.feed_mm_min.to_bits());
-    let moved = before.positioning != after.positioning;
     // The form turns the axes with a block of its own (`G53.1`, `G253`).
     let turn_block = dialect
         .positioning_block(
@@ -1279,6 +1273,15 @@ fn change(
             },
         )
         .is_some();
+    // A choice of solution is a word of that block where it has one (`G53.1 P1`), not of the
+    // tilt block: a new choice alone is that block again, not the tilt.
+    let chosen = before.choice != after.choice;
+    let words_changed = (chosen && !turn_block)
+        || before.table_rot != after.table_rot
+        || (before.retract, before.retract_mm.to_bits())
+            != (after.retract, after.retract_mm.to_bits())
+        || (before.feed, before.feed_mm_min.to_bits()) != (after.feed, after.feed_mm_min.to_bits());
+    let moved = before.positioning != after.positioning;
     // Where the tilt block says how to move, a new way of moving is a new tilt block; where a
     // block of its own moves the machine (`G53.1`), no block takes that back: a tilt that
     // stays where it is after one that turned is the tilt block again, without it.
@@ -1375,7 +1378,8 @@ fn change(
     }
     // Where a block of its own moves the machine (`G53.1`): after a new tilt, or alone (a
     // direct mode's block moves the axes itself).
-    if (active || zero_turn(after)) && d1.is_none() && (tilt_written || moved) {
+    let rechosen = chosen && turn_block && after.positioning != Positioning::Stay;
+    if (active || zero_turn(after)) && d1.is_none() && (tilt_written || moved || rechosen) {
         if let Some(text) = dialect.positioning_block(spec, how()) {
             next(out);
             out.text(text);
