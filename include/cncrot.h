@@ -1156,7 +1156,9 @@ int32_t cncrot_form_word_count(int32_t form, size_t *count);
  * Returns 0, or a negative status with `frame` untouched: `CNCROT_STATUS_NULL_POINTER`,
  * `CNCROT_STATUS_BAD_ARGUMENT` (unknown form, wrong `count`, a selector the form does not
  * have), `CNCROT_STATUS_BAD_SEQUENCE` (a bad order code in `_MODE`, `P` or `Q`: an axis
- * repeated, or a `Q` that is not a permutation of 1, 2, 3), `CNCROT_STATUS_NOT_FINITE`,
+ * repeated, or a `Q` that is not a permutation of 1, 2, 3), `CNCROT_STATUS_INCOMPLETE_SEQUENCE`
+ * (a `CYCLE800` `_MODE` whose axis code names fewer than the three axes its mode turns
+ * about), `CNCROT_STATUS_NOT_FINITE`,
  * `CNCROT_STATUS_DEGENERATE` (a zero `PLANE VECTOR` normal or B along N, a zero `G68.3`
  * tool direction or `G158` mode-3 normal), `CNCROT_STATUS_COINCIDENT` /
  * `CNCROT_STATUS_COLLINEAR` (`PLANE POINTS`), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes, which need the
@@ -1329,11 +1331,12 @@ int32_t cncrot_frame_transform_point(const double *frame, const double *point, d
  * are correctly rounded, as `strtod` reads them, by the reader of every program line;
  * magnitudes beyond 10^±100 are `CNCROT_STATUS_PARSE`.
  *
- * Returns 0 and writes the table, with `*error_line` = 0; or a negative status
- * (`CNCROT_STATUS_PARSE` for an unknown or malformed line, `CNCROT_STATUS_NAME_TOO_LONG`,
- * `CNCROT_STATUS_TABLE_FULL`, `CNCROT_STATUS_NULL_POINTER` for `table` or `text`) with
- * the table untouched and the 1-based number of the
- * offending line in `*error_line`. `error_line` may be NULL.
+ * Returns 0 and writes the table, with `*error_line` = 0; or a negative status with the
+ * table untouched: `CNCROT_STATUS_PARSE` for an unknown or malformed line,
+ * `CNCROT_STATUS_NAME_TOO_LONG`, `CNCROT_STATUS_TABLE_FULL` (with the 1-based number of the
+ * offending line in `*error_line`), `CNCROT_STATUS_NULL_POINTER` for `table` or `text`,
+ * `CNCROT_STATUS_BAD_ARGUMENT` for `len` beyond the largest object (`PTRDIFF_MAX`) (with
+ * `*error_line` = 0). `error_line` may be NULL.
  *
  * # Safety
  * `table` points to a writable `cncrot_head_table`, `text` to `len` readable bytes.
@@ -2532,7 +2535,8 @@ int32_t cncrot_add_rotation(int32_t intrinsic,
  * `matrix` must be a rotation.
  *
  * Returns 0, or with `out` untouched `CNCROT_STATUS_NULL_POINTER`,
- * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`.
+ * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_OUT_OF_RANGE`
+ * (a result that overflows: a vector near the largest double).
  *
  * # Safety
  * `matrix` points to 9 and `vector` to 3 readable doubles, `out` to 3 writable doubles
@@ -2550,7 +2554,8 @@ int32_t cncrot_rotate_vector(const double *matrix, const double *vector, double 
  * gives (35.36, -21.21, 0). `matrix` must be a rotation.
  *
  * Returns 0, or with `out` untouched `CNCROT_STATUS_NULL_POINTER`,
- * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`.
+ * `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_OUT_OF_RANGE`
+ * (a result that overflows: a vector near the largest double).
  *
  * # Safety
  * As `cncrot_rotate_vector`.

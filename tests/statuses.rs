@@ -438,6 +438,38 @@ fn census(calls: usize) -> BTreeMap<&'static str, BTreeSet<i32>> {
             );
         }
     }
+    // What random arguments rarely reach (a hostile caller's finds): a vector near the
+    // largest double, every CYCLE800 selector, a length beyond the largest object.
+    // SAFETY: the buffers are of the sizes the functions read and write; the oversized
+    // length is refused before anything is read.
+    unsafe {
+        let (mut m, mut out) = ([0.0; 9], [0.0; 3]);
+        cncrot_matrix_from_angles(1, 3, [45.0, 0.0, 0.0].as_ptr(), m.as_mut_ptr());
+        let v = [f64::MAX, f64::MAX, 0.0];
+        record(
+            "cncrot_rotate_vector",
+            cncrot_rotate_vector(m.as_ptr(), v.as_ptr(), out.as_mut_ptr()),
+        );
+        record(
+            "cncrot_rotate_vector_inverse",
+            cncrot_rotate_vector_inverse(m.as_ptr(), v.as_ptr(), out.as_mut_ptr()),
+        );
+        let mut f = [0.0; 16];
+        for sel in -2..300 {
+            let words = [0.0; 9];
+            record(
+                "cncrot_form_frame",
+                cncrot_form_frame(CNCROT_FORM_CYCLE800, sel, words.as_ptr(), 9, f.as_mut_ptr()),
+            );
+        }
+        let mut table: cncrot_head_table = std::mem::zeroed();
+        let mut line = -7;
+        record(
+            "cncrot_head_table_parse",
+            cncrot_head_table_parse(&mut table, c"M17\n".as_ptr(), usize::MAX, &mut line),
+        );
+        assert_eq!(line, 0, "a refusal before any line names none");
+    }
     seen
 }
 

@@ -90,7 +90,9 @@ pub unsafe extern "C" fn cncrot_form_word_count(form: i32, count: *mut usize) ->
 /// Returns 0, or a negative status with `frame` untouched: `CNCROT_STATUS_NULL_POINTER`,
 /// `CNCROT_STATUS_BAD_ARGUMENT` (unknown form, wrong `count`, a selector the form does not
 /// have), `CNCROT_STATUS_BAD_SEQUENCE` (a bad order code in `_MODE`, `P` or `Q`: an axis
-/// repeated, or a `Q` that is not a permutation of 1, 2, 3), `CNCROT_STATUS_NOT_FINITE`,
+/// repeated, or a `Q` that is not a permutation of 1, 2, 3), `CNCROT_STATUS_INCOMPLETE_SEQUENCE`
+/// (a `CYCLE800` `_MODE` whose axis code names fewer than the three axes its mode turns
+/// about), `CNCROT_STATUS_NOT_FINITE`,
 /// `CNCROT_STATUS_DEGENERATE` (a zero `PLANE VECTOR` normal or B along N, a zero `G68.3`
 /// tool direction or `G158` mode-3 normal), `CNCROT_STATUS_COINCIDENT` /
 /// `CNCROT_STATUS_COLLINEAR` (`PLANE POINTS`), `CNCROT_STATUS_NOT_AVAILABLE` (direct modes, which need the

@@ -1,7 +1,7 @@
 //! What CYCLE600 and the machines share at the C boundary: names, the HEAD_DEF table and
 //! its parser.
 
-use super::{byte, cncrot_status, guard, non_null};
+use super::{byte, cncrot_status, guard};
 use crate::dialects::cycle600::HeadLookup;
 use crate::dialects::head_def::{HeadTable, CAPACITY, NAME_MAX};
 use crate::Error;
@@ -179,11 +179,12 @@ unsafe fn write_table(out: *mut cncrot_head_table, t: &HeadTable) {
 /// are correctly rounded, as `strtod` reads them, by the reader of every program line;
 /// magnitudes beyond 10^±100 are `CNCROT_STATUS_PARSE`.
 ///
-/// Returns 0 and writes the table, with `*error_line` = 0; or a negative status
-/// (`CNCROT_STATUS_PARSE` for an unknown or malformed line, `CNCROT_STATUS_NAME_TOO_LONG`,
-/// `CNCROT_STATUS_TABLE_FULL`, `CNCROT_STATUS_NULL_POINTER` for `table` or `text`) with
-/// the table untouched and the 1-based number of the
-/// offending line in `*error_line`. `error_line` may be NULL.
+/// Returns 0 and writes the table, with `*error_line` = 0; or a negative status with the
+/// table untouched: `CNCROT_STATUS_PARSE` for an unknown or malformed line,
+/// `CNCROT_STATUS_NAME_TOO_LONG`, `CNCROT_STATUS_TABLE_FULL` (with the 1-based number of the
+/// offending line in `*error_line`), `CNCROT_STATUS_NULL_POINTER` for `table` or `text`,
+/// `CNCROT_STATUS_BAD_ARGUMENT` for `len` beyond the largest object (`PTRDIFF_MAX`) (with
+/// `*error_line` = 0). `error_line` may be NULL.
 ///
 /// # Safety
 /// `table` points to a writable `cncrot_head_table`, `text` to `len` readable bytes.
@@ -201,19 +202,24 @@ pub unsafe extern "C" fn cncrot_head_table_parse(
     error_line: *mut i32,
 ) -> i32 {
     guard(|| {
-        non_null(&[table.is_null(), text.is_null()])?;
         // No object is larger than isize::MAX bytes; a larger `len` is a caller's bug that
         // `from_raw_parts` must not see.
-        if len > isize::MAX as usize {
-            return Err(cncrot_status::BadArgument);
-        }
-        let bytes = core::slice::from_raw_parts(text.cast::<u8>(), len);
-        let (status, line) = match parse_into(table, bytes) {
-            Ok(()) => (cncrot_status::Ok, 0),
-            Err(e) => (
-                cncrot_status::from(e.error),
-                i32::try_from(e.line).unwrap_or(i32::MAX),
-            ),
+        let early = if table.is_null() || text.is_null() {
+            Some(cncrot_status::NullPointer)
+        } else if len > isize::MAX as usize {
+            Some(cncrot_status::BadArgument)
+        } else {
+            None
+        };
+        let (status, line) = match early {
+            Some(status) => (status, 0),
+            None => match parse_into(table, core::slice::from_raw_parts(text.cast::<u8>(), len)) {
+                Ok(()) => (cncrot_status::Ok, 0),
+                Err(e) => (
+                    cncrot_status::from(e.error),
+                    i32::try_from(e.line).unwrap_or(i32::MAX),
+                ),
+            },
         };
         if !error_line.is_null() {
             error_line.write_unaligned(line);

@@ -348,7 +348,8 @@ pub unsafe extern "C" fn cncrot_add_rotation(
 /// `matrix` must be a rotation.
 ///
 /// Returns 0, or with `out` untouched `CNCROT_STATUS_NULL_POINTER`,
-/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`.
+/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_OUT_OF_RANGE`
+/// (a result that overflows: a vector near the largest double).
 ///
 /// # Safety
 /// `matrix` points to 9 and `vector` to 3 readable doubles, `out` to 3 writable doubles
@@ -372,7 +373,8 @@ pub unsafe extern "C" fn cncrot_rotate_vector(
 /// gives (35.36, -21.21, 0). `matrix` must be a rotation.
 ///
 /// Returns 0, or with `out` untouched `CNCROT_STATUS_NULL_POINTER`,
-/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`.
+/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_NOT_A_ROTATION`, `CNCROT_STATUS_OUT_OF_RANGE`
+/// (a result that overflows: a vector near the largest double).
 ///
 /// # Safety
 /// As `cncrot_rotate_vector`.
