@@ -1242,6 +1242,45 @@ fn block_number(block: &str, from: Dialect) -> Option<String> {
 /// ISO-style dialects and TwinCAT, `;` to the end of the line in all): the code as it
 /// stands without them, and the comments' texts joined by a space (`None` without one).
 /// SINUMERIK's strings (`"TC1"`) are no comment, whatever they hold.
+/// Moves `current` where a block's rotary-axis words send the machine: the letters `A B C`
+/// of a motion block (each the machine's axis whose direction is nearest X, Y, Z, as a
+/// five-axis program names them), absolute or incremental from where the axes are. `path`
+/// holds the reader's modal state (`G91`); its letters are set from `current` first, so an
+/// increment adds to the positions the last turn left. Blocks the reader refuses or does
+/// not follow (arcs, moves in machine coordinates) move nothing here.
+fn moved_to(
+    machine: &cncrot::kinematics::Machine,
+    path: &mut cncrot::dialects::toolpath::ToolPath,
+    dialect: Dialect,
+    block: &str,
+    current: &mut [f64; MAX_AXES],
+) {
+    let letter = |direction: cncrot::Vector| {
+        let [x, y, z] = direction.map(f64::abs);
+        if x >= y && x >= z {
+            0
+        } else if y >= z {
+            1
+        } else {
+            2
+        }
+    };
+    let slots: Vec<usize> = machine.axes().iter().map(|a| letter(a.direction)).collect();
+    let mut from = *path;
+    for (k, &slot) in slots.iter().enumerate() {
+        from.axes[slot] = current[k];
+    }
+    let Ok((next, _)) = from.line(dialect, block.as_bytes()) else {
+        return;
+    };
+    if next.axes != from.axes {
+        for (k, &slot) in slots.iter().enumerate() {
+            current[k] = next.axes[slot];
+        }
+    }
+    *path = next;
+}
+
 /// Where a SINUMERIK program's `CYCLE800` and its frame commands meet: the configuration of
 /// the control decides what the program does there (one programmable frame that each
 /// replaces, as cncrot reads it, or the swivel in system frames that `TRANS`, `ROT` and
@@ -1637,6 +1676,9 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     let (mut applied, mut passed, mut unfollowed, mut refused) = (0, 0, 0, 0);
     // Blocks read but not written in the target (its form has no words for the change).
     let mut uncarried = 0;
+    // The rotary positions the program's motion blocks state (their letters `A B C`, absolute
+    // or incremental), read as the five-axis reader reads a motion block.
+    let mut rotary = cncrot::dialects::toolpath::ToolPath::default();
     let mut frames = SinumerikFrames::default();
     // The swivel data sets (`_TC`) named so far that the target has no word for.
     let mut data_sets: Vec<String> = Vec::new();
@@ -1757,6 +1799,11 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
             eprintln!("cncrot: line {line}: read with {used}: {block}");
         }
         let source = resolved.as_ref().map_or(block, |(t, _)| t.as_str());
+        // A block that moves the rotary axes (`G0 A30. C180.`, `L A+30 C+180 FMAX`): the
+        // next turn is chosen from where it left them.
+        if let Some(m) = &machine {
+            moved_to(m, &mut rotary, dialect, source, &mut current);
+        }
         let (next, remark) = match p.line(dialect, source.as_bytes()) {
             Ok(r) => r,
             Err(e) => {

@@ -2339,6 +2339,47 @@ fn program_says_where_sinumerik_frames_depend_on_the_control() {
     assert!(!r.stderr.contains("the control may keep"), "{}", r.stderr);
 }
 
+/// A block that moves the rotary axes (`G0 A30. C180.` before the tilt, as posts
+/// pre-position them; Heidenhain's `L A+30 C+180`, an increment `L IC+90`) moves the
+/// positions the next turn starts from (a helper's find: chosen from `--current`, the axes
+/// swung to the other solution).
+#[test]
+fn program_follows_the_rotary_axes_blocks_move() {
+    let ac = [
+        "--axis",
+        "work:1,0,0@0,0,100",
+        "--axis",
+        "work:0,0,1",
+        "--current",
+        "0,0",
+    ];
+    let axes = |dialect: &str, prog: &str| -> Vec<Vec<f64>> {
+        let mut args = vec!["program", "-", "--dialect", dialect];
+        args.extend(ac);
+        let r = cncrot(&args, prog);
+        assert_eq!(r.code, 0, "{}", r.stderr);
+        r.stdout
+            .lines()
+            .filter_map(|l| l.split("axes: ").nth(1))
+            .map(numbers)
+            .collect()
+    };
+    let fanuc = axes(
+        "fanuc",
+        "G0 A30. C180.\nG68.2 X0. Y0. Z0. I0. J30. K0.\nG53.1\n",
+    );
+    close(&fanuc[1], &[30.0, 180.0], 1e-9);
+    // From C = 180 + 90 = 270, the other solution (A -30, C 360) is as far as (30, 180)
+    // no longer: C 360 is 90 away, A 60.
+    let heidenhain = axes(
+        "heidenhain",
+        "1 L A+30 C+180 R0 FMAX\n2 PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN FMAX\n\
+         3 L IA-60 IC+180 FMAX\n4 PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN FMAX\n",
+    );
+    close(&heidenhain[0], &[30.0, 180.0], 1e-9);
+    close(&heidenhain[1], &[-30.0, 360.0], 1e-9);
+}
+
 /// Fanuc into Fanuc: a `G53.1 P1` (the choice a word of the turn's own block) stays as it
 /// stands, not the tilt written again before it in `G68.2` mode (a helper's find).
 #[test]
