@@ -93,10 +93,19 @@ static void fork_head(void) {
   CHECK_NEAR(out, want_p, 3, 1e-9);
   CHECK_STATUS(cncrot_machine_choose(&m, f, cur2, CNCROT_CHOOSE_NEGATIVE_TURN, 1, out, res, rem), CNCROT_STATUS_OK);
   CHECK_NEAR(out, want_m, 3, 1e-9);
+  /* Master first (Fanuc's G53.1): from C 110, B -40 the master C turns 80 to 30 and 100 to
+   * 210 (-150 unwound): (C 30, B 40), though the sum of squares (80² + 80² against 100²)
+   * takes (C 210, B -40). */
+  double cur_f[3] = {110, -40, 0}, want_f[3] = {30, 40, 0}, want_s[3] = {210, -40, 0};
+  CHECK_STATUS(cncrot_machine_choose(&m, f, cur_f, CNCROT_CHOOSE_MASTER_FIRST, 1, out, res, rem), CNCROT_STATUS_OK);
+  CHECK_NEAR(out, want_f, 3, 1e-9);
+  CHECK_STATUS(cncrot_machine_choose(&m, f, cur_f, CNCROT_CHOOSE_CLOSEST, 0, out, res, rem), CNCROT_STATUS_OK);
+  CHECK_NEAR(out, want_s, 3, 1e-9);
   fill_sentinel(out, 3);
+  CHECK_STATUS(cncrot_machine_choose(&m, f, cur2, CNCROT_CHOOSE_MASTER_FIRST, 0, out, res, rem), CNCROT_STATUS_BAD_ARGUMENT);
   CHECK_STATUS(cncrot_machine_choose(&m, f, cur2, CNCROT_CHOOSE_POSITIVE_TURN, 0, out, res, rem), CNCROT_STATUS_BAD_ARGUMENT);
   CHECK_STATUS(cncrot_machine_choose(&m, f, cur2, CNCROT_CHOOSE_NEGATIVE_TURN, 3, out, res, rem), CNCROT_STATUS_BAD_ARGUMENT);
-  CHECK_STATUS(cncrot_machine_choose(&m, f, cur2, CNCROT_CHOOSE_NEGATIVE_TURN + 1, 1, out, res, rem), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK_STATUS(cncrot_machine_choose(&m, f, cur2, CNCROT_CHOOSE_MASTER_FIRST + 1, 1, out, res, rem), CNCROT_STATUS_BAD_ARGUMENT);
   CHECK(is_sentinel(out, 3), "untouched");
 
   /* Limits: B within 0..100 leaves only B = +40 even for "minus". */

@@ -172,6 +172,15 @@
 #define CNCROT_CHOOSE_NEGATIVE_TURN 5
 
 /**
+ * `cncrot_machine_choose`: the solution whose reference axis (the master) turns the least,
+ * then the other axes in their order, then the reference axis nearest 0° (a multiple of
+ * 360°), then the others: Fanuc's rule for `G53.1` ("output judgement conditions"; the
+ * first rotation axis as the master, on a mixed machine the table's axis), which
+ * `cncrot_program_axes` applies to a Fanuc tilt without choice words.
+ */
+#define CNCROT_CHOOSE_MASTER_FIRST 6
+
+/**
  * A computed position at most this far (degrees) beyond an end of its axis' travel is
  * taken exactly at that end \[choice\]: the inverse computes a position at an end a few
  * ulp off; moving by this much turns the tool by 1.7e-11 rad, within the 1e-10 rad to
@@ -1571,7 +1580,9 @@ int32_t cncrot_machine_inverse(const struct cncrot_machine *machine,
  * other solution of the pair: CYCLE600 `_ROT_INV`), `CNCROT_CHOOSE_POSITIVE_TURN` /
  * `_NEGATIVE_TURN` (axis `reference_axis` turns only up / only down from its current
  * position, the least it must: `G53.1 P1` / `P2`; `CNCROT_STATUS_OUT_OF_TRAVEL` when the
- * travel ends before either solution). `CNCROT_CHOOSE_INVERSE` returns the
+ * travel ends before either solution), `CNCROT_CHOOSE_MASTER_FIRST` (axis `reference_axis`
+ * turning the least, then the others, then nearest 0°: Fanuc's `G53.1`).
+ * `CNCROT_CHOOSE_INVERSE` returns the
  * closest solution, with status 0, when the other one lies outside the travel or the
  * orientation has only one (a free axis, the edge of a nutating head's cone): compare
  * `axes_deg` with the current positions to tell. A free axis (singular pose) stays at its
@@ -1734,7 +1745,9 @@ int32_t cncrot_machine_tcp_inverse(const struct cncrot_machine *machine,
  * CYCLE800's `_DIR` ask; the other one when that lies outside the travel),
  * `CNCROT_CHOOSE_POSITIVE_TURN` / `_NEGATIVE_TURN` (a priority axis and its direction of
  * travel: it turns only up / only down, the least it must, as `G53.1 P1` / `P2` ask),
- * `CNCROT_CHOOSE_INVERSE` (`reference_axis` 0; the other solution of the pair). Whole turns
+ * `CNCROT_CHOOSE_MASTER_FIRST` (a priority axis turning the least, then the others, as
+ * Fanuc's `G53.1` chooses), `CNCROT_CHOOSE_INVERSE` (`reference_axis` 0; the other solution
+ * of the pair). Whole turns
  * are unwound toward `previous` in every case (the turning axis: the first turn met its
  * way).
  *
@@ -2037,9 +2050,10 @@ int32_t cncrot_program_expected(const struct cncrot_program *program,
  * rule of the tilt's own choice words, kept in `program->choice` — `SEQ-` / `_DIR = -1`
  * `CNCROT_CHOOSE_MINUS`, `SEQ+` / `_DIR = +1` `CNCROT_CHOOSE_PLUS`, on the master axis (a
  * head's axis nearest the tool, else the axis nearest the machine base) — and without
- * them `CNCROT_CHOOSE_CLOSEST`, the choice SINUMERIK makes for a frame and Heidenhain
- * without `SEQ`: whole turns unwound toward `current`, within the travel limits and on the
- * Hirth grids. No tilt active: the positions of the identity frame. A direct mode
+ * them for a Fanuc tilt (`G53.1`, `G53.1 P0`) Fanuc's own rule, `CNCROT_CHOOSE_MASTER_FIRST`
+ * on its first rotation axis (a mixed machine's table axis), else `CNCROT_CHOOSE_CLOSEST`,
+ * the choice SINUMERIK makes for a frame and Heidenhain without `SEQ`: whole turns unwound
+ * toward `current`, within the travel limits and on the Hirth grids. No tilt active: the positions of the identity frame. A direct mode
  * (`active` 2 or 3): the positions it states, mapped onto the machine's axes (by place, or
  * by letter: each axis takes the position of the letter its direction is nearest, A for X,
  * B for Y, C for Z), as stated on an axis with travel limits, the turn nearest `current`

@@ -40,6 +40,6 @@
 %   conventions 'intrinsic' (1), 'extrinsic' (0);
 %   axis sequences 'XYZ' (57), 'ZXY' (39), "ZX'Y''", 'X0Z' (49: '0' skips a rotation);
 %   dialects 'sinumerik' 'heidenhain' 'fanuc' 'syntec' 'twincat' 'haas' (1..6);
-%   rules 'closest' 'minus' 'plus' 'inverse' 'positive_turn' 'negative_turn' (0..5);
+%   rules 'closest' 'minus' 'plus' 'inverse' 'positive_turn' 'negative_turn' 'master_first' (0..6);
 %   forms as cncrot_forms lists them.
 % Integers may be of any numeric class or logical. The table: docs/matlab.md.

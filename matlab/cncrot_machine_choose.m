@@ -6,9 +6,11 @@
 %   lower and 2 the higher angle, in (-180, 180], of axis REF (1-based; CYCLE800 minus/plus, Heidenhain
 %   SEQ-/SEQ+ on the master axis), 3 the other solution of the pair (CYCLE600 _ROT_INV),
 %   4 / 5 axis REF turning only up / only down from its current position, the least it
-%   must (G53.1 P1 / P2; the other axes the nearest turn).
+%   must (G53.1 P1 / P2; the other axes the nearest turn), 6 axis REF turning the least,
+%   then the others, then each nearest 0 (Fanuc's G53.1).
 %   RULE may be given by name, in any case, char or string: 'closest' (0), 'minus' (1),
-%   'plus' (2), 'inverse' (3), 'positive_turn' (4), 'negative_turn' (5); RULE and REF may
+%   'plus' (2), 'inverse' (3), 'positive_turn' (4), 'negative_turn' (5), 'master_first'
+%   (6); a blank may stand for '_'; RULE and REF may
 %   be of any numeric class. REF is 0 (or left out) for 'closest' and 'inverse'.
 %   REMAINING is the 4-by-4 rotation the axes leave to the frame (about the tool axis with
 %   fewer than three axes, plus the Hirth residual), RESIDUAL the Hirth snapping per axis,

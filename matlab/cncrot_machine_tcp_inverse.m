@@ -15,7 +15,8 @@
 %   AXES = cncrot_machine_tcp_inverse(MACHINE, P, L, PREVIOUS, RULE, REF) picks each row's
 %   rotary solution by RULE as cncrot_machine_choose does: 'closest' (the default: the one
 %   continuous with the row before), 'minus' / 'plus' with REF a priority axis (1-based:
-%   its lower / higher angle in (-180, 180], as SEQ-/SEQ+ ask), 'positive_turn' / 'negative_turn'
+%   its lower / higher angle in (-180, 180], as SEQ-/SEQ+ ask), 'master_first' (it turns the
+%   least, then the others: Fanuc's G53.1), 'positive_turn' / 'negative_turn'
 %   (that axis turns only up / only down, as G53.1 P1/P2 ask), 'inverse' (the first row the
 %   other solution than the one continuous with PREVIOUS, the rows after it continuous with
 %   it).

@@ -18,7 +18,8 @@
 %   N-by-6, the machine's X Y Z and rotary positions for each point (as
 %   cncrot_machine_tcp_inverse: each continuous with the point before, from previous, by
 %   rule 'closest', 'minus', 'plus', 'inverse' (the first point's; the points after it
-%   continuous with it), 'positive_turn' or 'negative_turn' with ref), NaN rows elsewhere.
+%   continuous with it), 'positive_turn', 'negative_turn' or 'master_first' with ref), NaN
+%   rows elsewhere.
 %   Rotary
 %   positions stated by letter go to the machine axis whose direction is nearest (A for X,
 %   B for Y, C for Z).

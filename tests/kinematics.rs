@@ -1590,3 +1590,42 @@ fn the_transformation_refuses_lengths_beyond_a_kilometre() {
         .tcp_forward([0.0, -LENGTH_MAX, 0.0, 0.0, 0.0, 0.0], 50.0)
         .is_ok());
 }
+
+/// `Rule::MasterFirst` by hand: the given axis' turn first, then the others', then the given
+/// axis nearest 0°, then the others (Fanuc's order for `G53.1`).
+#[test]
+fn master_first_orders_turns_then_nearness_to_zero() {
+    let m = Machine::new(Z)
+        .unwrap()
+        .with_axis(RotaryAxis::new(
+            Side::Work,
+            [1.0, 0.0, 0.0],
+            [0.0, 0.0, 100.0],
+        ))
+        .unwrap()
+        .with_axis(RotaryAxis::new(Side::Work, Z, [0.0; 3]))
+        .unwrap();
+    // Tilt 30° about X: (A 30, C 180) or (A -30, C 0).
+    let f = m.forward([30.0, 180.0, 0.0]).unwrap().rotation;
+    let near = |c: &cncrot::kinematics::Choice, a: f64, cc: f64| {
+        (c.axes[0] - a).abs() < 1e-9 && (c.axes[1] - cc).abs() < 1e-9
+    };
+    // A from 5: 25° against 35°.
+    let c = m.choose(&f, [5.0, 0.0, 0.0], Rule::MasterFirst(0)).unwrap();
+    assert!(near(&c, 30.0, 180.0) || near(&c, 30.0, -180.0), "{c:?}");
+    // C as the master, from C 10: 10° to 0 against 170° to 180.
+    let c = m
+        .choose(&f, [5.0, 10.0, 0.0], Rule::MasterFirst(1))
+        .unwrap();
+    assert!(near(&c, -30.0, 0.0), "{c:?}");
+    // From (0, 90) both turn A by 30° and C by 90°, both A lie 30° from 0: C nearest 0.
+    let c = m
+        .choose(&f, [0.0, 90.0, 0.0], Rule::MasterFirst(0))
+        .unwrap();
+    assert!(near(&c, -30.0, 0.0), "{c:?}");
+    // An axis the machine lacks.
+    assert_eq!(
+        m.choose(&f, [0.0; 3], Rule::MasterFirst(2)),
+        Err(Error::BadArgument)
+    );
+}

@@ -3609,3 +3609,74 @@ fn incremental_tilts_stay_incremental() {
     // increment with one (two forms).
     assert_eq!(looped, 63 - 4 - 2);
 }
+
+/// Fanuc's own rule for `G53.1` without `P` (its operator's manual, "output judgement
+/// conditions"): the master (first rotation) axis moves the least, then the slave; on a
+/// mixed machine the table axis first. Worked by hand (a helper's find: the closest pair by
+/// the sum of squares was taken instead).
+#[test]
+fn fanuc_turns_its_master_axis_the_least() {
+    use cncrot::kinematics::{Machine, RotaryAxis, Rule, Side};
+    let z = [0.0, 0.0, 1.0];
+    // An AC table: A about X carrying C. Tilt 30° about X: (A 30, C 180) or (A -30, C 0).
+    let ac = Machine::new(z)
+        .unwrap()
+        .with_axis(RotaryAxis::new(
+            Side::Work,
+            [1.0, 0.0, 0.0],
+            [0.0, 0.0, 100.0],
+        ))
+        .unwrap()
+        .with_axis(RotaryAxis::new(Side::Work, z, [0.0; 3]))
+        .unwrap();
+    let p = read(Dialect::Fanuc, &["G68.2 X0. Y0. Z0. I0. J30. K0.", "G53.1"]);
+    // From A 5, C 0: A moves 25° to 30 (C half a turn), 35° to -30: Fanuc takes A 30. The
+    // sum of squares would take (-30, 0).
+    let c = p.axes(&ac, [5.0, 0.0, 0.0]).unwrap();
+    assert!(
+        (c.axes[0] - 30.0).abs() < 1e-9 && (c.axes[1].abs() - 180.0).abs() < 1e-9,
+        "{c:?}"
+    );
+    assert_eq!(
+        c,
+        ac.choose(&p.frame.rotation, [5.0, 0.0, 0.0], Rule::MasterFirst(0))
+            .unwrap()
+    );
+    let closest = ac
+        .choose(&p.frame.rotation, [5.0, 0.0, 0.0], Rule::Closest)
+        .unwrap();
+    assert!((closest.axes[0] + 30.0).abs() < 1e-9 && closest.axes[1].abs() < 1e-9);
+    // `P0` is the same; `P1` the master's positive turn, as before.
+    let p0 = read(
+        Dialect::Fanuc,
+        &["G68.2 X0. Y0. Z0. I0. J30. K0.", "G53.1 P0"],
+    );
+    assert_eq!(p0.axes(&ac, [5.0, 0.0, 0.0]).unwrap(), c);
+    // A mixed machine (B head about Y, C table): the table moves least first. Tilt 30° about
+    // Y: (B 30, C 0) or (B -30, C 180); from B 20, C 95 the table moves 85° to 180.
+    let mixed = Machine::new(z)
+        .unwrap()
+        .with_axis(RotaryAxis::new(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3]))
+        .unwrap()
+        .with_axis(RotaryAxis::new(Side::Work, z, [0.0; 3]))
+        .unwrap();
+    let p = read(
+        Dialect::Fanuc,
+        &["G68.2 X0. Y0. Z0. I90. J30. K-90.", "G53.1"],
+    );
+    let c = p.axes(&mixed, [20.0, 95.0, 0.0]).unwrap();
+    assert!(
+        (c.axes[0] + 30.0).abs() < 1e-9 && (c.axes[1] - 180.0).abs() < 1e-9,
+        "{c:?}"
+    );
+    // Other dialects keep the closest: Heidenhain without SEQ.
+    let h = read(
+        Dialect::Heidenhain,
+        &["PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN FMAX"],
+    );
+    let c = h.axes(&ac, [5.0, 0.0, 0.0]).unwrap();
+    assert!(
+        (c.axes[0] + 30.0).abs() < 1e-9 && c.axes[1].abs() < 1e-9,
+        "{c:?}"
+    );
+}

@@ -1038,8 +1038,9 @@ fn rule(text: &str, n: usize) -> Result<Rule, Failure> {
         Some(("plus", k)) => Ok(Rule::Plus(axis(k)?)),
         Some(("up", k)) => Ok(Rule::PositiveTurn(axis(k)?)),
         Some(("down", k)) => Ok(Rule::NegativeTurn(axis(k)?)),
+        Some(("master", k)) => Ok(Rule::MasterFirst(axis(k)?)),
         _ => Err(Failure::new(format!(
-            "--rule: '{text}': closest, inverse, minus:K, plus:K, up:K or down:K"
+            "--rule: '{text}': closest, inverse, minus:K, plus:K, up:K, down:K or master:K"
         ))),
     }
 }

@@ -292,8 +292,9 @@ enum Command {
         current: Option<String>,
         /// Which solution: closest (continuous with the row before), or a priority axis
         /// minus:K / plus:K (its lower / higher angle), up:K / down:K (it turns only
-        /// up / only down, as G53.1 P1 / P2 ask), or inverse (the first point the other
-        /// solution, the points after it continuous with it).
+        /// up / only down, as G53.1 P1 / P2 ask), master:K (it turns the least, then the
+        /// others: Fanuc's G53.1), or inverse (the first point the other solution, the
+        /// points after it continuous with it).
         #[arg(long, default_value = "closest")]
         rule: String,
         /// FILE is a five-axis part program in this dialect, not CL points.
@@ -333,7 +334,8 @@ enum Command {
         current: Option<String>,
         /// Which solution: closest (to --current), minus:K or plus:K (the lower or higher
         /// position of axis K, 1-based), up:K or down:K (axis K turns only up or only down
-        /// from --current, the least it must), inverse (the other one).
+        /// from --current, the least it must), master:K (axis K turns the least, then the
+        /// others, then nearest 0: Fanuc's G53.1), inverse (the other one).
         #[arg(long, default_value = "closest")]
         rule: String,
         /// Every solution, not only the chosen one.

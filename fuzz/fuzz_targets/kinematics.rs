@@ -410,7 +410,7 @@ fuzz_target!(|data: &[u8]| {
     let cur = [f64_at(t, 3), f64_at(t, 4), f64_at(t, 5)];
     let mut current = [0.0; 3];
     current[..n].copy_from_slice(&cur[..n]);
-    let rule = (f64_at(t, 6).abs() as i32) % 7;
+    let rule = (f64_at(t, 6).abs() as i32) % 8;
     let refax = (f64_at(t, 7).abs() as i32) % 4;
     let (mut out, mut res, mut rem) = ([5.0; 3], [5.0; 3], [5.0; 16]);
     let s = unsafe {

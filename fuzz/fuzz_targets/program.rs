@@ -435,11 +435,15 @@ fn axes_of(p: &cncrot_program, line: &[u8]) {
     let f = frame(p);
     let (mut res, mut rem) = ([0.0; 3], [0.0; 16]);
     // The state's own choice words; their default axis on this head is its master axis,
-    // B (axis 2, the one nearest the tool).
-    let reference = match (p.choice, p.reference_axis) {
-        (CNCROT_CHOOSE_CLOSEST, _) => 0,
-        (_, 0) => 2,
-        (_, k) => k,
+    // B (axis 2, the one nearest the tool). Without words a Fanuc tilt takes Fanuc's rule,
+    // on the head's first rotation axis (C, axis 1).
+    let (rule, reference) = match (p.choice, p.reference_axis) {
+        (CNCROT_CHOOSE_CLOSEST, _) if p.dialect == CNCROT_DIALECT_FANUC => {
+            (CNCROT_CHOOSE_MASTER_FIRST, 1)
+        }
+        (CNCROT_CHOOSE_CLOSEST, _) => (CNCROT_CHOOSE_CLOSEST, 0),
+        (c, 0) => (c, 2),
+        (c, k) => (c, k),
     };
     // SAFETY: valid pointers.
     let s2 = unsafe {
@@ -447,7 +451,7 @@ fn axes_of(p: &cncrot_program, line: &[u8]) {
             &m,
             f.as_ptr(),
             current.as_ptr(),
-            p.choice,
+            rule,
             reference,
             want.as_mut_ptr(),
             res.as_mut_ptr(),

@@ -468,6 +468,7 @@ static const named_code RULES[] = {
     {"inverse", CNCROT_CHOOSE_INVERSE},
     {"positive_turn", CNCROT_CHOOSE_POSITIVE_TURN},
     {"negative_turn", CNCROT_CHOOSE_NEGATIVE_TURN},
+    {"master_first", CNCROT_CHOOSE_MASTER_FIRST},
 };
 static const named_code FORMS[] = {
     {"cycle800", CNCROT_FORM_CYCLE800},
@@ -496,8 +497,9 @@ static const char *choices(const named_code *t, size_t n, const char *what) {
   return buf;
 }
 
-/* A name of a table (case-insensitive; for forms ' ', '.' and '-' count as '_', so that
- * 'G68.2' and 'PLANE SPATIAL' are g68_2 and plane_spatial) or a code of any numeric class.
+/* A name of a table (case-insensitive; for forms and rules ' ', '.' and '-' count as '_', so
+ * that 'G68.2' and 'PLANE SPATIAL' are g68_2 and plane_spatial, 'positive turn' positive_turn)
+ * or a code of any numeric class.
  * `known` says whether the library takes a code (NULL: the table's codes). */
 static int32_t named_arg(const mxArray *a, int pos, const char *name, const named_code *t, size_t count, const char *what,
                          const char *id, int loose, int (*known)(int32_t)) {
@@ -545,7 +547,7 @@ static int32_t dialect_arg(const mxArray *a, int pos, const char *name) {
 }
 
 static int32_t rule_arg(const mxArray *a, int pos, const char *name) {
-  return named_arg(a, pos, name, RULES, COUNT_OF(RULES), "a rule", "cncrot:badArgument", 0, NULL);
+  return named_arg(a, pos, name, RULES, COUNT_OF(RULES), "a rule", "cncrot:badArgument", 1, NULL);
 }
 
 /* The reference axis argument (at `pos`) against its rule: an axis of the machine (1..count)
@@ -554,7 +556,7 @@ static int32_t rule_arg(const mxArray *a, int pos, const char *name) {
 static void rule_ref_check(int32_t rule, int32_t ref, int count, int pos) {
   int sided = rule != CNCROT_CHOOSE_CLOSEST && rule != CNCROT_CHOOSE_INVERSE;
   if (sided && (ref < 1 || ref > count))
-    fail("cncrot:badArgument", "%s must be an axis of the machine, 1..%d, for rule 'minus', 'plus', 'positive_turn' or 'negative_turn'; got %d",
+    fail("cncrot:badArgument", "%s must be an axis of the machine, 1..%d, for rule 'minus', 'plus', 'positive_turn', 'negative_turn' or 'master_first'; got %d",
          label(pos, "ref"), count, (int)ref);
   if (!sided && ref != 0)
     fail("cncrot:badArgument", "%s must be 0 (or left out) for rule 'closest' or 'inverse'; got %d", label(pos, "ref"), (int)ref);

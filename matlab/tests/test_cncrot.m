@@ -256,6 +256,14 @@ function test_cncrot(cases_file)
                  'cncrot_machine_tcp_inverse', 'argument 4 (previous)', 'element 4');
   expect_message('cncrot:notFinite', @() cncrot_machine_tcp_forward(acm, [0 0 0 30 90 0], Inf), 'tcp forward: L Inf', ...
                  'cncrot_machine_tcp_forward', 'argument 3 (L)');
+  % Fanuc's rule for G53.1 (master first), by name with a blank, and as cncrot_program_axes
+  % takes it for a Fanuc tilt without P: from A 5, C 0 the master A turns 25 degrees to 30.
+  [~, stf] = cncrot_program_lines('fanuc', {'G68.2 X0. Y0. Z0. I0. J30. K0.', 'G53.1'});
+  Ff = cncrot_program_lines('fanuc', 'G68.2 X0. Y0. Z0. I0. J30. K0.');
+  am = cncrot_machine_choose(acm, Ff, [5 0 0], 'master first', 1);
+  check(abs(am(1) - 30) < 1e-9 && abs(abs(am(2)) - 180) < 1e-9, 'master_first by hand');
+  check(isequal(cncrot_program_axes(stf, acm, [5 0 0]), am), 'program_axes: Fanuc without P is master first');
+  check(isequal(cncrot_machine_choose(acm, Ff, [5 0 0], 6, 1), am), 'master_first by code');
   % 'inverse' along a path: the other solution at the first row, the rows after it on its branch.
   cl3 = repmat([10 0 0 0.5 0 sqrt(3)/2], 3, 1);
   Ainv = cncrot_machine_tcp_inverse(acm, cl3, 50, [0 0 0 20 80 0], 'inverse');
@@ -456,7 +464,7 @@ function test_cncrot(cases_file)
   expect_message('cncrot:badState', @() cncrot_program_lines('fanuc', 'G69', struct('active', 2)), 'bad state', 'cncrot_program_lines', 'argument 3 (state)');
   expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 'sideways'), 'unknown rule', 'cncrot_machine_choose', ...
                  'argument 4 (rule) must be a rule', '''minus''', 'got ''sideways''');
-  expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 6), 'rule 6', 'cncrot_machine_choose', 'argument 4 (rule)', 'got 6');
+  expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 7), 'rule 7', 'cncrot_machine_choose', 'argument 4 (rule)', 'got 7');
   expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 'minus'), 'minus without an axis', 'cncrot_machine_choose', 'argument 5 (ref)', 'got 0');
   expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 'plus', 3), 'plus on a missing axis', 'cncrot_machine_choose', 'argument 5 (ref)', 'got 3');
   expect_message('cncrot:badArgument', @() cncrot_machine_choose(head, F, [0 0 0], 'closest', 1), 'closest with an axis', 'cncrot_machine_choose', 'argument 5 (ref)', 'got 1');

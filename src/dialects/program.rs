@@ -176,10 +176,12 @@ impl Program {
     /// lower angle of the master axis ([`Rule::Minus`]: in (−180°, 180°], whatever
     /// `current`), `SEQ+`, `_DIR = +1` the higher
     /// \[doc\], the master axis being a head's axis nearest the tool, else the axis nearest
-    /// the machine base \[choice\]; without words the solution closest to the current
-    /// positions ([`Rule::Closest`]) — what SINUMERIK does for a frame \[doc\], Heidenhain
-    /// without `SEQ` (the shortest way) \[doc\], and the library's default for the others
-    /// (`G53.1`, `G253`) \[choice\]. Whole turns are unwound toward `current`, the travel
+    /// the machine base \[choice\]; without words Fanuc's own rule for `G53.1`
+    /// ([`Rule::MasterFirst`]: its first rotation axis, a mixed machine's table axis, moving
+    /// the least) \[doc\], else the solution closest to the current positions
+    /// ([`Rule::Closest`]) — what SINUMERIK does for a frame \[doc\], Heidenhain without
+    /// `SEQ` (the shortest way) \[doc\], and the library's default for the others (Syntec's
+    /// `G53.1`, Haas's `G253`) \[choice\]. Whole turns are unwound toward `current`, the travel
     /// limits and Hirth grids respected. No tilt active: the positions of the identity
     /// frame. A choice naming an axis the machine lacks: [`Error::BadArgument`].
     ///
@@ -208,6 +210,12 @@ impl Program {
             }
         };
         let rule = match self.choice {
+            // Fanuc's own rule where the block names none (`G53.1`, `G53.1 P0`).
+            AxisChoice::Closest
+                if self.dialect == Some(Dialect::Fanuc) && !machine.axes().is_empty() =>
+            {
+                Rule::MasterFirst(fanuc_master(machine))
+            }
             AxisChoice::Closest => Rule::Closest,
             _ if machine.axes().is_empty() => Rule::Closest,
             AxisChoice::Minus(k) => Rule::Minus(axis(k)?),
@@ -492,6 +500,22 @@ fn table_turned(
         }
     }
     Ok(c)
+}
+
+/// The axis Fanuc's `G53.1` moves the least first ([`Rule::MasterFirst`]): on a machine
+/// whose axes all turn the tool or all the workpiece the first rotation axis (the master,
+/// which carries the other: the first added), on a mixed machine the table's (the first
+/// that turns the workpiece) \[doc: Fanuc's output judgement conditions\].
+fn fanuc_master(machine: &Machine) -> usize {
+    use crate::kinematics::Side;
+    let axes = machine.axes();
+    let mixed =
+        axes.iter().any(|a| a.side == Side::Tool) && axes.iter().any(|a| a.side == Side::Work);
+    if mixed {
+        axes.iter().position(|a| a.side == Side::Work).unwrap_or(0)
+    } else {
+        0
+    }
 }
 
 /// The axis a block's choice words refer to when they name none (Heidenhain's master axis,

@@ -37,6 +37,12 @@ pub const CNCROT_CHOOSE_POSITIVE_TURN: i32 = 4;
 /// `cncrot_machine_choose`: the reference axis turns in its negative direction only
 /// (`G53.1 P2`), as `CNCROT_CHOOSE_POSITIVE_TURN`.
 pub const CNCROT_CHOOSE_NEGATIVE_TURN: i32 = 5;
+/// `cncrot_machine_choose`: the solution whose reference axis (the master) turns the least,
+/// then the other axes in their order, then the reference axis nearest 0° (a multiple of
+/// 360°), then the others: Fanuc's rule for `G53.1` ("output judgement conditions"; the
+/// first rotation axis as the master, on a mixed machine the table's axis), which
+/// `cncrot_program_axes` applies to a Fanuc tilt without choice words.
+pub const CNCROT_CHOOSE_MASTER_FIRST: i32 = 6;
 /// A computed position at most this far (degrees) beyond an end of its axis' travel is
 /// taken exactly at that end \[choice\]: the inverse computes a position at an end a few
 /// ulp off; moving by this much turns the tool by 1.7e-11 rad, within the 1e-10 rad to
@@ -725,7 +731,9 @@ pub unsafe extern "C" fn cncrot_machine_inverse(
 /// other solution of the pair: CYCLE600 `_ROT_INV`), `CNCROT_CHOOSE_POSITIVE_TURN` /
 /// `_NEGATIVE_TURN` (axis `reference_axis` turns only up / only down from its current
 /// position, the least it must: `G53.1 P1` / `P2`; `CNCROT_STATUS_OUT_OF_TRAVEL` when the
-/// travel ends before either solution). `CNCROT_CHOOSE_INVERSE` returns the
+/// travel ends before either solution), `CNCROT_CHOOSE_MASTER_FIRST` (axis `reference_axis`
+/// turning the least, then the others, then nearest 0°: Fanuc's `G53.1`).
+/// `CNCROT_CHOOSE_INVERSE` returns the
 /// closest solution, with status 0, when the other one lies outside the travel or the
 /// orientation has only one (a free axis, the edge of a nutating head's cone): compare
 /// `axes_deg` with the current positions to tell. A free axis (singular pose) stays at its
@@ -796,6 +804,7 @@ pub(super) fn rule_of(rule: i32, reference_axis: i32) -> Result<Rule, cncrot_sta
         (CNCROT_CHOOSE_PLUS, Some(k)) => Ok(Rule::Plus(k)),
         (CNCROT_CHOOSE_POSITIVE_TURN, Some(k)) => Ok(Rule::PositiveTurn(k)),
         (CNCROT_CHOOSE_NEGATIVE_TURN, Some(k)) => Ok(Rule::NegativeTurn(k)),
+        (CNCROT_CHOOSE_MASTER_FIRST, Some(k)) => Ok(Rule::MasterFirst(k)),
         _ => Err(cncrot_status::BadArgument),
     }
 }
@@ -1016,7 +1025,9 @@ pub unsafe extern "C" fn cncrot_machine_tcp_inverse(
 /// CYCLE800's `_DIR` ask; the other one when that lies outside the travel),
 /// `CNCROT_CHOOSE_POSITIVE_TURN` / `_NEGATIVE_TURN` (a priority axis and its direction of
 /// travel: it turns only up / only down, the least it must, as `G53.1 P1` / `P2` ask),
-/// `CNCROT_CHOOSE_INVERSE` (`reference_axis` 0; the other solution of the pair). Whole turns
+/// `CNCROT_CHOOSE_MASTER_FIRST` (a priority axis turning the least, then the others, as
+/// Fanuc's `G53.1` chooses), `CNCROT_CHOOSE_INVERSE` (`reference_axis` 0; the other solution
+/// of the pair). Whole turns
 /// are unwound toward `previous` in every case (the turning axis: the first turn met its
 /// way).
 ///

@@ -665,9 +665,10 @@ pub unsafe extern "C" fn cncrot_program_expected(
 /// rule of the tilt's own choice words, kept in `program->choice` — `SEQ-` / `_DIR = -1`
 /// `CNCROT_CHOOSE_MINUS`, `SEQ+` / `_DIR = +1` `CNCROT_CHOOSE_PLUS`, on the master axis (a
 /// head's axis nearest the tool, else the axis nearest the machine base) — and without
-/// them `CNCROT_CHOOSE_CLOSEST`, the choice SINUMERIK makes for a frame and Heidenhain
-/// without `SEQ`: whole turns unwound toward `current`, within the travel limits and on the
-/// Hirth grids. No tilt active: the positions of the identity frame. A direct mode
+/// them for a Fanuc tilt (`G53.1`, `G53.1 P0`) Fanuc's own rule, `CNCROT_CHOOSE_MASTER_FIRST`
+/// on its first rotation axis (a mixed machine's table axis), else `CNCROT_CHOOSE_CLOSEST`,
+/// the choice SINUMERIK makes for a frame and Heidenhain without `SEQ`: whole turns unwound
+/// toward `current`, within the travel limits and on the Hirth grids. No tilt active: the positions of the identity frame. A direct mode
 /// (`active` 2 or 3): the positions it states, mapped onto the machine's axes (by place, or
 /// by letter: each axis takes the position of the letter its direction is nearest, A for X,
 /// B for Y, C for Z), as stated on an axis with travel limits, the turn nearest `current`

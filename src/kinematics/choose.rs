@@ -33,6 +33,14 @@ pub enum Rule {
     /// The given axis turns in its negative direction only (`G53.1 P2`), as
     /// [`Rule::PositiveTurn`].
     NegativeTurn(usize),
+    /// The solution whose given axis (the master) turns the least from its current
+    /// position; of equal turns (within [`super::TRAVEL_TOLERANCE`]) the one whose other
+    /// axes, in their order, turn the least; then the one whose given axis, then each other,
+    /// lies nearest 0° (a multiple of 360°): Fanuc's "output judgement conditions" for
+    /// `G53.1` \[doc: Fanuc Series 16i/18i-MB operator's manual, tool axis direction
+    /// control: the master (first rotation) axis for tool and table rotation machines, the
+    /// table (second rotation) axis for mixed ones\].
+    MasterFirst(usize),
 }
 
 /// The positions [`Machine::choose`] chose.
@@ -316,7 +324,7 @@ impl Machine {
         let n = self.axis_count();
         let turning = match rule {
             Rule::Minus(k) | Rule::Plus(k) if k >= n => return Err(Error::BadArgument),
-            Rule::PositiveTurn(k) | Rule::NegativeTurn(k) if k >= n => {
+            Rule::PositiveTurn(k) | Rule::NegativeTurn(k) | Rule::MasterFirst(k) if k >= n => {
                 return Err(Error::BadArgument)
             }
             Rule::PositiveTurn(k) => Some((k, 1.0)),
@@ -395,8 +403,45 @@ impl Machine {
             }
             best
         };
+        // The least turn of axis `k`, then of the others in order, then `k` nearest 0°, then
+        // the others: each compared to the travel tolerance, the first that differs decides.
+        let master_first = |k: usize| {
+            let key = |q: &([f64; MAX_AXES], [f64; MAX_AXES], f64)| {
+                let mut key = [0.0; 2 * MAX_AXES];
+                let order = core::iter::once(k).chain((0..n).filter(|&j| j != k));
+                for (slot, j) in order.enumerate() {
+                    let (x, c) = (q.0.get(j).copied(), current.get(j).copied());
+                    let x = x.unwrap_or(0.0);
+                    if let Some(t) = key.get_mut(slot) {
+                        *t = abs(x - c.unwrap_or(0.0));
+                    }
+                    if let Some(z) = key.get_mut(MAX_AXES + slot) {
+                        *z = abs(wrap_deg(x));
+                    }
+                }
+                key
+            };
+            let mut best: Option<usize> = None;
+            for (i, p) in placed.iter().enumerate() {
+                let better = match best.and_then(|b| placed.get(b)) {
+                    None => true,
+                    Some(q) => {
+                        let (a, b) = (key(p), key(q));
+                        a.iter()
+                            .zip(&b)
+                            .find(|(x, y)| abs(*x - *y) > TRAVEL_TOLERANCE)
+                            .is_some_and(|(x, y)| x < y)
+                    }
+                };
+                if better {
+                    best = Some(i);
+                }
+            }
+            best
+        };
         let pick = match rule {
             Rule::Closest => closest(None),
+            Rule::MasterFirst(k) => master_first(k),
             Rule::Minus(k) => by_axis(k, false),
             Rule::Plus(k) => by_axis(k, true),
             Rule::Inverse => closest(closest(None)).or(closest(None)),
