@@ -2765,10 +2765,14 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
                 } else {
                     ""
                 };
+                let mut json = Json::Obj(vec![("point", Json::Bool(false))]);
+                if remark == PathRemark::NotFollowed {
+                    json = json.with("remark", Json::str("not followed".to_string()));
+                }
                 return Ok(Report {
                     full: note.to_string(),
                     brief: note.to_string(),
-                    json: Json::Obj(vec![("point", Json::Bool(false))]),
+                    json,
                 });
             }
             let t = match state.machine_axes(&machine, a.tool_length, previous, rule) {

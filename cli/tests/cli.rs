@@ -1140,6 +1140,21 @@ fn path_rules_marks_headers_and_refused_blocks() {
     assert_eq!(lines[4], lines[2], "{}", r.stdout);
 }
 
+/// `path --dialect … --json`: a block not followed says so, as the text does.
+#[test]
+fn path_json_says_not_followed() {
+    let mut args = vec!["path", "-", "--dialect", "fanuc", "--json"];
+    args.extend(AC);
+    let r = cncrot(&args, "G43.4 H1\nG2 X10. Y0. R5.\nG04 X1.5\n");
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert!(
+        lines[1].contains("\"remark\":\"not followed\""),
+        "{}",
+        r.stdout
+    );
+    assert!(!lines[2].contains("remark"), "{}", r.stdout);
+}
+
 /// `path --json`: one object per input line, numbers at full precision.
 #[test]
 fn path_json() {

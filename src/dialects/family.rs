@@ -647,6 +647,11 @@ pub(crate) struct PathWords {
     /// One-letter addresses whose words may run together (`G1X10.`); otherwise names,
     /// `=` optional after one letter and required after a name ending in digits (`A3=`).
     pub(crate) iso: bool,
+    /// Words stand apart (Heidenhain: a letter right after a number is no new word, and
+    /// makes the number unreadable); a `,` may stand for the decimal point.
+    pub(crate) spaced: bool,
+    /// SINUMERIK's exponent `EX` (`1.5EX3`).
+    pub(crate) ex: bool,
     /// Switch the transformation on.
     pub(crate) on: &'static [PathCommand],
     /// Switch it off.
@@ -675,14 +680,25 @@ pub(crate) struct PathWords {
     /// empty: every block with motion words.
     pub(crate) moves: &'static [&'static [u8]],
     /// Moves the reader does not follow: arcs, moves in machine coordinates, reference
-    /// returns.
+    /// returns, canned cycles; and commands whose words change the frame the coordinates
+    /// are read in (a datum shift, a rotation, a mirror, a scale): with or without
+    /// coordinates, the block is not followed.
     pub(crate) arcs: &'static [PathCommand],
+    /// Commands whose words are no coordinates and move nothing (a dwell `G4 X1.5`): the
+    /// block is passed over.
+    pub(crate) still: &'static [PathCommand],
+    /// Commands that switch the transformation off at the end of their block (Heidenhain
+    /// `M129`): a motion block with one is still a point.
+    pub(crate) off_after: &'static [PathCommand],
 }
 
 /// The ISO dialects' five-axis programs, switched on by `on`, off by `G49`.
 pub(crate) const fn iso_path(on: &'static [PathCommand], vector: [&'static [u8]; 3]) -> PathWords {
+    use PathCommand::Code;
     PathWords {
         iso: true,
+        spaced: false,
+        ex: false,
         on,
         off: &[PathCommand::Code(b'G', 490)],
         vector,
@@ -696,12 +712,45 @@ pub(crate) const fn iso_path(on: &'static [PathCommand], vector: [&'static [u8];
         i_prefix: false,
         moves: &[],
         arcs: &[
-            PathCommand::Code(b'G', 20),
-            PathCommand::Code(b'G', 30),
-            PathCommand::Code(b'G', 280),
-            PathCommand::Code(b'G', 300),
-            PathCommand::Code(b'G', 530),
+            // Arcs, reference and machine-coordinate moves.
+            Code(b'G', 20),
+            Code(b'G', 30),
+            Code(b'G', 270),
+            Code(b'G', 280),
+            Code(b'G', 290),
+            Code(b'G', 300),
+            Code(b'G', 530),
+            // Offsets, coordinate settings and conversions, macro calls with arguments.
+            Code(b'G', 100),
+            Code(b'G', 500),
+            Code(b'G', 501),
+            Code(b'G', 510),
+            Code(b'G', 511),
+            Code(b'G', 520),
+            Code(b'G', 650),
+            Code(b'G', 660),
+            Code(b'G', 680),
+            Code(b'G', 682),
+            Code(b'G', 683),
+            Code(b'G', 684),
+            Code(b'G', 920),
+            // Canned cycles (their X Y the holes, their Z R depths and planes).
+            Code(b'G', 730),
+            Code(b'G', 740),
+            Code(b'G', 760),
+            Code(b'G', 810),
+            Code(b'G', 820),
+            Code(b'G', 830),
+            Code(b'G', 840),
+            Code(b'G', 850),
+            Code(b'G', 860),
+            Code(b'G', 870),
+            Code(b'G', 880),
+            Code(b'G', 890),
         ],
+        // A dwell: `G04 X1.5` waits 1.5 s.
+        still: &[Code(b'G', 40)],
+        off_after: &[],
     }
 }
 

@@ -741,8 +741,10 @@ pub(crate) const HEIDENHAIN_PATH: super::family::PathWords = {
     use super::family::PathCommand::{Code, Name, Phrase};
     super::family::PathWords {
         iso: false,
+        spaced: true,
+        ex: false,
         on: &[Code(b'M', 1280), Phrase(&[b"FUNCTION", b"TCPM"])],
-        off: &[Code(b'M', 1290), Phrase(&[b"FUNCTION", b"RESET", b"TCPM"])],
+        off: &[Phrase(&[b"FUNCTION", b"RESET", b"TCPM"])],
         vector: [b"TX", b"TY", b"TZ"],
         angles: None,
         rpy: &[],
@@ -760,7 +762,28 @@ pub(crate) const HEIDENHAIN_PATH: super::family::PathWords = {
             Name(b"CP"),
             Code(b'M', 910),
             Code(b'M', 920),
+            // Polar, approach and departure, rounding, chamfer and FK contours: moves whose
+            // end point the reader does not compute.
+            Name(b"LP"),
+            Name(b"APPR"),
+            Name(b"DEP"),
+            Name(b"RND"),
+            Name(b"CHF"),
+            Name(b"FL"),
+            Name(b"FLT"),
+            Name(b"FC"),
+            Name(b"FCT"),
+            Name(b"FPOL"),
+            Phrase(&[b"CYCL", b"CALL"]),
+            // What moves the coordinates the points are read in.
+            Phrase(&[b"CYCL", b"DEF", b"DATUM"]),
+            Phrase(&[b"TRANS", b"DATUM"]),
+            Name(b"PLANE"),
         ],
+        still: &[],
+        // "M128 becomes effective at the start of block, M129 at the end of block" (TNC
+        // 426/430 user's manual).
+        off_after: &[Code(b'M', 1290)],
     }
 };
 

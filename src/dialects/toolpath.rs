@@ -100,6 +100,10 @@ struct Words<'a> {
     text: &'a [u8],
     pos: usize,
     iso: bool,
+    /// Heidenhain: words stand apart, and a `,` may stand for the point.
+    spaced: bool,
+    /// SINUMERIK's exponent `EX`.
+    ex: bool,
 }
 
 impl<'a> Words<'a> {
@@ -168,8 +172,34 @@ impl<'a> Iterator for Words<'a> {
             if matches!(self.at(k), b'+' | b'-') {
                 k += 1;
             }
-            while self.at(k).is_ascii_digit() || self.at(k) == b'.' {
-                k += 1;
+            let mut point = false;
+            loop {
+                let c = self.at(k);
+                if c.is_ascii_digit() {
+                    k += 1;
+                } else if !point && (c == b'.' || (self.spaced && c == b',')) {
+                    point = true;
+                    k += 1;
+                } else {
+                    break;
+                }
+            }
+            // SINUMERIK's exponent: `1.5EX3`, `-.1EX-3`.
+            if self.ex
+                && self.at(k).eq_ignore_ascii_case(&b'E')
+                && self.at(k + 1).eq_ignore_ascii_case(&b'X')
+            {
+                let mut e = k + 2;
+                if matches!(self.at(e), b'+' | b'-') {
+                    e += 1;
+                }
+                let digits = e;
+                while self.at(e).is_ascii_digit() {
+                    e += 1;
+                }
+                if e > digits {
+                    k = e;
+                }
             }
             // A value that is not a plain number (`IC(5)`, `R1`, `Q3`) stays empty here
             // and reads as not followed where a number belongs.
@@ -178,11 +208,18 @@ impl<'a> Iterator for Words<'a> {
                 .get(from..k)
                 .is_some_and(|v| v.iter().any(u8::is_ascii_digit));
             // A function's argument must be the whole of it: `IC(5)`, not `IC(5+R1)`; and a
-            // number must not go on as an expression (`X=10*R2`, `X10-R1`).
+            // number must not go on as an expression (`X=10*R2`, `X10-R1`), nor as what this
+            // reader does not read (a second point `1,5.2`, `1_000`, an exponent `1e7`, a
+            // letter glued to it where words stand apart): never the digits before it.
+            let c = self.at(k);
+            let goes_on = matches!(c, b'.' | b',' | b'_')
+                || c.is_ascii_digit()
+                || (c.is_ascii_alphabetic()
+                    && (self.spaced || (!self.iso && c.eq_ignore_ascii_case(&b'E'))));
             let closed = if close {
-                self.at(k) == b')'
+                c == b')'
             } else {
-                !matches!(self.at(k), b'*' | b'/' | b'+' | b'-')
+                !matches!(c, b'*' | b'/' | b'+' | b'-') && !goes_on
             };
             let value = if has_digits && closed {
                 self.pos = if close { k + 1 } else { k };
@@ -208,7 +245,26 @@ fn number(w: &Word) -> Option<f64> {
         [b'+', rest @ ..] => (false, rest),
         v => (false, v),
     };
-    crate::text::number::parse(negative, digits, 0).ok()
+    // SINUMERIK's `EX` (the tokenizer takes it only there, with its digits).
+    let (digits, exp10) = match digits.iter().position(|b| b.eq_ignore_ascii_case(&b'E')) {
+        Some(at) => {
+            let e = digits.get(at + 2..)?;
+            let (neg, e) = match e {
+                [b'-', rest @ ..] => (true, rest),
+                [b'+', rest @ ..] => (false, rest),
+                e => (false, e),
+            };
+            let mut v: i32 = 0;
+            for &d in e {
+                v = v
+                    .checked_mul(10)?
+                    .checked_add(i32::from(d.wrapping_sub(b'0')))?;
+            }
+            (digits.get(..at)?, if neg { -v } else { v })
+        }
+        None => (digits, 0),
+    };
+    crate::text::number::parse(negative, digits, exp10).ok()
 }
 
 fn same(a: &[u8], b: &[u8]) -> bool {
@@ -256,6 +312,8 @@ impl ToolPath {
             text,
             pos: 0,
             iso: pw.iso,
+            spaced: pw.spaced,
+            ex: pw.ex,
         };
         // A leading block number `N10` (Heidenhain's bare digits are no word).
         let mut peek = words.clone();
@@ -348,11 +406,15 @@ impl ToolPath {
         // The last of each kind counts (`G91 … G90`).
         // In the same pass: whether the block is an arc or another move not followed.
         let mut arc = false;
+        let (mut still, mut off_after) = (false, false);
         let mut it = words.clone();
         while let Some(w) = it.next() {
             let hit = |list: &[PathCommand]| list.iter().any(|c| is_command(&w, &it, c));
             arc |= hit(pw.arcs);
-            if hit(pw.on) {
+            still |= hit(pw.still);
+            if hit(pw.off_after) {
+                off_after = true;
+            } else if hit(pw.on) {
                 (next.on, next.spatial) = (true, false);
             } else if hit(pw.off) {
                 (next.on, next.spatial) = (false, false);
@@ -421,21 +483,34 @@ impl ToolPath {
                 if first_column == 0 {
                     first_column = w.column;
                 }
+                // A word twice (`X1 X2`) is the control's alarm, not a value to pick.
                 match number(&w) {
-                    Some(v) if v.is_finite() => *slot = Some((v, w.column)),
+                    Some(v) if v.is_finite() && slot.is_none() => *slot = Some((v, w.column)),
                     _ => unreadable = true,
                 }
             }
         }
-        let unchanged = if changed {
-            (next, PathRemark::Applied)
+        // Switched off at the end of the block: a move on it is still a point.
+        let off = |mut p: ToolPath| {
+            if off_after {
+                (p.on, p.spatial) = (false, false);
+            }
+            p
+        };
+        let unchanged = if changed || (off_after && self.on) {
+            (off(next), PathRemark::Applied)
         } else {
             (*self, PathRemark::Passed)
         };
-        if first_column == 0 {
+        if arc {
+            // Nothing of the block is taken: its end point, or the frame after it, is not
+            // known here (with or without coordinates: `LP PR+10 PA+30`, `TRANS`).
+            return Ok((*self, PathRemark::NotFollowed));
+        }
+        if first_column == 0 || still {
             return Ok(unchanged);
         }
-        if arc || (unreadable && moves) {
+        if unreadable && moves {
             // Nothing of the block is taken: its end point is not known here.
             return Ok((*self, PathRemark::NotFollowed));
         }
@@ -504,7 +579,7 @@ impl ToolPath {
         } else {
             PathRemark::Applied
         };
-        Ok((next, remark))
+        Ok((off(next), remark))
     }
 }
 
@@ -661,7 +736,8 @@ mod tests {
                 NotFollowed,
                 Applied,
                 Point,
-                Applied,
+                // M129 at the end of its block: the move is still a point.
+                Point,
                 NotFollowed
             ]
         );
@@ -701,6 +777,78 @@ mod tests {
         assert!(!out[4].0.spatial);
         assert_eq!(out[5].0.orientation, Orientation::Axes([90.0, 30.0, 0.0]));
         assert!(out[6].0.spatial && !out[7].0.spatial && !out[8].0.spatial);
+    }
+
+    /// Numbers as each dialect writes them, and what is none (a helper's finds: the digits
+    /// before an unread suffix were taken): SINUMERIK's `EX`, Heidenhain's decimal comma;
+    /// `1e7`, `1_000`, `1,5.2`, a letter glued to a Heidenhain number, a word twice: not
+    /// followed. Commands whose words are no points (frame commands, a dwell, machine
+    /// coordinates, polar and approach moves) neither.
+    #[test]
+    fn numbers_and_commands_that_are_no_points() {
+        let x = |d: Dialect, on: &str, block: &str| {
+            let (p, _) = ToolPath::default().line(d, on.as_bytes()).unwrap();
+            let (q, r) = p.line(d, block.as_bytes()).unwrap();
+            (q.tip[0], r)
+        };
+        let s = Dialect::Sinumerik;
+        assert_eq!(
+            x(s, "TRAORI", "G1 X=1EX2 Y0 Z0"),
+            (100.0, PathRemark::Point)
+        );
+        assert_eq!(x(s, "TRAORI", "G1 X=-.1EX-3"), (-1e-4, PathRemark::Point));
+        for bad in ["G1 X=1e7", "G1 X1_000", "G1 X1 X2", "G1 X=1.5.2"] {
+            assert_eq!(x(s, "TRAORI", bad), (0.0, PathRemark::NotFollowed), "{bad}");
+        }
+        for frame in [
+            "TRANS X100",
+            "ROT Z90",
+            "AROT X30",
+            "ATRANS Y5",
+            "MIRROR X0",
+            "SCALE X2",
+            "G1 G53 X5",
+            "G0 G153 X8",
+            "SUPA X7",
+        ] {
+            assert_eq!(
+                x(s, "TRAORI", frame),
+                (0.0, PathRemark::NotFollowed),
+                "{frame}"
+            );
+        }
+        let h = Dialect::Heidenhain;
+        assert_eq!(x(h, "M128", "L X+25,5 Y+0 Z+0"), (25.5, PathRemark::Point));
+        for bad in [
+            "L X+1,5.2",
+            "L X+1E3",
+            "L X+1Y+2",
+            "LP PR+10 PA+30",
+            "APPR LT X+1 Y+1 LEN5 RL",
+            "DEP LT LEN5",
+            "TRANS DATUM AXIS X+10",
+            "PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY",
+        ] {
+            assert_eq!(x(h, "M128", bad), (0.0, PathRemark::NotFollowed), "{bad}");
+        }
+        let f = Dialect::Fanuc;
+        assert_eq!(x(f, "G43.4 H1", "G1X10.Y0.Z0."), (10.0, PathRemark::Point));
+        assert_eq!(x(f, "G43.4 H1", "G04 X1.5"), (0.0, PathRemark::Passed));
+        for other in [
+            "G10 L2 P1 X100.",
+            "G92 X5.",
+            "G65 P9000 X7.",
+            "G68 X1. Y1. R30.",
+            "G51.1 X0.",
+            "G81 X10. Y0. Z-5. R1.",
+            "G52 X10.",
+        ] {
+            assert_eq!(
+                x(f, "G43.4 H1", other),
+                (0.0, PathRemark::NotFollowed),
+                "{other}"
+            );
+        }
     }
 
     #[test]

@@ -930,6 +930,8 @@ pub(crate) const SINUMERIK_PATH: super::family::PathWords = {
     use super::family::PathCommand::{Code, Name};
     super::family::PathWords {
         iso: false,
+        spaced: false,
+        ex: true,
         on: &[Name(b"TRAORI")],
         off: &[Name(b"TRAFOOF")],
         vector: [b"A3", b"B3", b"C3"],
@@ -948,7 +950,27 @@ pub(crate) const SINUMERIK_PATH: super::family::PathWords = {
             Name(b"CIP"),
             Name(b"CT"),
             Code(b'G', 740),
+            Code(b'G', 750),
+            // Moves in machine coordinates (the frames suppressed for the block).
+            Code(b'G', 530),
+            Code(b'G', 1530),
+            Name(b"SUPA"),
+            // Frame commands: the coordinates after them are read in another frame.
+            Name(b"TRANS"),
+            Name(b"ATRANS"),
+            Name(b"ROT"),
+            Name(b"AROT"),
+            Name(b"ROTS"),
+            Name(b"AROTS"),
+            Name(b"CROTS"),
+            Name(b"SCALE"),
+            Name(b"ASCALE"),
+            Name(b"MIRROR"),
+            Name(b"AMIRROR"),
         ],
+        // A dwell (`G4 F2`).
+        still: &[Code(b'G', 40)],
+        off_after: &[],
     }
 };
 
