@@ -2296,9 +2296,16 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             .filter(|d| *d != 0.0);
                         let dist_lost = dist.is_some() && written && turns;
                         if let (Some(d), true) = (dist, dist_lost) {
+                            // What is written instead: the tip kept (`G53.6`), or where the
+                            // target has no such turn either, the turn about the pivot.
+                            let then = if tip_lost || turn_lost {
+                                "not written: the target's turn keeps no point of the tool in place"
+                            } else {
+                                "written as the turn that keeps the tool tip itself in place"
+                            };
                             say(
                                 &format!("the turn about a point {d} mm from the tool tip (DIST)"),
-                                "written as the turn that keeps the tool tip itself in place",
+                                then,
                             );
                         }
                         // A retraction along the machine's Z (`_FR` 1, 2) the target writes as

@@ -2038,6 +2038,16 @@ fn program_to_names_a_pivot_distance_left_out() {
     );
     let r = translate(&prog.replace("ABST50", "DIST+0"), "heidenhain", "fanuc");
     assert_eq!(r.code, 0, "{}", r.stderr);
+    // Into a target whose turn keeps no point in place (CYCLE800) the two notes agree: a
+    // turn about the pivot, the distance not written (a helper's find: the second note said
+    // the tip was kept).
+    let r = translate(prog, "heidenhain", "sinumerik");
+    assert!(
+        r.stderr.contains("(DIST) has no word in sinumerik CYCLE800: not written")
+            && !r.stderr.contains("keeps the tool tip itself in place"),
+        "{}",
+        r.stderr
+    );
 }
 
 /// A Fanuc subprogram in the same file (`M98 P2000` … `O2000` … `M99`) is followed: its
