@@ -2053,7 +2053,10 @@ int32_t cncrot_program_expected(const struct cncrot_program *program,
  * them for a Fanuc tilt (`G53.1`, `G53.1 P0`) Fanuc's own rule, `CNCROT_CHOOSE_MASTER_FIRST`
  * on its first rotation axis (a mixed machine's table axis), else `CNCROT_CHOOSE_CLOSEST`,
  * the choice SINUMERIK makes for a frame and Heidenhain without `SEQ`: whole turns unwound
- * toward `current`, within the travel limits and on the Hirth grids. No tilt active: the positions of the identity frame. A direct mode
+ * toward `current`, within the travel limits and on the Hirth grids. Heidenhain's `SEQ±`
+ * gives the angles themselves in (-180, 180] (within the travel), not wound toward
+ * `current`, and `CNCROT_STATUS_OUT_OF_TRAVEL` where the side it names lies beyond the
+ * travel, as the TNC's "Entered angle not permitted". No tilt active: the positions of the identity frame. A direct mode
  * (`active` 2 or 3): the positions it states, mapped onto the machine's axes (by place, or
  * by letter: each axis takes the position of the letter its direction is nearest, A for X,
  * B for Y, C for Z), as stated on an axis with travel limits, the turn nearest `current`

@@ -2,10 +2,15 @@
 %   [AXES, STATUS] = cncrot_program_axes(STATE, MACHINE, CURRENT)
 %   STATE is the program state from cncrot_program_lines, MACHINE as in
 %   CNCROT_MACHINE_FORWARD, CURRENT the current rotary positions (1-by-3, degrees; 0 where
-%   the machine has no axis; default zeros). AXES (1-by-3) is the solution closest to CURRENT,
-%   whole turns unwound toward it, within the travel limits and on the Hirth grids: what
-%   cncrot_machine_choose(MACHINE, F, CURRENT, 'closest') gives for the state's frame F, the
-%   choice SINUMERIK makes for a frame and Heidenhain makes without SEQ. No tilt active: the
+%   the machine has no axis; default zeros). AXES (1-by-3) is the solution the tilt's own
+%   choice words pick (SEQ-/SEQ+, _DIR -1/+1: the master axis' lower/higher angle; G53.1
+%   P1/P2: it turns only up/down); without them, for a Fanuc tilt Fanuc's rule
+%   ('master_first' on its first rotation axis, a mixed machine's table axis), else the
+%   solution closest to CURRENT (what cncrot_machine_choose(MACHINE, F, CURRENT, 'closest')
+%   gives for the state's frame F, the choice SINUMERIK makes for a frame and Heidenhain
+%   makes without SEQ): whole turns unwound toward CURRENT, within the travel limits and on
+%   the Hirth grids. Heidenhain's SEQ gives the angles themselves, in (-180, 180], and
+%   cncrot:outOfTravel where the side it names lies beyond the travel. No tilt active: the
 %   positions of the identity frame. A direct mode (PLANE AXIAL, G158 mode 2, CYCLE800
 %   direct): the positions it states, each axis taking its letter's (A about X, B about Y,
 %   C about Z, by the axis' direction) or its place's, as stated on an axis with travel

@@ -1808,9 +1808,10 @@ fn choice_words_are_kept_and_followed() {
     assert!((plane("SEQ+").axes(&head, from).unwrap().axes[1] - 30.0).abs() < 1e-9);
     // The same solution wherever the axes stand (a program's blocks each start where the
     // one before left them): an AC table, the tool along the workpiece's X (hyperMILL's
-    // "A-90 C270" comment beside this block). SEQ- is A -90 with C -90, a whole turn of C
-    // nearest the current position; from A -90 the A +90 solution unwinds to -270, which
-    // was taken as the lower.
+    // "A-90 C270" comment beside this block: the same position on a C shown 0..360). SEQ-
+    // is A -90 with C -90, the angles themselves, not wound toward the current position (the
+    // iTNC 530 manual's table of SEQ results: SEQ+ from C-105 and from C-135 both C+90);
+    // from A -90 the A +90 solution unwinds to -270, which was taken as the lower.
     let table = Machine::new([0.0, 0.0, 1.0])
         .unwrap()
         .with_axis(RotaryAxis::new(Side::Work, [1.0, 0.0, 0.0], [0.0; 3]))
@@ -1824,8 +1825,8 @@ fn choice_words_are_kept_and_followed() {
     for (from, want) in [
         ([0.0, 0.0, 0.0], [-90.0, -90.0]),
         ([-90.0, -90.0, 0.0], [-90.0, -90.0]),
-        ([-90.0, 270.0, 0.0], [-90.0, 270.0]),
-        ([80.0, 100.0, 0.0], [-90.0, 270.0]),
+        ([-90.0, 270.0, 0.0], [-90.0, -90.0]),
+        ([80.0, 100.0, 0.0], [-90.0, -90.0]),
     ] {
         let got = seq.axes(&table, from).unwrap().axes;
         assert!(
@@ -3679,4 +3680,53 @@ fn fanuc_turns_its_master_axis_the_least() {
         (c.axes[0] + 30.0).abs() < 1e-9 && c.axes[1].abs() < 1e-9,
         "{c:?}"
     );
+}
+
+/// Heidenhain's `SEQ±` as the iTNC 530 manual's table gives it for a machine with a rotary
+/// table C and a tilting table A, `PLANE SPATIAL SPA+0 SPB+45 SPC+0`: without limits, from A+0
+/// and C−105 or C−135, `SEQ+` is A+45, C+90 (the angles themselves, not C−270 wound toward
+/// C); with A limited to −90..+10, `SEQ+` is the control's error, not the other solution
+/// (TNC7: "Entered angle not permitted"). Without `SEQ` the shortest way (a helper's finds).
+#[test]
+fn heidenhain_seq_as_the_manual_gives_it() {
+    use cncrot::kinematics::{Machine, RotaryAxis, Side};
+    let z = [0.0, 0.0, 1.0];
+    let table = |a_limits: Option<[f64; 2]>| {
+        Machine::new(z)
+            .unwrap()
+            .with_axis(RotaryAxis {
+                limits: a_limits,
+                ..RotaryAxis::new(Side::Work, [1.0, 0.0, 0.0], [0.0, 0.0, 100.0])
+            })
+            .unwrap()
+            .with_axis(RotaryAxis::new(Side::Work, z, [0.0; 3]))
+            .unwrap()
+    };
+    let seq = |w: &str| {
+        read(
+            Dialect::Heidenhain,
+            &[&format!("PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN FMAX {w}")],
+        )
+    };
+    let free = table(None);
+    for c in [-105.0, -135.0] {
+        let got = seq("SEQ+").axes(&free, [0.0, c, 0.0]).unwrap().axes;
+        assert!(
+            (got[0] - 45.0).abs() < 1e-9 && (got[1] - 90.0).abs() < 1e-9,
+            "from C{c}: {got:?}"
+        );
+    }
+    // Without SEQ from C-105: the shortest way, A-45 with C-90.
+    let got = seq("").axes(&free, [0.0, -105.0, 0.0]).unwrap().axes;
+    assert!(
+        (got[0] + 45.0).abs() < 1e-9 && (got[1] + 90.0).abs() < 1e-9,
+        "{got:?}"
+    );
+    let limited = table(Some([-90.0, 10.0]));
+    assert_eq!(
+        seq("SEQ+").axes(&limited, [0.0; 3]).unwrap_err(),
+        Error::OutOfTravel
+    );
+    let got = seq("SEQ-").axes(&limited, [0.0; 3]).unwrap().axes;
+    assert!((got[0] + 45.0).abs() < 1e-9, "{got:?}");
 }

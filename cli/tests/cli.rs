@@ -892,16 +892,17 @@ fn program_reads_a_whole_program_on_a_machine() {
         "0,0",
     ]);
     // SPB+30 tilts the tool to (sin 30°, 0, cos 30°): C 0, B 30 or C 180, B -30; SEQ-
-    // asks for the master axis (B, the axis nearest the tool) at a negative angle: C -180
-    // (the half turn nearest C 0), B -30. SPB-20 SPC+90 to (0, -sin 20°, cos 20°), without
-    // SEQ: the pair closest to C -180, B -30 — C -270, B -20 (C -90, B 20 is farther).
+    // asks for the master axis (B, the axis nearest the tool) at a negative angle: C 180,
+    // B -30 (the angles themselves, as the TNC gives them under SEQ). SPB-20 SPC+90 to
+    // (0, -sin 20°, cos 20°), without SEQ: the pair closest to C 180, B -30 — C 90, B -20
+    // (C -90 wound to 270, B 20 is farther).
     assert!(out.contains("line 4: 3 PLANE SPATIAL"), "{out}");
     assert!(
-        out.contains("tool direction: 0.5000 0.0000 0.8660  axes: -180.0000 -30.0000"),
+        out.contains("tool direction: 0.5000 0.0000 0.8660  axes: 180.0000 -30.0000"),
         "{out}"
     );
     assert!(
-        out.contains("tool direction: 0.0000 -0.3420 0.9397  axes: -270.0000 -20.0000"),
+        out.contains("tool direction: 0.0000 -0.3420 0.9397  axes: 90.0000 -20.0000"),
         "{out}"
     );
     assert!(
@@ -2043,7 +2044,8 @@ fn program_to_names_a_pivot_distance_left_out() {
     // the tip was kept).
     let r = translate(prog, "heidenhain", "sinumerik");
     assert!(
-        r.stderr.contains("(DIST) has no word in sinumerik CYCLE800: not written")
+        r.stderr
+            .contains("(DIST) has no word in sinumerik CYCLE800: not written")
             && !r.stderr.contains("keeps the tool tip itself in place"),
         "{}",
         r.stderr

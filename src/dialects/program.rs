@@ -181,7 +181,9 @@ impl Program {
     /// the least) \[doc\], else the solution closest to the current positions
     /// ([`Rule::Closest`]) — what SINUMERIK does for a frame \[doc\], Heidenhain without
     /// `SEQ` (the shortest way) \[doc\], and the library's default for the others (Syntec's
-    /// `G53.1`, Haas's `G253`) \[choice\]. Whole turns are unwound toward `current`, the travel
+    /// `G53.1`, Haas's `G253`) \[choice\]. Heidenhain's `SEQ±`: the angles themselves,
+    /// and [`Error::OutOfTravel`] where its side lies beyond the travel (see
+    /// `heidenhain_seq`). Whole turns are unwound toward `current`, the travel
     /// limits and Hirth grids respected. No tilt active: the positions of the identity
     /// frame. A choice naming an axis the machine lacks: [`Error::BadArgument`].
     ///
@@ -223,7 +225,16 @@ impl Program {
             AxisChoice::PositiveTurn(k) => Rule::PositiveTurn(axis(k)?),
             AxisChoice::NegativeTurn(k) => Rule::NegativeTurn(axis(k)?),
         };
-        let c = machine.choose(&self.frame.rotation, current, rule)?;
+        let mut c = machine.choose(&self.frame.rotation, current, rule)?;
+        if let (Some(Dialect::Heidenhain), Rule::Minus(k) | Rule::Plus(k)) = (self.dialect, rule) {
+            heidenhain_seq(
+                machine,
+                &self.frame.rotation,
+                &mut c,
+                k,
+                matches!(rule, Rule::Plus(_)),
+            )?;
+        }
         if self.table_rot && c.free {
             return table_turned(machine, &self.frame.rotation, c, current);
         }
@@ -500,6 +511,60 @@ fn table_turned(
         }
     }
     Ok(c)
+}
+
+/// Heidenhain's `SEQ±` on the choice `c` made under it (axis `k`, the `higher` side): the
+/// side it names or the control's error — "If the solution you have selected with SYM (SEQ)
+/// is not within the machine's range of traverse, then the control displays the Entered
+/// angle not permitted error message" (TNC7 user's manual) \[doc\]: [`Error::OutOfTravel`]
+/// where the choice fell back to the other solution; and the positions as the angles
+/// themselves in (−180°, 180°], not wound toward the current ones — SEQ+ for A+45, C+90 from
+/// C−105 and from C−135 gives C+90 (iTNC 530 user's manual, its table of `SEQ` results)
+/// \[doc\] — where that angle lies within the axis' travel (else the turn the choice took).
+/// A free axis (a pole) stays where the choice left it. Not inlined: its solutions are on
+/// the stack only after the choice's (stack bound).
+#[inline(never)]
+fn heidenhain_seq(
+    machine: &Machine,
+    target: &crate::Matrix,
+    c: &mut Choice,
+    k: usize,
+    higher: bool,
+) -> Result<(), Error> {
+    use crate::math::{abs, wrap_deg};
+    let all = machine.inverse(target)?;
+    let sides = all
+        .as_slice()
+        .iter()
+        .filter_map(|s| s.get(k))
+        .map(|&x| wrap_deg(x));
+    let side = if higher {
+        sides.fold(f64::NEG_INFINITY, f64::max)
+    } else {
+        sides.fold(f64::INFINITY, f64::min)
+    };
+    let at = c.axes.get(k).map_or(0.0, |&x| wrap_deg(x));
+    // The Hirth grid may move the position by up to half a tooth.
+    let tooth = machine
+        .axes()
+        .get(k)
+        .and_then(|a| a.hirth)
+        .map_or(0.0, |h| h.step / 2.0);
+    // Written so that NaN refuses.
+    let near = |a: f64, b: f64| abs(wrap_deg(a - b)) <= tooth + 1e-6;
+    if !near(at, side) {
+        return Err(Error::OutOfTravel);
+    }
+    if c.free {
+        return Ok(());
+    }
+    for (x, a) in c.axes.iter_mut().zip(machine.axes().iter()) {
+        let plain = wrap_deg(*x);
+        if a.limits.map_or(true, |[lo, hi]| plain >= lo && plain <= hi) {
+            *x = plain;
+        }
+    }
+    Ok(())
 }
 
 /// The axis Fanuc's `G53.1` moves the least first ([`Rule::MasterFirst`]): on a machine
