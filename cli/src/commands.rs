@@ -1282,6 +1282,55 @@ fn moved_to(
     *path = next;
 }
 
+/// The plane a direct mode's positions (`PLANE AXIAL`, `G158` mode 2, `CYCLE800` direct)
+/// give on machine `m`, as a program that states that plane, its choice the side of the
+/// master axis the positions take (`SEQ±`, `_DIR ±1`: the master axis' higher or lower angle
+/// of the pair), so that a target that turns to a plane turns the machine to those
+/// positions; a program without a direct mode as it is. `None`: not on this machine.
+fn plane_of_direct(q: &Program, m: &cncrot::kinematics::Machine) -> Option<Program> {
+    if q.direct.is_none() {
+        return Some(*q);
+    }
+    let f = q.frame_on(m).ok()?;
+    let stated = q.axes(m, [0.0; MAX_AXES]).ok()?.axes;
+    let axes = m.axes();
+    // The master axis, as the library takes it for choice words: a head's axis nearest the
+    // tool, else the axis nearest the machine base.
+    let k = axes
+        .iter()
+        .rposition(|a| a.side == cncrot::kinematics::Side::Tool)
+        .unwrap_or(0);
+    let wrap = |x: f64| {
+        let r = x.rem_euclid(360.0);
+        if r > 180.0 {
+            r - 360.0
+        } else {
+            r
+        }
+    };
+    let mine = wrap(stated.get(k).copied().unwrap_or(0.0));
+    let other = m.inverse(&f.rotation).ok().and_then(|s| {
+        s.as_slice()
+            .iter()
+            .filter_map(|x| x.get(k).copied().map(wrap))
+            .find(|&x| (x - mine).abs() > 1e-6)
+    });
+    let choice = match other {
+        Some(o) if mine > o => AxisChoice::Plus(0),
+        Some(_) => AxisChoice::Minus(0),
+        None => q.choice,
+    };
+    Some(Program {
+        frame: f,
+        direct: None,
+        angles: [0.0; 3],
+        dialect: None,
+        table_rot: false,
+        choice,
+        ..*q
+    })
+}
+
 /// Where a SINUMERIK program's `CYCLE800` and its frame commands meet: the configuration of
 /// the control decides what the program does there (one programmable frame that each
 /// replaces, as cncrot reads it, or the swivel in system frames that `TRANS`, `ROT` and
@@ -2105,34 +2154,27 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         // A direct mode (rotary positions: `G158 P10200`, `CYCLE800` direct,
                         // `PLANE AXIAL`) into a target without one: with the machine given,
                         // the plane its positions give there.
-                        let w = match (w, &machine) {
-                            (Err(Error::NotAvailable), Some(m)) => {
-                                let on = |q: &Program| match q.direct {
-                                    None => Some(*q),
-                                    Some(_) => q.frame_on(m).ok().map(|f| Program {
-                                        frame: f,
-                                        direct: None,
-                                        angles: [0.0; 3],
-                                        dialect: None,
-                                        table_rot: false,
-                                        ..*q
-                                    }),
-                                };
-                                match (on(&from), on(&p)) {
-                                    (Some(a), Some(b)) => {
-                                        let r =
-                                            write_block(t.dialect, form, &a, &b, text, d, &mut buf);
-                                        if r.is_ok() && p.direct.is_some() {
-                                            eprintln!(
-                                                "cncrot: line {line}: the rotary positions written as the plane they give on the machine described (--carr, --axis): {block}"
-                                            );
-                                        }
-                                        r
-                                    }
-                                    _ => Err(Error::NotAvailable),
+                        let direct = from.direct.is_some() || p.direct.is_some();
+                        let planes = machine.as_ref().filter(|_| direct).and_then(|m| {
+                            Some((plane_of_direct(&from, m)?, plane_of_direct(&p, m)?))
+                        });
+                        let w = match (w, planes) {
+                            (Err(Error::NotAvailable), Some((a, b))) => {
+                                let r = write_block(t.dialect, form, &a, &b, text, d, &mut buf);
+                                if r.is_ok() && p.direct.is_some() {
+                                    eprintln!(
+                                        "cncrot: line {line}: the rotary positions written as the plane they give on the machine described (--carr, --axis), with the side of its master axis they take: {block}"
+                                    );
                                 }
+                                r
                             }
                             (w, _) => w,
+                        };
+                        // What the target cannot say of the block is judged on what was
+                        // written: for rotary positions, the plane they give.
+                        let (from, p) = match planes {
+                            Some(both) if w.is_ok() => both,
+                            _ => (from, p),
                         };
                         // A choice the target has no word for: the same text with the
                         // opposite choice.

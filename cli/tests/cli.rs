@@ -2407,6 +2407,45 @@ fn program_follows_the_rotary_axes_blocks_move() {
     close(&heidenhain[1], &[-30.0, 360.0], 1e-9);
 }
 
+/// `PLANE AXIAL` (rotary positions) translated on a machine: the plane they give, with the
+/// side of the master axis they take (`_DIR +1` for B+30 on a B head), and the retraction
+/// the target has no word for named (a helper's finds: `_DIR -1` swung the head to the
+/// other side; `MB 50` dropped into Fanuc without a word).
+#[test]
+fn program_to_keeps_the_side_of_stated_positions() {
+    let prog = "1 PLANE AXIAL B+30 C+45 TURN MB 50 F1000 SEQ+\n";
+    let head = ["--axis", "tool:0,1,0", "--axis", "work:0,0,1"];
+    let mut args = vec![
+        "program",
+        "-",
+        "--dialect",
+        "heidenhain",
+        "--to",
+        "sinumerik",
+    ];
+    args.extend(head);
+    let r = cncrot(&args, prog);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(r.stdout.contains(",0,0,0,1,50,0)"), "{}", r.stdout);
+    // Read back on the machine: B 30, C 45.
+    let mut back = vec!["program", "-", "--dialect", "sinumerik"];
+    back.extend(head);
+    let b = cncrot(&back, &r.stdout);
+    let axes = numbers(
+        b.stdout
+            .split("axes: ")
+            .nth(1)
+            .and_then(|l| l.lines().next())
+            .unwrap_or(""),
+    );
+    close(&axes, &[30.0, 45.0], 1e-3);
+    let mut args = vec!["program", "-", "--dialect", "heidenhain", "--to", "fanuc"];
+    args.extend(head);
+    let r = cncrot(&args, prog);
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(r.stderr.contains("the retraction before the rotary axes turn (50 mm along the tool) has no word in fanuc"), "{}", r.stderr);
+}
+
 /// Fanuc into Fanuc: a `G53.1 P1` (the choice a word of the turn's own block) stays as it
 /// stands, not the tilt written again before it in `G68.2` mode (a helper's find).
 #[test]
