@@ -1513,16 +1513,7 @@ fn tcp_inverse_near_a_pole_keeps_the_turn_it_chose() {
 #[test]
 fn an_axis_without_limits_stays_within_the_bound() {
     use cncrot::CLOSEST_MAX;
-    let m = Machine::new(Z)
-        .unwrap()
-        .with_axis(RotaryAxis::new(
-            Side::Work,
-            [1.0, 0.0, 0.0],
-            [0.0, 0.0, 100.0],
-        ))
-        .unwrap()
-        .with_axis(RotaryAxis::new(Side::Work, Z, [0.0; 3]))
-        .unwrap();
+    let m = ac_table();
     let a = m.forward([30.0, 20.0, 0.0]).unwrap().rotation;
     // From C = 65 530: 65 540 lies beyond; the choices left are C = 65 180 (A = 30) and
     // C = 65 360 (A = -30), the closer.
@@ -1561,16 +1552,7 @@ fn an_axis_without_limits_stays_within_the_bound() {
 #[test]
 fn the_transformation_refuses_lengths_beyond_a_kilometre() {
     use cncrot::kinematics::LENGTH_MAX;
-    let m = Machine::new(Z)
-        .unwrap()
-        .with_axis(RotaryAxis::new(
-            Side::Work,
-            [1.0, 0.0, 0.0],
-            [0.0, 0.0, 100.0],
-        ))
-        .unwrap()
-        .with_axis(RotaryAxis::new(Side::Work, Z, [0.0; 3]))
-        .unwrap();
+    let m = ac_table();
     let at = |x: f64| cncrot::Frame {
         rotation: cncrot::IDENTITY,
         translation: [x, 0.0, 0.0],
@@ -1595,16 +1577,7 @@ fn the_transformation_refuses_lengths_beyond_a_kilometre() {
 /// axis nearest 0°, then the others (Fanuc's order for `G53.1`).
 #[test]
 fn master_first_orders_turns_then_nearness_to_zero() {
-    let m = Machine::new(Z)
-        .unwrap()
-        .with_axis(RotaryAxis::new(
-            Side::Work,
-            [1.0, 0.0, 0.0],
-            [0.0, 0.0, 100.0],
-        ))
-        .unwrap()
-        .with_axis(RotaryAxis::new(Side::Work, Z, [0.0; 3]))
-        .unwrap();
+    let m = ac_table();
     // Tilt 30° about X: (A 30, C 180) or (A -30, C 0).
     let f = m.forward([30.0, 180.0, 0.0]).unwrap().rotation;
     let near = |c: &cncrot::kinematics::Choice, a: f64, cc: f64| {
