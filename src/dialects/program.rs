@@ -521,7 +521,7 @@ fn table_turned(
 /// themselves in (−180°, 180°], not wound toward the current ones — SEQ+ for A+45, C+90 from
 /// C−105 and from C−135 gives C+90 (iTNC 530 user's manual, its table of `SEQ` results)
 /// \[doc\] — where that angle lies within the axis' travel (else the turn the choice took).
-/// A free axis (a pole) stays where the choice left it. Not inlined: its solutions are on
+/// At a pole (a free axis) the choice as it is. Not inlined: its solutions are on
 /// the stack only after the choice's (stack bound).
 #[inline(never)]
 fn heidenhain_seq(
@@ -532,6 +532,10 @@ fn heidenhain_seq(
     higher: bool,
 ) -> Result<(), Error> {
     use crate::math::{abs, wrap_deg};
+    // At a pole a free axis stays where it is: no side to check, no angle to place.
+    if c.free {
+        return Ok(());
+    }
     let all = machine.inverse(target)?;
     let sides = all
         .as_slice()
@@ -554,9 +558,6 @@ fn heidenhain_seq(
     let near = |a: f64, b: f64| abs(wrap_deg(a - b)) <= tooth + 1e-6;
     if !near(at, side) {
         return Err(Error::OutOfTravel);
-    }
-    if c.free {
-        return Ok(());
     }
     for (x, a) in c.axes.iter_mut().zip(machine.axes().iter()) {
         let plain = wrap_deg(*x);
