@@ -2843,6 +2843,19 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
             };
             previous = t.axes;
             rule = along(rule);
+            // The letters a later block leaves out (`G1 X1 C20` after a direction) are where
+            // the machine's axes now stand, not the last ones a block stated.
+            for (k, a) in machine.axes().iter().enumerate() {
+                let [x, y, z] = a.direction.map(f64::abs);
+                let slot = if x >= y && x >= z {
+                    0
+                } else if y >= z {
+                    1
+                } else {
+                    2
+                };
+                state.axes[slot] = t.axes[3 + k];
+            }
             return Ok(path_row(&t, n, d));
         }
         let trimmed = text.trim_start();

@@ -1139,6 +1139,16 @@ fn path_rules_marks_headers_and_refused_blocks() {
         r.stdout
     );
     assert_eq!(lines[4], lines[2], "{}", r.stdout);
+    // After a direction, a block that names one rotary axis leaves the other where the
+    // machine stands (A 30), not at the letter's last stated value (a helper's find: A 0).
+    let prog = "TRAORI\nG1 X0 Y0 Z0 A3=0 B3=0.5 C3=0.8660254037844386\nG1 X1 C20\nG91 C10\n";
+    let mut args = vec!["path", "-", "--dialect", "sinumerik"];
+    args.extend(AC);
+    let r = cncrot(&args, prog);
+    let rows: Vec<Vec<f64>> = r.stdout.lines().skip(1).map(numbers).collect();
+    close(&rows[0][3..], &[30.0, 0.0], 1e-9);
+    close(&rows[1][3..], &[30.0, 20.0], 1e-9);
+    close(&rows[2][3..], &[30.0, 30.0], 1e-9);
 }
 
 /// `path --dialect … --json`: a block not followed says so, as the text does.

@@ -1,6 +1,7 @@
 /* [P, kinds] = cncrot_tool_path_lines(dialect, lines)
  * [axes, kinds] = cncrot_tool_path_lines(dialect, lines, machine, L, previous, rule, ref):
  * see cncrot_tool_path_lines.m. */
+#include <math.h>
 #include "program_state.h"
 
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
@@ -70,6 +71,14 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
       }
       for (int j = 0; j < 6; j++) o[k + n * j] = ax[j];
       memcpy(prev, ax, sizeof prev);
+      /* The letters a later block leaves out are where the machine's axes now stand (as
+         cncrot path takes them): each axis' letter the one its direction is nearest. */
+      for (int j = 0; j < m.count && j < 3; j++) {
+        const double *v = m.axes[j].direction;
+        double x = fabs(v[0]), y = fabs(v[1]), z = fabs(v[2]);
+        int slot = (x >= y && x >= z) ? 0 : (y >= z ? 1 : 2);
+        t.axes[slot] = ax[3 + j];
+      }
       /* The other solution is the first point's; the points after it continue from it. */
       if (rule == CNCROT_CHOOSE_INVERSE) rule = CNCROT_CHOOSE_CLOSEST;
     } else {

@@ -264,6 +264,9 @@ function test_cncrot(cases_file)
   check(abs(am(1) - 30) < 1e-9 && abs(abs(am(2)) - 180) < 1e-9, 'master_first by hand');
   check(isequal(cncrot_program_axes(stf, acm, [5 0 0]), am), 'program_axes: Fanuc without P is master first');
   check(isequal(cncrot_machine_choose(acm, Ff, [5 0 0], 6, 1), am), 'master_first by code');
+  % After a direction, a block naming one rotary axis leaves the other where the machine stands.
+  tp = cncrot_tool_path_lines('sinumerik', {'TRAORI', 'G1 X0 Y0 Z0 A3=0 B3=0.5 C3=0.8660254037844386', 'G1 X1 C20'}, acm, 50);
+  check(abs(tp(3, 4) - 30) < 1e-9 && abs(tp(3, 5) - 20) < 1e-9, 'tool path: the letters a block leaves out stay where the machine is');
   % 'inverse' along a path: the other solution at the first row, the rows after it on its branch.
   cl3 = repmat([10 0 0 0.5 0 sqrt(3)/2], 3, 1);
   Ainv = cncrot_machine_tcp_inverse(acm, cl3, 50, [0 0 0 20 80 0], 'inverse');
