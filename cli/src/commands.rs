@@ -1243,6 +1243,19 @@ fn block_number(block: &str, from: Dialect) -> Option<String> {
 /// ISO-style dialects and TwinCAT, `;` to the end of the line in all): the code as it
 /// stands without them, and the comments' texts joined by a space (`None` without one).
 /// SINUMERIK's strings (`"TC1"`) are no comment, whatever they hold.
+/// The letter (0 A, 1 B, 2 C) of a rotary axis turning about `direction`: the coordinate
+/// axis it is nearest, as five-axis programs and the direct modes name the machine's axes.
+fn letter_of(direction: cncrot::Vector) -> usize {
+    let [x, y, z] = direction.map(f64::abs);
+    if x >= y && x >= z {
+        0
+    } else if y >= z {
+        1
+    } else {
+        2
+    }
+}
+
 /// Moves `current` where a block's rotary-axis words send the machine: the letters `A B C`
 /// of a motion block (each the machine's axis whose direction is nearest X, Y, Z, as a
 /// five-axis program names them), absolute or incremental from where the axes are. `path`
@@ -1256,17 +1269,11 @@ fn moved_to(
     block: &str,
     current: &mut [f64; MAX_AXES],
 ) {
-    let letter = |direction: cncrot::Vector| {
-        let [x, y, z] = direction.map(f64::abs);
-        if x >= y && x >= z {
-            0
-        } else if y >= z {
-            1
-        } else {
-            2
-        }
-    };
-    let slots: Vec<usize> = machine.axes().iter().map(|a| letter(a.direction)).collect();
+    let slots: Vec<usize> = machine
+        .axes()
+        .iter()
+        .map(|a| letter_of(a.direction))
+        .collect();
     let mut from = *path;
     for (k, &slot) in slots.iter().enumerate() {
         from.axes[slot] = current[k];
@@ -2846,15 +2853,7 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
             // The letters a later block leaves out (`G1 X1 C20` after a direction) are where
             // the machine's axes now stand, not the last ones a block stated.
             for (k, a) in machine.axes().iter().enumerate() {
-                let [x, y, z] = a.direction.map(f64::abs);
-                let slot = if x >= y && x >= z {
-                    0
-                } else if y >= z {
-                    1
-                } else {
-                    2
-                };
-                state.axes[slot] = t.axes[3 + k];
+                state.axes[letter_of(a.direction)] = t.axes[3 + k];
             }
             return Ok(path_row(&t, n, d));
         }
