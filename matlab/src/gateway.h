@@ -219,12 +219,16 @@ static const char *quoted(const uint32_t *u, size_t n, size_t stored) {
 
 /* A value that is not what was asked for, for a message: "a 1-by-3 double", "a cell". */
 static const char *described(const mxArray *a) {
-  static char buf[96];
+  static char buf[160];
   const mwSize *d = mxGetDimensions(a);
-  if (mxGetNumberOfDimensions(a) == 2)
-    snprintf(buf, sizeof buf, "a %d-by-%d %s%s", (int)d[0], (int)d[1], mxIsSparse(a) ? "sparse " : "", mxGetClassName(a));
-  else
-    snprintf(buf, sizeof buf, "a %d-by-%d-by-... %s", (int)d[0], (int)d[1], mxGetClassName(a));
+  size_t nd = mxGetNumberOfDimensions(a);
+  int len = snprintf(buf, sizeof buf, "a %d", (int)d[0]);
+  /* Every dimension (4-by-4-by-2), the first few of an array of many. */
+  for (size_t k = 1; k < nd && k < 8 && len > 0 && len < (int)sizeof buf; k++)
+    len += snprintf(buf + len, sizeof buf - len, "-by-%d", (int)d[k]);
+  if (nd > 8 && len > 0 && len < (int)sizeof buf) len += snprintf(buf + len, sizeof buf - len, "-by-...");
+  if (len > 0 && len < (int)sizeof buf)
+    snprintf(buf + len, sizeof buf - len, " %s%s", mxIsSparse(a) ? "sparse " : "", mxGetClassName(a));
   return buf;
 }
 
@@ -682,7 +686,8 @@ static void frame_to_col_major(const double *row, double *col) {
 }
 
 static void frame_arg(const mxArray *a, int pos, const char *name, double row_major[16]) {
-  if (squares_arg(a, pos, name, 4) != 1 || mxGetNumberOfDimensions(a) != 2)
+  (void)real_data(a, pos, name);
+  if (mxGetNumberOfDimensions(a) != 2 || mxGetM(a) != 4 || mxGetN(a) != 4)
     fail("cncrot:badSize", "%s must be 4-by-4; got %s", label(pos, name), described(a));
   frame_to_row_major(real_data(a, pos, name), row_major);
 }

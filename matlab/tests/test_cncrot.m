@@ -264,6 +264,10 @@ function test_cncrot(cases_file)
   check(abs(am(1) - 30) < 1e-9 && abs(abs(am(2)) - 180) < 1e-9, 'master_first by hand');
   check(isequal(cncrot_program_axes(stf, acm, [5 0 0]), am), 'program_axes: Fanuc without P is master first');
   check(isequal(cncrot_machine_choose(acm, Ff, [5 0 0], 6, 1), am), 'master_first by code');
+  % A frame's size said as it is (a helper's find: "4-by-4 or 4-by-4-by-N" for eye(3), then
+  % "4-by-4" for a 4-by-4-by-2, given as "4-by-4-by-...").
+  expect_message('cncrot:badSize', @() cncrot_machine_inverse(acm, eye(3)), 'frame: 3-by-3', 'cncrot_machine_inverse', 'must be 4-by-4; got a 3-by-3 double');
+  expect_message('cncrot:badSize', @() cncrot_machine_inverse(acm, zeros(4, 4, 2)), 'frame: 4-by-4-by-2', 'cncrot_machine_inverse', 'got a 4-by-4-by-2 double');
   % After a direction, a block naming one rotary axis leaves the other where the machine stands.
   tp = cncrot_tool_path_lines('sinumerik', {'TRAORI', 'G1 X0 Y0 Z0 A3=0 B3=0.5 C3=0.8660254037844386', 'G1 X1 C20'}, acm, 50);
   check(abs(tp(3, 4) - 30) < 1e-9 && abs(tp(3, 5) - 20) < 1e-9, 'tool path: the letters a block leaves out stay where the machine is');
