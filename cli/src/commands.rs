@@ -1243,19 +1243,6 @@ fn block_number(block: &str, from: Dialect) -> Option<String> {
 /// ISO-style dialects and TwinCAT, `;` to the end of the line in all): the code as it
 /// stands without them, and the comments' texts joined by a space (`None` without one).
 /// SINUMERIK's strings (`"TC1"`) are no comment, whatever they hold.
-/// The letter (0 A, 1 B, 2 C) of a rotary axis turning about `direction`: the coordinate
-/// axis it is nearest, as five-axis programs and the direct modes name the machine's axes.
-fn letter_of(direction: cncrot::Vector) -> usize {
-    let [x, y, z] = direction.map(f64::abs);
-    if x >= y && x >= z {
-        0
-    } else if y >= z {
-        1
-    } else {
-        2
-    }
-}
-
 /// Moves `current` where a block's rotary-axis words send the machine: the letters `A B C`
 /// of a motion block (each the machine's axis whose direction is nearest X, Y, Z, as a
 /// five-axis program names them), absolute or incremental from where the axes are. `path`
@@ -1272,7 +1259,7 @@ fn moved_to(
     let slots: Vec<usize> = machine
         .axes()
         .iter()
-        .map(|a| letter_of(a.direction))
+        .map(|a| cncrot::dialects::program::axis_letter(a.direction))
         .collect();
     let mut from = *path;
     for (k, &slot) in slots.iter().enumerate() {
@@ -1300,13 +1287,8 @@ fn plane_of_direct(q: &Program, m: &cncrot::kinematics::Machine) -> Option<Progr
     }
     let f = q.frame_on(m).ok()?;
     let stated = q.axes(m, [0.0; MAX_AXES]).ok()?.axes;
-    let axes = m.axes();
-    // The master axis, as the library takes it for choice words: a head's axis nearest the
-    // tool, else the axis nearest the machine base.
-    let k = axes
-        .iter()
-        .rposition(|a| a.side == cncrot::kinematics::Side::Tool)
-        .unwrap_or(0);
+    // The master axis, as the library takes it for choice words.
+    let k = cncrot::dialects::program::master_axis(m);
     let wrap = |x: f64| {
         let r = x.rem_euclid(360.0);
         if r > 180.0 {
@@ -2853,7 +2835,7 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
             // The letters a later block leaves out (`G1 X1 C20` after a direction) are where
             // the machine's axes now stand, not the last ones a block stated.
             for (k, a) in machine.axes().iter().enumerate() {
-                state.axes[letter_of(a.direction)] = t.axes[3 + k];
+                state.axes[cncrot::dialects::program::axis_letter(a.direction)] = t.axes[3 + k];
             }
             return Ok(path_row(&t, n, d));
         }

@@ -448,17 +448,7 @@ pub(crate) fn direct_positions(
     for (k, axis) in machine.axes().iter().enumerate() {
         let slot = match d.by {
             DirectAxes::Numbered => k,
-            DirectAxes::Letters => {
-                let v = axis.direction.map(crate::math::abs);
-                let [x, y, z] = v;
-                if x >= y && x >= z {
-                    0
-                } else if y >= z {
-                    1
-                } else {
-                    2
-                }
-            }
+            DirectAxes::Letters => axis_letter(axis.direction),
         };
         if let (Some(p), Some(v)) = (positions.get_mut(k), stated.get(slot)) {
             *p = *v;
@@ -584,12 +574,44 @@ fn fanuc_master(machine: &Machine) -> usize {
     }
 }
 
+/// The letter a program names a rotary axis turning about `direction` by: 0 for `A`, 1 for
+/// `B`, 2 for `C`, the coordinate axis the direction is nearest (its largest component, the
+/// first of equal ones) \[choice: a machine description carries no axis names\]. The
+/// direct modes' letters and the five-axis programs' rotary words go to the machine's axes
+/// by it.
+///
+/// ```
+/// use cncrot::dialects::program::axis_letter;
+/// assert_eq!(axis_letter([0.0, 0.0, -1.0]), 2); // C
+/// assert_eq!(axis_letter([0.7, 0.7, 0.1]), 0); // A: equal components, the first
+/// ```
+pub fn axis_letter(direction: crate::Vector) -> usize {
+    let [x, y, z] = direction.map(crate::math::abs);
+    if x >= y && x >= z {
+        0
+    } else if y >= z {
+        1
+    } else {
+        2
+    }
+}
+
 /// The axis a block's choice words refer to when they name none (Heidenhain's master axis,
-/// CYCLE800's direction reference): for a head the rotary axis nearest the tool (the last
-/// that turns the tool), else the axis nearest the machine base (the first) \[choice:
-/// Heidenhain's "first rotary axis from the tool, or from the table"; a machine's own
-/// direction reference is commissioning data the description does not carry\].
-fn master_axis(machine: &Machine) -> usize {
+/// CYCLE800's direction reference), 0-based: for a head the rotary axis nearest the tool
+/// (the last that turns the tool), else the axis nearest the machine base (the first)
+/// \[choice: Heidenhain's "first rotary axis from the tool, or from the table"; a machine's
+/// own direction reference is commissioning data the description does not carry\].
+///
+/// ```
+/// use cncrot::dialects::program::master_axis;
+/// use cncrot::kinematics::{Machine, RotaryAxis, Side};
+/// // A head C carrying B: B, the axis nearest the tool.
+/// let m = Machine::new([0.0, 0.0, 1.0]).unwrap()
+///     .with_axis(RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3])).unwrap()
+///     .with_axis(RotaryAxis::new(Side::Tool, [0.0, 1.0, 0.0], [0.0; 3])).unwrap();
+/// assert_eq!(master_axis(&m), 1);
+/// ```
+pub fn master_axis(machine: &Machine) -> usize {
     let axes = machine.axes();
     axes.iter()
         .rposition(|a| a.side == crate::kinematics::Side::Tool)

@@ -114,9 +114,7 @@ impl Machine {
         length_in_range(tool_length)?;
         // Beyond a kilometre a millimetre's digits are rounding (and the library's lengths
         // are bounded alike).
-        if !axes[..3].iter().all(|x| abs(*x) <= LENGTH_MAX) {
-            return Err(Error::OutOfRange);
-        }
+        axes[..3].iter().try_for_each(|&x| length_in_range(x))?;
         let r = self.turns(theta);
         let at = self.tool_point(&r, self.tip_in_tool(tool_length));
         let machine: Vector = core::array::from_fn(|k| axes[k] + at[k]);
@@ -204,9 +202,7 @@ impl Machine {
             return Err(Error::NotFinite);
         }
         length_in_range(tool_length)?;
-        if !tip.iter().all(|x| abs(*x) <= LENGTH_MAX) {
-            return Err(Error::OutOfRange);
-        }
+        tip.iter().try_for_each(|&x| length_in_range(x))?;
         let current = [previous[3], previous[4], previous[5]];
         // Written in place by the way that computes it: no copy of it in each frame between
         // (stack bound).
