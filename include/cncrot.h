@@ -908,7 +908,9 @@ typedef struct cncrot_tool_path {
   int32_t point;
   /**
    * Bit 0: SINUMERIK `ORIRPY` (else `ORIEULER`); bit 1: incremental (`G91`); bit 2:
-   * Heidenhain `AXIS SPAT` (`A B C` spatial angles, else axis positions).
+   * Heidenhain `AXIS SPAT` (`A B C` spatial angles, else axis positions); bit 3: an arc's
+   * mode (`G2`/`G3`, SINUMERIK `CIP`, `CT`, splines; until `G0`/`G1`); bit 4: an ISO
+   * canned cycle's mode (`G73`…`G89`; until `G80` or `G0`…`G3`).
    */
   int32_t flags;
   /**
@@ -2595,8 +2597,10 @@ int32_t cncrot_rotate_vector_inverse(const double *matrix, const double *vector,
  *
  * Returns 0 (`point` 1 for a CL point, 0 for a state change), `CNCROT_STATUS_PASSED` (a
  * block that concerns neither: `*path` byte-identical), `CNCROT_STATUS_NOT_FOLLOWED` (a
- * move the reader does not follow: an arc, a reference or machine-coordinate move, a value
- * that is not a number: `*path` byte-identical, and no longer the control's); or with
+ * move the reader does not follow: an arc, a block in an arc's or a canned cycle's mode,
+ * a reference or machine-coordinate move, a value that is not a number: `*path`
+ * byte-identical but for the mode the block sets, `flags` bits 3 and 4 with `point` 0,
+ * and no longer the control's); or with
  * `*path` untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a state the
  * library does not write), `CNCROT_STATUS_NOT_AVAILABLE` (TwinCAT: its five-axis
  * programs are not read), `CNCROT_STATUS_LINE_TOO_LONG`, `CNCROT_STATUS_BAD_ARGUMENT` (a

@@ -684,6 +684,17 @@ pub(crate) struct PathWords {
     /// are read in (a datum shift, a rotation, a mirror, a scale): with or without
     /// coordinates, the block is not followed.
     pub(crate) arcs: &'static [PathCommand],
+    /// Commands of a circular (or spline) mode, modal until one of `linear`: every motion
+    /// block in it is an arc, not followed.
+    pub(crate) circular: &'static [PathCommand],
+    /// Commands of the straight moves (`G0`, `G1`): they end `circular`'s mode and
+    /// `canned`'s.
+    pub(crate) linear: &'static [PathCommand],
+    /// Canned cycles, modal until one of `canned_off` or `linear` or `circular`: every
+    /// motion block in it is a hole, not followed.
+    pub(crate) canned: &'static [PathCommand],
+    /// See `canned`.
+    pub(crate) canned_off: &'static [PathCommand],
     /// Commands whose words are no coordinates and move nothing (a dwell `G4 X1.5`): the
     /// block is passed over.
     pub(crate) still: &'static [PathCommand],
@@ -712,9 +723,7 @@ pub(crate) const fn iso_path(on: &'static [PathCommand], vector: [&'static [u8];
         i_prefix: false,
         moves: &[],
         arcs: &[
-            // Arcs, reference and machine-coordinate moves.
-            Code(b'G', 20),
-            Code(b'G', 30),
+            // Reference and machine-coordinate moves.
             Code(b'G', 270),
             Code(b'G', 280),
             Code(b'G', 290),
@@ -734,7 +743,12 @@ pub(crate) const fn iso_path(on: &'static [PathCommand], vector: [&'static [u8];
             Code(b'G', 683),
             Code(b'G', 684),
             Code(b'G', 920),
-            // Canned cycles (their X Y the holes, their Z R depths and planes).
+        ],
+        // Group 01: `G2`/`G3` stay in force until `G0`/`G1`; the canned cycles (group 09,
+        // their X Y the holes, their Z R depths and planes) until `G80` or a group 01 code.
+        circular: &[Code(b'G', 20), Code(b'G', 30)],
+        linear: &[Code(b'G', 0), Code(b'G', 10)],
+        canned: &[
             Code(b'G', 730),
             Code(b'G', 740),
             Code(b'G', 760),
@@ -748,6 +762,7 @@ pub(crate) const fn iso_path(on: &'static [PathCommand], vector: [&'static [u8];
             Code(b'G', 880),
             Code(b'G', 890),
         ],
+        canned_off: &[Code(b'G', 800)],
         // A dwell: `G04 X1.5` waits 1.5 s.
         still: &[Code(b'G', 40)],
         off_after: &[],

@@ -780,6 +780,11 @@ pub(crate) const HEIDENHAIN_PATH: super::family::PathWords = {
             Phrase(&[b"TRANS", b"DATUM"]),
             Name(b"PLANE"),
         ],
+        // Every contour block names its kind (`L`, `C`, `CR`): no modal mode.
+        circular: &[],
+        linear: &[],
+        canned: &[],
+        canned_off: &[],
         still: &[],
         // "M128 becomes effective at the start of block, M129 at the end of block" (TNC
         // 426/430 user's manual).

@@ -63,6 +63,12 @@ pub struct ToolPath {
     /// Heidenhain `FUNCTION TCPM … AXIS SPAT`: the letters `A B C` are spatial angles (the
     /// tool direction `Rz(C)·Ry(B)·Rx(A)·e_z`, as `PLANE SPATIAL`), not axis positions.
     pub spatial: bool,
+    /// An arc's mode (`G2`/`G3`; SINUMERIK also `CIP`, `CT`, the splines), in force until
+    /// `G0`/`G1`: the motion blocks in it are arcs, not followed.
+    pub circular: bool,
+    /// An ISO canned cycle's mode (`G73`…`G89`), in force until `G80` or `G0`…`G3`: the
+    /// positions in it are holes drilled, not followed.
+    pub canned: bool,
 }
 
 /// What a block did, beside the state it leaves.
@@ -76,8 +82,10 @@ pub enum PathRemark {
     Applied,
     /// A block that concerns neither (the state is the one given, byte for byte).
     Passed,
-    /// A move the reader does not follow (an arc, an expression or incremental function
-    /// where a number belongs): the state is the one given, and no longer the control's.
+    /// A move the reader does not follow (an arc, a block in an arc's or a canned cycle's
+    /// mode, an expression or incremental function where a number belongs): the state is
+    /// the one given but for the mode the block sets ([`ToolPath::circular`],
+    /// [`ToolPath::canned`]), and no longer the control's.
     NotFollowed,
 }
 
@@ -412,6 +420,17 @@ impl ToolPath {
             let hit = |list: &[PathCommand]| list.iter().any(|c| is_command(&w, &it, c));
             arc |= hit(pw.arcs);
             still |= hit(pw.still);
+            // The modes of motion, the last word of each group counting; a straight or
+            // circular move ends a canned cycle (ISO group 01 over group 09).
+            if hit(pw.circular) {
+                (next.circular, next.canned) = (true, false);
+            } else if hit(pw.linear) {
+                (next.circular, next.canned) = (false, false);
+            } else if hit(pw.canned) {
+                next.canned = true;
+            } else if hit(pw.canned_off) {
+                next.canned = false;
+            }
             if hit(pw.off_after) {
                 off_after = true;
             } else if hit(pw.on) {
@@ -497,22 +516,29 @@ impl ToolPath {
             }
             p
         };
+        let moded = ToolPath {
+            circular: next.circular,
+            canned: next.canned,
+            ..*self
+        };
+        changed |= moded != *self;
         let unchanged = if changed || (off_after && self.on) {
             (off(next), PathRemark::Applied)
         } else {
             (*self, PathRemark::Passed)
         };
         if arc {
-            // Nothing of the block is taken: its end point, or the frame after it, is not
-            // known here (with or without coordinates: `LP PR+10 PA+30`, `TRANS`).
-            return Ok((*self, PathRemark::NotFollowed));
+            // Nothing of the block is taken but its mode: its end point, or the frame after
+            // it, is not known here (with or without coordinates: `LP PR+10 PA+30`, `TRANS`).
+            return Ok((moded, PathRemark::NotFollowed));
         }
         if first_column == 0 || still {
             return Ok(unchanged);
         }
-        if unreadable && moves {
-            // Nothing of the block is taken: its end point is not known here.
-            return Ok((*self, PathRemark::NotFollowed));
+        if (unreadable || next.circular || next.canned) && moves {
+            // Nothing of the block is taken but its mode: its end point is not known here
+            // (an arc's, a hole's, a number not read).
+            return Ok((moded, PathRemark::NotFollowed));
         }
         if !moves {
             // Words of a block that does not move (Heidenhain's `TOOL CALL 1 Z`, `CC X Y`).
@@ -659,9 +685,81 @@ mod tests {
         };
         assert!((d[0] - 1.0).abs() < 1e-15 && d[1].abs() < 1e-15 && d[2].abs() < 1e-15);
         assert_eq!(out[8].0.orientation, Orientation::Axes([30.0, 0.0, -45.5]));
-        // Not followed and passed blocks leave the state as it was.
-        assert_eq!(out[9].0, out[8].0);
+        // A block not followed leaves the state as it was but for the arc's mode.
+        assert_eq!(
+            out[9].0,
+            ToolPath {
+                circular: true,
+                ..out[8].0
+            }
+        );
         assert!(!out[11].0.on);
+    }
+
+    /// `G2`/`G3` (group 01) stay in force until `G0`/`G1`, a canned cycle (group 09) until
+    /// `G80` or a group 01 code: the blocks in either mode are arcs and holes, not straight
+    /// moves to points. Under `G43.5` an arc's `I J K` are its centre, not the tool: read
+    /// as a direction they would tilt the tool.
+    #[test]
+    fn arcs_and_canned_cycles_are_modal() {
+        use PathRemark::*;
+        let iso = run(
+            Dialect::Fanuc,
+            &[
+                "G43.5 H1",
+                "G1 X0. Y0. Z5. I0. J0. K1.",
+                "G2 X10. Y0. I5. J0.",
+                "X0. Y0. I-5. J0.",
+                "G1 X1. Y1.",
+                "G81 X5. Y5. Z-3. R1. F100.",
+                "X6. Y6.",
+                "G80",
+                "X7. Y7.",
+                "G3 X0. Y0. R5.",
+                "G81 X1. Y1. Z-2. R1.",
+                "G1 X2. Y2.",
+            ],
+        );
+        let r: Vec<_> = iso.iter().map(|o| o.1).collect();
+        assert_eq!(
+            r,
+            [
+                Applied,
+                Point,
+                NotFollowed,
+                NotFollowed,
+                Point,
+                NotFollowed,
+                NotFollowed,
+                Applied,
+                Point,
+                NotFollowed,
+                NotFollowed,
+                Point
+            ]
+        );
+        // The arc's centre words did not become the tool direction.
+        assert_eq!(iso[3].0.orientation, iso[1].0.orientation);
+        assert_eq!(iso[3].0.tip, [0.0, 0.0, 5.0]);
+        assert!(iso[2].0.circular && iso[3].0.circular && !iso[4].0.circular);
+        assert!(iso[5].0.canned && iso[6].0.canned && !iso[7].0.canned);
+        assert_eq!(iso[8].0.tip, [7.0, 7.0, 5.0]);
+        // A canned cycle in an arc's mode ends neither with the other; `G1` ends both.
+        assert!(iso[10].0.circular && iso[10].0.canned);
+        assert!(!iso[11].0.circular && !iso[11].0.canned);
+        let sin = run(
+            Dialect::Sinumerik,
+            &[
+                "TRAORI",
+                "G1 X0 Y0 Z5",
+                "CIP X10 Y10 I1=5 J1=5",
+                "X0 Y0",
+                "G0 X3",
+            ],
+        );
+        let r: Vec<_> = sin.iter().map(|o| o.1).collect();
+        assert_eq!(r, [Applied, Point, NotFollowed, NotFollowed, Point]);
+        assert_eq!(sin[4].0.tip, [3.0, 0.0, 5.0]);
     }
 
     #[test]

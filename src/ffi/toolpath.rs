@@ -30,7 +30,9 @@ pub struct cncrot_tool_path {
     /// on, `tip` and the orientation its CL point; 0 when it only changed the state.
     pub point: i32,
     /// Bit 0: SINUMERIK `ORIRPY` (else `ORIEULER`); bit 1: incremental (`G91`); bit 2:
-    /// Heidenhain `AXIS SPAT` (`A B C` spatial angles, else axis positions).
+    /// Heidenhain `AXIS SPAT` (`A B C` spatial angles, else axis positions); bit 3: an arc's
+    /// mode (`G2`/`G3`, SINUMERIK `CIP`, `CT`, splines; until `G0`/`G1`); bit 4: an ISO
+    /// canned cycle's mode (`G73`…`G89`; until `G80` or `G0`…`G3`).
     pub flags: i32,
     /// The programmed tool tip, mm, workpiece coordinates.
     pub tip: [f64; 3],
@@ -55,7 +57,7 @@ fn load(c: &cncrot_tool_path) -> Result<ToolPath, cncrot_status> {
     if !(finite
         && (0..=1).contains(&c.on)
         && (0..=1).contains(&c.point)
-        && (0..=7).contains(&c.flags))
+        && (0..=31).contains(&c.flags))
     {
         return Err(bad);
     }
@@ -81,6 +83,8 @@ fn load(c: &cncrot_tool_path) -> Result<ToolPath, cncrot_status> {
         rpy: c.flags & 1 != 0,
         spatial: c.flags & 4 != 0,
         incremental: c.flags & 2 != 0,
+        circular: c.flags & 8 != 0,
+        canned: c.flags & 16 != 0,
     })
 }
 
@@ -94,7 +98,11 @@ fn store(p: &ToolPath, point: bool) -> cncrot_tool_path {
         on: i32::from(p.on),
         orientation,
         point: i32::from(point),
-        flags: i32::from(p.rpy) | (i32::from(p.incremental) << 1) | (i32::from(p.spatial) << 2),
+        flags: i32::from(p.rpy)
+            | (i32::from(p.incremental) << 1)
+            | (i32::from(p.spatial) << 2)
+            | (i32::from(p.circular) << 3)
+            | (i32::from(p.canned) << 4),
         tip: p.tip,
         direction,
         axes: p.axes,
@@ -111,8 +119,10 @@ fn store(p: &ToolPath, point: bool) -> cncrot_tool_path {
 ///
 /// Returns 0 (`point` 1 for a CL point, 0 for a state change), `CNCROT_STATUS_PASSED` (a
 /// block that concerns neither: `*path` byte-identical), `CNCROT_STATUS_NOT_FOLLOWED` (a
-/// move the reader does not follow: an arc, a reference or machine-coordinate move, a value
-/// that is not a number: `*path` byte-identical, and no longer the control's); or with
+/// move the reader does not follow: an arc, a block in an arc's or a canned cycle's mode,
+/// a reference or machine-coordinate move, a value that is not a number: `*path`
+/// byte-identical but for the mode the block sets, `flags` bits 3 and 4 with `point` 0,
+/// and no longer the control's); or with
 /// `*path` untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a state the
 /// library does not write), `CNCROT_STATUS_NOT_AVAILABLE` (TwinCAT: its five-axis
 /// programs are not read), `CNCROT_STATUS_LINE_TOO_LONG`, `CNCROT_STATUS_BAD_ARGUMENT` (a
@@ -155,7 +165,13 @@ pub unsafe extern "C" fn cncrot_tool_path_line(
                 cncrot_status::Ok
             }
             PathRemark::Passed => cncrot_status::Passed,
-            PathRemark::NotFollowed => cncrot_status::NotFollowed,
+            PathRemark::NotFollowed => {
+                // The arc's or canned cycle's mode the block sets; nothing else of it.
+                if next != p {
+                    path.write_unaligned(store(&next, false));
+                }
+                cncrot_status::NotFollowed
+            }
         })
     })
 }

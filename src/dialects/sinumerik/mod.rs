@@ -925,7 +925,7 @@ pub(crate) struct Sinumerik;
 /// SINUMERIK's five-axis programs: `TRAORI` on, `TRAFOOF` off; the tool direction `A3 B3
 /// C3`, orientation angles `A2 B2 C2` after `ORIEULER` (the default machine data) or
 /// `ORIRPY`, rotary positions by axis name \[doc\]; `G90`/`G91`; arcs (`G2`, `G3`, `CIP`,
-/// `CT`) and reference moves (`G74`) not followed.
+/// `CT`, modal until `G0`/`G1`, and the splines) and reference moves (`G74`) not followed.
 pub(crate) const SINUMERIK_PATH: super::family::PathWords = {
     use super::family::PathCommand::{Code, Name};
     super::family::PathWords {
@@ -945,10 +945,6 @@ pub(crate) const SINUMERIK_PATH: super::family::PathWords = {
         i_prefix: false,
         moves: &[],
         arcs: &[
-            Code(b'G', 20),
-            Code(b'G', 30),
-            Name(b"CIP"),
-            Name(b"CT"),
             Code(b'G', 740),
             Code(b'G', 750),
             // Moves in machine coordinates (the frames suppressed for the block).
@@ -968,6 +964,20 @@ pub(crate) const SINUMERIK_PATH: super::family::PathWords = {
             Name(b"MIRROR"),
             Name(b"AMIRROR"),
         ],
+        // G group 1: circles and splines stay in force until `G0`/`G1`.
+        circular: &[
+            Code(b'G', 20),
+            Code(b'G', 30),
+            Name(b"CIP"),
+            Name(b"CT"),
+            Name(b"ASPLINE"),
+            Name(b"BSPLINE"),
+            Name(b"CSPLINE"),
+            Name(b"POLY"),
+        ],
+        linear: &[Code(b'G', 0), Code(b'G', 10)],
+        canned: &[],
+        canned_off: &[],
         // A dwell (`G4 F2`).
         still: &[Code(b'G', 40)],
         off_after: &[],
