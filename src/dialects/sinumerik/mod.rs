@@ -547,7 +547,8 @@ fn frame_command(
             let (plane, a, b) = match given {
                 [true, true, true] => return Err(at(column)(Error::UnknownWord)),
                 [_, true, true] => (RotsPlane::YZ, y, z),
-                [true, false, true] => (RotsPlane::ZX, z, x),
+                // `ROTS Z30` alone: Z with X 0 (the same rotation as Y 0 with Z).
+                [_, false, true] => (RotsPlane::ZX, z, x),
                 _ => (RotsPlane::XY, x, y),
             };
             Frame::from_rotation(rots(plane, a, b))
@@ -1315,6 +1316,30 @@ mod tests {
             .atan()
             .to_degrees();
         assert!((gamma - 28.481238).abs() < 1e-6);
+    }
+
+    /// One solid angle alone is the rotation about its own axis (the other 0): `ROTS Z30`
+    /// is Rz(30°), as `ROTS Z30 X0` and `ROTS Y0 Z30` (it was read as no rotation).
+    #[test]
+    fn rots_with_one_angle() {
+        for (block, axis) in [
+            ("ROTS Z30", Axis::Z),
+            ("AROTS Z30", Axis::Z),
+            ("CROTS Z30", Axis::Z),
+            ("ROTS X30", Axis::X),
+            ("ROTS Y30", Axis::Y),
+            ("ROTS Z30 X0", Axis::Z),
+            ("ROTS Y0 Z30", Axis::Z),
+        ] {
+            let (p, _) = crate::dialects::program::Program::default()
+                .line(crate::dialects::program::Dialect::Sinumerik, block.as_bytes())
+                .unwrap();
+            let f = p.frame;
+            assert!(
+                close(&f.rotation, &crate::elementary(axis, 30.0), 1e-15),
+                "{block}: {f:?}"
+            );
+        }
     }
 
     /// The defining geometry, for every projection position and angles in all quadrants:
