@@ -779,6 +779,8 @@ pub(crate) const HEIDENHAIN_PATH: super::family::PathWords = {
             Phrase(&[b"CYCL", b"DEF", b"DATUM"]),
             Phrase(&[b"TRANS", b"DATUM"]),
             Name(b"PLANE"),
+            // Probing: moves of their own, and a datum or basic rotation they may set.
+            Phrase(&[b"TCH", b"PROBE"]),
         ],
         // Every contour block names its kind (`L`, `C`, `CR`): no modal mode.
         circular: &[],

@@ -301,6 +301,25 @@ fn is_command(w: &Word, rest: &Words, c: &PathCommand) -> bool {
     }
 }
 
+/// Whether the tilted-plane reader of `dialect` reads `text` as a block that tilts or
+/// shifts the frame (`CYCLE800`, `CROT`, `PLANE`, cycle 19, cycle 7's axis lines, `G68.2`,
+/// `G52`: a tilt or datum shift active after it, read from no tilt; a SINUMERIK frame
+/// variable written). A cancel is not one:
+/// the reader's frame is the one without. A block the tilted-plane reader refuses or
+/// does not follow is left to the lists of [`PathWords`] (a work-offset selection such as
+/// `G54`, which states the frame the program's coordinates are in, is passed over). Not
+/// inlined: its frame is gone when the block's words are read (stack bound).
+#[inline(never)]
+fn frame_block(dialect: Dialect, text: &[u8]) -> bool {
+    use super::program::{Program, Remark};
+    match Program::default().line(dialect, text) {
+        Ok((next, Remark::Applied)) => next.is_active(),
+        // A SINUMERIK frame variable written (`$P_PFRAME=CROT(Z,90)`, `$P_UIFR[1]=…`).
+        Ok((_, Remark::NotFollowed)) => text.windows(3).any(|w| w.eq_ignore_ascii_case(b"$P_")),
+        _ => false,
+    }
+}
+
 impl ToolPath {
     /// The state after block `text` of a program in `dialect`, and what the block did. A
     /// refused block leaves the caller's state as it was: [`Error::NotAvailable`] for a
@@ -315,6 +334,24 @@ impl ToolPath {
                 expected: None,
             });
         };
+        // A block that tilts or shifts the frame: the coordinates after it are read in a
+        // frame this reader does not follow.
+        if frame_block(dialect, text) {
+            return Ok((*self, PathRemark::NotFollowed));
+        }
+        self.read(pw, dialect, text)
+    }
+
+    /// [`ToolPath::line`] for a block that is no tilt or shift: its words. Not inlined:
+    /// its frame and the tilted-plane reader's are on the stack one after the other, not
+    /// one over the other (stack bound).
+    #[inline(never)]
+    fn read(
+        &self,
+        pw: &PathWords,
+        dialect: Dialect,
+        text: &[u8],
+    ) -> Result<(ToolPath, PathRemark), LineError> {
         let text = block_of(dialect, text)?;
         let mut words = Words {
             text,
@@ -694,6 +731,54 @@ mod tests {
             }
         );
         assert!(!out[11].0.on);
+    }
+
+    /// Blocks that tilt or shift the frame the coordinates are read in are not followed,
+    /// whatever their spelling (`CROT`, a `CYCLE800` swivel before `TRAORI` gave the
+    /// points of the program without it); a cancel and a work-offset selection pass.
+    #[test]
+    fn frame_blocks_are_not_followed() {
+        use PathRemark::*;
+        for (d, block, want) in [
+            (Dialect::Sinumerik, "N20 CROT Z90", NotFollowed),
+            (Dialect::Sinumerik, "/N20 AROTS Z30", NotFollowed),
+            (
+                Dialect::Sinumerik,
+                "CYCLE800(1,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,-1,0,0)",
+                NotFollowed,
+            ),
+            (
+                Dialect::Sinumerik,
+                "CYCLE600(0,\"HEAD\",1,57,0,0,0,30,0,0,0,0,0,0,57)",
+                NotFollowed,
+            ),
+            (Dialect::Sinumerik, "$P_PFRAME=CROT(Z,90)", NotFollowed),
+            (Dialect::Sinumerik, "TOFRAME", NotFollowed),
+            (Dialect::Sinumerik, "CYCLE800()", Passed),
+            (Dialect::Sinumerik, "G54", Passed),
+            (Dialect::Heidenhain, "5 CYCL DEF 19.1 B+30", NotFollowed),
+            (Dialect::Heidenhain, "5 CYCL DEF 7.1 X+10", NotFollowed),
+            (
+                Dialect::Heidenhain,
+                "5 TCH PROBE 410 DATUM INSIDE RECTAN",
+                NotFollowed,
+            ),
+            (Dialect::Heidenhain, "5 PLANE RESET STAY", NotFollowed),
+            (Dialect::Fanuc, "G52 X10.", NotFollowed),
+            (Dialect::Haas, "G268 X0 Y0 Z0 I0 J30. K0 Q123", NotFollowed),
+            (Dialect::Fanuc, "G69", Passed),
+        ] {
+            let on = if d == Dialect::Heidenhain {
+                "M128"
+            } else if d == Dialect::Sinumerik {
+                "TRAORI"
+            } else {
+                "G43.4 H1"
+            };
+            let out = run(d, &[on, block]);
+            assert_eq!(out[1].1, want, "{block}");
+            assert_eq!(out[1].0, out[0].0, "{block}");
+        }
     }
 
     /// `G2`/`G3` (group 01) stay in force until `G0`/`G1`, a canned cycle (group 09) until

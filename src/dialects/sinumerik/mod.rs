@@ -957,9 +957,14 @@ pub(crate) const SINUMERIK_PATH: super::family::PathWords = {
             Name(b"ATRANS"),
             Name(b"ROT"),
             Name(b"AROT"),
+            Name(b"CROT"),
             Name(b"ROTS"),
             Name(b"AROTS"),
             Name(b"CROTS"),
+            Name(b"TOFRAME"),
+            Name(b"TOROT"),
+            Name(b"PAROT"),
+            Name(b"PRESETON"),
             Name(b"SCALE"),
             Name(b"ASCALE"),
             Name(b"MIRROR"),
@@ -1332,7 +1337,10 @@ mod tests {
             ("ROTS Y0 Z30", Axis::Z),
         ] {
             let (p, _) = crate::dialects::program::Program::default()
-                .line(crate::dialects::program::Dialect::Sinumerik, block.as_bytes())
+                .line(
+                    crate::dialects::program::Dialect::Sinumerik,
+                    block.as_bytes(),
+                )
                 .unwrap();
             let f = p.frame;
             assert!(
