@@ -345,21 +345,29 @@ static void whole_programs(void) {
     cncrot_program edited = q;
     edited.choice = 7;
     CHECK_STATUS(cncrot_program_line(&edited, CNCROT_DIALECT_HEIDENHAIN, "PLANE RESET", 11), CNCROT_STATUS_BAD_STATE);
-    /* G53.1 P2: the master axis turns down only. From B -25 that is B -30 (5 degrees
-     * away), where the closest choice would be B 30 with C 0; as the machine's own choice
-     * under that rule on axis 2, bit for bit. */
+    /* G53.1 P2: the primary axis (C, which carries B) turns down only, B the shortest way.
+     * The solutions are (C 0, B 30) and (C 180, B -30): from C 20, down reaches 0 after
+     * 20 degrees; up (P1) reaches 180 after 160 degrees. As the machine's own choice under
+     * that rule on axis 1, bit for bit. */
     cncrot_program g;
     memset(&g, 0, sizeof g);
     static const char *fanuc[] = {"G68.2 X0 Y0 Z0 I90 J30 K-90", "G53.1 P2"};
     for (size_t k = 0; k < 2; k++) CHECK(cncrot_program_line(&g, CNCROT_DIALECT_FANUC, fanuc[k], strlen(fanuc[k])) >= 0, "%s", fanuc[k]);
     CHECK(g.choice == CNCROT_CHOOSE_NEGATIVE_TURN && g.reference_axis == 0 && g.positioning == CNCROT_POSITIONING_TURN,
           "G53.1 P2: %d %d %d", g.choice, g.reference_axis, g.positioning);
-    double from[3] = {0, -25, 0}, down[3], gf[16], want[3], wres[3], wrem[16];
+    double from[3] = {20, -25, 0}, down[3], gf[16], want[3], wres[3], wrem[16];
     CHECK_STATUS(cncrot_program_axes(&g, &head, from, down), CNCROT_STATUS_OK);
-    CHECK(fabs(down[1] + 30) < 1e-9, "G53.1 P2: B %g", down[1]);
+    CHECK(fabs(down[0]) < 1e-9 && fabs(down[1] - 30) < 1e-9, "G53.1 P2: C %g B %g", down[0], down[1]);
     CHECK_STATUS(cncrot_program_frame(&g, gf), CNCROT_STATUS_OK);
-    CHECK_STATUS(cncrot_machine_choose(&head, gf, from, CNCROT_CHOOSE_NEGATIVE_TURN, 2, want, wres, wrem), CNCROT_STATUS_OK);
+    CHECK_STATUS(cncrot_machine_choose(&head, gf, from, CNCROT_CHOOSE_NEGATIVE_TURN, 1, want, wres, wrem), CNCROT_STATUS_OK);
     CHECK(memcmp(down, want, sizeof down) == 0, "program_axes is the machine's choice");
+    {
+      cncrot_program up = g;
+      double ax1[3];
+      CHECK_STATUS(cncrot_program_line(&up, CNCROT_DIALECT_FANUC, "G53.1 P1", 8), CNCROT_STATUS_OK);
+      CHECK_STATUS(cncrot_program_axes(&up, &head, from, ax1), CNCROT_STATUS_OK);
+      CHECK(fabs(ax1[0] - 180) < 1e-9 && fabs(ax1[1] + 30) < 1e-9, "G53.1 P1: C %g B %g", ax1[0], ax1[1]);
+    }
     /* P3 names no way to turn: refused at the value, the state untouched. */
     cncrot_program before = g;
     CHECK_STATUS(cncrot_program_line(&g, CNCROT_DIALECT_FANUC, "G53.1 P3", 8), CNCROT_STATUS_BAD_ARGUMENT);

@@ -1875,11 +1875,12 @@ fn choice_words_are_kept_and_followed() {
         .0;
     assert_eq!(p.choice, AxisChoice::Closest);
 
-    // G53.1 P (LinuxCNC's remap): P0 the shortest way, P1 the master axis (B here) turning
-    // up only, P2 down only. From B -25: up reaches 30 after 55°, -30 only after 355°;
-    // down reaches -30 after 5° (C then ±180).
+    // G53.1 P (LinuxCNC's remap): P0 the control's rule, P1 the primary axis (C here: it
+    // carries B, "the secondary [is] the one closest to the tool") turning up only, P2
+    // down only, the other the shortest way. The solutions: (C 0, B 30), (C 180, B -30).
+    // From C 20: up reaches 180 after 160°, 0 only after 340°; down reaches 0 after 20°.
     let g53 = |p: &str| read(Dialect::Fanuc, &["G68.2 X0 Y0 Z0 I90 J30 K-90", p]);
-    let from = [0.0, -25.0, 0.0];
+    let from = [20.0, -25.0, 0.0];
     let at = |p: &Program| p.axes(&head, from).unwrap().axes;
     assert_eq!(g53("G53.1 P1").choice, AxisChoice::PositiveTurn(0));
     assert_eq!(g53("G53.6 P2").choice, AxisChoice::NegativeTurn(0));
@@ -1902,18 +1903,20 @@ fn choice_words_are_kept_and_followed() {
     assert_eq!(&buf[..n], b"X10 Y20 Z30");
     let up = at(&g53("G53.1 P1"));
     assert!(
-        (up[0] - 0.0).abs() < 1e-9 && (up[1] - 30.0).abs() < 1e-9,
+        (up[0] - 180.0).abs() < 1e-9 && (up[1] + 30.0).abs() < 1e-9,
         "{up:?}"
     );
     let down = at(&g53("G53.1 P2"));
     assert!(
-        (down[0].abs() - 180.0).abs() < 1e-9 && (down[1] + 30.0).abs() < 1e-9,
+        (down[0] - 0.0).abs() < 1e-9 && (down[1] - 30.0).abs() < 1e-9,
         "{down:?}"
     );
-    // The same as the machine's own choice under that rule.
+    // The same as the machine's own choice under that rule, C (axis 0) the reference.
     let f = g53("G53.1 P2").frame.rotation;
-    let want = head.choose(&f, from, Rule::NegativeTurn(1)).unwrap().axes;
+    let want = head.choose(&f, from, Rule::NegativeTurn(0)).unwrap().axes;
     assert_eq!(down, want);
+    let want = head.choose(&f, from, Rule::PositiveTurn(0)).unwrap().axes;
+    assert_eq!(up, want);
     let e = Program::default()
         .line(Dialect::Fanuc, b"G53.1 P3")
         .unwrap_err();

@@ -340,11 +340,11 @@ function test_cncrot(cases_file)
   check(abs(ax(1) - 720) < 1e-9 && abs(ax(2) - 30) < 1e-9 && ax(3) == 0 && sx == 0, 'program_axes');
   Fp30 = cncrot_program_lines('heidenhain', 'PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY');
   check(isequal(ax, cncrot_machine_choose(hd, Fp30, [730 0 0], 'closest')), 'program_axes is the closest choice');
-  % G53.1 P2: the master axis (B, nearest the tool) turns down only: from B -25, -30.
+  % G53.1 P2: the primary axis (C, which carries B) turns down only: from C 20 to 0, B 30.
   [Fg, stg] = cncrot_program_lines('fanuc', {'G68.2 I90 J30 K-90', 'G53.1 P2'});
-  axg = cncrot_program_axes(stg, hd, [0 -25 0]);
-  check(stg.choice == 5 && stg.reference_axis == 0 && abs(axg(2) + 30) < 1e-9 && ...
-        isequal(axg, cncrot_machine_choose(hd, Fg, [0 -25 0], 'negative_turn', 2)), 'program_axes under G53.1 P2');
+  axg = cncrot_program_axes(stg, hd, [20 -25 0]);
+  check(stg.choice == 5 && stg.reference_axis == 0 && abs(axg(1)) < 1e-9 && abs(axg(2) - 30) < 1e-9 && ...
+        isequal(axg, cncrot_machine_choose(hd, Fg, [20 -25 0], 'negative_turn', 1)), 'program_axes under G53.1 P2');
   % The retraction and feed of the turn: MB50 along the tool axis (2), F2000 (1); CYCLE800's
   % _FR 4 is the maximum retraction (1).
   [~, stm] = cncrot_program_lines('heidenhain', 'PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB50 F2000');

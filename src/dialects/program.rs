@@ -203,10 +203,13 @@ impl Program {
         if let Some(d) = self.direct {
             return machine.commanded(direct_positions(&d, self.angles, machine)?, current);
         }
-        let axis = |k: u8| -> Result<usize, Error> {
+        // Axis k (1-based), or 0: the reference axis of a side (`SEQ±`, `_DIR`: the master
+        // axis) or of a direction of travel (`G53.1 P1`/`P2`: the primary axis, the one
+        // Fanuc's own rule moves first, that carries the other).
+        let axis = |k: u8, reference: usize| -> Result<usize, Error> {
             let n = machine.axes().len();
             match usize::from(k) {
-                0 => Ok(master_axis(machine)),
+                0 => Ok(reference),
                 k if k <= n => Ok(k - 1),
                 _ => Err(Error::BadArgument),
             }
@@ -220,10 +223,10 @@ impl Program {
             }
             AxisChoice::Closest => Rule::Closest,
             _ if machine.axes().is_empty() => Rule::Closest,
-            AxisChoice::Minus(k) => Rule::Minus(axis(k)?),
-            AxisChoice::Plus(k) => Rule::Plus(axis(k)?),
-            AxisChoice::PositiveTurn(k) => Rule::PositiveTurn(axis(k)?),
-            AxisChoice::NegativeTurn(k) => Rule::NegativeTurn(axis(k)?),
+            AxisChoice::Minus(k) => Rule::Minus(axis(k, master_axis(machine))?),
+            AxisChoice::Plus(k) => Rule::Plus(axis(k, master_axis(machine))?),
+            AxisChoice::PositiveTurn(k) => Rule::PositiveTurn(axis(k, fanuc_master(machine))?),
+            AxisChoice::NegativeTurn(k) => Rule::NegativeTurn(axis(k, fanuc_master(machine))?),
         };
         let mut c = machine.choose(&self.frame.rotation, current, rule)?;
         if let (Some(Dialect::Heidenhain), Rule::Minus(k) | Rule::Plus(k)) = (self.dialect, rule) {
