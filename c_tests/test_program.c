@@ -87,7 +87,7 @@ static void vendors(void) {
   CHECK_NEAR(r, rots, 9, 1e-6);
   one(CNCROT_DIALECT_SINUMERIK, "N20 CYCLE800(1,\"TC1\",0,185,0,0,0,30,20,0,0,0,0,-1,100,1)", r);
   CHECK_NEAR(r, rots, 9, 1e-6);
-  one(CNCROT_DIALECT_HEIDENHAIN, "PLANE PROJECTED PROPR+20 PROMIN+30 ROT+0 STAY", r);
+  one(CNCROT_DIALECT_HEIDENHAIN, "PLANE PROJECTED PROPR+20 PROMIN+30 PROROT+0 STAY", r);
   CHECK_NEAR(r, rots, 9, 1e-6);
 
   /* The paper's Example 3: CYCLE600 with the probe angles (30, 45, 60 about the machine X, Y,

@@ -90,7 +90,7 @@
 #define CNCROT_FORM_G68_3 12
 
 /**
- * Heidenhain `PLANE PROJECTED`: selector 0; words `PROPR PROMIN ROT`.
+ * Heidenhain `PLANE PROJECTED`: selector 0; words `PROPR PROMIN PROROT`.
  */
 #define CNCROT_FORM_PLANE_PROJECTED 13
 

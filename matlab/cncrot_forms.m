@@ -14,7 +14,7 @@ function f = cncrot_forms()
 %     TWINCAT_ROT     selector 0;                  words X Y Z
 %     G268            selector the Q word;         words X Y Z I J K
 %     G68_3           selector 0;                  words X Y Z R TX TY TZ (T: tool direction)
-%     PLANE_PROJECTED selector 0;                  words PROPR PROMIN ROT
+%     PLANE_PROJECTED selector 0;                  words PROPR PROMIN PROROT
 %
 %   cncrot_form_frame and cncrot_form_values take the field names as well, in lower or
 %   upper case, char or string, with ' ', '.' or '-' for '_': 'g68_2', 'G68.2', 'PLANE

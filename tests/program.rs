@@ -97,6 +97,19 @@ fn heidenhain_reads_the_worked_numbers_with_real_line_words() {
         &["PLANE PROJECTED PROPR+20 PROMIN+30 ROT+0 TABLE ROT STAY"],
     );
     assert!(dist(&f, &ROTS_X30_Y20) < 1e-6);
+    // The TNC's own word for the turn is PROROT (its manual's example block, as EULROT is
+    // PLANE EULER's): the same plane; both words at once refused.
+    let f = rot(
+        d,
+        &["PLANE PROJECTED PROPR+20 PROMIN+30 PROROT+0 MOVE ABST10 F500"],
+    );
+    assert!(dist(&f, &ROTS_X30_Y20) < 1e-6);
+    let f = rot(d, &["PLANE PROJECTED PROMIN+0 PROPR+0 PROROT+30 STAY"]);
+    assert!(dist(&f, &r(Axis::Z, 30.0)) < 1e-15);
+    let e = Program::default()
+        .line(d, b"PLANE PROJECTED PROPR+20 PROMIN+30 PROROT+0 ROT+0 STAY")
+        .unwrap_err();
+    assert_eq!(e.error, Error::UnknownWord);
     // RELATIV turns about the tilted axis: SPB30, then about the new X by 20.
     let f = rot(
         d,
@@ -940,7 +953,7 @@ fn projection_writers_give_their_words_back() {
             6,
         )
         .unwrap();
-        let want = format!("PLANE PROJECTED PROPR{propr:+} PROMIN{promin:+} ROT{rot_:+} STAY");
+        let want = format!("PLANE PROJECTED PROPR{propr:+} PROMIN{promin:+} PROROT{rot_:+} STAY");
         assert_eq!(line, want);
         let g = read(Dialect::Heidenhain, &[&line]).frame;
         assert!(dist(&g.rotation, &m) < 1e-6, "{line}");

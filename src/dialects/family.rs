@@ -377,7 +377,7 @@ pub enum Block {
 /// | [`Form::TwincatRot`] | 0 | `X Y Z` |
 /// | [`Form::G268`] | `Q` | `X Y Z I J K` |
 /// | [`Form::G68_3`] | 0 | `X Y Z R TX TY TZ` (the tool direction T; vertical axis +Z) |
-/// | [`Form::PlaneProjected`] | 0 | `PROPR PROMIN ROT` |
+/// | [`Form::PlaneProjected`] | 0 | `PROPR PROMIN PROROT` |
 ///
 /// ```
 /// use cncrot::dialects::form::{form_frame, Form};

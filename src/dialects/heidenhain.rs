@@ -102,9 +102,10 @@ pub fn relativ(active: &Frame, axis: Axis, angle: f64) -> Frame {
     active.compose(&Frame::from_rotation(crate::elementary(axis, angle)))
 }
 
-/// `PLANE PROJECTED PROPR PROMIN ROT`: the plane's line in the ZX plane makes the angle
+/// `PLANE PROJECTED PROPR PROMIN PROROT`: the plane's line in the ZX plane makes the angle
 /// PROPR with X (a turn about Y), its line in the YZ plane the angle PROMIN with Y (a turn
-/// about X), X' lies on the first line, and ROT turns about the new tool axis [doc wording];
+/// about X), X' lies on the first line, and PROROT turns about the new tool axis [doc
+/// wording];
 /// so `PROPR` and `PROMIN` are SINUMERIK's projection angles `ROTS Y=PROPR X=PROMIN`:
 /// `F = Ry(PROPR)·Rx(γ)·Rz(ROT)`, `tan γ = tan PROMIN · cos PROPR` [derived; the signs,
 /// right-handed about +Y and +X, are our choice: the manual's figures show no sign].
@@ -118,7 +119,7 @@ pub fn projected([propr, promin, rot]: [f64; 3]) -> Matrix {
     super::sinumerik::projection(Sequence::XYZ, [promin, propr, rot])
 }
 
-/// `PROPR PROMIN ROT` of a rotation: the inverse of [`projected`]; refused like the
+/// `PROPR PROMIN PROROT` of a rotation: the inverse of [`projected`]; refused like the
 /// projection mode of CYCLE800 when X' has turned onto Z with the plane turned about it
 /// ([`Error::OutOfRange`]).
 pub fn projected_angles(m: &Matrix) -> Result<Decomposition, Error> {
@@ -879,7 +880,7 @@ impl Family for Heidenhain {
     ];
 
     /// One block of a Heidenhain plain-language program: `PLANE SPATIAL SPA SPB SPC`,
-    /// `PLANE PROJECTED PROPR PROMIN ROT`, `PLANE EULER EULPR EULNU EULROT`,
+    /// `PLANE PROJECTED PROPR PROMIN PROROT`, `PLANE EULER EULPR EULNU EULROT`,
     /// `PLANE VECTOR BX BY BZ NX NY NZ`, `PLANE POINTS P1X … P3Z` (every word required, in any
     /// order), `PLANE RELATIV SPA|SPB|SPC` (on the active plane), `PLANE RESET`, each with the
     /// positioning and solution options, after a line number, with `;` comments; every other
@@ -929,7 +930,24 @@ impl Family for Heidenhain {
             let w = plane_words(&mut c, [b"SPA", b"SPB", b"SPC"])?;
             LineError::at(at, plane_frame(Form::PlaneSpatial, &w))?
         } else if c.keyword(b"PROJECTED") {
-            let w = plane_words(&mut c, [b"PROPR", b"PROMIN", b"ROT"])?;
+            // The TNC's word is `PROROT` (as `EULROT` of `PLANE EULER`); a bare `ROT` is
+            // read too, as earlier versions of this library wrote it.
+            let (w, given) = named_words(&mut c, [b"PROPR", b"PROMIN", b"PROROT", b"ROT"])?;
+            let [pr, min, prorot, rot] = w;
+            match given {
+                [true, true, true, false] | [true, true, false, true] => {}
+                [true, true, true, true] => {
+                    return Err(LineError {
+                        error: Error::UnknownWord,
+                        column: at,
+                        expected: Some("PROROT or ROT, not both"),
+                    })
+                }
+                [false, ..] => return Err(not_there(&c, "PROPR")),
+                [_, false, ..] => return Err(not_there(&c, "PROMIN")),
+                _ => return Err(not_there(&c, "PROROT")),
+            }
+            let w = [pr, min, prorot + rot];
             LineError::at(at, plane_frame(Form::PlaneProjected, &w))?
         } else if c.keyword(b"EULER") {
             let w = plane_words(&mut c, [b"EULPR", b"EULNU", b"EULROT"])?;
@@ -1035,7 +1053,7 @@ impl Family for Heidenhain {
         }
         let (head, names): (&[u8], &[&[u8]]) = match spec.form {
             Form::PlaneSpatial => (b"PLANE SPATIAL", &[b" SPA", b" SPB", b" SPC"]),
-            Form::PlaneProjected => (b"PLANE PROJECTED", &[b" PROPR", b" PROMIN", b" ROT"]),
+            Form::PlaneProjected => (b"PLANE PROJECTED", &[b" PROPR", b" PROMIN", b" PROROT"]),
             Form::PlaneEuler => (b"PLANE EULER", &[b" EULPR", b" EULNU", b" EULROT"]),
             Form::PlaneVector => (
                 b"PLANE VECTOR",

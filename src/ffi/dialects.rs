@@ -31,7 +31,7 @@ pub const CNCROT_FORM_G268: i32 = 11;
 /// Fanuc-style `G68.3` (vertical axis +Z): selector 0; words `X Y Z R TX TY TZ`, T the tool
 /// direction.
 pub const CNCROT_FORM_G68_3: i32 = 12;
-/// Heidenhain `PLANE PROJECTED`: selector 0; words `PROPR PROMIN ROT`.
+/// Heidenhain `PLANE PROJECTED`: selector 0; words `PROPR PROMIN PROROT`.
 pub const CNCROT_FORM_PLANE_PROJECTED: i32 = 13;
 /// The most words a form has (`count` is exactly the form's number of words).
 pub const CNCROT_FORM_MAX_WORDS: usize = 9;
