@@ -1219,24 +1219,55 @@ fn not_carried(line: usize, t: &Target, e: Error, block: &str) {
     );
 }
 
-/// The block number (`N20`) of an ISO-style block (after its skip mark), as written; `None`
-/// for Heidenhain, whose leading numbers count lines and are no word of the block.
+/// The block number (`N20`, SINUMERIK's main block `:20`) and SINUMERIK's label (`MARK:`)
+/// an ISO-style block starts with (after its skip mark), as written: what a jump (`GOTO20`,
+/// `GOTOB MARK`) or a restart by number looks for. `None` for Heidenhain, whose leading
+/// numbers count lines and are no word of the block, and for a block with neither.
 fn block_number(block: &str, from: Dialect) -> Option<String> {
     if from == Dialect::Heidenhain {
         return None;
     }
     let b = block.trim_start();
-    let b = match b.strip_prefix('/') {
+    let mut b = match b.strip_prefix('/') {
         Some(rest) => rest
             .trim_start_matches(|c: char| c.is_ascii_digit())
             .trim_start(),
         None => b,
     };
-    let rest = b.strip_prefix(['N', 'n'])?;
-    let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
-    let after = rest.get(digits.len()..).and_then(|r| r.chars().next());
-    let ends = !after.is_some_and(|c| c.is_ascii_alphanumeric() || c == '.');
-    (!digits.is_empty() && ends).then(|| format!("{}{digits}", &b[..1]))
+    let sinumerik = from == Dialect::Sinumerik;
+    let mut parts = Vec::new();
+    let number = b
+        .strip_prefix(['N', 'n'])
+        .or_else(|| b.strip_prefix(':').filter(|_| sinumerik));
+    if let Some(rest) = number {
+        let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
+        let after = rest.get(digits.len()..).and_then(|r| r.chars().next());
+        let ends = !after.is_some_and(|c| c.is_ascii_alphanumeric() || c == '.');
+        if !digits.is_empty() && ends {
+            parts.push(format!("{}{digits}", &b[..1]));
+            b = rest[digits.len()..].trim_start();
+        }
+    }
+    if sinumerik {
+        // A label: two letters or underscores first, then letters, digits, underscores,
+        // and the colon, before a blank or the end.
+        let name: String = b
+            .chars()
+            .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+            .collect();
+        let lead = name
+            .chars()
+            .take(2)
+            .all(|c| c.is_ascii_alphabetic() || c == '_');
+        let rest = &b[name.len()..];
+        let colon = rest.strip_prefix(':').is_some_and(|r| {
+            r.is_empty() || r.starts_with(char::is_whitespace) || r.starts_with(';')
+        });
+        if name.len() >= 2 && lead && colon {
+            parts.push(format!("{name}:"));
+        }
+    }
+    (!parts.is_empty()).then(|| parts.join(" "))
 }
 
 /// A block of a `from` program split into its code and its comments (`( … )` in the
@@ -1806,6 +1837,9 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     // The first block of the run that adds to the datum shift (`CYCL DEF 7.1 IX+10`,
     // `ATRANS`): its line and text.
     let mut adds: Option<(usize, String)> = None;
+    // The last block inside a loop that adds to the frame, since the frame was last set
+    // whole.
+    let mut looped_adds: Option<usize> = None;
     for (k, raw) in text.lines().enumerate() {
         let mut rewritten = false;
         let line = k + 1;
@@ -1882,6 +1916,34 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                 if target.is_some() {
                     (ok, uncarried) = (false, uncarried + 1);
                 }
+            }
+        }
+        // A block that changes the frame each time it runs (`AROT Z90`, `G68.4`, `PLANE
+        // RELATIV`, `ATRANS`: applied again, it is not where it was) inside a loop: the
+        // control runs it as often as the loop's condition says, cncrot once. The frame
+        // after it is followed for one pass: said once per loop; in a translation a later
+        // block that adds to that frame is not carried across.
+        if remark == Remark::Applied {
+            let again = p.line(dialect, source.as_bytes()).map(|r| r.0);
+            let adds_each_time = again.is_ok_and(|q| q != p);
+            if adds_each_time && calls.looped(k) {
+                if looped_adds.is_none() {
+                    eprintln!(
+                        "cncrot: line {line}: the block adds to the frame and stands in a loop, which the control runs as often as its condition says: cncrot follows one pass, so the frame after it is not the control's{}: {block}",
+                        if target.is_some() { " (a block after it that adds to the frame: not carried across)" } else { ": check on the control" }
+                    );
+                }
+                looped_adds = Some(line);
+            } else if !adds_each_time {
+                // A frame set whole (`ROT`, `G68.2`, a cancel): the control's again.
+                looped_adds = None;
+            } else if let (Some(_), Some(at)) = (&target, looped_adds) {
+                // Written as an increment it would be right, as the frame it reaches (a
+                // datum shift, a target without the increment) not: not told apart here.
+                eprintln!(
+                    "cncrot: line {line}: the block adds to a frame that a loop above (line {at}) changed as often as it ran, which cncrot followed for one pass: not carried across: {block}"
+                );
+                (ok, uncarried) = (false, uncarried + 1);
             }
         }
         if remark == Remark::Passed {

@@ -300,7 +300,8 @@ pub enum Cut {
 
 /// The loops of a program's lines (see [`Labels::looped`]): each opener matched with the
 /// nearest closer of its kind below it; a SINUMERIK `REPEAT LABEL P=n` from the line that
-/// defines `LABEL:`; a Heidenhain conditional jump (`FN 12: IF … GOTO LBL 1`, `IF … GOTO
+/// defines `LABEL:`; a SINUMERIK jump (`GOTOB`, `GOTO`, `GOTOC`) back to a label above it;
+/// a Heidenhain conditional jump (`FN 12: IF … GOTO LBL 1`, `IF … GOTO
 /// LBL`) back to a label above it.
 fn loops(dialect: Dialect, lines: &[String]) -> Vec<std::ops::Range<usize>> {
     let upper: Vec<Vec<String>> = lines
@@ -385,6 +386,19 @@ fn loops(dialect: Dialect, lines: &[String]) -> Vec<std::ops::Range<usize>> {
                     // `REPEAT` with a label is the section repeat below.
                     if first(k) == open && !(open == "REPEAT" && w.len() > 1) {
                         out.extend(close(k, &|i| first(i) == end));
+                    }
+                }
+                // A jump back to a label above (`IF R1<4 GOTOB MARK`, `GOTO MARK`,
+                // `GOTOC MARK`; the label alone on its line or before the block's words).
+                if let Some(g) = w
+                    .iter()
+                    .position(|x| matches!(x.as_str(), "GOTOB" | "GOTO" | "GOTOC"))
+                {
+                    if let Some(name) = w.get(g + 1) {
+                        let name = format!("{name}:");
+                        if let Some(at) = (0..k).rev().find(|&i| first(i) == name) {
+                            out.push(at..k + 1);
+                        }
                     }
                 }
                 if let (Some(x), Some(label)) = (w.first(), w.get(1)) {

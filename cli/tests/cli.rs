@@ -3316,3 +3316,39 @@ fn program_to_keeps_increments() {
         r.stderr
     );
 }
+
+/// A block that adds to the frame inside a loop (here a jump back, `GOTOB MARK`) runs as
+/// often as the loop's condition says, cncrot's reading once: the report says so, and a
+/// translation does not carry across a later block that adds to that frame (it was exit 0,
+/// the frame after the loop one pass's: Rz(90) where the control has Rz(360)). The label and
+/// SINUMERIK's main block number stay on their translated blocks, so the jump finds them
+/// (both were dropped).
+#[test]
+fn program_names_a_frame_added_to_in_a_loop() {
+    let prog = "N5 R1=0\nMARK: AROT Z90\nN20 G1 X10\nN25 R1=R1+1\nN30 IF R1<4 GOTOB MARK\n\
+                N35 ATRANS X5\n:40 ROT Z30\nN50 BACK: ROT\nN60 M30\n";
+    let r = cncrot(&["program", "-", "--dialect", "sinumerik"], prog);
+    assert!(
+        r.stderr
+            .contains("line 2: the block adds to the frame and stands in a loop")
+            && r.stderr.contains("check on the control"),
+        "{}",
+        r.stderr
+    );
+    let r = translate(prog, "sinumerik", "sinumerik");
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr
+            .contains("line 6: the block adds to a frame that a loop above (line 2)"),
+        "{}",
+        r.stderr
+    );
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert!(lines[1].starts_with("MARK: CYCLE800("), "{}", r.stdout);
+    assert!(lines[6].starts_with(":40 CYCLE800("), "{}", r.stdout);
+    assert_eq!(lines[7], "N50 BACK: CYCLE800()");
+    // A frame set whole after the loop is the control's again: nothing after it flagged.
+    let set = prog.replace("N35 ATRANS X5\n", "");
+    let r = translate(&set, "sinumerik", "fanuc");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+}
