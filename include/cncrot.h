@@ -1966,9 +1966,9 @@ int32_t cncrot_program_init(struct cncrot_program *program, uint32_t options);
  * other than the program's, a value outside its set such as `_ST`, a `P` or `Q` that is no
  * whole number, an invalid `_MIHEAD`), `CNCROT_STATUS_BAD_STATE` (a state this library did
  * not write), `CNCROT_STATUS_NOT_AVAILABLE` (a direct mode that is
- * additive, incremental or turns after its rotation, and an incremental command such as
- * `PLANE RELATIV`, `G68.4`, `AROT` on an active direct mode: they need the machine's
- * kinematics), `CNCROT_STATUS_OUT_OF_RANGE` (a number of magnitude 1e100 or
+ * additive, incremental or turns after its rotation: it needs the machine's kinematics;
+ * an incremental command such as `PLANE RELATIV`, `G68.4`, `AROT` on an active direct
+ * mode is `CNCROT_STATUS_NOT_FOLLOWED`), `CNCROT_STATUS_OUT_OF_RANGE` (a number of magnitude 1e100 or
  * more, or non-zero below 1e-100; a frame that overflows), and the statuses of the
  * command's mathematics: `CNCROT_STATUS_BAD_FLAG` (a CYCLE600 flag),
  * `CNCROT_STATUS_BAD_SEQUENCE` (an axis order in `_MODE`, `_BIN_IN`/`_BIN_OUT`, `P`, `Q`),

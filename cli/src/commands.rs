@@ -1195,7 +1195,13 @@ pub fn axes(
 /// `/1`–`/9` kept between ISO-style dialects; Heidenhain has one mark, and its digits after
 /// `/` are the block number), or "" for a block without one.
 fn skip_mark(block: &str, from: Dialect, to: Dialect) -> String {
-    let b = block.trim_start();
+    let mut b = block.trim_start();
+    if from == Dialect::Heidenhain {
+        // After the line number too, where the TNC shows it (`12 /L X+0`).
+        b = b
+            .trim_start_matches(|c: char| c.is_ascii_digit())
+            .trim_start();
+    }
     let Some(rest) = b.strip_prefix('/') else {
         return String::new();
     };

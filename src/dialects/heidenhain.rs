@@ -294,6 +294,13 @@ fn write_relativ(words: &[f64], how: Motion, decimals: i32, out: &mut Out) -> Re
 /// frame (stack bound).
 #[inline(never)]
 fn axial(m: &Modal, c: &mut Cursor) -> Result<Block, LineError> {
+    // Incremental (`IB+15`): "the angle by which the axis is to be tilted from its current
+    // position", which the program does not state.
+    let mut ahead = c.clone();
+    ahead.spaces();
+    if ahead.peek() == Some(b'I') {
+        return Ok(Block::NotFollowed);
+    }
     let (direct, positions) = axial_words(c)?;
     let how = options(c)?;
     // The positions are the solution: `SEQ` has nothing to choose.
@@ -445,7 +452,8 @@ fn plane_frame(form: Form, w: &[f64]) -> Result<Frame, Error> {
 /// tilted the working plane" \[doc\]), then held in the workpiece axes (it stays where it
 /// was put when the plane is cancelled \[choice\]).
 /// A datum table row (`#5`, `TRANS DATUM TABLE`) or another axis (`A`, `U`) is not
-/// followed.
+/// followed, nor is a shift under a direct mode (`PLANE AXIAL`: its tilted axes are the
+/// machine's); an axis written twice is refused.
 fn datum_shift(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
     // `keyword` takes only what it matches: a block that is no `CYCL DEF` still has its
     // `TRANS` at the cursor.
@@ -478,7 +486,11 @@ fn datum_shift(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
     };
     // Under a tilt, along the tilted axes: the shift as the tilted axes see it, each axis
     // the block names set there, then back in the workpiece axes.
-    let tilted = m.direct.is_none() && m.frame.rotation != crate::IDENTITY;
+    // Under a direct mode (`PLANE AXIAL`) the tilted axes are the machine's: not known here.
+    if m.direct.is_some() {
+        return Ok(Some(Block::NotFollowed));
+    }
+    let tilted = m.frame.rotation != crate::IDENTITY;
     let r = m.frame.rotation;
     let mut shift = if tilted {
         crate::rotate_inverse(&r, m.shift)
@@ -486,12 +498,14 @@ fn datum_shift(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
         m.shift
     };
     let mut any = false;
+    let mut seen = [false; 3];
     loop {
         c.spaces();
         if c.rest_is_comment(true, false) {
             c.end(true, false)?;
             break;
         }
+        let column = c.column();
         let incremental = c.peek() == Some(b'I');
         if incremental {
             c.bump();
@@ -501,9 +515,21 @@ fn datum_shift(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
             Some(b'Y') => 1,
             Some(b'Z') => 2,
             // A datum table row, a rotary or parallel axis: not followed.
+            Some(b'A'..=b'Z') => return Ok(Some(Block::NotFollowed)),
             _ if cycle || any => return Ok(Some(Block::NotFollowed)),
             _ => return Err(c.missing("X, Y or Z")),
         };
+        // An axis twice (`X+10 X+20`) is the control's error, not a value to pick.
+        if seen.get(axis).copied().unwrap_or(true) {
+            return Err(LineError {
+                error: Error::UnknownWord,
+                column,
+                expected: None,
+            });
+        }
+        if let Some(s) = seen.get_mut(axis) {
+            *s = true;
+        }
         c.bump();
         let v = c.number(SYNTAX)?;
         if let Some(s) = shift.get_mut(axis) {
@@ -641,6 +667,11 @@ fn past_block_number(c: &mut Cursor) {
         c.bump();
     }
     c.spaces();
+    // The skip mark after the number, where the TNC shows it (`12 /L X+0`).
+    if c.peek() == Some(b'/') {
+        c.bump();
+        c.spaces();
+    }
 }
 
 /// Cycle 19, WORKING PLANE (`CYCL DEF 19.0 WORKING PLANE`, then `CYCL DEF 19.1 A+0 B+45
@@ -703,8 +734,9 @@ fn working_plane(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> 
 /// A Heidenhain block (from its first word, after the block number) that is not a `PLANE`:
 /// not followed when it shifts, mirrors, rotates, scales or tilts the coordinate system or
 /// selects or writes a datum (`CYCL DEF` 7 datum shift, 8 mirror image, 10 rotation, 11 and
-/// 26 scaling, 19 working plane, 247 datum setting; `TRANS` datum, mirror and rotation
-/// functions; `PRESET`; `FN 17: SYSWRITE`); passed over otherwise (`L`, `C`, `CC`, `TOOL
+/// 26 scaling, 19 working plane, 247 datum setting; the probing cycles that set a datum or
+/// a basic rotation, `TCH PROBE 400`–`419` and `1400`–`1499`; `TRANS` datum, mirror and
+/// rotation functions; `PRESET`; `FN 17: SYSWRITE`); passed over otherwise (`L`, `C`, `CC`, `TOOL
 /// CALL`, `CYCL DEF` of machining cycles, `CALL`, `LBL`, `FN` arithmetic, `Q` parameters,
 /// `M` functions, `BEGIN`/`END PGM`, `BLK FORM`, `FUNCTION`, …).
 #[inline(never)]
@@ -718,10 +750,17 @@ fn other_block(text: &[u8]) -> Block {
     let is = |t: Option<Token>, name: &[u8]| t.is_some_and(|t| t.is(name));
     // A cycle or function number (`7.0` is cycle 7's first line): its whole part.
     let integer = |t: Option<Token>| t.and_then(|t| t.code()).map(|c| c / 10);
+    let third = t.next();
     let cycle = is(first, b"CYCL") && is(second, b"DEF");
-    let frame_cycle = cycle && matches!(integer(t.next()), Some(7 | 8 | 10 | 11 | 19 | 26 | 247));
+    let frame_cycle = cycle && matches!(integer(third), Some(7 | 8 | 10 | 11 | 19 | 26 | 247));
+    // The probing cycles that set a datum or a basic rotation by what they measure (400–419;
+    // the TNC7's 1400s): "If you enter Q305=0, the TNC automatically sets the display so
+    // that the new datum is at the center of the pocket" (iTNC 530 cycle 412).
+    let probe = is(first, b"TCH")
+        && is(second, b"PROBE")
+        && matches!(integer(third), Some(400..=419 | 1400..=1499));
     let syswrite = is(first, b"FN17") || (is(first, b"FN") && integer(second) == Some(17));
-    if frame_cycle || is(first, b"TRANS") || is(first, b"PRESET") || syswrite {
+    if frame_cycle || probe || is(first, b"TRANS") || is(first, b"PRESET") || syswrite {
         Block::NotFollowed
     } else {
         Block::Passed

@@ -102,8 +102,9 @@ pub enum Remark {
     /// structure, comments, a blank line): the state is the one given, byte for byte.
     Passed,
     /// The block changes the frame in a way the library does not follow (a work-offset or
-    /// preset selection, a table or frame-variable write, mirroring, scaling, a tilt that
-    /// needs the machine): the state is the one given, and may no longer be the control's.
+    /// preset selection, a table or frame-variable write, mirroring, scaling, an increment
+    /// on an active direct mode, whose base is the machine's): the state is the one given,
+    /// and may no longer be the control's.
     NotFollowed,
 }
 
@@ -124,7 +125,14 @@ impl Program {
             });
         }
         let text = block_of(dialect, text)?;
-        let next = match dialect.read_line(&self.modal(), text)? {
+        let read = match dialect.read_line(&self.modal(), text) {
+            // An increment on an active direct mode (`PLANE RELATIV` after `PLANE AXIAL`,
+            // `AROT` after a direct `CYCLE800`): well formed, its base the machine's
+            // rotation, not known here.
+            Err(e) if e.error == Error::NotAvailable && self.direct.is_some() => Block::NotFollowed,
+            r => r?,
+        };
+        let next = match read {
             Block::Frame(next) => next,
             Block::Passed => return Ok((*self, Remark::Passed)),
             Block::NotFollowed => return Ok((*self, Remark::NotFollowed)),

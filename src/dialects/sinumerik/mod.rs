@@ -523,7 +523,14 @@ fn frame_command(
     additive: bool,
     kind: u8,
 ) -> Result<Block, LineError> {
-    let words = address_words(c, *b"XYZ", WORDS, true, (true, false))?;
+    let words = match address_words(c, *b"XYZ", WORDS, true, (true, false)) {
+        Ok(w) => w,
+        // An offset of a special axis (`TRANS C90`, `ATRANS X10 A5`: "the programmable
+        // offsets for all geometry axes and special axes are specified with TRANS"):
+        // the geometry is not all the block changes.
+        Err(e) if kind == b'T' && e.error == Error::UnknownWord => return Ok(Block::NotFollowed),
+        Err(e) => return Err(e),
+    };
     let (xyz, given) = (words.values, words.given);
     let count = given.iter().filter(|&&g| g).count();
     if count == 0 {
@@ -631,6 +638,10 @@ fn cycle800_line(m: &Modal, c: &mut Cursor) -> Result<Modal, LineError> {
     let args = Args::<16>::read(c, 1)?;
     c.end(true, false)?;
     if args.n == 0 {
+        return Ok(m.with_frame(Frame::IDENTITY));
+    }
+    // `_TC` "0" deselects whatever follows it, or does not (`CYCLE800(0,"0")`).
+    if args.n >= 2 && args.name(1)? == b"0" {
         return Ok(m.with_frame(Frame::IDENTITY));
     }
     if args.n < 4 {
@@ -839,6 +850,16 @@ fn other_block(m: &Modal, rest: &[u8], offset: usize) -> Result<Block, LineError
         semicolon: true,
         parens: false,
     };
+    // `SCALE` or `MIRROR` without values, alone on the block: like `TRANS` and `ROT`
+    // without values they replace the programmable frame with none ("SCALE ; without
+    // values: clears the old instructions for offset, rotation, scaling factor,
+    // mirroring") [doc].
+    let mut words = Tokens::new(rest, comments, false);
+    if let (Some(t), None) = (words.next(), words.next()) {
+        if t.is(b"SCALE") || t.is(b"MIRROR") {
+            return Ok(Block::Frame(m.with_frame(Frame::IDENTITY)));
+        }
+    }
     const COMMANDS: [&[u8]; 10] = [
         b"ROT",
         b"CROT",
