@@ -1811,7 +1811,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
             .map(|(k, raw)| {
                 calls.enter(k, &mut q);
                 let raw = raw.trim_end_matches('\r');
-                let resolved = calls.params().resolve(raw, &q);
+                let resolved = calls.params().resolve(raw, &q, k);
                 let source = resolved.as_ref().map_or(raw, |(t, _)| t.as_str());
                 match q.line(dialect, source.as_bytes()) {
                     Ok((next, Remark::Applied)) => {
@@ -1873,7 +1873,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
         }
         // A block that uses parameters the program sets once: read with their values
         // (written so in a translation), said on standard error.
-        let resolved = calls.params().resolve(block, &p);
+        let resolved = calls.params().resolve(block, &p, k);
         if let Some((_, used)) = &resolved {
             eprintln!("cncrot: line {line}: read with {used}: {block}");
         }

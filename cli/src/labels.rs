@@ -714,7 +714,8 @@ impl Labels {
                 let Some(line) = self.lines.get(i) else {
                     continue;
                 };
-                let resolved = self.params.resolve(line, p);
+                // Run from the call at line k: what is assigned above the call.
+                let resolved = self.params.resolve(line, p, k);
                 let text = resolved.as_ref().map_or(line.as_str(), |(t, _)| t.as_str());
                 if let Ok((next, Remark::Applied)) = p.line(self.dialect, text.as_bytes()) {
                     *p = next;

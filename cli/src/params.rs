@@ -205,8 +205,11 @@ impl Params {
 
     /// `block` with every parameter it uses replaced by its value, and what was replaced
     /// (`Q1 = 30 (line 4)`), when the library refuses the block where a variable stands, every
-    /// parameter it uses is known, and the replaced block is read on `p`; `None` otherwise.
-    pub fn resolve(&self, block: &str, p: &Program) -> Option<(String, String)> {
+    /// parameter it uses is known and assigned on a line above `runs_at` (0-based: the
+    /// block's own line, or the call that runs it; a use before its assignment reads the
+    /// value the control held before, which the program does not state), and the replaced
+    /// block is read on `p`; `None` otherwise.
+    pub fn resolve(&self, block: &str, p: &Program, runs_at: usize) -> Option<(String, String)> {
         if self.values.is_empty() {
             return None;
         }
@@ -238,6 +241,9 @@ impl Params {
             let Some(&Assigned::Once(value, line)) = self.values.get(&name) else {
                 return None;
             };
+            if line >= runs_at {
+                return None;
+            }
             // A sign before the parameter applies to its value (`SPB-Q1`, `J-#1`).
             let negated = out.ends_with('-');
             let signed = negated || out.ends_with('+');

@@ -3352,3 +3352,17 @@ fn program_names_a_frame_added_to_in_a_loop() {
     let r = translate(&set, "sinumerik", "fanuc");
     assert_eq!(r.code, 0, "{}", r.stderr);
 }
+
+/// A parameter used above its only assignment holds what the control held before, which
+/// the program does not state: the block stays refused (it was read with the value assigned
+/// below, exit 0, a tilt of 30° invented).
+#[test]
+fn program_reads_no_parameter_before_it_is_set() {
+    let prog = "0 BEGIN PGM QP MM\n1 PLANE SPATIAL SPA+0 SPB+Q1 SPC+0 STAY\n\
+                2 FN 0: Q1 = +30\n3 PLANE SPATIAL SPA+0 SPB+Q1 SPC+0 STAY\n4 END PGM QP MM\n";
+    let r = translate(prog, "heidenhain", "fanuc");
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(r.stderr.contains("line 2, column"), "{}", r.stderr);
+    assert!(r.stderr.contains("line 4: read with Q1 = +30 (line 3)"), "{}", r.stderr);
+    assert!(!r.stderr.contains("line 2: read with"), "{}", r.stderr);
+}
