@@ -112,7 +112,12 @@ fn called(dialect: Dialect, block: &str) -> Option<(String, usize)> {
     if dialect != Dialect::Heidenhain {
         let w = iso_words(block);
         let local = dialect == Dialect::Haas && iso_has_m(&w, 97);
-        if !(local || iso_has_m(&w, 98)) {
+        // A macro call (`G65 P2000 L2 A15.`) runs its program as `M98` does (its arguments
+        // are the program's `#` variables, not followed); `M198` one from external memory.
+        let macro_call = w
+            .iter()
+            .any(|(l, v)| *l == 'G' && v.parse::<f64>().is_ok_and(|g| g == 65.0));
+        if !(local || macro_call || iso_has_m(&w, 98) || iso_has_m(&w, 198)) {
             return None;
         }
         let p = iso_word(&w, 'P')?;

@@ -153,7 +153,7 @@ enum Command {
                             a way cncrot does not follow (a work offset, preset, datum shift, \
                             mirroring) is flagged. A Heidenhain CALL LBL is followed through \
                             its label (the frame after it is the one the label's blocks leave), \
-                            an M98 P (Haas also M97 P) through its subprogram in the same file. \
+                            an M98 P, G65 P or M198 P (Haas also M97 P) through its subprogram in the same file. \
                             --to writes the whole program with its tilt \
                             and cancel blocks in the target's language and every other block as \
                             it is, and flags on standard error what it cannot carry across \

@@ -3363,6 +3363,38 @@ fn program_reads_no_parameter_before_it_is_set() {
     let r = translate(prog, "heidenhain", "fanuc");
     assert_eq!(r.code, 1, "{}", r.stderr);
     assert!(r.stderr.contains("line 2, column"), "{}", r.stderr);
-    assert!(r.stderr.contains("line 4: read with Q1 = +30 (line 3)"), "{}", r.stderr);
+    assert!(
+        r.stderr.contains("line 4: read with Q1 = +30 (line 3)"),
+        "{}",
+        r.stderr
+    );
     assert!(!r.stderr.contains("line 2: read with"), "{}", r.stderr);
+}
+
+/// A macro call (`G65 P2000 A15.`) runs its program as `M98` does: followed through it (the
+/// increment there was read from the frame before the call, `I15.` where the control is at
+/// 45°); `M198` and a `G65` to a program not in the file are named.
+#[test]
+fn program_follows_a_macro_call() {
+    let prog = "%\nO1000\nN20 G68.2 X0 Y0 Z0 I0 J30. K0\nN30 G53.1\nN40 G65 P2000 A15.\n\
+                N50 G1 X10.\nN60 G69\nN70 M30\nO2000\nN100 G68.4 X0 Y0 Z0 I0 J15. K0\n\
+                N110 G53.1\nN120 M99\n%\n";
+    let r = translate(prog, "fanuc", "haas");
+    assert!(
+        r.stdout.contains("G268 X0. Y0. Z0. I45. J0. K0. Q123"),
+        "{}",
+        r.stdout
+    );
+    let r = cncrot(
+        &["program", "-", "--dialect", "fanuc"],
+        "G65 P9100 A1.\nM198 P1000\n",
+    );
+    assert!(
+        r.stderr
+            .contains("line 1: calls O9100, which is not in this file")
+            && r.stderr
+                .contains("line 2: calls O1000, which is not in this file"),
+        "{}",
+        r.stderr
+    );
 }
