@@ -1846,6 +1846,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     // The last block inside a loop that adds to the frame, since the frame was last set
     // whole.
     let mut looped_adds: Option<usize> = None;
+    let lines: Vec<&str> = text.lines().map(|l| l.trim_end_matches('\r')).collect();
     for (k, raw) in text.lines().enumerate() {
         let mut rewritten = false;
         let line = k + 1;
@@ -2126,6 +2127,11 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     }
                 }
                 let next = ahead.get(k + 1).copied().flatten();
+                // Blocks joined into one command share one skip mark: a block skipped
+                // alone (`/N20 G68.2 …` before `N30 G53.1`) is written alone.
+                let same_mark = lines.get(k + 1).is_some_and(|n| {
+                    skip_mark(n, dialect, dialect) == skip_mark(block, dialect, dialect)
+                });
                 // A turn to the plane and nothing else (a cancel, which moves nothing, sets the
                 // frame again: the state is the control's once more).
                 let turns_only = p.positioning != Positioning::Stay
@@ -2197,6 +2203,23 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                 &mut buf,
                             ),
                         }
+                    } else if next.is_some_and(|n| joins(&before, &p, &n)) && !same_mark {
+                        // Written alone: the next block's command, written as one, then says
+                        // this block's part again whether it was skipped or not.
+                        eprintln!(
+                            "cncrot: line {line}: the target writes this block and the next as one command, and only one of them is optional (/): written apart, the second says the first's part again: not carried across: {block}"
+                        );
+                        (ok, uncarried) = (false, uncarried + 1);
+                        let from = run.take().unwrap_or(before);
+                        write_block(
+                            t.dialect,
+                            t.form.as_bytes(),
+                            &from,
+                            &p,
+                            source.as_bytes(),
+                            d,
+                            &mut buf,
+                        )
                     } else if next.is_some_and(|n| joins(&before, &p, &n)) {
                         // Written with the next block.
                         run = run.or(Some(before));

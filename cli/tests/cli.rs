@@ -3398,3 +3398,30 @@ fn program_follows_a_macro_call() {
         r.stderr
     );
 }
+
+/// Blocks the target writes as one command (a `G68.2` and its `G53.1`, cycle 7's axis
+/// lines) with a skip mark on only one of them: either way the translation would be wrong
+/// with the switch on or off (the tilt came out unskippable): not carried across.
+#[test]
+fn program_to_names_a_join_of_optional_and_plain_blocks() {
+    let prog = "N10 G0 X0 Y0\n/N20 G68.2 X0 Y0 Z0 I0 J30 K0\nN30 G53.1\nN40 G1 X1.\nN60 M30\n";
+    let r = translate(prog, "fanuc", "heidenhain");
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("line 2: the target writes this block and the next as one command, and only one of them is optional"),
+        "{}",
+        r.stderr
+    );
+    let cycle = "CYCL DEF 7.0 DATUM SHIFT\n/CYCL DEF 7.1 X+10\nCYCL DEF 7.2 Y+20\nL X+0 FMAX\n";
+    assert_eq!(translate(cycle, "heidenhain", "fanuc").code, 1);
+    // Both optional, or neither: one command, with the mark where there is one.
+    let both = prog.replace("N30 G53.1", "/N30 G53.1");
+    let r = translate(&both, "fanuc", "heidenhain");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(
+        r.stdout
+            .contains("/PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN FMAX"),
+        "{}",
+        r.stdout
+    );
+}

@@ -1076,6 +1076,9 @@ pub fn rest(dialect: Dialect, text: &[u8], buf: &mut [u8]) -> Result<usize, Erro
 /// assert!(joins(&p0, &p1, &p2)); // one G52 X10. Y20. Z0.
 /// assert!(!joins(&p1, &p2, &p3)); // the shift, then the tilt
 /// assert!(joins(&p2, &p3, &p4)); // one G68.2 … then G53.1, one PLANE … TURN
+/// // Without the cycle's first line, from a program's first block: the same.
+/// let q1 = read(&Program::default(), "CYCL DEF 7.1 X+10");
+/// assert!(joins(&Program::default(), &q1, &read(&q1, "CYCL DEF 7.2 Y+20")));
 /// ```
 pub fn joins(before: &Program, after: &Program, next: &Program) -> bool {
     // Everything but the shift (and the frame's origin, which holds it) the same.
@@ -1084,6 +1087,8 @@ pub fn joins(before: &Program, after: &Program, next: &Program) -> bool {
             && Program {
                 shift: b.shift,
                 frame: b.frame,
+                // The dialect is recorded by the first block read.
+                dialect: b.dialect,
                 ..*a
             } == *b
     };
@@ -1097,13 +1102,19 @@ pub fn joins(before: &Program, after: &Program, next: &Program) -> bool {
             feed: b.feed,
             feed_mm_min: b.feed_mm_min,
             table_rot: b.table_rot,
+            dialect: b.dialect,
             ..*a
         } == *b
     };
     let tilted = after.frame.rotation != crate::IDENTITY || after.direct.is_some();
-    let shifts =
-        shift_only(before, after) && shift_only(after, next) && (before != after || tilted);
-    let turns = before != after
+    // Whether the block changed the state (the dialect recorded by a first block is no
+    // change: a safety cancel first in a program is a block of its own).
+    let changed = Program {
+        dialect: after.dialect,
+        ..*before
+    } != *after;
+    let shifts = shift_only(before, after) && shift_only(after, next) && (changed || tilted);
+    let turns = changed
         && after.positioning == Positioning::Stay
         && next.positioning != Positioning::Stay
         && moving_only(after, next);
