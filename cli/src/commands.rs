@@ -1387,16 +1387,37 @@ impl SinumerikFrames {
         applied: bool,
     ) -> Vec<(usize, String, &'static str)> {
         let upper = code.trim().to_uppercase();
-        let mut words = upper.split_whitespace();
-        let first = match words.next() {
-            Some(n) if n.starts_with('N') && n[1..].bytes().all(|b| b.is_ascii_digit()) => {
-                words.next().unwrap_or("")
+        // The command after what may stand before it: a skip mark (`/`, `/2`), a block
+        // number (`N20`, `:20`), a label (`MARK:`), each spelled apart or not.
+        let mut rest = upper.as_str();
+        loop {
+            rest = rest.trim_start();
+            let digits =
+                |r: &str| r.len() - r.trim_start_matches(|c: char| c.is_ascii_digit()).len();
+            if let Some(r) = rest.strip_prefix('/') {
+                rest = &r[digits(r)..];
+            } else if let Some(r) = rest.strip_prefix(['N', ':']).filter(|r| digits(r) > 0) {
+                rest = &r[digits(r)..];
+            } else if let Some(at) = rest.find(':').filter(|&at| {
+                at >= 2
+                    && rest[..at]
+                        .bytes()
+                        .all(|b| b.is_ascii_alphanumeric() || b == b'_')
+            }) {
+                rest = &rest[at + 1..];
+            } else {
+                break;
             }
-            Some(w) => w,
-            None => return Vec::new(),
+        }
+        let Some(first) = rest.split_whitespace().next() else {
+            return Vec::new();
         };
         let command = first.split(['=', '(']).next().unwrap_or("");
-        let replaces = matches!(command, "TRANS" | "ROT" | "ROTS" | "SCALE" | "MIRROR");
+        // `CROT` and `CROTS` are read as `ROT` and `ROTS`: they replace too.
+        let replaces = matches!(
+            command,
+            "TRANS" | "ROT" | "CROT" | "ROTS" | "CROTS" | "SCALE" | "MIRROR"
+        );
         let mut said = Vec::new();
         const RESET: &str =
             "CYCLE800() after TRANS, ROT or ATRANS, and the blocks after it: the control may keep their frame";
@@ -1438,12 +1459,7 @@ impl SinumerikFrames {
                 self.swivel = false;
             }
             self.programmable = !untilted;
-        } else if changed
-            && matches!(
-                command,
-                "ATRANS" | "AROT" | "AROTS" | "CROTS" | "ASCALE" | "AMIRROR"
-            )
-        {
+        } else if changed && matches!(command, "ATRANS" | "AROT" | "AROTS" | "ASCALE" | "AMIRROR") {
             self.programmable = true;
         }
         if untilted && self.reset.is_none() {

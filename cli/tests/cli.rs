@@ -3425,3 +3425,34 @@ fn program_to_names_a_join_of_optional_and_plain_blocks() {
         r.stdout
     );
 }
+
+/// SINUMERIK's frames and CYCLE800's swivel: the check reads the command whatever stands
+/// before it (a skip mark, `:20`, a label) and `CROT`/`CROTS` as the `ROT`/`ROTS` they are
+/// read as (each was translated silently, exit 0).
+#[test]
+fn program_to_names_frames_beside_a_swivel_however_spelled() {
+    for second in [
+        "/N20 ROT Z30",
+        ":20 ROT Z30",
+        "N20 CROT Z30",
+        "N20 CROTS X10 Y10",
+        "MARK: ROT Z30",
+    ] {
+        let prog = format!(
+            "N10 CYCLE800(0,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,-1,0,0)\n{second}\nN30 G1 X10\nN40 M30\n"
+        );
+        let r = translate(&prog, "sinumerik", "fanuc");
+        assert_eq!(r.code, 1, "{second}: {}", r.stderr);
+        assert!(
+            r.stderr.contains("while a CYCLE800 swivel is active"),
+            "{second}: {}",
+            r.stderr
+        );
+    }
+    let r = translate(
+        "N10 TRANS X10\nMARK: CYCLE800()\nN25 G1 X0\nN30 M30\n",
+        "sinumerik",
+        "fanuc",
+    );
+    assert_eq!(r.code, 1, "{}", r.stderr);
+}
