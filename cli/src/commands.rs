@@ -1215,6 +1215,27 @@ fn skip_mark(block: &str, from: Dialect, to: Dialect) -> String {
     }
 }
 
+/// The move `words` (`X5 Y6 Z7`, ISO-style) as a rapid in dialect `to`: `G0 X5 Y6 Z7`, or
+/// Heidenhain's `L X+5 Y+6 Z+7 FMAX`.
+fn rapid_move(words: &str, to: Dialect) -> String {
+    if to != Dialect::Heidenhain {
+        return format!("G0 {words}");
+    }
+    let signed: Vec<String> = words
+        .split_whitespace()
+        .map(|w| {
+            let (letter, value) = w.split_at(w.chars().next().map_or(0, char::len_utf8));
+            let value = value.trim_start_matches('=');
+            if value.starts_with(['+', '-']) {
+                format!("{letter}{value}")
+            } else {
+                format!("{letter}+{value}")
+            }
+        })
+        .collect();
+    format!("L {} FMAX", signed.join(" "))
+}
+
 /// Says on standard error that the block at `line` could not be written as `t`'s, and why.
 fn not_carried(line: usize, t: &Target, e: Error, block: &str) {
     eprintln!(
@@ -2677,7 +2698,10 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                                 .split_whitespace()
                                 .any(|w| w == "G53.3");
                             let lines: Vec<String> = if moves_after {
-                                written.chain(kept.iter().cloned()).collect()
+                                // LinuxCNC runs it as `G0 X Y Z` with the turn: a rapid in
+                                // the target too, whatever motion mode is modal there.
+                                let rapid = kept.as_deref().map(|k| rapid_move(k, t.dialect));
+                                written.chain(rapid).collect()
                             } else {
                                 kept.iter().cloned().chain(written).collect()
                             };

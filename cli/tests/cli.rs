@@ -3224,19 +3224,23 @@ fn program_to_writes_a_direct_mode_on_the_machine_given() {
 }
 
 /// LinuxCNC's `G53.3 X Y Z` turns the axes to the plane and moves to the point: the turn,
-/// then the move (it was passed over: the axes never turned).
+/// then the move (it was passed over: the axes never turned), a rapid as LinuxCNC runs it
+/// (`G0 X Y Z`; a bare `X10 Y20 Z30` took the modal motion, a feed or an arc).
 #[test]
 fn program_to_turns_and_moves_at_g53_3() {
-    let prog = "G68.2 X0 Y0 Z0 I0 J30 K0\nG53.3 X10 Y20 Z30\nG69\n";
+    let prog = "G1 X0 F100\nG68.2 X0 Y0 Z0 I0 J30 K0\nG53.3 X10 Y20 Z-30\nG69\n";
     assert_eq!(
         program_to(prog, "fanuc", "haas"),
         [
+            "G1 X0 F100",
             "G268 X0. Y0. Z0. I30. J0. K0. Q123",
             "G253",
-            "X10 Y20 Z30",
+            "G0 X10 Y20 Z-30",
             "G269"
         ]
     );
+    let h = program_to(prog, "fanuc", "heidenhain");
+    assert!(h.contains(&"L X+10 Y+20 Z-30 FMAX".to_string()), "{h:?}");
 }
 
 /// Heidenhain's `M126` beside the turn to the plane (the rotary axes take the shortest way
