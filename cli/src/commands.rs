@@ -2224,7 +2224,14 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                     // Into another dialect also what the block restates (a cancel, a
                     // datum shift, with nothing active: the control may have something
                     // active); in its own, such a block stays as it stands.
-                    let written = if t.dialect == dialect {
+                    let written = if t.dialect == dialect
+                        && (p.frame.rotation, p.direct) == (before.frame.rotation, before.direct)
+                    {
+                        // In its own dialect a block that leaves the tilt as it is (a datum
+                        // shift, cycle 7's lines, a turn to the plane `L B+Q121 C+Q122 R0 FMAX
+                        // M126`, `G53.1`) stays as it stands, with all its words.
+                        Ok((0, false))
+                    } else if t.dialect == dialect {
                         // What changes is written as `write_block` writes it (a datum shift
                         // under a tilt does not turn the axes again).
                         let form = t.form.as_bytes();

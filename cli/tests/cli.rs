@@ -3460,3 +3460,20 @@ fn program_to_names_frames_beside_a_swivel_however_spelled() {
     );
     assert_eq!(r.code, 1, "{}", r.stderr);
 }
+
+/// Into its own dialect a block that leaves the tilt as it is stays as it stands: the turn
+/// to the plane with its `M126` (dropped: the way of the rotary axes from then on), cycle 7's
+/// lines (each was written as a whole cycle, the last one then alone).
+#[test]
+fn program_to_its_own_dialect_keeps_what_leaves_the_tilt() {
+    let turn =
+        "1 PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY\n2 L B+Q121 C+Q122 R0 FMAX M126\n3 L C+350 FMAX\n";
+    let out = program_to(turn, "heidenhain", "heidenhain");
+    assert_eq!(out[1], "2 L B+Q121 C+Q122 R0 FMAX M126", "{out:?}");
+    let cycle = "1 CYCL DEF 7.0 DATUM SHIFT\n2 CYCL DEF 7.1 X+50\n3 CYCL DEF 7.2 Y+20\n\
+                 4 CYCL DEF 7.3 Z+0\n5 L X+0 FMAX\n";
+    assert_eq!(
+        program_to(cycle, "heidenhain", "heidenhain"),
+        cycle.lines().collect::<Vec<_>>()
+    );
+}
