@@ -1215,6 +1215,19 @@ fn skip_mark(block: &str, from: Dialect, to: Dialect) -> String {
     }
 }
 
+/// Whether a program's text (in capitals) selects a zero offset `G54` to `G57` (as a word:
+/// not `G540`, `G54.1`).
+fn selects_g54_to_g57(upper: &str) -> bool {
+    ["G54", "G55", "G56", "G57"].iter().any(|g| {
+        upper.match_indices(g).any(|(at, _)| {
+            let before = upper[..at].chars().next_back();
+            let after = upper[at + g.len()..].chars().next();
+            !before.is_some_and(|c| c.is_ascii_alphanumeric())
+                && !after.is_some_and(|c| c.is_ascii_alphanumeric() || c == '.')
+        })
+    })
+}
+
 /// The move `words` (`X5 Y6 Z7`, ISO-style) as a rapid in dialect `to`: `G0 X5 Y6 Z7`, or
 /// Heidenhain's `L X+5 Y+6 Z+7 FMAX`.
 fn rapid_move(words: &str, to: Dialect) -> String {
@@ -1884,6 +1897,8 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     // whole.
     let mut looped_adds: Option<usize> = None;
     let lines: Vec<&str> = text.lines().map(|l| l.trim_end_matches('\r')).collect();
+    let text_upper = text.to_uppercase();
+    let mut g58_said = false;
     for (k, raw) in text.lines().enumerate() {
         let mut rewritten = false;
         let line = k + 1;
@@ -2660,6 +2675,19 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         Ok((len, _)) => {
                             rewritten = true;
                             let text = String::from_utf8_lossy(&buf[..len]);
+                            // TwinCAT's G58 shifts only under a zero offset G54–G57 ("G53
+                            // (default setting) … deactivate any zero offset shift
+                            // translation"): said once where the program selects none.
+                            if t.dialect == Dialect::Twincat
+                                && !g58_said
+                                && text.split_whitespace().any(|w| w == "G58")
+                                && !selects_g54_to_g57(&text_upper)
+                            {
+                                g58_said = true;
+                                eprintln!(
+                                    "cncrot: line {line}: the datum shift is written as TwinCAT's G58, which shifts only while a zero offset G54 to G57 is active (G53, the default, deactivates it): the program selects none, so select one before it: {block}"
+                                );
+                            }
                             let code = split_comments(block, dialect).0;
                             let text = if dialect == Dialect::Sinumerik
                                 && t.dialect == Dialect::Sinumerik

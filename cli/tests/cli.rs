@@ -3477,3 +3477,22 @@ fn program_to_its_own_dialect_keeps_what_leaves_the_tilt() {
         cycle.lines().collect::<Vec<_>>()
     );
 }
+
+/// TwinCAT's `G58` shifts only under a zero offset `G54`–`G57` (the default `G53`
+/// deactivates it): a translation that writes one for a program that selects none says so.
+#[test]
+fn program_to_twincat_names_g58_without_a_zero_offset() {
+    let prog = "0 BEGIN PGM T MM\n1 CYCL DEF 7.0 DATUM SHIFT\n2 CYCL DEF 7.1 X+50\n\
+                3 PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY\n4 END PGM T MM\n";
+    let r = translate(prog, "heidenhain", "twincat");
+    assert!(r.stdout.contains("G58 X50 Y0 Z0"), "{}", r.stdout);
+    assert!(
+        r.stderr
+            .contains("which shifts only while a zero offset G54 to G57 is active"),
+        "{}",
+        r.stderr
+    );
+    let fanuc = "G54\nG52 X50.\nG68.2 X0 Y0 Z0 I0 J30. K0\nG69\n";
+    let r = translate(fanuc, "fanuc", "twincat");
+    assert!(!r.stderr.contains("zero offset G54 to G57"), "{}", r.stderr);
+}
