@@ -442,14 +442,16 @@ fn axes_of(p: &cncrot_program, line: &[u8]) {
     input::check_outputs(s, &[&ax]);
     let f = frame(p);
     let (mut res, mut rem) = ([0.0; 3], [0.0; 16]);
-    // The state's own choice words; their default axis on this head is its master axis,
-    // B (axis 2, the one nearest the tool). Without words a Fanuc tilt takes Fanuc's rule,
-    // on the head's first rotation axis (C, axis 1).
+    // The state's own choice words; the default axis of a side (SEQ±, _DIR) on this head
+    // is its master axis, B (axis 2, the one nearest the tool), of a direction of travel
+    // (G53.1 P1/P2) the primary axis, C (axis 1, which carries B). Without words a Fanuc
+    // tilt takes Fanuc's rule, on C too.
     let (rule, reference) = match (p.choice, p.reference_axis) {
         (CNCROT_CHOOSE_CLOSEST, _) if p.dialect == CNCROT_DIALECT_FANUC => {
             (CNCROT_CHOOSE_MASTER_FIRST, 1)
         }
         (CNCROT_CHOOSE_CLOSEST, _) => (CNCROT_CHOOSE_CLOSEST, 0),
+        (c @ (CNCROT_CHOOSE_POSITIVE_TURN | CNCROT_CHOOSE_NEGATIVE_TURN), 0) => (c, 1),
         (c, 0) => (c, 2),
         (c, k) => (c, k),
     };
