@@ -305,7 +305,8 @@ pub enum Cut {
 
 /// The loops of a program's lines (see [`Labels::looped`]): each opener matched with the
 /// nearest closer of its kind below it; a SINUMERIK `REPEAT LABEL P=n` from the line that
-/// defines `LABEL:`; a SINUMERIK jump (`GOTOB`, `GOTO`, `GOTOC`) back to a label above it;
+/// defines `LABEL:`; a SINUMERIK jump (`GOTOB`, `GOTO`, `GOTOC`) back to a label above it,
+/// an ISO one (`IF [#1 LT 4] GOTO10`) back to a block number above it;
 /// a Heidenhain conditional jump (`FN 12: IF … GOTO LBL 1`, `IF … GOTO
 /// LBL`) back to a label above it.
 fn loops(dialect: Dialect, lines: &[String]) -> Vec<std::ops::Range<usize>> {
@@ -342,6 +343,31 @@ fn loops(dialect: Dialect, lines: &[String]) -> Vec<std::ops::Range<usize>> {
             Dialect::Fanuc | Dialect::Haas | Dialect::Syntec => {
                 // `WHILE [#1 LT 4] DO1` … `END1` (with or without blanks: `WHILE[#1LT4]DO1`).
                 let code = w.concat();
+                // A jump back to a block number above (`IF [#1 LT 4] GOTO 10`, `GOTO10`).
+                if let Some(at) = code.find("GOTO") {
+                    let n: String = code[at + 4..]
+                        .chars()
+                        .take_while(char::is_ascii_digit)
+                        .collect();
+                    let number = |i: usize| -> Option<String> {
+                        let l = lines.get(i)?.trim_start().trim_start_matches('/');
+                        let l = l
+                            .trim_start_matches(|c: char| c.is_ascii_digit())
+                            .trim_start();
+                        let rest = l.strip_prefix(['N', 'n'])?;
+                        let digits: String =
+                            rest.chars().take_while(char::is_ascii_digit).collect();
+                        Some(digits.trim_start_matches('0').to_string())
+                    };
+                    let want = n.trim_start_matches('0').to_string();
+                    if !n.is_empty() {
+                        if let Some(start) =
+                            (0..=k).rev().find(|&i| number(i).as_ref() == Some(&want))
+                        {
+                            out.push(start..k + 1);
+                        }
+                    }
+                }
                 if code.starts_with("WHILE") {
                     let n = code
                         .rfind("DO")

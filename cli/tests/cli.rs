@@ -3496,3 +3496,20 @@ fn program_to_twincat_names_g58_without_a_zero_offset() {
     let r = translate(fanuc, "fanuc", "twincat");
     assert!(!r.stderr.contains("zero offset G54 to G57"), "{}", r.stderr);
 }
+
+/// An ISO jump back to a block number (`IF [#1 LT 3] GOTO10`) is a loop as `WHILE` is: the
+/// increment in it is named (it was read once, silently).
+#[test]
+fn program_names_an_increment_in_a_goto_loop() {
+    let prog = "G68.2 X0 Y0 Z0 I0 J0 K0\n#1=0\nN10 G68.4 I0 J10 K0\n#1=#1+1\nIF[#1LT3]GOTO10\nG53.1\nG69\n";
+    let r = cncrot(&["program", "-", "--dialect", "fanuc"], prog);
+    assert!(
+        r.stderr
+            .contains("line 3: the block adds to the frame and stands in a loop"),
+        "{}",
+        r.stderr
+    );
+    let straight = prog.replace("IF[#1LT3]GOTO10\n", "");
+    let r = cncrot(&["program", "-", "--dialect", "fanuc"], &straight);
+    assert!(!r.stderr.contains("in a loop"), "{}", r.stderr);
+}
