@@ -196,6 +196,16 @@ impl Params {
                 }
             }
         }
+        // An assignment a jump may pass over, or that only a condition runs, holds no value
+        // the block below can count on (`IF [#5 EQ 1] GOTO10` before `#2=30.`).
+        let raw: Vec<String> = text.lines().map(|l| l.trim().to_uppercase()).collect();
+        for range in conditional(dialect, &lines, &raw) {
+            for v in values.values_mut() {
+                if matches!(v, Assigned::Once(_, at) if range.contains(at)) {
+                    *v = Assigned::Unknown;
+                }
+            }
+        }
         Params {
             dialect,
             values,
@@ -281,6 +291,89 @@ impl Params {
         }
         s
     }
+}
+
+/// The lines a program runs only on a condition: those a forward jump passes over (ISO
+/// `GOTO10` to `N10` below, SINUMERIK `GOTOF`/`GOTO`/`GOTOC` to a label below, Heidenhain
+/// `GOTO LBL` to a label below, TwinCAT `$GOTO`), the bodies of `IF … ENDIF` (SINUMERIK,
+/// TwinCAT's `$IF … $ENDIF`), and an ISO `IF […] THEN` line. `codes` are the blocks'
+/// codes, `raw` the lines in capitals (with their block numbers).
+fn conditional(dialect: Dialect, codes: &[String], raw: &[String]) -> Vec<std::ops::Range<usize>> {
+    let mut out = Vec::new();
+    let number = |i: usize| -> Option<String> {
+        let l = raw.get(i)?.trim_start_matches('/');
+        let l = l
+            .trim_start_matches(|c: char| c.is_ascii_digit())
+            .trim_start();
+        let digits: String = l
+            .strip_prefix('N')?
+            .chars()
+            .take_while(char::is_ascii_digit)
+            .collect();
+        Some(digits.trim_start_matches('0').to_string())
+    };
+    let label_at = |i: usize, name: &str| {
+        codes.get(i).is_some_and(|c| {
+            let first = c.split_whitespace().next().unwrap_or("");
+            first == format!("{name}:")
+                || (c.starts_with("LBL") && c[3..].trim().trim_matches('"') == name)
+        })
+    };
+    for (k, code) in codes.iter().enumerate() {
+        let words: Vec<&str> = code.split_whitespace().collect();
+        let below = |found: &dyn Fn(usize) -> bool| (k + 1..codes.len()).find(|&i| found(i));
+        match dialect {
+            Dialect::Fanuc | Dialect::Haas | Dialect::Syntec => {
+                let joined = words.concat();
+                if joined.starts_with("IF") && joined.contains("THEN") {
+                    out.push(k..k + 1);
+                }
+                if let Some(at) = joined.find("GOTO") {
+                    let n: String = joined[at + 4..]
+                        .chars()
+                        .take_while(char::is_ascii_digit)
+                        .collect();
+                    let want = n.trim_start_matches('0').to_string();
+                    if let Some(j) = below(&|i| number(i).as_ref() == Some(&want)) {
+                        out.push(k + 1..j);
+                    }
+                }
+            }
+            Dialect::Sinumerik | Dialect::Twincat => {
+                let jump = words
+                    .iter()
+                    .position(|w| matches!(*w, "GOTOF" | "GOTO" | "GOTOC" | "$GOTO"));
+                if let Some(name) = jump.and_then(|g| words.get(g + 1)) {
+                    if let Some(j) = below(&|i| label_at(i, name)) {
+                        out.push(k + 1..j);
+                    }
+                } else if matches!(words.first(), Some(&("IF" | "$IF"))) {
+                    let end = if dialect == Dialect::Twincat {
+                        "$ENDIF"
+                    } else {
+                        "ENDIF"
+                    };
+                    let ends = |i: usize| {
+                        codes.get(i).and_then(|c| c.split_whitespace().next()) == Some(end)
+                    };
+                    if let Some(j) = below(&ends) {
+                        out.push(k + 1..j);
+                    }
+                }
+            }
+            Dialect::Heidenhain => {
+                if let Some(g) = words.iter().position(|w| *w == "GOTO") {
+                    if let (Some(&"LBL"), Some(name)) = (words.get(g + 1), words.get(g + 2)) {
+                        let name = name.trim_matches('"');
+                        if let Some(j) = below(&|i| label_at(i, name)) {
+                            out.push(k + 1..j);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    out
 }
 
 /// Where a block's comment begins (its length without one).

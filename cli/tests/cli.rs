@@ -3513,3 +3513,24 @@ fn program_names_an_increment_in_a_goto_loop() {
     let r = cncrot(&["program", "-", "--dialect", "fanuc"], &straight);
     assert!(!r.stderr.contains("in a loop"), "{}", r.stderr);
 }
+
+/// An assignment a forward jump passes over, or inside `IF … ENDIF`, runs only on a
+/// condition: the tilt that uses it stays refused (it was read with the value, exit 0).
+#[test]
+fn program_reads_no_parameter_a_jump_may_skip() {
+    let fanuc = "IF[#5EQ1]GOTO10\n#2=30.\nN10 G68.2 X0 Y0 Z0 I0 J#2 K0\nG69\n";
+    let r = translate(fanuc, "fanuc", "heidenhain");
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(!r.stderr.contains("read with #2"), "{}", r.stderr);
+    let sinumerik = "IF R5==1 GOTOF SKIP\nR2=30\nSKIP:\n\
+                     CYCLE800(0,\"TC1\",0,57,0,0,0,0,R2,0,0,0,0,-1,0,0)\n";
+    assert_eq!(translate(sinumerik, "sinumerik", "fanuc").code, 1);
+    let inside = "IF R5==1\nR2=30\nENDIF\nCYCLE800(0,\"TC1\",0,57,0,0,0,0,R2,0,0,0,0,-1,0,0)\n";
+    assert_eq!(translate(inside, "sinumerik", "fanuc").code, 1);
+    let heidenhain = "0 BEGIN PGM Q MM\n1 FN 9: IF +Q5 EQU +1 GOTO LBL 5\n2 FN 0: Q1 = +30\n\
+                      3 LBL 5\n4 PLANE SPATIAL SPA+0 SPB+Q1 SPC+0 STAY\n5 END PGM Q MM\n";
+    assert_eq!(translate(heidenhain, "heidenhain", "fanuc").code, 1);
+    // Without the jump: read with the value.
+    let plain = fanuc.replace("IF[#5EQ1]GOTO10\n", "");
+    assert_eq!(translate(&plain, "fanuc", "heidenhain").code, 0);
+}
