@@ -2150,7 +2150,8 @@ int32_t cncrot_program_frame_on(const struct cncrot_program *program,
  * `PLANE RESET STAY`, `G69`, `G158`, `G269` (TwinCAT, which has none of its own, writes
  * `ROT X0 Y0 Z0`). With
  * `decimals` < 0 the numbers are the shortest that read back exactly; with 0..17 they are
- * rounded to that many decimals (ties to even), trailing zeros dropped. Angles are in each
+ * rounded to that many decimals (ties to even; `PLANE VECTOR`'s and `PLANE POINTS`' words
+ * to at least 7), trailing zeros dropped. Angles are in each
  * dialect's read-back ranges; `CNCROT_STATUS_SINGULAR` says the middle angle was singular and
  * the free angle sits where that dialect's rule puts it. `out` receives the line and a NUL
  * (at most `CNCROT_PROGRAM_LINE_MAX` + 1 bytes).

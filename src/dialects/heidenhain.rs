@@ -1110,9 +1110,18 @@ impl Family for Heidenhain {
             plus: true,
             point: false,
         };
+        // Unit vectors and points a millimetre apart: 7 decimals (the TNC's input range
+        // ±9.9999999) state the plane as 4 decimals of an angle do (at 4 a vector's plane was
+        // 0.0012° off).
+        let places = if matches!(spec.form, Form::PlaneVector | Form::PlanePoints) && decimals >= 0
+        {
+            decimals.max(7)
+        } else {
+            decimals
+        };
         out.text(head);
         for (name, &v) in names.iter().zip(words) {
-            write_word(out, name, v, decimals, style)?;
+            write_word(out, name, v, places, style)?;
         }
         write_positioning(how, decimals, out)?;
         write_choice(how, out)

@@ -633,7 +633,7 @@ pub fn master_axis(machine: &Machine) -> usize {
 /// and returns its length and whether the decomposition was singular (the free angle then
 /// sits where the dialect's rule puts it). `decimals < 0` writes the shortest numbers that
 /// read back exactly; otherwise every number is rounded to that many decimals (at most
-/// 17).
+/// 17; `PLANE VECTOR`'s and `PLANE POINTS`' words to at least 7).
 ///
 /// The forms, as written (upper or lower case, single spaces):
 ///
