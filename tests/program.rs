@@ -3768,7 +3768,7 @@ fn blocks_real_programs_write() {
     // SCALE and MIRROR without values replace the programmable frame with none ("SCALE ;
     // without values: clears the old instructions for offset, rotation, scaling factor,
     // mirroring"); with values they are not followed.
-    for block in ["SCALE", "MIRROR", "N20 SCALE ; reset", "SCALE"] {
+    for block in ["SCALE", "MIRROR", "N20 SCALE ; reset", "/N30 MIRROR"] {
         assert_eq!(
             after(s, "ROT Z30", block),
             Ok((Frame::IDENTITY, Remark::Applied)),

@@ -8,7 +8,7 @@
 //! call, and a translation would turn the axes back to it, or write an increment from the
 //! wrong plane.
 
-use crate::params::Params;
+use crate::params::{block_number_of, goto_number, Params};
 use cncrot::dialects::program::{AxisChoice, Dialect, Program, Remark};
 
 /// Nested calls followed at most this deep (a label that calls itself stops there).
@@ -344,28 +344,11 @@ fn loops(dialect: Dialect, lines: &[String]) -> Vec<std::ops::Range<usize>> {
                 // `WHILE [#1 LT 4] DO1` … `END1` (with or without blanks: `WHILE[#1LT4]DO1`).
                 let code = w.concat();
                 // A jump back to a block number above (`IF [#1 LT 4] GOTO 10`, `GOTO10`).
-                if let Some(at) = code.find("GOTO") {
-                    let n: String = code[at + 4..]
-                        .chars()
-                        .take_while(char::is_ascii_digit)
-                        .collect();
-                    let number = |i: usize| -> Option<String> {
-                        let l = lines.get(i)?.trim_start().trim_start_matches('/');
-                        let l = l
-                            .trim_start_matches(|c: char| c.is_ascii_digit())
-                            .trim_start();
-                        let rest = l.strip_prefix(['N', 'n'])?;
-                        let digits: String =
-                            rest.chars().take_while(char::is_ascii_digit).collect();
-                        Some(digits.trim_start_matches('0').to_string())
-                    };
-                    let want = n.trim_start_matches('0').to_string();
-                    if !n.is_empty() {
-                        if let Some(start) =
-                            (0..=k).rev().find(|&i| number(i).as_ref() == Some(&want))
-                        {
-                            out.push(start..k + 1);
-                        }
+                if let Some(want) = goto_number(&code) {
+                    let number = |i: usize| lines.get(i).and_then(|l| block_number_of(l));
+                    if let Some(start) = (0..=k).rev().find(|&i| number(i).as_ref() == Some(&want))
+                    {
+                        out.push(start..k + 1);
                     }
                 }
                 if code.starts_with("WHILE") {

@@ -300,18 +300,7 @@ impl Params {
 /// codes, `raw` the lines in capitals (with their block numbers).
 fn conditional(dialect: Dialect, codes: &[String], raw: &[String]) -> Vec<std::ops::Range<usize>> {
     let mut out = Vec::new();
-    let number = |i: usize| -> Option<String> {
-        let l = raw.get(i)?.trim_start_matches('/');
-        let l = l
-            .trim_start_matches(|c: char| c.is_ascii_digit())
-            .trim_start();
-        let digits: String = l
-            .strip_prefix('N')?
-            .chars()
-            .take_while(char::is_ascii_digit)
-            .collect();
-        Some(digits.trim_start_matches('0').to_string())
-    };
+    let number = |i: usize| raw.get(i).and_then(|l| block_number_of(l));
     let label_at = |i: usize, name: &str| {
         codes.get(i).is_some_and(|c| {
             let first = c.split_whitespace().next().unwrap_or("");
@@ -328,12 +317,7 @@ fn conditional(dialect: Dialect, codes: &[String], raw: &[String]) -> Vec<std::o
                 if joined.starts_with("IF") && joined.contains("THEN") {
                     out.push(k..k + 1);
                 }
-                if let Some(at) = joined.find("GOTO") {
-                    let n: String = joined[at + 4..]
-                        .chars()
-                        .take_while(char::is_ascii_digit)
-                        .collect();
-                    let want = n.trim_start_matches('0').to_string();
+                if let Some(want) = goto_number(&joined) {
                     if let Some(j) = below(&|i| number(i).as_ref() == Some(&want)) {
                         out.push(k + 1..j);
                     }
@@ -374,6 +358,32 @@ fn conditional(dialect: Dialect, codes: &[String], raw: &[String]) -> Vec<std::o
         }
     }
     out
+}
+
+/// The number of the ISO block `line` starts with (`N10`, `n010`, after a skip mark `/`
+/// or `/2`), leading zeros dropped: what a jump to it names.
+pub(crate) fn block_number_of(line: &str) -> Option<String> {
+    let l = line.trim_start().trim_start_matches('/');
+    let l = l
+        .trim_start_matches(|c: char| c.is_ascii_digit())
+        .trim_start();
+    let digits: String = l
+        .strip_prefix(['N', 'n'])?
+        .chars()
+        .take_while(char::is_ascii_digit)
+        .collect();
+    Some(digits.trim_start_matches('0').to_string())
+}
+
+/// The block number an ISO jump goes to (`GOTO10`, `IF[#1LT4]GOTO010`: the block's code in
+/// capitals, its words joined), leading zeros dropped; `None` without one (`GOTO#1`).
+pub(crate) fn goto_number(joined: &str) -> Option<String> {
+    let at = joined.find("GOTO")?;
+    let n: String = joined[at + 4..]
+        .chars()
+        .take_while(char::is_ascii_digit)
+        .collect();
+    (!n.is_empty()).then(|| n.trim_start_matches('0').to_string())
 }
 
 /// Where a block's comment begins (its length without one).

@@ -569,10 +569,11 @@ fn heidenhain_seq(
     Ok(())
 }
 
-/// The axis Fanuc's `G53.1` moves the least first ([`Rule::MasterFirst`]): on a machine
-/// whose axes all turn the tool or all the workpiece the first rotation axis (the master,
-/// which carries the other: the first added), on a mixed machine the table's (the first
-/// that turns the workpiece) \[doc: Fanuc's output judgement conditions\].
+/// The axis Fanuc's `G53.1` moves the least first ([`Rule::MasterFirst`]), and the one
+/// whose direction of travel `G53.1 P1`/`P2` name (LinuxCNC's primary): on a machine whose
+/// axes all turn the tool or all the workpiece the first rotation axis (the master, which
+/// carries the other: the first added), on a mixed machine the table's (the first that
+/// turns the workpiece) \[doc: Fanuc's output judgement conditions\].
 fn fanuc_master(machine: &Machine) -> usize {
     use crate::kinematics::Side;
     let axes = machine.axes();
