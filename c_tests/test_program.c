@@ -839,8 +839,14 @@ static void translated_programs(void) {
         "%s", out);
   /* Refusals leave `out` as it was. */
   memset(out, 'x', sizeof out);
+  /* ROT has no origin words: the origin is TRANS (which replaces SINUMERIK's one frame), the
+   * rotation AROT about it. */
   CHECK_STATUS(cncrot_program_write_change(&zero, &p, CNCROT_DIALECT_SINUMERIK, "ROT", 4, out, sizeof out),
-               CNCROT_STATUS_HAS_ORIGIN);
+               CNCROT_STATUS_OK);
+  CHECK(strcmp(out, "TRANS X=10 Y=20 Z=0\nAROT X=30 Y=0 Z=0") == 0, "%s", out);
+  memset(out, 'x', sizeof out);
+  CHECK_STATUS(cncrot_program_write_change(&zero, &p, CNCROT_DIALECT_SINUMERIK, "ROTS", 4, out, sizeof out),
+               CNCROT_STATUS_BAD_ARGUMENT);
   CHECK_STATUS(cncrot_program_write_change(&zero, &p, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", 4, out, 20),
                CNCROT_STATUS_NO_ROOM);
   CHECK_STATUS(cncrot_program_write_change(&zero, &p, CNCROT_DIALECT_FANUC, "PLANE SPATIAL", 4, out, sizeof out),

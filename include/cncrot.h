@@ -2202,8 +2202,9 @@ int32_t cncrot_program_write(int32_t dialect,
  *   TwinCAT `G58 X… Y… Z…` (its programmable zero offset shift), SINUMERIK `TRANS X=… Y=…
  *   Z=…` (`TRANS` for none) when no rotation is active.
  * - A form without origin words (every `PLANE`, `ROT`) tilts about the datum: Heidenhain
- *   and TwinCAT write the tilt's origin as the datum shift; SINUMERIK `ROT`, which keeps no
- *   shift apart, refuses it with `CNCROT_STATUS_HAS_ORIGIN`.
+ *   and TwinCAT write the tilt's origin as the datum shift; SINUMERIK `ROT`, whose one frame
+ *   holds both, as `TRANS X=… Y=… Z=…` (which replaces the frame) and the rotation added
+ *   about it, `AROT`.
  * - A changed tilt, or the same tilt with other choice words, is written as
  *   `cncrot_program_write` writes it, with the choice words the block has: Heidenhain
  *   `SEQ-`/`SEQ+`, CYCLE800 `_DIR` -1/+1 where it swivels (-1 also for no choice: a swivel
@@ -2229,7 +2230,7 @@ int32_t cncrot_program_write(int32_t dialect,
  * this library did not write), `CNCROT_STATUS_BAD_ARGUMENT` (unknown dialect or form, a
  * form name longer than 64 bytes, `decimals` > 17, an incremental or mode-0 `G158 P`),
  * `CNCROT_STATUS_BAD_SEQUENCE` and `CNCROT_STATUS_INCOMPLETE_SEQUENCE` (a form's axis order,
- * as `cncrot_program_write`), `CNCROT_STATUS_HAS_ORIGIN` (above),
+ * as `cncrot_program_write`),
  * `CNCROT_STATUS_NOT_AVAILABLE` (a direct mode; a choice of an axis other than the master
  * axis, which no block names), `CNCROT_STATUS_OUT_OF_RANGE` (a frame the form cannot
  * express, numbers the writer cannot write, a block longer than the dialect reads),

@@ -2222,14 +2222,40 @@ fn changes_are_written_with_the_targets_own_blocks() {
         translate(Dialect::Fanuc, &fanuc, Dialect::Haas, "G268")[..2],
         ["G268 X10. Y20. Z0. I30. J0. K0. Q123", "G253"]
     );
-    // SINUMERIK's ROT keeps no shift apart: an origin cannot be written with it.
+    // SINUMERIK's ROT has no origin words and its one frame no shift kept apart: the origin
+    // is `TRANS`, which replaces the frame, and the rotation `AROT` about it. `G68.2 X10 J30`
+    // is Rx(30°) about (10, 0, 0): RPY X=30.
     let mut buf = [0u8; MAX_CHANGE];
     let p0 = Program::default();
     let (p1, _) = p0.line(Dialect::Fanuc, b"G68.2 X10 J30").unwrap();
-    assert_eq!(
-        write_change(Dialect::Sinumerik, b"ROT", &p0, &p1, 4, &mut buf),
-        Err(Error::HasOrigin)
+    let (n, _) = write_change(Dialect::Sinumerik, b"ROT", &p0, &p1, 4, &mut buf).unwrap();
+    assert_eq!(&buf[..n], b"TRANS X=10 Y=0 Z=0\nAROT X=30 Y=0 Z=0");
+    // From a shift alone, no reset first (the `TRANS` of the tilt replaces it); read back, the
+    // same frame.
+    let (s1, _) = p0.line(Dialect::Fanuc, b"G52 X5").unwrap();
+    let (s2, _) = s1.line(Dialect::Fanuc, b"G68.2 X10 J30").unwrap();
+    let (n, _) = write_change(Dialect::Sinumerik, b"ROT", &s1, &s2, 4, &mut buf).unwrap();
+    assert_eq!(&buf[..n], b"TRANS X=15 Y=0 Z=0\nAROT X=30 Y=0 Z=0");
+    let back = std::str::from_utf8(&buf[..n])
+        .unwrap()
+        .lines()
+        .fold(p0, |q, l| {
+            q.line(Dialect::Sinumerik, l.as_bytes()).unwrap().0
+        });
+    let want = cncrot::Frame::with_translations(
+        [15.0, 0.0, 0.0],
+        cncrot::elementary(cncrot::Axis::X, 30.0),
+        [0.0; 3],
     );
+    assert!(back.frame.translation == want.translation);
+    let err = back
+        .frame
+        .rotation
+        .iter()
+        .zip(&want.rotation)
+        .flat_map(|(a, b)| a.iter().zip(b).map(|(x, y)| (x - y).abs()))
+        .fold(0.0, f64::max);
+    assert!(err < 1e-15, "{err}");
     // A choice of another axis than the master axis is not a word of any block.
     let p2 = Program {
         choice: AxisChoice::Minus(2),
@@ -3592,27 +3618,22 @@ fn incremental_tilts_stay_incremental() {
     for (from, setup, block) in sources {
         for (to, form) in targets {
             let (mut p, mut q) = (Program::default(), Program::default());
-            let mut writable = true;
             for l in setup {
                 let next = p.line(from, l.as_bytes()).unwrap().0;
-                match write(to, form, &p, &next) {
-                    Ok(t) => q = run(to, q, &t),
-                    // `ROT` has no origin words.
-                    Err(Error::HasOrigin) => writable = false,
-                    Err(e) => panic!("{l} -> {form}: {e:?}"),
-                }
+                let t =
+                    write(to, form, &p, &next).unwrap_or_else(|e| panic!("{l} -> {form}: {e:?}"));
+                q = run(to, q, &t);
                 p = next;
-            }
-            if !writable {
-                continue;
             }
             let next = p.line(from, block.as_bytes()).unwrap().0;
             assert!(next.relative, "{block}");
             let text = write(to, form, &p, &next).unwrap();
-            // Only where the form has words for the increment's origin.
+            // Only where the form has words for the increment's origin (`ROT`'s whole frame
+            // with an origin is `TRANS`, which replaces the frame, and `AROT` about it).
             let incremental = ["PLANE RELATIV", "G68.4", "\",1,", "AROT", "P01"]
                 .iter()
-                .any(|w| text.contains(w));
+                .any(|w| text.contains(w))
+                && !text.contains("TRANS");
             let passes = if incremental { 3 } else { 1 };
             looped += usize::from(incremental);
             for pass in 0..passes {
@@ -3627,9 +3648,9 @@ fn incremental_tilts_stay_incremental() {
             }
         }
     }
-    // 63 pairs: `ROT` cannot write the four setups with an origin, `PLANE RELATIV` not the
-    // increment with one (two forms).
-    assert_eq!(looped, 63 - 4 - 2);
+    // 63 pairs: `AROT` and `PLANE RELATIV` (two forms) have no words for an increment with
+    // an origin (`G68.4 X2 Y0 Z1`): written whole.
+    assert_eq!(looped, 63 - 1 - 2);
 }
 
 /// Fanuc's own rule for `G53.1` without `P` (its operator's manual, "output judgement

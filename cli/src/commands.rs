@@ -1890,6 +1890,10 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     // of one of them (`Labels::enter`).
     let mut calls = labels::Labels::new(dialect, &text);
     let mut run: Option<Program> = None;
+    // The blocks of that run as written so far (their block number or other words, or
+    // nothing) and as they stand: held until the run is written, so that a run the target
+    // cannot write keeps all its blocks as they stand, not only its last.
+    let mut pending: Vec<(Option<String>, String)> = Vec::new();
     // The first block of the run that adds to the datum shift (`CYCL DEF 7.1 IX+10`,
     // `ATRANS`): its line and text.
     let mut adds: Option<(usize, String)> = None;
@@ -2049,6 +2053,9 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                 remark = Remark::Applied;
             }
         }
+        // Whether this block is written with the next one, and whether the run it ends could
+        // not be written.
+        let (mut deferred, mut run_failed) = (false, false);
         let row = match remark {
             Remark::Passed => {
                 passed += 1;
@@ -2281,6 +2288,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         )
                     } else if next.is_some_and(|n| joins(&before, &p, &n)) {
                         // Written with the next block.
+                        deferred = true;
                         run = run.or(Some(before));
                         adds = adds.take().or(adds_here);
                         Ok((0, false))
@@ -2655,6 +2663,19 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             held = Some(block.to_string());
                             None
                         }
+                        // A cycle's first line (`CYCL DEF 19.0`, `7.0`), written with its
+                        // other lines: held with them, kept as it stands if they cannot be
+                        // written.
+                        Ok((0, _))
+                            if t.dialect != dialect
+                                && dialect == Dialect::Heidenhain
+                                && cycle_head(block.as_bytes())
+                                && kept.is_none()
+                                && note.is_none() =>
+                        {
+                            deferred = true;
+                            None
+                        }
                         // The same dialect, or a plane selected (`G18`, perhaps with a
                         // move): the block as it stands (no writer says a plane).
                         Ok((0, _)) if t.dialect == dialect || before.plane != p.plane => {
@@ -2746,6 +2767,7 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                             uncarried += 1;
                             not_carried(line, t, e, block);
                             ok = false;
+                            run_failed = true;
                             Some(block.to_string())
                         }
                     }
@@ -2829,11 +2851,28 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                 }
             }
         };
+        if deferred {
+            pending.push((row, block.to_string()));
+            continue;
+        }
+        // The run before this block: as written, or as it stands where its last block could
+        // not be written.
+        for (written, stands) in pending.drain(..) {
+            let text = if run_failed { Some(stands) } else { written };
+            if text.is_some_and(|t| !put(t)) {
+                return Ok(ok);
+            }
+        }
         if let Some(row) = row {
             let head = held.take().filter(|_| !rewritten);
             if head.is_some_and(|h| !put(h)) || !put(row) {
                 return Ok(ok);
             }
+        }
+    }
+    for (written, _) in pending.drain(..) {
+        if written.is_some_and(|t| !put(t)) {
+            return Ok(ok);
         }
     }
     if held.take().is_some_and(|h| !put(h)) {

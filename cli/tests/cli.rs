@@ -1689,7 +1689,10 @@ fn program_to_writes_datum_shifts() {
         ]
     );
     assert_eq!(lines[7..9], ["CYCLE800()", "TRANS X=10 Y=20 Z=0"]);
-    // Into SINUMERIK's ROT an origin cannot go: the block keeps its line, exit status 1.
+    // Into SINUMERIK's ROT, which has no origin words: the origin is `TRANS` (which replaces
+    // the one frame), the rotation `AROT` about it; the cancel `ROT` takes the shift too, so
+    // the shift follows it again. SPB+30 is RPY Y=30; SPB−20 SPC+90, Rz(90)·Ry(−20), is RPY
+    // Y=-20 Z=90. `ROT` has no word for TURN: exit status 1.
     let r = cncrot(
         &[
             "program",
@@ -1702,16 +1705,57 @@ fn program_to_writes_datum_shifts() {
         prog,
     );
     assert_eq!(r.code, 1, "{}", r.stderr);
+    assert_eq!(
+        r.stdout.lines().collect::<Vec<_>>()[2..10],
+        [
+            "TRANS X=10 Y=20 Z=0",
+            "TRANS X=10 Y=20 Z=0",
+            "AROT X=0 Y=30 Z=0",
+            "6 L X+10 Y+0 FMAX",
+            "TRANS X=10 Y=20 Z=0",
+            "AROT X=0 Y=-20 Z=90",
+            "ROT",
+            "TRANS X=10 Y=20 Z=0",
+        ]
+    );
+    // The summary counts what was left out.
     assert!(
-        r.stderr.contains("line 6: not carried across"),
+        r.stderr
+            .contains("0 refused, 0 not carried across, 2 with a way of moving left out"),
         "{}",
         r.stderr
     );
-    // The summary counts what was not carried across.
-    assert!(
-        r.stderr.contains("0 refused, 2 not carried across"),
-        "{}",
-        r.stderr
+}
+
+/// Blocks the target writes as one command (cycle 19's lines, a `G68.2` and its `G53.1`):
+/// when the command cannot be written (rotary-axis positions without a machine), every one of
+/// them keeps its line as it stands, not only the last.
+#[test]
+fn program_to_keeps_a_whole_run_it_cannot_write() {
+    let prog = "1 CYCL DEF 19.0 WORKING PLANE\n2 CYCL DEF 19.1 A+0 B+45 C+90\n3 L Z+50 FMAX\n";
+    let args = [
+        "program",
+        "-",
+        "--dialect",
+        "heidenhain",
+        "--axis-angles",
+        "--to",
+        "fanuc",
+    ];
+    let r = cncrot(&args, prog);
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert_eq!(r.stdout, prog);
+    assert!(r.stderr.contains("1 not carried across"), "{}", r.stderr);
+    // Written, cycle 19's first line goes with the others.
+    let prog = "1 CYCL DEF 19.0 WORKING PLANE\n2 CYCL DEF 19.1 B+30\n3 L Z+50 FMAX\n";
+    let r = cncrot(
+        &["program", "-", "--dialect", "heidenhain", "--to", "fanuc"],
+        prog,
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(
+        r.stdout.lines().collect::<Vec<_>>(),
+        ["G68.2 X0. Y0. Z0. I90. J30. K-90.", "3 L Z+50 FMAX"]
     );
 }
 

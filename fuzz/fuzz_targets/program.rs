@@ -568,10 +568,11 @@ fn translated(
             Ok(text) => text,
             Err(s) => {
                 let origin = f[3] != 0.0 || f[7] != 0.0 || f[11] != 0.0;
+                // (SINUMERIK's `ROT` writes an origin as `TRANS` and `AROT`.)
                 let ok = (s == cncrot_status::HasOrigin as i32
                     && !*has_origin
                     && origin
-                    && (*dialect == 1 || *dialect == 5))
+                    && *dialect == 5)
                     || s == cncrot_status::OutOfRange as i32;
                 assert!(ok, "{form:?} in dialect {dialect}: {s}");
                 return false;

@@ -714,6 +714,28 @@ fn tilt_block(
     decimals: i32,
     out: &mut Out,
 ) -> Result<bool, Error> {
+    // A form without origin words in a dialect of one frame (SINUMERIK's `ROT`): the origin
+    // set by the shift command, which replaces the frame (`TRANS X=… Y=… Z=…`), then the
+    // rotation added about it by the form's additive command (`AROT`), as programs write a
+    // rotated frame with an origin [doc: `AROT` applies on the right of the active frame].
+    let moved = !dialect.keeps_shift()
+        && !spec.form.has_origin()
+        && frame.translation != [0.0; 3]
+        && frame.rotation != crate::IDENTITY
+        && dialect
+            .relative_form(spec)
+            .is_some_and(|r| r.form == spec.form);
+    let origin = frame.translation;
+    let rotation_only = Frame::from_rotation(frame.rotation);
+    let (frame, how) = if moved {
+        let how = Motion {
+            relative: true,
+            ..how
+        };
+        (&rotation_only, how)
+    } else {
+        (frame, how)
+    };
     // The words first: a form that cannot be written (a direct mode) is refused even for
     // the identity.
     let n = spec.form.count();
@@ -721,6 +743,10 @@ fn tilt_block(
     let slots = words.get_mut(..n).ok_or(Error::BadArgument)?;
     let singular = form::form_values(spec.form, spec.selector, frame, slots)?;
     let words = words.get(..n).ok_or(Error::BadArgument)?;
+    if moved {
+        dialect.write_shift(origin, decimals, out)?;
+        out.byte(b'\n');
+    }
     // Nothing active is written as the cancel, as a program cancels a tilt: `PLANE RESET`
     // becomes `G69`, not a `G68.2` of zeros (which would leave the control in G68.2 mode) —
     // unless the axes turn to the untilted plane, which only the zero tilt and its turn say
@@ -736,13 +762,16 @@ fn tilt_block(
 
 /// The longest text [`write_change`] writes: a cancel, a datum shift of up to four blocks
 /// and a tilt, each no longer than the dialect reads, with their line ends (a dialect with
-/// one frame writes two: the shift's reset or the tilt's cancel, and its block).
+/// one frame writes up to three: the shift's reset or the tilt's cancel, and its block, which
+/// a form without origin words writes as the shift and the rotation added about it).
 pub const MAX_CHANGE: usize = 2048;
 const _: () = {
     let mut k = 0;
     while k < Dialect::ALL.len() {
         let d = Dialect::ALL[k];
-        let blocks = if d.keeps_shift() { 6 } else { 2 };
+        // One frame: the shift's reset or the tilt's cancel, then the tilt, which a form
+        // without origin words writes as the shift and the rotation added about it.
+        let blocks = if d.keeps_shift() { 6 } else { 3 };
         assert!(blocks * d.max_line() + blocks - 1 <= MAX_CHANGE);
         k += 1;
     }
@@ -785,8 +814,9 @@ fn split(dialect: Dialect, spec: &FormSpec, p: &Program) -> (Vector, Frame) {
 ///   programmed untilted); SINUMERIK's `TRANS X=… Y=… Z=…` (`TRANS` alone for none) when no
 ///   rotation is active.
 /// - A form without origin words (every `PLANE`, `ROT`) tilts about the datum: the tilt's
-///   origin goes into the datum shift (Heidenhain, TwinCAT), or the block is refused with
-///   [`Error::HasOrigin`] where the dialect has no shift kept apart (SINUMERIK `ROT`).
+///   origin goes into the datum shift (Heidenhain, TwinCAT); where one frame holds both
+///   (SINUMERIK `ROT`) the tilt is written as the shift that replaces the frame and the
+///   rotation added about it (`TRANS X=… Y=… Z=…`, then `AROT`).
 /// - A changed tilt, or the same tilt with other choice words, is written as [`write_line`]
 ///   writes it, with the choice words the block has: Heidenhain `SEQ-`/`SEQ+`, CYCLE800
 ///   `_DIR` −1/+1 where it swivels (−1 also for no choice: a swivel names one \[choice\]); the
@@ -1498,7 +1528,10 @@ fn change(
                 r => r?,
             }
         } else {
-            if shifted0 && (t1 != Frame::IDENTITY || d1.is_some()) {
+            // A tilt written as its shift and its rotation (`TRANS X=…`, `AROT`) sets the
+            // shift itself.
+            let own_shift = d1.is_none() && !spec.form.has_origin() && t1.translation != [0.0; 3];
+            if shifted0 && (t1 != Frame::IDENTITY || d1.is_some()) && !own_shift {
                 // A dialect with no shift command has had none written.
                 let mut reset = Out::counter();
                 if dialect.write_shift([0.0; 3], decimals, &mut reset).is_ok() {
