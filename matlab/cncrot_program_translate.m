@@ -37,7 +37,9 @@
 %   and is not translated. state: the source program's state after the last block.
 %   A block the source controller could not execute raises its error, as in
 %   cncrot_program_lines; a change the target form cannot write raises its status's error
-%   naming the line (cncrot:hasOrigin for an origin with SINUMERIK 'ROT').
+%   naming the line (cncrot:notAvailable for rotary-axis positions into a dialect that
+%   states planes). Into SINUMERIK 'ROT', which has no origin words, a tilt with an origin
+%   is 'TRANS X=… Y=… Z=…' and the rotation 'AROT' about it.
 %
 %   Example (a hyperMILL-style Heidenhain program for a Fanuc-style control):
 %     prog = {'CYCL DEF 7.0 DATUM SHIFT', 'CYCL DEF 7.1 X+10', ...

@@ -2992,6 +2992,19 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
     let mut first = true;
     let program = a.dialect.map(input::dialect).transpose()?;
     let mut state = cncrot::dialects::toolpath::ToolPath::default();
+    // Rotary positions by letter (`A B C` of `G1 X1 C20`) name the machine's axes; a letter
+    // a block leaves out is where that axis stands (from `--current` on, then each point's),
+    // not 0. Under Heidenhain's `AXIS SPAT` the letters are spatial angles, which the axes'
+    // positions are not: left as the program states them.
+    let stand = |state: &mut cncrot::dialects::toolpath::ToolPath, at: &[f64; 6]| {
+        if state.spatial {
+            return;
+        }
+        for (k, a) in machine.axes().iter().enumerate() {
+            state.axes[cncrot::dialects::program::axis_letter(a.direction)] = at[3 + k];
+        }
+    };
+    stand(&mut state, &previous);
     run(&common, None, |text| {
         if let Some(dialect) = program {
             use cncrot::dialects::toolpath::PathRemark;
@@ -3039,9 +3052,7 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
             rule = along(rule);
             // The letters a later block leaves out (`G1 X1 C20` after a direction) are where
             // the machine's axes now stand, not the last ones a block stated.
-            for (k, a) in machine.axes().iter().enumerate() {
-                state.axes[cncrot::dialects::program::axis_letter(a.direction)] = t.axes[3 + k];
-            }
+            stand(&mut state, &previous);
             return Ok(path_row(&t, n, d));
         }
         let trimmed = text.trim_start();

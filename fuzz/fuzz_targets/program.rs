@@ -308,7 +308,8 @@ $TC_CARR31[1]=-100 $TC_CARR33[1]=100
 /// refused; by place: axes 1 and 2), about the state's origin, and `cncrot_program_axes`
 /// positions that give the same rotation.
 /// The same block read as a five-axis program's: refusals and passed blocks leave the
-/// state byte for byte, not followed ones all but the mode they set; a state written holds finite numbers and a unit
+/// state byte for byte, not followed ones all but the modes they set (and an arc's end
+/// point); a state written holds finite numbers and a unit
 /// direction; a CL point's axes on the fork head are finite or refused with them untouched,
 /// and put the tip back on the point.
 fn tool_path(path: &mut cncrot_tool_path, dialect: i32, line: &[u8]) {
@@ -317,11 +318,16 @@ fn tool_path(path: &mut cncrot_tool_path, dialect: i32, line: &[u8]) {
     let s = unsafe { cncrot_tool_path_line(path, dialect, line.as_ptr().cast(), line.len()) };
     input::assert_known(s);
     if s == cncrot_status::NotFollowed as i32 && as_bytes(path) != as_bytes(&before) {
-        // Only the arc's or canned cycle's mode the block sets (flags bits 3 and 4).
+        // Only the modes the block sets (`on`, flags), whether it lost the tip (bit 5), and
+        // an arc's end point (in an arc's mode, bit 3).
         let mut moded = before;
-        (moded.flags, moded.point) = (path.flags, 0);
+        (moded.on, moded.flags, moded.point) = (path.on, path.flags, 0);
+        if path.flags & 8 != 0 {
+            moded.tip = path.tip;
+        }
         assert_eq!(as_bytes(path), as_bytes(&moded), "a block not followed");
-        assert_ne!(path.flags & 24, before.flags & 24);
+        assert!((0..=63).contains(&path.flags) && (0..=1).contains(&path.on));
+        assert!(path.tip.iter().all(|x| x.is_finite()));
         return;
     }
     if s != 0 {

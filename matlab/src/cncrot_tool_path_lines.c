@@ -4,6 +4,20 @@
 #include <math.h>
 #include "program_state.h"
 
+/* Rotary positions by letter name the machine's axes: a letter a block leaves out is where
+   that axis stands (from `previous` on, then each point's), each axis' letter the one its
+   direction is nearest; under Heidenhain's AXIS SPAT (flags bit 2) the letters are spatial
+   angles, left as the program states them. */
+static void stand(cncrot_tool_path *t, const cncrot_machine *m, const double at[6]) {
+  if (t->flags & 4) return;
+  for (int j = 0; j < m->count && j < 3; j++) {
+    const double *v = m->axes[j].direction;
+    double x = fabs(v[0]), y = fabs(v[1]), z = fabs(v[2]);
+    int slot = (x >= y && x >= z) ? 0 : (y >= z ? 1 : 2);
+    t->axes[slot] = at[3 + j];
+  }
+}
+
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   check_nargs(nrhs, 2, 7, nlhs, 2);
   if (nrhs == 3) fail("cncrot:nargin", "a machine needs the tool length L as well (see help %s)", mexFunctionName());
@@ -31,6 +45,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
   for (size_t k = 0; k < n * cols; k++) o[k] = mxGetNaN();
   cncrot_tool_path t;
   memset(&t, 0, sizeof t);
+  if (on_machine) stand(&t, &m, prev);
   for (size_t k = 0; k < n; k++) {
     const mxArray *a = cell ? mxGetCell(lines, k) : lines;
     if (!a) a = mxCreateString("");
@@ -72,13 +87,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
       for (int j = 0; j < 6; j++) o[k + n * j] = ax[j];
       memcpy(prev, ax, sizeof prev);
       /* The letters a later block leaves out are where the machine's axes now stand (as
-         cncrot path takes them): each axis' letter the one its direction is nearest. */
-      for (int j = 0; j < m.count && j < 3; j++) {
-        const double *v = m.axes[j].direction;
-        double x = fabs(v[0]), y = fabs(v[1]), z = fabs(v[2]);
-        int slot = (x >= y && x >= z) ? 0 : (y >= z ? 1 : 2);
-        t.axes[slot] = ax[3 + j];
-      }
+         cncrot path takes them). */
+      stand(&t, &m, ax);
       /* The other solution is the first point's; the points after it continue from it. */
       if (rule == CNCROT_CHOOSE_INVERSE) rule = CNCROT_CHOOSE_CLOSEST;
     } else {

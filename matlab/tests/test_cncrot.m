@@ -322,7 +322,10 @@ function test_cncrot(cases_file)
   check(isequal(tk, {'/G68.2 X0. Y0. Z0. I90. J30. K-90.'}), 'translate: Heidenhain skip mark');
   tk = cncrot_program_translate('fanuc', {'/G68.2 X10 I0 J30 K0'}, 'heidenhain', 'PLANE SPATIAL', 4);
   check(numel(strfind(tk{1}, sprintf('\n/'))) == 4 && tk{1}(1) == '/', 'translate: every line marked');
-  expect_message('cncrot:hasOrigin', @() cncrot_program_translate('fanuc', {'G68.2 X10 J30'}, 'sinumerik', 'ROT'), 'translate: origin into ROT', 'cncrot_program_translate', 'line 1');
+  % ROT has no origin words: the origin is TRANS (which replaces the one frame), the rotation
+  % AROT about it (G68.2 X10 J30 is Rx(30) about (10, 0, 0)).
+  tr = cncrot_program_translate('fanuc', {'G68.2 X10 J30'}, 'sinumerik', 'ROT', 4);
+  check(isequal(tr, {sprintf('TRANS X=10 Y=0 Z=0\nAROT X=30 Y=0 Z=0')}), 'translate: origin into ROT');
   expect_message('cncrot:badArgument', @() cncrot_program_translate('fanuc', {'G69'}, 'fanuc', 'PLANE SPATIAL'), 'translate: form of another dialect', 'cncrot_program_translate', 'argument 4 (form)');
   expect_message('cncrot:missingWord', @() cncrot_program_translate('heidenhain', {'L X+1', 'PLANE SPATIAL SPA+0 SPB+30'}, 'fanuc', 'G68.2'), 'translate: a refused block', 'cncrot_program_translate', 'line 2');
   % The datum shift and the choice word kept in the state; PLANE RESET keeps the shift.

@@ -69,6 +69,10 @@ pub struct ToolPath {
     /// An ISO canned cycle's mode (`G73`…`G89`), in force until `G80` or `G0`…`G3`: the
     /// positions in it are holes drilled, not followed.
     pub canned: bool,
+    /// The tip is no longer known: a move was not followed (an arc, a reference-point
+    /// return, a start-up move), and the control's position is not `tip`. Until a block
+    /// states `X Y Z` all three absolute, motion blocks are not followed.
+    pub lost: bool,
 }
 
 /// What a block did, beside the state it leaves.
@@ -83,9 +87,12 @@ pub enum PathRemark {
     /// A block that concerns neither (the state is the one given, byte for byte).
     Passed,
     /// A move the reader does not follow (an arc, a block in an arc's or a canned cycle's
-    /// mode, an expression or incremental function where a number belongs): the state is
-    /// the one given but for the mode the block sets ([`ToolPath::circular`],
-    /// [`ToolPath::canned`]), and no longer the control's.
+    /// mode, an expression or incremental function where a number belongs, a move while
+    /// the tip is lost, the start-up move of `G43.4`/`G43.5`/`G234`, a frame command's
+    /// origin words): the orientation is the one given, the modes the block sets are taken
+    /// (the transformation on or off, absolute or incremental, the angle mode, an arc's or
+    /// a canned cycle's mode); an ISO or SINUMERIK arc's end point becomes the tip (its
+    /// path is not followed); any other move sets [`ToolPath::lost`], the tip as it was.
     NotFollowed,
 }
 
@@ -224,10 +231,19 @@ impl<'a> Iterator for Words<'a> {
                 || c.is_ascii_digit()
                 || (c.is_ascii_alphabetic()
                     && (self.spaced || (!self.iso && c.eq_ignore_ascii_case(&b'E'))));
+            // SINUMERIK: a name with a numeric extension is followed by `=` (`A3=0.5`); `A3
+            // =0.5` is no axis A at 3 but the control's alarm ("a numeric extension must
+            // always be followed by one of the special characters =, (, [ …", its
+            // programming manual).
+            let mut after = k;
+            while self.at(after) == b' ' || self.at(after) == b'\t' {
+                after += 1;
+            }
+            let extension = self.ex && after > k && self.at(after) == b'=';
             let closed = if close {
                 c == b')'
             } else {
-                !matches!(c, b'*' | b'/' | b'+' | b'-') && !goes_on
+                !matches!(c, b'*' | b'/' | b'+' | b'-') && !goes_on && !extension
             };
             let value = if has_digits && closed {
                 self.pos = if close { k + 1 } else { k };
@@ -310,14 +326,58 @@ fn is_command(w: &Word, rest: &Words, c: &PathCommand) -> bool {
 /// `G54`, which states the frame the program's coordinates are in, is passed over). Not
 /// inlined: its frame is gone when the block's words are read (stack bound).
 #[inline(never)]
-fn frame_block(dialect: Dialect, text: &[u8]) -> bool {
+fn frame_block(dialect: Dialect, text: &[u8]) -> FrameBlock {
     use super::program::{Program, Remark};
     match Program::default().line(dialect, text) {
-        Ok((next, Remark::Applied)) => next.is_active(),
+        Ok((next, Remark::Applied)) if next.is_active() => FrameBlock::Tilt,
+        // A cancel, or a frame command whose words leave nothing active (`G158 P10157` of
+        // zeros, `G269 X0 Y0 Z0`): its coordinates are the command's, not a move.
+        Ok((_, Remark::Applied)) => FrameBlock::Cancel,
         // A SINUMERIK frame variable written (`$P_PFRAME=CROT(Z,90)`, `$P_UIFR[1]=…`).
-        Ok((_, Remark::NotFollowed)) => text.windows(3).any(|w| w.eq_ignore_ascii_case(b"$P_")),
-        _ => false,
+        Ok((_, Remark::NotFollowed)) if text.windows(3).any(|w| w.eq_ignore_ascii_case(b"$P_")) => {
+            FrameBlock::Tilt
+        }
+        // A frame command the tilted-plane reader refuses (`G268` without its `Q`): the
+        // control's alarm, not a move.
+        Err(e) if e.error != Error::LineTooLong => FrameBlock::Tilt,
+        _ => FrameBlock::None,
     }
+}
+
+/// Whether block `text` has a word of the tip or the orientation (`X`, `A3`, `I`, …).
+fn coordinates(pw: &PathWords, dialect: Dialect, text: &[u8]) -> bool {
+    let Ok(text) = block_of(dialect, text) else {
+        return false;
+    };
+    let words = Words {
+        text,
+        pos: 0,
+        iso: pw.iso,
+        spaced: pw.spaced,
+        ex: pw.ex,
+    };
+    words.into_iter().any(|w| {
+        let name = match w.name {
+            [b'I' | b'i', rest @ ..] if pw.i_prefix && rest.len() == 1 => rest,
+            n => n,
+        };
+        let one =
+            |set: &[u8]| name.len() == 1 && set.iter().any(|l| name.eq_ignore_ascii_case(&[*l]));
+        one(b"XYZABC")
+            || pw.vector.iter().any(|v| same(name, v))
+            || pw.angles.is_some_and(|a| a.iter().any(|v| same(name, v)))
+    })
+}
+
+/// What the tilted-plane reader makes of a block ([`frame_block`]).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum FrameBlock {
+    /// A tilt or shift, or a frame command refused.
+    Tilt,
+    /// A frame command that leaves nothing active.
+    Cancel,
+    /// No frame command.
+    None,
 }
 
 impl ToolPath {
@@ -336,10 +396,36 @@ impl ToolPath {
         };
         // A block that tilts or shifts the frame: the coordinates after it are read in a
         // frame this reader does not follow.
-        if frame_block(dialect, text) {
-            return Ok((*self, PathRemark::NotFollowed));
+        match frame_block(dialect, text) {
+            FrameBlock::Tilt => Ok((*self, PathRemark::NotFollowed)),
+            FrameBlock::Cancel => self.cancel(pw, dialect, text),
+            FrameBlock::None => self.read(pw, dialect, text),
         }
-        self.read(pw, dialect, text)
+    }
+
+    /// [`ToolPath::line`] for a frame command that leaves nothing active: its modes taken,
+    /// its coordinates no move. Not inlined: its frame is not on top of the tilted-plane
+    /// reader's (stack bound).
+    #[inline(never)]
+    fn cancel(
+        &self,
+        pw: &PathWords,
+        dialect: Dialect,
+        text: &[u8],
+    ) -> Result<(ToolPath, PathRemark), LineError> {
+        let (next, remark) = self.read(pw, dialect, text)?;
+        if coordinates(pw, dialect, text) {
+            let modes = ToolPath {
+                tip: self.tip,
+                orientation: self.orientation,
+                axes: self.axes,
+                lost: self.lost,
+                ..next
+            };
+            Ok((modes, PathRemark::NotFollowed))
+        } else {
+            Ok((next, remark))
+        }
     }
 
     /// [`ToolPath::line`] for a block that is no tilt or shift: its words. Not inlined:
@@ -553,29 +639,59 @@ impl ToolPath {
             }
             p
         };
-        let moded = ToolPath {
-            circular: next.circular,
-            canned: next.canned,
-            ..*self
+        changed |= (next.circular, next.canned) != (self.circular, self.canned);
+        // Not followed: the modes taken, the tip lost where the block moves.
+        let moded = off(next);
+        let lost = ToolPath {
+            lost: true,
+            ..moded
         };
-        changed |= moded != *self;
         let unchanged = if changed || (off_after && self.on) {
             (off(next), PathRemark::Applied)
         } else {
             (*self, PathRemark::Passed)
         };
         if arc {
-            // Nothing of the block is taken but its mode: its end point, or the frame after
+            // Nothing of the block is taken but its modes: its end point, or the frame after
             // it, is not known here (with or without coordinates: `LP PR+10 PA+30`, `TRANS`).
-            return Ok((moded, PathRemark::NotFollowed));
+            let moved = first_column != 0 && moves;
+            return Ok((if moved { lost } else { moded }, PathRemark::NotFollowed));
         }
         if first_column == 0 || still {
             return Ok(unchanged);
         }
-        if (unreadable || next.circular || next.canned) && moves {
-            // Nothing of the block is taken but its mode: its end point is not known here
-            // (an arc's, a hole's, a number not read).
-            return Ok((moded, PathRemark::NotFollowed));
+        // The start-up block of an ISO transformation (`G43.4 H1 X… Y… Z…`): its move is made
+        // with the tool length only, not under the transformation [doc: Fanuc's tool centre
+        // point control, "movement to the position specified by the G43.4 block (startup)
+        // does not constitute tool center point control"].
+        let startup = pw.iso && next.on && !self.on;
+        // While the tip is lost, a block that does not state all of it absolutely.
+        let whole = tip.iter().zip(tip_inc).all(|(t, inc)| t.is_some() && !inc);
+        let blocked = unreadable || next.canned || startup;
+        if (blocked || next.circular || (self.lost && !whole)) && moves {
+            if next.circular && !blocked {
+                // An arc's end point is programmed (and a helix's Z): taken, its path not
+                // followed; the tip known again where the block states it whole.
+                let mut end = moded;
+                for ((t, v), inc) in end.tip.iter_mut().zip(tip).zip(tip_inc) {
+                    if let Some((v, _)) = v {
+                        *t = if inc { *t + v } else { v };
+                    }
+                }
+                end.lost = self.lost && !whole;
+                if !end.tip.iter().all(|x| x.is_finite()) {
+                    return Err(LineError {
+                        error: Error::OutOfRange,
+                        column: first_column,
+                        expected: None,
+                    });
+                }
+                return Ok((end, PathRemark::NotFollowed));
+            }
+            // Nothing of the block is taken but its modes: its end point is not known here
+            // (a hole's, a number not read, a start-up move, a move from a position not
+            // known).
+            return Ok((lost, PathRemark::NotFollowed));
         }
         if !moves {
             // Words of a block that does not move (Heidenhain's `TOOL CALL 1 Z`, `CC X Y`).
@@ -629,6 +745,7 @@ impl ToolPath {
             };
             next.orientation = Orientation::Direction(d);
         }
+        next.lost = false;
         let all_finite = next.tip.iter().chain(&next.axes).all(|x| x.is_finite());
         if !all_finite {
             return Err(LineError {
@@ -722,14 +839,18 @@ mod tests {
         };
         assert!((d[0] - 1.0).abs() < 1e-15 && d[1].abs() < 1e-15 && d[2].abs() < 1e-15);
         assert_eq!(out[8].0.orientation, Orientation::Axes([30.0, 0.0, -45.5]));
-        // A block not followed leaves the state as it was but for the arc's mode.
+        // An arc is not followed: its mode and its end point taken (`G2 X5 Y5`), nothing
+        // else; the tip is known.
         assert_eq!(
             out[9].0,
             ToolPath {
                 circular: true,
+                tip: [5.0, 5.0, 50.0],
                 ..out[8].0
             }
         );
+        // A value not read (`X=IC(5+R1)`): the tip lost.
+        assert!(out[10].0.lost && out[10].0.tip == out[9].0.tip);
         assert!(!out[11].0.on);
     }
 
@@ -766,6 +887,16 @@ mod tests {
             (Dialect::Heidenhain, "5 PLANE RESET STAY", NotFollowed),
             (Dialect::Fanuc, "G52 X10.", NotFollowed),
             (Dialect::Haas, "G268 X0 Y0 Z0 I0 J30. K0 Q123", NotFollowed),
+            // Frame commands that leave nothing active: their coordinates are no move.
+            (Dialect::Haas, "G268 X0 Y0 Z0 I0 J0 K0 Q123", NotFollowed),
+            (Dialect::Haas, "G269 X0. Y0. Z0.", NotFollowed),
+            (
+                Dialect::Syntec,
+                "G158 P10157 X0. Y0. Z0. A0. B0. C0.",
+                NotFollowed,
+            ),
+            // One the tilted-plane reader refuses (no `Q`): the control's alarm, no move.
+            (Dialect::Haas, "G268 X5. Y0. Z0. I0. J0. K0.", NotFollowed),
             (Dialect::Fanuc, "G69", Passed),
         ] {
             let on = if d == Dialect::Heidenhain {
@@ -779,6 +910,65 @@ mod tests {
             assert_eq!(out[1].1, want, "{block}");
             assert_eq!(out[1].0, out[0].0, "{block}");
         }
+    }
+
+    /// A block not followed still sets the modes it names (a retract `G91 G28 Z0.` leaves
+    /// `G91`; `G49`, `M129`, `TRAFOOF` beside a reference move switch the transformation
+    /// off), and its move loses the tip: until a block states X Y Z absolutely, the moves
+    /// are not followed (an incremental `X10.` from an unknown position is no point). The
+    /// start-up block of `G43.4` moves with the tool length only (Fanuc's manual): not a
+    /// point.
+    #[test]
+    fn blocks_not_followed_keep_their_modes() {
+        use PathRemark::*;
+        let iso = run(
+            Dialect::Fanuc,
+            &[
+                "G43.4 H1 X0. Y0. Z50. A0. C0.",
+                "G1 X0. Y0. Z50. A0. C0.",
+                "G91 G28 Z0.",
+                "G1 X10.",
+                "G90 G1 X1. Y2. Z3.",
+                "G91 G28 Z0. G49",
+            ],
+        );
+        let r: Vec<_> = iso.iter().map(|o| o.1).collect();
+        assert_eq!(
+            r,
+            [
+                NotFollowed,
+                Point,
+                NotFollowed,
+                NotFollowed,
+                Point,
+                NotFollowed
+            ]
+        );
+        assert!(iso[0].0.on && iso[0].0.lost && !iso[1].0.lost);
+        assert!(iso[2].0.incremental && iso[2].0.lost && iso[2].0.tip == [0.0, 0.0, 50.0]);
+        assert!(iso[3].0.lost && iso[3].0.tip == [0.0, 0.0, 50.0]);
+        assert!(!iso[4].0.incremental && !iso[4].0.lost && iso[4].0.tip == [1.0, 2.0, 3.0]);
+        assert!(!iso[5].0.on && iso[5].0.incremental);
+        let h = run(
+            Dialect::Heidenhain,
+            &["M128", "L X+0 Y+0 Z+50 R0 FMAX", "L Z+500 R0 FMAX M91 M129"],
+        );
+        assert_eq!(h[2].1, NotFollowed);
+        assert!(!h[2].0.on && h[2].0.lost);
+        let s = run(
+            Dialect::Sinumerik,
+            &["TRAORI", "G1 X0 Y0 Z5", "TRAFOOF G74 Z1=0"],
+        );
+        assert_eq!(s[2].1, NotFollowed);
+        assert!(!s[2].0.on);
+        // `A3 =0.5`: a numeric extension before a blank and `=` is the control's alarm, not
+        // the axis A at 3.
+        let s = run(
+            Dialect::Sinumerik,
+            &["TRAORI", "G1 X0 Y0 Z5", "G1 A3 =0.5 C3 =0.8660254"],
+        );
+        assert_eq!(s[2].1, NotFollowed);
+        assert_eq!(s[2].0.orientation, Orientation::Unstated);
     }
 
     /// `G2`/`G3` (group 01) stay in force until `G0`/`G1`, a canned cycle (group 09) until
@@ -817,10 +1007,12 @@ mod tests {
                 NotFollowed,
                 NotFollowed,
                 Applied,
-                Point,
+                // After the holes the tip is not known (Z went back to the R or the initial
+                // level): not followed until X Y Z are stated.
                 NotFollowed,
                 NotFollowed,
-                Point
+                NotFollowed,
+                NotFollowed
             ]
         );
         // The arc's centre words did not become the tool direction.
@@ -828,7 +1020,8 @@ mod tests {
         assert_eq!(iso[3].0.tip, [0.0, 0.0, 5.0]);
         assert!(iso[2].0.circular && iso[3].0.circular && !iso[4].0.circular);
         assert!(iso[5].0.canned && iso[6].0.canned && !iso[7].0.canned);
-        assert_eq!(iso[8].0.tip, [7.0, 7.0, 5.0]);
+        assert!(iso[6].0.lost && iso[8].0.lost && iso[8].0.tip == iso[4].0.tip);
+        assert_eq!(iso[4].0.tip, [1.0, 1.0, 5.0]);
         // A canned cycle in an arc's mode ends neither with the other; `G1` ends both.
         assert!(iso[10].0.circular && iso[10].0.canned);
         assert!(!iso[11].0.circular && !iso[11].0.canned);

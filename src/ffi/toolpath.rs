@@ -32,7 +32,9 @@ pub struct cncrot_tool_path {
     /// Bit 0: SINUMERIK `ORIRPY` (else `ORIEULER`); bit 1: incremental (`G91`); bit 2:
     /// Heidenhain `AXIS SPAT` (`A B C` spatial angles, else axis positions); bit 3: an arc's
     /// mode (`G2`/`G3`, SINUMERIK `CIP`, `CT`, splines; until `G0`/`G1`); bit 4: an ISO
-    /// canned cycle's mode (`G73`…`G89`; until `G80` or `G0`…`G3`).
+    /// canned cycle's mode (`G73`…`G89`; until `G80` or `G0`…`G3`); bit 5: the tip lost (a
+    /// move not followed: until a block states `X Y Z` all three absolute, motion blocks are
+    /// not followed).
     pub flags: i32,
     /// The programmed tool tip, mm, workpiece coordinates.
     pub tip: [f64; 3],
@@ -57,7 +59,7 @@ fn load(c: &cncrot_tool_path) -> Result<ToolPath, cncrot_status> {
     if !(finite
         && (0..=1).contains(&c.on)
         && (0..=1).contains(&c.point)
-        && (0..=31).contains(&c.flags))
+        && (0..=63).contains(&c.flags))
     {
         return Err(bad);
     }
@@ -85,6 +87,7 @@ fn load(c: &cncrot_tool_path) -> Result<ToolPath, cncrot_status> {
         incremental: c.flags & 2 != 0,
         circular: c.flags & 8 != 0,
         canned: c.flags & 16 != 0,
+        lost: c.flags & 32 != 0,
     })
 }
 
@@ -102,7 +105,8 @@ fn store(p: &ToolPath, point: bool) -> cncrot_tool_path {
             | (i32::from(p.incremental) << 1)
             | (i32::from(p.spatial) << 2)
             | (i32::from(p.circular) << 3)
-            | (i32::from(p.canned) << 4),
+            | (i32::from(p.canned) << 4)
+            | (i32::from(p.lost) << 5),
         tip: p.tip,
         direction,
         axes: p.axes,
@@ -120,9 +124,11 @@ fn store(p: &ToolPath, point: bool) -> cncrot_tool_path {
 /// Returns 0 (`point` 1 for a CL point, 0 for a state change), `CNCROT_STATUS_PASSED` (a
 /// block that concerns neither: `*path` byte-identical), `CNCROT_STATUS_NOT_FOLLOWED` (a
 /// move the reader does not follow: an arc, a block in an arc's or a canned cycle's mode,
-/// a reference or machine-coordinate move, a value that is not a number: `*path`
-/// byte-identical but for the mode the block sets, `flags` bits 3 and 4 with `point` 0,
-/// and no longer the control's); or with
+/// a reference or machine-coordinate move, a value that is not a number, the start-up move
+/// of `G43.4`/`G43.5`/`G234`, a move while the tip is lost, a frame command — tilt, shift
+/// or cancel — whose words are no move: `tip`, `orientation`, `direction` and `axes` as
+/// they were, the modes the block sets taken — `on`, `flags` bits 0 to 4 — and `flags` bit
+/// 5 set where the block moved the machine, `point` 0); or with
 /// `*path` untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a state the
 /// library does not write), `CNCROT_STATUS_NOT_AVAILABLE` (TwinCAT: its five-axis
 /// programs are not read), `CNCROT_STATUS_LINE_TOO_LONG`, `CNCROT_STATUS_BAD_ARGUMENT` (a
@@ -166,7 +172,7 @@ pub unsafe extern "C" fn cncrot_tool_path_line(
             }
             PathRemark::Passed => cncrot_status::Passed,
             PathRemark::NotFollowed => {
-                // The arc's or canned cycle's mode the block sets; nothing else of it.
+                // The modes the block sets, and whether it lost the tip; nothing else of it.
                 if next != p {
                     path.write_unaligned(store(&next, false));
                 }
