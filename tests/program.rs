@@ -3878,3 +3878,42 @@ fn blocks_real_programs_write() {
         Remark::Passed
     );
 }
+
+/// Blanks within an ISO word carry no meaning (Fanuc: spaces are ignored; the library reads
+/// `X 10.` already): `G 68.2`, `G6 8.2`, `G 69`, Haas's `G 268`, Syntec's `G 158` are the
+/// commands written without them, not blocks passed over (a `G53.1` after a `G 68.2` passed
+/// over turned the machine to no tilt).
+#[test]
+fn iso_words_may_hold_blanks() {
+    let read = |d: Dialect, lines: &[&str]| {
+        lines.iter().fold(Program::default(), |p, l| {
+            let (q, r) = p.line(d, l.as_bytes()).unwrap();
+            assert_eq!(r, cncrot::dialects::program::Remark::Applied, "{l}");
+            q
+        })
+    };
+    let want = read(Dialect::Fanuc, &["G68.2 X0 Y0 Z0 I0 J30 K0"]);
+    for spaced in [
+        "G 68.2 X0 Y0 Z0 I0 J30 K0",
+        "G6 8.2 X0 Y0 Z0 I0 J30 K0",
+        "G68 .2 X 0 Y0 Z0 I0 J 30 K0",
+    ] {
+        assert_eq!(
+            read(Dialect::Fanuc, &[spaced]).frame,
+            want.frame,
+            "{spaced}"
+        );
+    }
+    let cancelled = read(Dialect::Fanuc, &["G68.2 X0 Y0 Z0 I0 J30 K0", "G0 G 69"]);
+    assert!(!cancelled.is_active());
+    let haas = read(Dialect::Haas, &["G 268 X0 Y0 Z0 I0 J30 K0 Q123"]);
+    assert_eq!(
+        haas.frame,
+        read(Dialect::Haas, &["G268 X0 Y0 Z0 I0 J30 K0 Q123"]).frame
+    );
+    let syntec = read(Dialect::Syntec, &["G 158 P10157 X0 Y0 Z0 A30 B0 C0"]);
+    assert_eq!(
+        syntec.frame,
+        read(Dialect::Syntec, &["G158 P10157 X0 Y0 Z0 A30 B0 C0"]).frame
+    );
+}

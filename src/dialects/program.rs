@@ -690,6 +690,11 @@ pub fn write_line(
         },
         ..Motion::default()
     };
+    // One line: an origin the form has no words for is refused, not written as the datum
+    // shift before it (which a program's change writes: `write_change`).
+    if shift_and_rotation(dialect, &spec, frame) {
+        return Err(origin_refused(&spec, frame));
+    }
     let singular = tilt_block(dialect, &spec, frame, how, decimals, &mut out)?;
     let len = match out.finish() {
         Some(len) => len,
@@ -718,13 +723,7 @@ fn tilt_block(
     // set by the shift command, which replaces the frame (`TRANS X=… Y=… Z=…`), then the
     // rotation added about it by the form's additive command (`AROT`), as programs write a
     // rotated frame with an origin [doc: `AROT` applies on the right of the active frame].
-    let moved = !dialect.keeps_shift()
-        && !spec.form.has_origin()
-        && frame.translation != [0.0; 3]
-        && frame.rotation != crate::IDENTITY
-        && dialect
-            .relative_form(spec)
-            .is_some_and(|r| r.form == spec.form);
+    let moved = shift_and_rotation(dialect, spec, frame);
     let origin = frame.translation;
     let rotation_only = Frame::from_rotation(frame.rotation);
     let (frame, how) = if moved {
@@ -758,6 +757,31 @@ fn tilt_block(
     dialect.write_line(spec, words, how, decimals, out)?;
     // The untilted plane's words are all zero, whatever the form's singularity.
     Ok(singular && *frame != Frame::IDENTITY)
+}
+
+/// Whether [`tilt_block`] writes `frame` as the datum shift and the rotation added about it:
+/// a form without origin words in a dialect of one frame with an additive form (SINUMERIK's
+/// `ROT`: `TRANS X=… Y=… Z=…`, then `AROT`).
+fn shift_and_rotation(dialect: Dialect, spec: &FormSpec, frame: &Frame) -> bool {
+    !dialect.keeps_shift()
+        && !spec.form.has_origin()
+        && frame.translation != [0.0; 3]
+        && frame.rotation != crate::IDENTITY
+        && dialect
+            .relative_form(spec)
+            .is_some_and(|r| r.form == spec.form)
+}
+
+/// The refusal of [`write_line`] for such a frame: the form's own checks in their order
+/// (finite, a rotation…), then [`Error::HasOrigin`]. Not inlined (stack bound).
+#[inline(never)]
+fn origin_refused(spec: &FormSpec, frame: &Frame) -> Error {
+    let mut words = [0.0; MAX_VALUES];
+    let slots = words.get_mut(..spec.form.count()).unwrap_or(&mut []);
+    match form::form_values(spec.form, spec.selector, frame, slots) {
+        Err(e) => e,
+        Ok(_) => Error::HasOrigin,
+    }
 }
 
 /// The longest text [`write_change`] writes: a cancel, a datum shift of up to four blocks

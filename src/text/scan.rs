@@ -180,9 +180,34 @@ impl<'a> Cursor<'a> {
 
     /// Consumes the code `kw` (case-insensitive; a G-code such as `G68.2`) when no digit or
     /// point follows it. ISO programs may write their words without spaces (`G68.2X0.J45.`):
-    /// a letter after a code starts the next word.
+    /// a letter after a code starts the next word; and blanks within a word carry no meaning
+    /// there (`G 68.2`, `G6 8.2` are `G68.2`; `G68.2 5` is `G68.25`) [doc: ISO 6983, Fanuc's
+    /// "spaces are ignored"].
     pub fn code(&mut self, kw: &[u8]) -> bool {
-        self.take(kw, |b| b.is_ascii_digit() || b == b'.')
+        let blank = |k: usize| matches!(self.text.get(k), Some(b' ' | b'\t'));
+        let mut k = self.pos;
+        for (i, c) in kw.iter().enumerate() {
+            while i > 0 && blank(k) {
+                k += 1;
+            }
+            if !self.text.get(k).is_some_and(|b| b.eq_ignore_ascii_case(c)) {
+                return false;
+            }
+            k += 1;
+        }
+        let mut j = k;
+        while blank(j) {
+            j += 1;
+        }
+        if self
+            .text
+            .get(j)
+            .is_some_and(|&b| b.is_ascii_digit() || b == b'.')
+        {
+            return false;
+        }
+        self.pos = k;
+        true
     }
 
     /// Consumes the address letter `l` (case-insensitive) when the next character is not a
@@ -519,21 +544,24 @@ pub struct Comments {
 /// A number as written as a G- or M-code in tenths (`54.1` → 541, `69` → 690, `068.2` →
 /// 682), if it is a plain number with at most one decimal.
 pub fn code_of(value: &[u8]) -> Option<u32> {
-    let (int, frac) = match value.iter().position(|&b| b == b'.') {
-        Some(k) => (value.get(..k)?, value.get(k + 1..)?),
-        None => (value, &[][..]),
-    };
-    if int.is_empty() || int.len() > 6 || frac.len() > 1 {
+    // Blanks within an ISO word carry no meaning (`G 68.2`, `G6 8.2`): left out.
+    let (mut int, mut frac, mut point, mut v) = (0usize, 0usize, false, 0u32);
+    for &b in value {
+        match b {
+            b' ' | b'\t' => continue,
+            b'.' if !point => point = true,
+            b'0'..=b'9' if point => frac += 1,
+            b'0'..=b'9' => int += 1,
+            _ => return None,
+        }
+        if b != b'.' {
+            v = v.checked_mul(10)?.checked_add(u32::from(b - b'0'))?;
+        }
+    }
+    if int == 0 || int > 6 || frac > 1 {
         return None;
     }
-    let mut v = 0u32;
-    for &b in int.iter().chain(frac) {
-        if !b.is_ascii_digit() {
-            return None;
-        }
-        v = v * 10 + u32::from(b - b'0');
-    }
-    Some(if frac.is_empty() { v * 10 } else { v })
+    Some(if frac == 0 { v * 10 } else { v })
 }
 
 /// Where the text after the `( … )` or `" … "` that opens at `pos` goes on: one past its
@@ -653,11 +681,32 @@ impl<'a> Iterator for Tokens<'a> {
             if self.words && (b.is_ascii_alphabetic() || b == b'#') {
                 self.pos += 1;
                 let mut k = self.pos;
+                // Blanks within an ISO word carry no meaning (`G 68.2`, `G6 8.2`): the value
+                // goes on across them to the digits after (and holds them: `code_of` leaves
+                // them out).
+                let blanks = |t: &Self, mut j: usize| {
+                    while t.at(j) == b' ' || t.at(j) == b'\t' {
+                        j += 1;
+                    }
+                    j
+                };
+                let digit = |c: u8| c.is_ascii_digit() || c == b'.';
+                if b != b'#' && digit(self.at(blanks(self, k))) {
+                    k = blanks(self, k);
+                }
                 if matches!(self.at(k), b'+' | b'-') {
                     k += 1;
                 }
-                while self.at(k).is_ascii_digit() || self.at(k) == b'.' {
-                    k += 1;
+                loop {
+                    while digit(self.at(k)) {
+                        k += 1;
+                    }
+                    let j = blanks(self, k);
+                    if j > k && digit(self.at(j)) && digit(self.at(k - 1)) {
+                        k = j;
+                    } else {
+                        break;
+                    }
                 }
                 self.pos = k;
                 return Some(Token {
