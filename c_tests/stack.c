@@ -316,6 +316,8 @@ static void machine_tcp_forward(void) {
 }
 /* The identity pose: the tool along the first axis of both machines, a pole (the general way). */
 static const double POLE[16] = {1, 0, 0, 5, 0, 1, 0, 6, 0, 0, 1, 7, 0, 0, 0, 1};
+/* A rotation rounded to 6 decimals (sqrt(3)/2 as 0.866025): solved for its nearest rotation. */
+static const double ROUNDED[16] = {0, 0.866025, 0.5, 10, -1, 0, 0, 0, 0, -0.5, 0.866025, 0, 0, 0, 0, 1};
 /* Its two ways apart: the common case (a tilt away from the poles, no Hirth grid: a fork
  * head and head3) and the general way (the poles of both, the fork with a Hirth grid). */
 static cncrot_machine fork, fork_hirth;
@@ -346,7 +348,9 @@ static void machine_tcp_inverse_general(void) {
   static double ax[6];
   sink += cncrot_machine_tcp_inverse(&head3, POLE3, 100, prev, ax) + cncrot_machine_tcp_inverse(&fork, POLE, 100, prev2, ax) +
           cncrot_machine_tcp_inverse(&fork_hirth, TILT, 100, prev2, ax) +
-          cncrot_machine_tcp_inverse(&fork_hirth, POLE, 100, prev2, ax);
+          cncrot_machine_tcp_inverse(&fork_hirth, POLE, 100, prev2, ax) +
+          cncrot_machine_tcp_inverse(&head3, ROUNDED, 100, prev, ax) +
+          cncrot_machine_tcp_inverse(&fork, ROUNDED, 100, prev2, ax);
 }
 /* The export's worst case: both ways, and the machines before (called here, not through the
  * two functions above, whose frames would be counted too). */

@@ -1200,6 +1200,44 @@ fn tcp_inverse_ac_table_by_hand() {
     assert!((t.axes[4] - 810.0).abs() < 1e-12, "{:?}", t.axes);
 }
 
+/// A pose rounded where it was written (√3/2 as 0.866025, as a printed matrix or a CAM
+/// system's file holds it) passes the rotation check: it is solved for its nearest rotation,
+/// not refused as unreachable (its rounding, 2.5e-7, missed every solution's verification).
+/// The nearest rotation of this one turns the tool by under 1e-6 rad from (0.5, 0, √3/2):
+/// A and C within 1e-4° of 30° and 90°; the inverse and choice alike.
+#[test]
+fn rounded_poses_are_solved_for_their_nearest_rotation() {
+    let m = machine(&[
+        axis(Side::Work, [1.0, 0.0, 0.0], [0.0, 0.0, 100.0]),
+        axis(Side::Work, [0.0, 0.0, 1.0], [0.0; 3]),
+    ]);
+    let rot = [
+        [0.0, 0.866025, 0.5],
+        [-1.0, 0.0, 0.0],
+        [0.0, -0.5, 0.866025],
+    ];
+    let pose = cncrot::Frame {
+        rotation: rot,
+        translation: [10.0, 0.0, 0.0],
+    };
+    let t = m
+        .tcp_inverse(&pose, 50.0, [0.0, 0.0, 0.0, 20.0, 80.0, 0.0])
+        .unwrap();
+    assert!(
+        (t.axes[3] - 30.0).abs() < 1e-4 && (t.axes[4] - 90.0).abs() < 1e-4,
+        "{:?}",
+        t.axes
+    );
+    let c = m.choose(&rot, [20.0, 80.0, 0.0], Rule::Closest).unwrap();
+    assert!((c.axes[0] - 30.0).abs() < 1e-4 && (c.axes[1] - 90.0).abs() < 1e-4);
+    // Far from a rotation: still refused.
+    let bent = [[0.0, 0.9, 0.5], [-1.0, 0.0, 0.0], [0.0, -0.5, 0.866025]];
+    assert_eq!(
+        m.choose(&bent, [0.0; 3], Rule::Closest).unwrap_err(),
+        Error::NotARotation
+    );
+}
+
 fn ac_table() -> Machine {
     machine(&[
         axis(Side::Work, [1.0, 0.0, 0.0], [0.0, 0.0, 100.0]),

@@ -664,9 +664,11 @@ fn translated(
         );
         // A block that adds to the tilt, written as the target's increment, adds as often:
         // the text read again gives the block read again (a loop's second pass).
+        // (`ROT`'s whole frame with an origin is `TRANS`, which replaces it, then `AROT`.)
         let increment = ["PLANE RELATIV", "G68.4", "AROT", " P01", ",\"\",1,"]
             .iter()
-            .any(|w| text.contains(w));
+            .any(|w| text.contains(w))
+            && !text.contains("TRANS");
         if after.relative == 1 && increment {
             let mut again = *after;
             // SAFETY: the line holds its length in bytes; the state is valid.
