@@ -206,6 +206,30 @@ impl Params {
                 }
             }
         }
+        // A macro called with arguments (`G65 P3000 A30.`, `G66`) runs on a level of local
+        // variables of its own, `#1`–`#33` set from its arguments ("each time a macro is
+        // called (with G65 or G66), the local variable level is incremented", Fanuc's
+        // operator's manual): an assignment the main program makes to them is not the
+        // macro's [choice: none of them is read with a value in such a program].
+        let iso = matches!(dialect, Dialect::Fanuc | Dialect::Haas | Dialect::Syntec);
+        let macro_calls = lines.iter().any(|l| {
+            let joined: String = l.split_whitespace().collect();
+            ["G65", "G66"].iter().any(|g| {
+                joined.match_indices(g).any(|(i, _)| {
+                    !joined[i + g.len()..].starts_with(|c: char| c.is_ascii_digit() || c == '.')
+                })
+            })
+        });
+        if iso && macro_calls {
+            for (name, v) in values.iter_mut() {
+                let local = name[1..]
+                    .parse::<u32>()
+                    .is_ok_and(|n| (1..=33).contains(&n));
+                if local {
+                    *v = Assigned::Unknown;
+                }
+            }
+        }
         Params {
             dialect,
             values,
@@ -311,6 +335,40 @@ fn conditional(dialect: Dialect, codes: &[String], raw: &[String]) -> Vec<std::o
     for (k, code) in codes.iter().enumerate() {
         let words: Vec<&str> = code.split_whitespace().collect();
         let below = |found: &dyn Fn(usize) -> bool| (k + 1..codes.len()).find(|&i| found(i));
+        // A block the skip switch may leave out (`/#100=30.`, Heidenhain's `12 /…`).
+        let line = raw.get(k).map_or("", String::as_str);
+        let line = match dialect {
+            Dialect::Heidenhain => line.trim_start_matches(|c: char| c.is_ascii_digit()),
+            _ => line,
+        };
+        if line.trim_start().starts_with('/') {
+            out.push(k..k + 1);
+        }
+        // A loop's body, which runs no time when the condition fails at once (`WHILE [#1
+        // LT 3] DO1` … `END1`; SINUMERIK `WHILE` … `ENDWHILE`, TwinCAT `$WHILE` …
+        // `$ENDWHILE`).
+        let first = words.first().copied().unwrap_or("");
+        if first.starts_with("WHILE") || first == "$WHILE" {
+            let end = match dialect {
+                Dialect::Fanuc | Dialect::Haas | Dialect::Syntec => {
+                    let joined = words.concat();
+                    joined
+                        .rfind("DO")
+                        .map(|i| format!("END{}", &joined[i + 2..]))
+                        .unwrap_or_default()
+                }
+                Dialect::Twincat => "$ENDWHILE".to_string(),
+                _ => "ENDWHILE".to_string(),
+            };
+            let ends = |i: usize| {
+                codes
+                    .get(i)
+                    .is_some_and(|c| c.split_whitespace().collect::<String>() == end)
+            };
+            if let Some(j) = below(&ends) {
+                out.push(k + 1..j);
+            }
+        }
         match dialect {
             Dialect::Fanuc | Dialect::Haas | Dialect::Syntec => {
                 let joined = words.concat();

@@ -3577,4 +3577,23 @@ fn program_reads_no_parameter_a_jump_may_skip() {
     // Without the jump: read with the value.
     let plain = fanuc.replace("IF[#5EQ1]GOTO10\n", "");
     assert_eq!(translate(&plain, "fanuc", "heidenhain").code, 0);
+    // A skip-marked assignment (the switch may leave it out), one inside a loop that may run
+    // no time, a macro's local variable set by the main program (`G65 … A30.` sets the
+    // macro's #1 to 30, not to the main program's 10): not read with a value.
+    let skipped = "/#2=30.\nG68.2 X0 Y0 Z0 I0 J#2 K0\nG69\n";
+    assert_eq!(translate(skipped, "fanuc", "heidenhain").code, 1);
+    let looped =
+        "#1=0\nWHILE [#1 LT #5] DO1\n#2=30.\n#1=#1+1\nEND1\nG68.2 X0 Y0 Z0 I0 J#2 K0\nG69\n";
+    assert_eq!(translate(looped, "fanuc", "heidenhain").code, 1);
+    let sinumerik_loop = "WHILE R5>0\nR2=30\nR5=R5-1\nENDWHILE\n\
+                          CYCLE800(0,\"TC1\",0,57,0,0,0,0,R2,0,0,0,0,-1,0,0)\n";
+    assert_eq!(translate(sinumerik_loop, "sinumerik", "fanuc").code, 1);
+    let local = "O1000\n#1=10.\nG65 P3000 A30.\nM30\nO3000\nG68.2 X0 Y0 Z0 I0 J#1 K0\nG69\nM99\n";
+    let r = translate(local, "fanuc", "heidenhain");
+    assert_eq!(r.code, 1, "{}", r.stdout);
+    assert!(
+        !r.stdout.contains("SPB+10") && !r.stdout.contains("SPA+10"),
+        "{}",
+        r.stdout
+    );
 }
