@@ -180,14 +180,15 @@ impl<'a> Cursor<'a> {
 
     /// Consumes the code `kw` (case-insensitive; a G-code such as `G68.2`) when no digit or
     /// point follows it. ISO programs may write their words without spaces (`G68.2X0.J45.`):
-    /// a letter after a code starts the next word; and blanks within a word carry no meaning
-    /// there (`G 68.2`, `G6 8.2` are `G68.2`; `G68.2 5` is `G68.25`) [doc: ISO 6983, Fanuc's
-    /// "spaces are ignored"].
+    /// a letter after a code starts the next word; and blanks between the letter and the
+    /// number carry no meaning there (`G 68.2` is `G68.2`) [doc: Fanuc, "spaces are
+    /// ignored"]; within the number they end it, as the block's words read (`G6 8.2` is no
+    /// `G68.2`: a block's rest joins its pieces with a blank) [choice].
     pub fn code(&mut self, kw: &[u8]) -> bool {
         let blank = |k: usize| matches!(self.text.get(k), Some(b' ' | b'\t'));
         let mut k = self.pos;
         for (i, c) in kw.iter().enumerate() {
-            while i > 0 && blank(k) {
+            while i == 1 && blank(k) {
                 k += 1;
             }
             if !self.text.get(k).is_some_and(|b| b.eq_ignore_ascii_case(c)) {
@@ -195,13 +196,9 @@ impl<'a> Cursor<'a> {
             }
             k += 1;
         }
-        let mut j = k;
-        while blank(j) {
-            j += 1;
-        }
         if self
             .text
-            .get(j)
+            .get(k)
             .is_some_and(|&b| b.is_ascii_digit() || b == b'.')
         {
             return false;
@@ -544,7 +541,7 @@ pub struct Comments {
 /// A number as written as a G- or M-code in tenths (`54.1` → 541, `69` → 690, `068.2` →
 /// 682), if it is a plain number with at most one decimal.
 pub fn code_of(value: &[u8]) -> Option<u32> {
-    // Blanks within an ISO word carry no meaning (`G 68.2`, `G6 8.2`): left out.
+    // Blanks between an ISO word's letter and its number (`G 68.2`): left out.
     let (mut int, mut frac, mut point, mut v) = (0usize, 0usize, false, 0u32);
     for &b in value {
         match b {
@@ -681,9 +678,10 @@ impl<'a> Iterator for Tokens<'a> {
             if self.words && (b.is_ascii_alphabetic() || b == b'#') {
                 self.pos += 1;
                 let mut k = self.pos;
-                // Blanks within an ISO word carry no meaning (`G 68.2`, `G6 8.2`): the value
-                // goes on across them to the digits after (and holds them: `code_of` leaves
-                // them out).
+                // Blanks between an ISO word's letter and its number carry no meaning (`G
+                // 68.2`): the value holds them (`code_of` leaves them out). Not within the
+                // number: a block's rest joins its pieces with a blank, and a `G6` before a
+                // word taken out and a `9` after it would become `G69`.
                 let blanks = |t: &Self, mut j: usize| {
                     while t.at(j) == b' ' || t.at(j) == b'\t' {
                         j += 1;
@@ -697,16 +695,8 @@ impl<'a> Iterator for Tokens<'a> {
                 if matches!(self.at(k), b'+' | b'-') {
                     k += 1;
                 }
-                loop {
-                    while digit(self.at(k)) {
-                        k += 1;
-                    }
-                    let j = blanks(self, k);
-                    if j > k && digit(self.at(j)) && digit(self.at(k - 1)) {
-                        k = j;
-                    } else {
-                        break;
-                    }
+                while digit(self.at(k)) {
+                    k += 1;
                 }
                 self.pos = k;
                 return Some(Token {
