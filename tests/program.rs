@@ -1221,6 +1221,8 @@ fn every_block_of_a_program() {
             ("N100 G54.1 P3", N),
             ("N110 G10 L2 P1 X0 Y0", N),
             ("N120 #5221=100.", N),
+            // A computed variable number may be a work offset: #[5220+1] is #5221.
+            ("#[5220+1]=-100.", N),
             ("N130 #100=5.", P),
             ("N140 G92 X0 Y0", N),
             ("N150 G51.1 X0", N),

@@ -562,7 +562,8 @@ fn offset_variable(code: u32) -> bool {
 /// other words (`cancels`) apply; a command the family reads standing elsewhere
 /// (`commands`) is refused at its column, unless the block holds a word not followed (`G54
 /// G68.2 …`: then the whole block is not followed); a
-/// G-code of [`ISO_NOT_FOLLOWED`] or `more`, or a write to a work-offset variable, is
+/// G-code of [`ISO_NOT_FOLLOWED`] or `more`, or a write to a work-offset variable (or to a
+/// variable whose number is computed, `#[5220+1]=`, which may be one), is
 /// [`Block::NotFollowed`] (it wins over a cancel on the same block: the library's state is
 /// then not the control's either way); anything else is [`Block::Passed`].
 #[inline(never)]
@@ -593,6 +594,9 @@ pub(crate) fn iso_block(
                 not_followed = true
             }
             (b'#', Some(code)) if t.assigned && offset_variable(code) => not_followed = true,
+            // A variable whose number is computed (`#[5220+1]=-100.`, as probing and shop
+            // macros write the work offsets): it may be one.
+            (b'#', None) if t.assigned && t.value.is_empty() => not_followed = true,
             _ => {}
         }
     }
