@@ -681,6 +681,16 @@ static void long_lines_and_points(void) {
   double rz[16] = {0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", rz, -1, big, sizeof big), CNCROT_STATUS_OK);
   CHECK(strcmp(big, "PLANE POINTS P1X+0 P1Y+0 P1Z+0 P2X+0 P2Y+1 P2Z+0 P3X-1 P3Y+0 P3Z+0 STAY") == 0, "%s", big);
+  /* A rotation rounded where it was written (Rx(30°) printed to 3 decimals, 0.866 for
+   * sqrt(3)/2) is written as its nearest rotation: in the plane of the turn the rounded block
+   * is a scaled rotation by atan2(0.5, 0.866) = 30.000728°, whose polar factor is that
+   * rotation. */
+  double r3[16] = {1, 0, 0, 0, 0, 0.866, -0.5, 0, 0, 0.5, 0.866, 0, 0, 0, 0, 1};
+  CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_FANUC, "G68.2", r3, 4, big, sizeof big), CNCROT_STATUS_OK);
+  CHECK(strcmp(big, "G68.2 X0. Y0. Z0. I0. J30.0007 K0.") == 0, "%s", big);
+  double w6[6];
+  CHECK_STATUS(cncrot_form_values(CNCROT_FORM_G68_2, 0, r3, w6, 6), CNCROT_STATUS_OK);
+  CHECK(fabs(w6[4] - 30.000727780827372) < 1e-9, "%.12f", w6[4]);
   /* Nothing active is written as the cancel, in every dialect. */
   double id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   CHECK_STATUS(cncrot_program_write(CNCROT_DIALECT_HEIDENHAIN, "PLANE POINTS", id, -1, big, sizeof big), CNCROT_STATUS_OK);

@@ -1196,7 +1196,9 @@ int32_t cncrot_form_frame(int32_t form,
  * The words of a tilted-plane form that give `frame` (the inverse of
  * `cncrot_form_frame`): what a writer of a measured or converted plane needs. Angles in the
  * dialect's canonical ranges; at the singular middle angle the free angle sits where that
- * dialect's rule puts it and the status is `CNCROT_STATUS_SINGULAR`.
+ * dialect's rule puts it and the status is `CNCROT_STATUS_SINGULAR`. A rotation rounded where
+ * it was written (within the rotation tolerance but more than 1e-12 from orthonormal: a
+ * matrix printed to 4 decimals) gets the words of its nearest rotation.
  *
  * Refused, with `words` untouched: `CNCROT_STATUS_NULL_POINTER`;
  * `CNCROT_STATUS_NOT_FINITE`; `CNCROT_STATUS_HAS_ORIGIN` for a frame with an origin and a
@@ -2155,8 +2157,10 @@ int32_t cncrot_program_frame_on(const struct cncrot_program *program,
  * rounded to that many decimals (ties to even; `PLANE VECTOR`'s and `PLANE POINTS`' words
  * to at least 7), trailing zeros dropped. Angles are in each
  * dialect's read-back ranges; `CNCROT_STATUS_SINGULAR` says the middle angle was singular and
- * the free angle sits where that dialect's rule puts it. `out` receives the line and a NUL
- * (at most `CNCROT_PROGRAM_LINE_MAX` + 1 bytes).
+ * the free angle sits where that dialect's rule puts it. A rotation rounded where it was
+ * written (within the rotation tolerance but more than 1e-12 from orthonormal: a matrix
+ * printed to 4 decimals) is written as its nearest rotation. `out` receives the line and a
+ * NUL (at most `CNCROT_PROGRAM_LINE_MAX` + 1 bytes).
  *
  * Returns 0 or `CNCROT_STATUS_SINGULAR`, or a negative status with `out` untouched:
  * `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_HAS_ORIGIN` (a

@@ -364,6 +364,36 @@ pub(crate) fn reorthonormalize(m: &Matrix) -> Matrix {
     x.map(|row| row.map(|v| v + 0.0))
 }
 
+/// How far from orthonormal (`max |MᵀM − I|`) a rotation is taken as it is; beyond (and
+/// within [`ROTATION_TOLERANCE`]), it is one rounded where it was written (a matrix printed
+/// to 4 or 6 decimals, a float one), which the solvers and writers take for its nearest
+/// rotation. Far below their verifications (1e-9, 1e-12 on the read-back of words), far
+/// above the rounding of the library's own rotations (a few 1e-16).
+const ROUNDED: f64 = 1e-12;
+
+/// Whether `max |MᵀM − I| ≤ 1e-12` (NaN: no): a rotation the library takes bit for bit.
+pub(crate) fn is_exact(m: &Matrix) -> bool {
+    let mut ok = true;
+    for i in 0..3 {
+        for j in i..3 {
+            let dot = m[0][i] * m[0][j] + m[1][i] * m[1][j] + m[2][i] * m[2][j];
+            let want = if i == j { 1.0 } else { 0.0 };
+            ok &= math::abs(dot - want) <= ROUNDED;
+        }
+    }
+    ok
+}
+
+/// `m` itself when [`is_exact`], else its nearest rotation ([`reorthonormalize`]): what a
+/// writer writes for a rotation the caller rounded.
+pub(crate) fn exact_or_nearest(m: &Matrix) -> Matrix {
+    if is_exact(m) {
+        *m
+    } else {
+        reorthonormalize(m)
+    }
+}
+
 /// The determinant.
 pub fn determinant(m: &Matrix) -> f64 {
     m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])

@@ -138,7 +138,9 @@ pub unsafe extern "C" fn cncrot_form_frame(
 /// The words of a tilted-plane form that give `frame` (the inverse of
 /// `cncrot_form_frame`): what a writer of a measured or converted plane needs. Angles in the
 /// dialect's canonical ranges; at the singular middle angle the free angle sits where that
-/// dialect's rule puts it and the status is `CNCROT_STATUS_SINGULAR`.
+/// dialect's rule puts it and the status is `CNCROT_STATUS_SINGULAR`. A rotation rounded where
+/// it was written (within the rotation tolerance but more than 1e-12 from orthonormal: a
+/// matrix printed to 4 decimals) gets the words of its nearest rotation.
 ///
 /// Refused, with `words` untouched: `CNCROT_STATUS_NULL_POINTER`;
 /// `CNCROT_STATUS_NOT_FINITE`; `CNCROT_STATUS_HAS_ORIGIN` for a frame with an origin and a
@@ -178,7 +180,10 @@ pub unsafe extern "C" fn cncrot_form_values(
         if count != form.count() {
             return Err(cncrot_status::BadArgument);
         }
-        let f = read_frame(frame)?;
+        let mut f = read_frame(frame)?;
+        // A rotation rounded where it was written (4 decimals): its words are those of the
+        // nearest rotation (its own would not read back to it).
+        f.rotation = crate::rotation::exact_or_nearest(&f.rotation);
         let mut w = [0.0; MAX_VALUES];
         let w = w.get_mut(..count).ok_or(cncrot_status::BadArgument)?;
         let singular = form::form_values(form, selector, &f, w)?;

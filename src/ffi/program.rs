@@ -808,8 +808,10 @@ pub unsafe extern "C" fn cncrot_program_frame_on(
 /// rounded to that many decimals (ties to even; `PLANE VECTOR`'s and `PLANE POINTS`' words
 /// to at least 7), trailing zeros dropped. Angles are in each
 /// dialect's read-back ranges; `CNCROT_STATUS_SINGULAR` says the middle angle was singular and
-/// the free angle sits where that dialect's rule puts it. `out` receives the line and a NUL
-/// (at most `CNCROT_PROGRAM_LINE_MAX` + 1 bytes).
+/// the free angle sits where that dialect's rule puts it. A rotation rounded where it was
+/// written (within the rotation tolerance but more than 1e-12 from orthonormal: a matrix
+/// printed to 4 decimals) is written as its nearest rotation. `out` receives the line and a
+/// NUL (at most `CNCROT_PROGRAM_LINE_MAX` + 1 bytes).
 ///
 /// Returns 0 or `CNCROT_STATUS_SINGULAR`, or a negative status with `out` untouched:
 /// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_HAS_ORIGIN` (a
@@ -849,7 +851,10 @@ pub unsafe extern "C" fn cncrot_program_write(
         let d = Dialect::from_code(dialect)?;
         let mut name = [0u8; FORM_MAX];
         let name = read_form(form, &mut name)?;
-        let f = read_frame(frame)?;
+        let mut f = read_frame(frame)?;
+        // A rotation rounded where it was written (4 decimals): its words are those of the
+        // nearest rotation (its own would not read back to it).
+        f.rotation = crate::rotation::exact_or_nearest(&f.rotation);
         let mut buf = [0u8; CNCROT_PROGRAM_LINE_MAX];
         let (len, singular) = program::write_line(d, name, &f, decimals, &mut buf)?;
         put_text(buf.get(..len).ok_or(cncrot_status::Internal)?, out, cap)?;

@@ -50,24 +50,6 @@ pub const POLE_SINE: f64 = 1e-14;
 /// a solution (a safety net: the construction reaches it to rounding).
 pub(crate) const VERIFY: f64 = 1e-9;
 
-/// How far from orthonormal (`max |MᵀM − I|`) a target is taken as it is; beyond, it is a
-/// rotation rounded where it was written, solved for its nearest rotation. Far below
-/// [`VERIFY`], far above the rounding of the library's own rotations (a few 1e-16).
-const ROUNDED: f64 = 1e-12;
-
-/// Whether `max |MᵀM − I| ≤ tolerance` (NaN: no).
-fn orthonormal_to(m: &Matrix, tolerance: f64) -> bool {
-    let mut ok = true;
-    for i in 0..3 {
-        for j in i..3 {
-            let dot = m[0][i] * m[0][j] + m[1][i] * m[1][j] + m[2][i] * m[2][j];
-            let want = if i == j { 1.0 } else { 0.0 };
-            ok &= abs(dot - want) <= tolerance;
-        }
-    }
-    ok
-}
-
 /// The angle (degrees) of the turn about the unit vector `u` that takes `x` onto `y`
 /// (both made perpendicular to `u` first; their lengths do not matter). `None` when `x` is
 /// along `u`: every angle does.
@@ -342,7 +324,7 @@ impl Machine {
         // rounding: solved for the rotation nearest to it. An exact one (every rotation the
         // library computes) is taken bit for bit as it is.
         let rounded;
-        let target = if orthonormal_to(target, ROUNDED) {
+        let target = if crate::rotation::is_exact(target) {
             target
         } else {
             rounded = crate::rotation::reorthonormalize(target);
