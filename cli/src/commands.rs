@@ -1228,6 +1228,17 @@ fn selects_g54_to_g57(upper: &str) -> bool {
     })
 }
 
+/// Whether the ISO word `word` (`G53`) stands in `upper` (a block's code in capitals): not
+/// after a letter (`G0G53` has it), not followed by a digit or point (`G53.1`, `G530`).
+fn iso_word(upper: &str, word: &str) -> bool {
+    upper.match_indices(word).any(|(at, _)| {
+        let before = upper[..at].chars().next_back();
+        let after = upper[at + word.len()..].chars().next();
+        !before.is_some_and(|c| c.is_ascii_alphabetic())
+            && !after.is_some_and(|c| c.is_ascii_digit() || c == '.')
+    })
+}
+
 /// The move `words` (`X5 Y6 Z7`, ISO-style) as a rapid in dialect `to`: `G0 X5 Y6 Z7`, or
 /// Heidenhain's `L X+5 Y+6 Z+7 FMAX`.
 fn rapid_move(words: &str, to: Dialect) -> String {
@@ -1903,6 +1914,23 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     let lines: Vec<&str> = text.lines().map(|l| l.trim_end_matches('\r')).collect();
     let text_upper = text.to_uppercase();
     let mut g58_said = false;
+    // A TwinCAT program's `G58` shifts only under a zero offset `G54`–`G57`; with none
+    // selected in the program, the default `G53` leaves it without effect (Beckhoff: "since
+    // zero-offset-shifts are still disabled (default G53), the PCS and MCS match"). cncrot
+    // reads the shift: said once, on its line, and the exit status 1 (check on the control).
+    if dialect == Dialect::Twincat && !selects_g54_to_g57(&text_upper) {
+        let g58 = lines
+            .iter()
+            .position(|l| iso_word(&split_comments(l, dialect).0.to_uppercase(), "G58"));
+        if let Some(k) = g58 {
+            ok = false;
+            eprintln!(
+                "cncrot: line {}: G58 shifts only while a zero offset G54 to G57 is active, and the program selects none (G53, the default, deactivates them): cncrot reads the shift; check on the control: {}",
+                k + 1,
+                lines[k]
+            );
+        }
+    }
     for (k, raw) in text.lines().enumerate() {
         let mut rewritten = false;
         let line = k + 1;
@@ -2059,6 +2087,22 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
         let row = match remark {
             Remark::Passed => {
                 passed += 1;
+                // An ISO `G53` moves in machine coordinates for its block only; TwinCAT's
+                // `G53` switches every zero offset off until one is selected again ("G53 …
+                // deactivate any zero offset shift translation", Beckhoff's manual): copied
+                // as it stands it would move the rest of the program.
+                if let Some(t) = target.as_ref().filter(|t| {
+                    t.dialect == Dialect::Twincat
+                        && dialect != Dialect::Twincat
+                        && iso_word(&split_comments(block, dialect).0.to_uppercase(), "G53")
+                }) {
+                    (ok, uncarried) = (false, uncarried + 1);
+                    eprintln!(
+                        "cncrot: line {line}: not carried across as {} {}: the machine-coordinate move G53 holds for its block only here, but in TwinCAT G53 switches the zero offsets off until G54 to G59 selects one again: write the move and the offset selection after it for the control: {block}",
+                        input::dialect_name(t.dialect),
+                        t.form
+                    );
+                }
                 target.as_ref().map(|_| block.to_string())
             }
             Remark::NotFollowed => {
