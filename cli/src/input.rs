@@ -331,6 +331,25 @@ pub fn read_source_as(source: &str) -> Result<(String, bool, bool), Failure> {
     // program for a Heidenhain control has "letörés" in one byte per letter): such a file
     // is read byte for byte as Latin-1, so that every block is read (the commands are
     // ASCII either way) instead of the whole file refused.
+    // A UTF-16 file (what an editor's "Unicode" saves) has a NUL beside every ASCII
+    // letter: read byte for byte, no block would be read and every one passed over. Refused,
+    // as a file holding NUL bytes otherwise (no control program does).
+    let name = if source == "-" {
+        "standard input"
+    } else {
+        source
+    };
+    if bytes.starts_with(b"\xFF\xFE") || bytes.starts_with(b"\xFE\xFF") {
+        return Err(Failure::new(format!(
+            "{name}: a UTF-16 text (its first bytes say so): save it as UTF-8 or Latin-1 (ANSI)"
+        )));
+    }
+    if let Some(at) = bytes.iter().position(|&b| b == 0) {
+        let line = bytes[..at].iter().filter(|&&b| b == b'\n').count() + 1;
+        return Err(Failure::new(format!(
+            "{name}: line {line} holds a NUL byte, which no program text has (a UTF-16 file? save it as UTF-8 or Latin-1)"
+        )));
+    }
     const BOM: &[u8] = b"\xEF\xBB\xBF";
     let bom = bytes.starts_with(BOM);
     let bytes = if bom {

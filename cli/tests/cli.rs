@@ -3631,3 +3631,30 @@ fn twincat_zero_offsets_are_named() {
     );
     assert_eq!(r.code, 0, "{}", r.stderr);
 }
+
+/// A UTF-16 file (a NUL beside every ASCII letter) read byte for byte had every block passed
+/// over, exit 0: refused with what to do, as a text holding NUL bytes.
+#[test]
+fn program_refuses_utf16_and_nul_bytes() {
+    let dir = std::env::temp_dir().join(format!("cncrot-utf16-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("u16.nc");
+    let mut bytes = vec![0xFF, 0xFE];
+    for c in "G68.2 X0 Y0 Z0 I0 J30 K0\r\n".encode_utf16() {
+        bytes.extend_from_slice(&c.to_le_bytes());
+    }
+    std::fs::write(&file, bytes).unwrap();
+    let r = cncrot(
+        &["program", file.to_str().unwrap(), "--dialect", "fanuc"],
+        "",
+    );
+    assert_eq!(r.code, 2, "{}", r.stdout);
+    assert!(r.stderr.contains("UTF-16"), "{}", r.stderr);
+    let r = cncrot(
+        &["program", "-", "--dialect", "fanuc"],
+        "G1\nG6\u{0}8.2 J30.\n",
+    );
+    assert_eq!(r.code, 2, "{}", r.stdout);
+    assert!(r.stderr.contains("line 2 holds a NUL byte"), "{}", r.stderr);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
