@@ -1914,6 +1914,11 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     let lines: Vec<&str> = text.lines().map(|l| l.trim_end_matches('\r')).collect();
     let text_upper = text.to_uppercase();
     let mut g58_said = false;
+    // The line of an optional block (`/G52 X10.`) that set the datum shift still in force: a
+    // target that writes the shift into its tilt blocks (cycle 7 with a `PLANE`'s origin,
+    // `CYCLE800`'s origin words, TwinCAT's `G58` with `ROT`'s) would write it into blocks
+    // that are not optional.
+    let mut optional_shift: Option<usize> = None;
     // A TwinCAT program's `G58` shifts only under a zero offset `G54`–`G57`; with none
     // selected in the program, the default `G53` leaves it without effect (Beckhoff: "since
     // zero-offset-shifts are still disabled (default G53), the PCS and MCS match"). cncrot
@@ -2740,6 +2745,23 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                         Ok((len, _)) => {
                             rewritten = true;
                             let text = String::from_utf8_lossy(&buf[..len]);
+                            let folds = matches!(
+                                t.dialect,
+                                Dialect::Heidenhain | Dialect::Sinumerik | Dialect::Twincat
+                            );
+                            if let (Some(at), true, true) = (
+                                optional_shift,
+                                folds,
+                                skip_mark(block, dialect, dialect).is_empty(),
+                            ) {
+                                (ok, uncarried) = (false, uncarried + 1);
+                                eprintln!(
+                                    "cncrot: line {line}: not carried across as {} {}: written with the datum shift of the optional block at line {at} (/), which {} writes into this block, not optional: wrong while the skip switch is on: {block}",
+                                    input::dialect_name(t.dialect),
+                                    t.form,
+                                    input::dialect_name(t.dialect)
+                                );
+                            }
                             // TwinCAT's G58 shifts only under a zero offset G54–G57 ("G53
                             // (default setting) … deactivate any zero offset shift
                             // translation"): said once where the program selects none.
@@ -2895,6 +2917,9 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
                 }
             }
         };
+        if remark == Remark::Applied && p.shift != before.shift {
+            optional_shift = (!skip_mark(block, dialect, dialect).is_empty()).then_some(line);
+        }
         if deferred {
             pending.push((row, block.to_string()));
             continue;

@@ -3658,3 +3658,27 @@ fn program_refuses_utf16_and_nul_bytes() {
     assert!(r.stderr.contains("line 2 holds a NUL byte"), "{}", r.stderr);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A datum shift on an optional block (`/G52 X10.`): Fanuc and Haas keep it in a block of its
+/// own, which stays optional; Heidenhain, SINUMERIK and TwinCAT write it into the tilt blocks
+/// after it (cycle 7 with the `G68.2`'s origin, `X+15`; `CYCLE800`'s origin words; `G58`),
+/// which are not: those blocks are named, exit status 1.
+#[test]
+fn program_to_names_an_optional_shift_written_into_other_blocks() {
+    let prog = "/G52 X10.\nG68.2 X5. Y0 Z0 I0 J45. K0\nG53.1\nG69\n";
+    for to in ["heidenhain", "sinumerik", "twincat"] {
+        let r = translate(prog, "fanuc", to);
+        assert_eq!(r.code, 1, "{to}: {}", r.stderr);
+        assert!(
+            r.stderr
+                .contains("datum shift of the optional block at line 1"),
+            "{to}: {}",
+            r.stderr
+        );
+    }
+    let haas = program_to(prog, "fanuc", "haas");
+    assert_eq!(haas[0], "/G52 X10. Y0. Z0.");
+    // Without the skip mark nothing is said.
+    let plain = translate(&prog[1..], "fanuc", "heidenhain");
+    assert_eq!(plain.code, 0, "{}", plain.stderr);
+}
