@@ -1922,13 +1922,13 @@ pub fn program(a: &ProgramArgs, m: &MachineArgs) -> Result<bool, Failure> {
     // A TwinCAT program's `G58` shifts only under a zero offset `G54`–`G57`; with none
     // selected in the program, the default `G53` leaves it without effect (Beckhoff: "since
     // zero-offset-shifts are still disabled (default G53), the PCS and MCS match"). cncrot
-    // reads the shift: said once, on its line, and the exit status 1 (check on the control).
+    // reads the shift (a control may have kept a zero offset from before): said once, on its
+    // line (check on the control).
     if dialect == Dialect::Twincat && !selects_g54_to_g57(&text_upper) {
         let g58 = lines
             .iter()
             .position(|l| iso_word(&split_comments(l, dialect).0.to_uppercase(), "G58"));
         if let Some(k) = g58 {
-            ok = false;
             eprintln!(
                 "cncrot: line {}: G58 shifts only while a zero offset G54 to G57 is active, and the program selects none (G53, the default, deactivates them): cncrot reads the shift; check on the control: {}",
                 k + 1,
@@ -3141,9 +3141,8 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
         }
         let v = input::exactly::<6>(text, "a CL point x y z i j k")?;
         let k = [v[3], v[4], v[5]];
-        let len = (k[0] * k[0] + k[1] * k[1] + k[2] * k[2]).sqrt();
-        // The numbers are finite (read as such): a plain comparison decides.
-        if len <= 1e-9 {
+        // Any length but zero, as `cncrot_cl_pose` takes it (and MATLAB through it).
+        if k == [0.0; 3] {
             return Err(Failure::new("the tool direction i j k is zero"));
         }
         let pose = cncrot::kinematics::cl_pose([v[0], v[1], v[2]], k)?;
