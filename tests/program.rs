@@ -3915,3 +3915,29 @@ fn iso_words_may_hold_blanks() {
         read(Dialect::Syntec, &["G158 P10157 X0 Y0 Z0 A30 B0 C0"]).frame
     );
 }
+
+/// The modal words a post writes before the tilt (`G0 G90 G268 …`, `G90 G158 …`), which
+/// Fanuc's reader takes before `G68.2`, are taken before Haas's and Syntec's tilts too (they
+/// were refused at the command).
+#[test]
+fn haas_and_syntec_tilts_after_modal_words() {
+    let read = |d: Dialect, l: &str| Program::default().line(d, l.as_bytes()).unwrap();
+    let (want, _) = read(Dialect::Haas, "G268 X0 Y0 Z0 I0 J30 K0 Q123");
+    for l in [
+        "G90 G268 X0 Y0 Z0 I0 J30 K0 Q123",
+        "G0 G90 G268 X0 Y0 Z0 I0 J30 K0 Q123",
+    ] {
+        let (p, r) = read(Dialect::Haas, l);
+        assert_eq!(
+            (p.frame, r),
+            (want.frame, cncrot::dialects::program::Remark::Applied),
+            "{l}"
+        );
+    }
+    let (on, _) = read(Dialect::Haas, "G268 X0 Y0 Z0 I0 J30 K0 Q123");
+    assert!(!on.line(Dialect::Haas, b"G90 G269").unwrap().0.is_active());
+    let (want, _) = read(Dialect::Syntec, "G158 P10157 X0 Y0 Z0 A30 B0 C0");
+    let (p, _) = read(Dialect::Syntec, "G90 G158 P10157 X0 Y0 Z0 A30 B0 C0");
+    assert_eq!(p.frame, want.frame);
+    assert!(want.is_active());
+}

@@ -96,27 +96,8 @@ impl Family for Haas {
     fn read_line(m: &Modal, text: &[u8]) -> Result<Block, LineError> {
         let mut c = Cursor::new(text);
         c.block_number(b'N');
-        let column = c.column();
-        if c.code(b"G268") {
-            let w = address_words(&mut c, *b"XYZIJKQ", SYNTAX, false, (true, true))?;
-            let [x, y, z, i, j, k, q] = w.values;
-            if !w.given[6] {
-                return Err(c.missing("Q"));
-            }
-            // A bad Q is reported at its value, not at the command.
-            let q = whole(q, w.column(6))?;
-            LineError::at(w.column(6), q_order(q))?;
-            let frame = LineError::at(column, g268([x, y, z], [i, j, k], q))?;
-            return Ok(Block::Frame(m.with_frame(frame)));
-        }
-        if c.code(b"G269") {
-            // With other words on the block, the cancel is found among them (`iso_block`);
-            // an unclosed comment is malformed text.
-            match c.end(true, true) {
-                Ok(()) => return Ok(Block::Frame(m.with_frame(Frame::IDENTITY))),
-                Err(e) if e.error == Error::Parse => return Err(e),
-                Err(_) => {}
-            }
+        if let Some(block) = read_g268(m, &mut c)? {
+            return Ok(block);
         }
         if c.code(b"G52") {
             return fanuc::read_g52(m, &mut c);
@@ -135,6 +116,13 @@ impl Family for Haas {
         // (dynamic work offsets) to the ISO codes the library does not follow, and Fanuc's
         // tilts `G68.2`, `G68.3`, `G68.4`, which are not a Haas's (it writes `G268`): a
         // program read in the wrong dialect is flagged, not passed over in silence.
+        // After the modal words a post writes before it (`G0 G90 G268 …`), as Fanuc's reader
+        // takes them before `G68.2`.
+        if fanuc::skip_leading(&mut c) {
+            if let Some(block) = read_g268(m, &mut c)? {
+                return fanuc::in_block_plane(m, text, Ok(block));
+            }
+        }
         fanuc::iso_block(
             m,
             text,
@@ -238,6 +226,33 @@ impl Family for Haas {
         put(out, 3, ijk);
         Ok(singular)
     }
+}
+
+/// `G268 X Y Z I J K Q` or `G269` where the cursor stands; `None` for neither.
+fn read_g268(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
+    let column = c.column();
+    if c.code(b"G268") {
+        let w = address_words(c, *b"XYZIJKQ", SYNTAX, false, (true, true))?;
+        let [x, y, z, i, j, k, q] = w.values;
+        if !w.given[6] {
+            return Err(c.missing("Q"));
+        }
+        // A bad Q is reported at its value, not at the command.
+        let q = whole(q, w.column(6))?;
+        LineError::at(w.column(6), q_order(q))?;
+        let frame = LineError::at(column, g268([x, y, z], [i, j, k], q))?;
+        return Ok(Some(Block::Frame(m.with_frame(frame))));
+    }
+    if c.code(b"G269") {
+        // With other words on the block, the cancel is found among them (`iso_block`); an
+        // unclosed comment is malformed text.
+        match c.end(true, true) {
+            Ok(()) => return Ok(Some(Block::Frame(m.with_frame(Frame::IDENTITY)))),
+            Err(e) if e.error == Error::Parse => return Err(e),
+            Err(_) => {}
+        }
+    }
+    Ok(None)
 }
 
 #[cfg(test)]

@@ -187,45 +187,8 @@ impl Family for Syntec {
     fn read_line(m: &Modal, text: &[u8]) -> Result<Block, LineError> {
         let mut c = Cursor::new(text);
         c.block_number(b'N');
-        let column = c.column();
-        if c.code(b"G158") {
-            if c.rest_is_comment(true, true) {
-                c.end(true, true)?;
-                return Ok(Block::Frame(m.with_frame(Frame::IDENTITY)));
-            }
-            let w = address_words(&mut c, *b"LPXYZABCUVW", SYNTAX, false, (true, true))?;
-            let [_, pw, x, y, z, a, b, cc, u, v, ww] = w.values;
-            if !w.given[1] {
-                return Err(c.missing("P"));
-            }
-            // A bad P is reported at its value, not at the command.
-            let at = w.column(1);
-            let pword = LineError::at(at, PWord::decode(whole(pw, at)?))?;
-            // Incremental on the active tilt, about its datum (the shift is added once).
-            let base = if pword.incremental {
-                LineError::at(column, m.tilt_base())?
-            } else {
-                Frame::IDENTITY
-            };
-            if pword.mode == Mode::Direct {
-                // The positions of the axes A, B, C (omitted: 0); the axes turn there [doc:
-                // "the rotary axis will be selected to be actuated"]. On an active plane, or
-                // with `U V W` after a rotation only the machine knows: not followed here.
-                if pword.incremental || [u, v, ww] != [0.0; 3] {
-                    return LineError::at(column, Err(Error::NotAvailable));
-                }
-                let direct = Direct {
-                    by: DirectAxes::Letters,
-                    given: 0b111,
-                };
-                return Ok(Block::Frame(Modal {
-                    positioning: Positioning::Turn,
-                    ..m.with_direct([x, y, z], direct, [a, b, cc])
-                }));
-            }
-            let f = frame(&base, pword, [x, y, z], [a, b, cc], [u, v, ww]);
-            let f = LineError::at(column, f)?;
-            return Ok(Block::Frame(m.with_tilt(f, pword.incremental)));
+        if let Some(block) = read_g158(m, &mut c)? {
+            return Ok(block);
         }
         if let Some(result) = fanuc::read_g68(m, &mut c) {
             return result;
@@ -235,6 +198,10 @@ impl Family for Syntec {
             return result;
         }
         if fanuc::skip_leading(&mut c) {
+            // `G90 G158 …`, as Fanuc's reader takes `G90 G68.2 …`.
+            if let Some(block) = read_g158(m, &mut c)? {
+                return fanuc::in_block_plane(m, text, Ok(block));
+            }
             if let Some(result) = fanuc::read_g68(m, &mut c) {
                 return fanuc::in_block_plane(m, text, result);
             }
@@ -416,6 +383,51 @@ impl Family for Syntec {
         put(out, 3, d.angles);
         Ok(d.singular)
     }
+}
+
+/// `G158 …` where the cursor stands; `None` for another command.
+fn read_g158(m: &Modal, c: &mut Cursor) -> Result<Option<Block>, LineError> {
+    let column = c.column();
+    if !c.code(b"G158") {
+        return Ok(None);
+    }
+    if c.rest_is_comment(true, true) {
+        c.end(true, true)?;
+        return Ok(Some(Block::Frame(m.with_frame(Frame::IDENTITY))));
+    }
+    let w = address_words(c, *b"LPXYZABCUVW", SYNTAX, false, (true, true))?;
+    let [_, pw, x, y, z, a, b, cc, u, v, ww] = w.values;
+    if !w.given[1] {
+        return Err(c.missing("P"));
+    }
+    // A bad P is reported at its value, not at the command.
+    let at = w.column(1);
+    let pword = LineError::at(at, PWord::decode(whole(pw, at)?))?;
+    // Incremental on the active tilt, about its datum (the shift is added once).
+    let base = if pword.incremental {
+        LineError::at(column, m.tilt_base())?
+    } else {
+        Frame::IDENTITY
+    };
+    if pword.mode == Mode::Direct {
+        // The positions of the axes A, B, C (omitted: 0); the axes turn there [doc:
+        // "the rotary axis will be selected to be actuated"]. On an active plane, or
+        // with `U V W` after a rotation only the machine knows: not followed here.
+        if pword.incremental || [u, v, ww] != [0.0; 3] {
+            return LineError::at(column, Err(Error::NotAvailable));
+        }
+        let direct = Direct {
+            by: DirectAxes::Letters,
+            given: 0b111,
+        };
+        return Ok(Some(Block::Frame(Modal {
+            positioning: Positioning::Turn,
+            ..m.with_direct([x, y, z], direct, [a, b, cc])
+        })));
+    }
+    let f = frame(&base, pword, [x, y, z], [a, b, cc], [u, v, ww]);
+    let f = LineError::at(column, f)?;
+    Ok(Some(Block::Frame(m.with_tilt(f, pword.incremental))))
 }
 
 #[cfg(test)]
