@@ -1120,6 +1120,31 @@ static void kept_words(void) {
   CHECK(strcmp(in_place, "G91 G28 Z0.") == 0, "%s", in_place);
 }
 
+/* A block's length without its line end, as cncrot_program_line measures it: 257 bytes of a
+ * Fanuc block (256 at most) are refused by the rest and the block writer too; 256 and a line
+ * end are not. */
+static void rest_and_block_lengths(void) {
+  char l[300], out[600];
+  memset(l, ' ', sizeof l);
+  memcpy(l, "G91 G28 Z0. X1", 14);
+  CHECK_STATUS(cncrot_program_rest(CNCROT_DIALECT_FANUC, l, 257, out, sizeof out), CNCROT_STATUS_LINE_TOO_LONG);
+  CHECK_STATUS(cncrot_program_rest(CNCROT_DIALECT_FANUC, l, 256, out, sizeof out), CNCROT_STATUS_OK);
+  l[256] = '\n';
+  CHECK_STATUS(cncrot_program_rest(CNCROT_DIALECT_FANUC, l, 257, out, sizeof out), CNCROT_STATUS_OK);
+  cncrot_program p, q;
+  memset(&p, 0, sizeof p);
+  q = p;
+  const char *g = "G68.2 X0 Y0 Z0 I0 J30 K0";
+  CHECK_STATUS(cncrot_program_line(&q, CNCROT_DIALECT_FANUC, g, strlen(g)), CNCROT_STATUS_OK);
+  char b[300];
+  memset(b, ' ', sizeof b);
+  memcpy(b, g, strlen(g));
+  CHECK_STATUS(cncrot_program_write_block(&p, &q, b, 257, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", 4, out, sizeof out),
+               CNCROT_STATUS_LINE_TOO_LONG);
+  CHECK_STATUS(cncrot_program_write_block(&p, &q, b, 256, CNCROT_DIALECT_HEIDENHAIN, "PLANE SPATIAL", 4, out, sizeof out),
+               CNCROT_STATUS_OK);
+}
+
 int main(void) {
   kept_words();
   incremental_blocks();
@@ -1138,5 +1163,6 @@ int main(void) {
   long_lines_and_points();
   near_singularities();
   translated_programs();
+  rest_and_block_lengths();
   return finish("test_program");
 }

@@ -1090,9 +1090,8 @@ fn stated_motion(from: &Program, after: &Program, text: &[u8]) -> Option<bool> {
 /// assert_eq!(rest(Dialect::Fanuc, b"N50 G69 (CANCEL)", &mut buf), Ok(0));
 /// ```
 pub fn rest(dialect: Dialect, text: &[u8], buf: &mut [u8]) -> Result<usize, Error> {
-    if text.len() > dialect.max_line() + 2 {
-        return Err(Error::LineTooLong);
-    }
+    // The block without its line end, as `Program::line` measures it.
+    let text = block_of(dialect, text).map_err(|e| e.error)?;
     // A NUL byte ends the text, as it ends the C string the rest is written as.
     let text = text.split(|&b| b == 0).next().unwrap_or(&[]);
     let mut out = Out::new(buf);

@@ -1106,10 +1106,15 @@ pub unsafe extern "C" fn cncrot_program_write_block(
         if p1.dialect.is_some_and(|source| len > source.max_line() + 2) {
             return Err(cncrot_status::LineTooLong);
         }
-        let text = if p1.dialect.is_some() {
-            core::slice::from_raw_parts(line.cast::<u8>(), len)
-        } else {
-            &[]
+        // The block without its line end, no longer than its dialect reads (as
+        // `cncrot_program_line` measures it).
+        let text = match p1.dialect {
+            Some(source) => {
+                let raw = core::slice::from_raw_parts(line.cast::<u8>(), len);
+                crate::dialects::program::block_of(source, raw)
+                    .map_err(|e| cncrot_status::from(e.error))?
+            }
+            None => &[],
         };
         // The form is read whole before `out` is touched (they may be the same memory).
         let spec = d.parse_form(form_of(form)?)?;
