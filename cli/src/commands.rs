@@ -3110,7 +3110,7 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
                     state = reached;
                     return Err(if e == cncrot::Error::BadArgument && stated {
                         Failure::new(
-                            "the block gives a position to a rotary axis the machine does not have (A, B, C go to the machine's axis whose direction is nearest X, Y, Z)",
+                            "the block gives a position to a rotary axis the machine does not have, or by a letter two of its axes are nearest (A, B, C go to the machine's axis whose direction is nearest X, Y, Z)",
                         )
                     } else {
                         e.into()

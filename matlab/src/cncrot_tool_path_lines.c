@@ -75,7 +75,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
         mxDestroyArray(out);
         mxDestroyArray(kinds);
         fail("cncrot:badArgument",
-             "%s, line %d: the block gives a position to a rotary axis the machine (argument 3) does not have "
+             "%s, line %d: the block gives a position to a rotary axis the machine (argument 3) does not have, or by a letter two of its axes are nearest "
              "(A, B, C go to the machine's axis whose direction is nearest X, Y, Z)",
              label(2, "lines"), (int)k + 1);
       }

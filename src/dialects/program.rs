@@ -448,7 +448,8 @@ pub(crate) fn block_of(dialect: Dialect, text: &[u8]) -> Result<&[u8], LineError
 /// letter, each machine axis taking the position of the letter its direction is nearest
 /// (A for X, B for Y, C for Z: the largest component, the first of equal ones) \[choice:
 /// a machine description carries no axis names\]. A nonzero position for a letter or a
-/// place the machine lacks: [`Error::BadArgument`].
+/// place the machine lacks, or letters on a machine with two axes nearest the same one:
+/// [`Error::BadArgument`].
 pub(crate) fn direct_positions(
     d: &Direct,
     stated: [f64; 3],
@@ -461,6 +462,10 @@ pub(crate) fn direct_positions(
             DirectAxes::Numbered => k,
             DirectAxes::Letters => axis_letter(axis.direction),
         };
+        // Two axes nearest the same letter: the letter names neither (both took its value).
+        if d.by == DirectAxes::Letters && taken & (1 << slot) != 0 {
+            return Err(Error::BadArgument);
+        }
         if let (Some(p), Some(v)) = (positions.get_mut(k), stated.get(slot)) {
             *p = *v;
         }

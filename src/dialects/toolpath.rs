@@ -971,6 +971,30 @@ mod tests {
         assert_eq!(s[2].0.orientation, Orientation::Unstated);
     }
 
+    /// Positions by letter on a machine with two axes nearest the same letter (a head C
+    /// about Z carrying an axis tilted just past 45° toward Z): `C10.` names neither, and is
+    /// refused rather than given to both.
+    #[test]
+    fn a_letter_two_axes_are_nearest_is_refused() {
+        use crate::kinematics::{RotaryAxis, Side};
+        let m = Machine::new([0.0, 0.0, 1.0])
+            .unwrap()
+            .with_axis(RotaryAxis::new(Side::Tool, [0.0, 0.0, 1.0], [0.0; 3]))
+            .unwrap()
+            .with_axis(RotaryAxis::new(
+                Side::Tool,
+                [0.0, 1.0, 1.0000001],
+                [0.0, 0.0, 100.0],
+            ))
+            .unwrap();
+        let out = run(Dialect::Fanuc, &["G43.4 H1", "G1 X0 Y0 Z0 C10."]);
+        assert_eq!(out[1].1, PathRemark::Point);
+        assert_eq!(
+            out[1].0.machine_axes(&m, 50.0, [0.0; 6], Rule::Closest),
+            Err(Error::BadArgument)
+        );
+    }
+
     /// `G2`/`G3` (group 01) stay in force until `G0`/`G1`, a canned cycle (group 09) until
     /// `G80` or a group 01 code: the blocks in either mode are arcs and holes, not straight
     /// moves to points. Under `G43.5` an arc's `I J K` are its centre, not the tool: read
