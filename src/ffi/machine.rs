@@ -92,7 +92,8 @@ pub struct cncrot_machine_axis {
     /// See `min_deg`.
     pub max_deg: f64,
     /// Hirth grid: a tooth position, degrees, below `CNCROT_MACHINE_ANGLE_MAX_DEG` in
-    /// magnitude (not used without a grid).
+    /// magnitude; without a grid (`hirth_step_deg` 0) not used, not checked but for being
+    /// finite, and written as 0 by `cncrot_machine_seal` and the builders.
     pub hirth_offset_deg: f64,
     /// Hirth grid: tooth spacing, degrees, at least `CNCROT_MACHINE_HIRTH_STEP_MIN_DEG`; 0:
     /// no grid.

@@ -164,7 +164,8 @@ impl From<Error> for cncrot_status {
 }
 
 /// The name and meaning of a status, as a static NUL-terminated string (never NULL;
-/// unknown values give "CNCROT_STATUS_UNKNOWN").
+/// unknown values give "CNCROT_STATUS_UNKNOWN: not a cncrot status"): its name, a colon and
+/// what it means.
 ///
 /// ```c
 /// int32_t s = cncrot_matrix_from_angles(1, 57, angles, m);

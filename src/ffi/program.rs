@@ -800,7 +800,9 @@ pub unsafe extern "C" fn cncrot_program_frame_on(
 /// | TwinCAT | `"ROT"` |
 /// | Haas | `"G268"` (`Q123`), `"G268 Q<q>"` |
 ///
-/// The same dialect's `cncrot_program_line` reads the line back as the same frame. The
+/// The same dialect's `cncrot_program_line` reads the line back as the same frame (`"ROT
+/// EULER"`: on a state in Euler mode, `cncrot_program_init` with
+/// `CNCROT_PROGRAM_SINUMERIK_EULER`, as the control with machine data 10600 = 2). The
 /// identity frame (nothing active) is written as the form's cancel: `CYCLE800()`, `ROT`,
 /// `PLANE RESET STAY`, `G69`, `G158`, `G269` (TwinCAT, which has none of its own, writes
 /// `ROT X0 Y0 Z0`). With
@@ -817,7 +819,7 @@ pub unsafe extern "C" fn cncrot_program_frame_on(
 /// `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_HAS_ORIGIN` (a
 /// frame with an origin for a form without origin words — every `PLANE` form, `ROT` —: the
 /// datum goes in the dialect's own command), `CNCROT_STATUS_BAD_ARGUMENT` (unknown dialect
-/// or form, a form name longer than 64 bytes, `decimals` > 17, an incremental or mode-0
+/// or form, a form name of 64 bytes or more, `decimals` > 17, an incremental or mode-0
 /// `G158 P`), `CNCROT_STATUS_BAD_SEQUENCE` (an axis order in `CYCLE800 <_MODE>`,
 /// `G158 P<p>`, `G268 Q<q>` that is none, `"G268 Q0"`), `CNCROT_STATUS_INCOMPLETE_SEQUENCE`
 /// (an axis-by-axis order of fewer than three rotations, `"CYCLE800 7"`: it cannot express
@@ -829,7 +831,7 @@ pub unsafe extern "C" fn cncrot_program_frame_on(
 /// `CNCROT_STATUS_NO_ROOM` (`cap` too small for a line the dialect reads).
 ///
 /// # Safety
-/// `form` is a NUL-terminated string (at most 64 bytes are read: a longer name is refused), `frame` points to 16
+/// `form` is a NUL-terminated string (at most 64 bytes are read: a name of 64 bytes or more is refused), `frame` points to 16
 /// readable doubles, `out` to `cap` writable bytes (or NULL: error).
 ///
 /// ```c
