@@ -290,6 +290,17 @@ static void cycle600_and_refusals(void) {
   CHECK(line == 1, "line %d", line);
   CHECK_STATUS(cncrot_machine_carr_error_line(kind, strlen(kind), 3, &line), CNCROT_STATUS_UNKNOWN_HEAD);
   CHECK(line == 0, "line %d", line);
+  /* Limits the wrong way round, or beyond the angle bound, an offset beyond it: the limit or
+   * offset line (the later of a pair), not the axis direction's. */
+  const char *limits = "$TC_CARR23[1]=\"P\"\n$TC_CARR7[1]=1\n$TC_CARR30[1]=10\n$TC_CARR32[1]=5\n";
+  CHECK_STATUS(cncrot_machine_carr_error_line(limits, strlen(limits), 1, &line), CNCROT_STATUS_BAD_ARGUMENT);
+  CHECK(line == 4, "line %d", line);
+  const char *wide = "$TC_CARR23[1]=\"P\"\n$TC_CARR7[1]=1\n$TC_CARR30[1]=-70000\n$TC_CARR32[1]=70000\n";
+  CHECK_STATUS(cncrot_machine_carr_error_line(wide, strlen(wide), 1, &line), CNCROT_STATUS_OUT_OF_RANGE);
+  CHECK(line == 4, "line %d", line);
+  const char *offset = "$TC_CARR23[1]=\"P\"\n$TC_CARR7[1]=1\n$TC_CARR24[1]=70000\n";
+  CHECK_STATUS(cncrot_machine_carr_error_line(offset, strlen(offset), 1, &line), CNCROT_STATUS_OUT_OF_RANGE);
+  CHECK(line == 3, "line %d", line);
 
   /* Description errors, pointers, numbers. */
   double ax[3] = {0, 0, 0}, f[16];

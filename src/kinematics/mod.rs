@@ -134,7 +134,7 @@ impl RotaryAxis {
     /// [`HIRTH_STEP_MIN`] ([`Error::BadArgument`]); offset, limits and Hirth offset below
     /// [`crate::CLOSEST_MAX`] in magnitude, point coordinates at most [`LENGTH_MAX`]
     /// ([`Error::OutOfRange`]).
-    fn checked(&self) -> Result<RotaryAxis, Error> {
+    pub(crate) fn checked(&self) -> Result<RotaryAxis, Error> {
         let [lo, hi] = self.limits.unwrap_or([0.0; 2]);
         let (tooth, step) = self
             .hirth

@@ -300,6 +300,46 @@ fn vector_parameter(d: &Data, first: usize) -> usize {
         .unwrap_or(first)
 }
 
+/// Of two parameters, the one assigned last (the first of equals): where a pair is at
+/// fault together (limits the wrong way round, an offset and its fine offset).
+fn later(d: &Data, a: usize, b: usize) -> usize {
+    let line = |k: usize| d.lines.get(k).copied().unwrap_or(0);
+    if line(b) > line(a) {
+        b
+    } else {
+        a
+    }
+}
+
+/// The parameter at fault when axis `k` (0 or 1) of a data set is refused: its limits
+/// (`$TC_CARR30`–`33`), its Hirth grid (`26`–`29`), its offset (`24`, `25`, fine `64`,
+/// `65`) where the axis is accepted without them, else its direction (`7`–`12`; also for
+/// an axis parallel to the other). Not inlined: on the error path only.
+#[inline(never)]
+fn culprit(d: &Data, axis: &RotaryAxis, k: usize) -> usize {
+    let ok = |a: RotaryAxis| a.checked().is_ok();
+    if ok(*axis) {
+        vector_parameter(d, 7 + 3 * k)
+    } else if ok(RotaryAxis {
+        limits: None,
+        ..*axis
+    }) {
+        later(d, 30 + k, 32 + k)
+    } else if ok(RotaryAxis {
+        hirth: None,
+        ..*axis
+    }) {
+        later(d, 26 + k, 28 + k)
+    } else if ok(RotaryAxis {
+        offset: 0.0,
+        ..*axis
+    }) {
+        later(d, 24 + k, 64 + k)
+    } else {
+        vector_parameter(d, 7 + 3 * k)
+    }
+}
+
 /// The machine of a data set; an error comes with the parameter at fault.
 fn build(d: &Data) -> Result<Machine, (Error, usize)> {
     let v = |k: usize| d.values.get(k).copied().unwrap_or(0.0);
@@ -341,8 +381,7 @@ fn build(d: &Data) -> Result<Machine, (Error, usize)> {
             }),
             ..RotaryAxis::new(side, dir, p)
         };
-        m.push_axis(axis)
-            .map_err(|e| (e, vector_parameter(d, 7 + 3 * k)))?;
+        m.push_axis(axis).map_err(|e| (e, culprit(d, &axis, k)))?;
     }
     m.set_name(d.name.get(..d.name_len).unwrap_or(&[]))
         .map_err(|e| (e, 34))?;
