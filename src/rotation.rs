@@ -373,15 +373,7 @@ const ROUNDED: f64 = 1e-12;
 
 /// Whether `max |MᵀM − I| ≤ 1e-12` (NaN: no): a rotation the library takes bit for bit.
 pub(crate) fn is_exact(m: &Matrix) -> bool {
-    let mut ok = true;
-    for i in 0..3 {
-        for j in i..3 {
-            let dot = m[0][i] * m[0][j] + m[1][i] * m[1][j] + m[2][i] * m[2][j];
-            let want = if i == j { 1.0 } else { 0.0 };
-            ok &= math::abs(dot - want) <= ROUNDED;
-        }
-    }
-    ok
+    orthonormality_error(m) <= ROUNDED
 }
 
 /// `m` itself when [`is_exact`], else its nearest rotation ([`reorthonormalize`]): what a

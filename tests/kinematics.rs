@@ -1168,10 +1168,7 @@ fn tcp_inverse_reproduces_random_poses() {
 /// the adapter 50 mm above the tip: X = 0, Y = 50 + 5√3, Z = 155 − 50√3.
 #[test]
 fn tcp_inverse_ac_table_by_hand() {
-    let m = machine(&[
-        axis(Side::Work, [1.0, 0.0, 0.0], [0.0, 0.0, 100.0]),
-        axis(Side::Work, [0.0, 0.0, 1.0], [0.0; 3]),
-    ]);
+    let m = worked_ac_table();
     let s3 = 3.0f64.sqrt();
     // Any rotation with that third column: the X' axis along -Y... chosen as Rz(-90)·Rx(-30)
     // of the workpiece, which the table gives (F = W⁻¹ = Rz(-C)·Rx(-A)).
@@ -1207,10 +1204,7 @@ fn tcp_inverse_ac_table_by_hand() {
 /// A and C within 1e-4° of 30° and 90°; the inverse and choice alike.
 #[test]
 fn rounded_poses_are_solved_for_their_nearest_rotation() {
-    let m = machine(&[
-        axis(Side::Work, [1.0, 0.0, 0.0], [0.0, 0.0, 100.0]),
-        axis(Side::Work, [0.0, 0.0, 1.0], [0.0; 3]),
-    ]);
+    let m = worked_ac_table();
     let rot = [
         [0.0, 0.866025, 0.5],
         [-1.0, 0.0, 0.0],
@@ -1236,6 +1230,15 @@ fn rounded_poses_are_solved_for_their_nearest_rotation() {
         m.choose(&bent, [0.0; 3], Rule::Closest).unwrap_err(),
         Error::NotARotation
     );
+}
+
+/// The AC table of docs/kinematics.md's worked example: A about X through (0, 0, 100), C
+/// about Z through the origin.
+fn worked_ac_table() -> Machine {
+    machine(&[
+        axis(Side::Work, [1.0, 0.0, 0.0], [0.0, 0.0, 100.0]),
+        axis(Side::Work, [0.0, 0.0, 1.0], [0.0; 3]),
+    ])
 }
 
 fn ac_table() -> Machine {

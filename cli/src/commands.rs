@@ -1218,14 +1218,9 @@ fn skip_mark(block: &str, from: Dialect, to: Dialect) -> String {
 /// Whether a program's text (in capitals) selects a zero offset `G54` to `G57` (as a word:
 /// not `G540`, `G54.1`).
 fn selects_g54_to_g57(upper: &str) -> bool {
-    ["G54", "G55", "G56", "G57"].iter().any(|g| {
-        upper.match_indices(g).any(|(at, _)| {
-            let before = upper[..at].chars().next_back();
-            let after = upper[at + g.len()..].chars().next();
-            !before.is_some_and(|c| c.is_ascii_alphanumeric())
-                && !after.is_some_and(|c| c.is_ascii_alphanumeric() || c == '.')
-        })
-    })
+    ["G54", "G55", "G56", "G57"]
+        .iter()
+        .any(|g| iso_word(upper, g))
 }
 
 /// Whether the ISO word `word` (`G53`) stands in `upper` (a block's code in capitals): not

@@ -260,13 +260,8 @@ fuzz_target!(|data: &[u8]| {
                     // A rotation rounded where it was written is written as its nearest
                     // rotation, which differs from it by about its distance from
                     // orthonormal.
-                    let mut off: f64 = 0.0;
-                    for i in 0..3 {
-                        for j in 0..3 {
-                            let dot: f64 = (0..3).map(|r| f[4 * r + i] * f[4 * r + j]).sum();
-                            off = off.max((dot - if i == j { 1.0 } else { 0.0 }).abs());
-                        }
-                    }
+                    let r: Vec<f64> = (0..9).map(|k| f[4 * (k / 3) + k % 3]).collect();
+                    let off = orthonormality(&r);
                     for k in 0..12 {
                         let tol = if k % 4 == 3 {
                             1e-9 * (1.0 + f[k].abs())
