@@ -886,6 +886,23 @@ $TC_CARR34[1]=\"HEAD_CB\"
             b.time("cncrot_cl_pose", class, &pos, &mut |p| unsafe {
                 cncrot_cl_pose([1.0, 2.0, 3.0].as_ptr(), p.as_ptr(), pose16.as_mut_ptr())
             });
+            // Carried from the pose of the tool along (0.3, 0.1, 0.9) to each direction.
+            let mut from = [0.0; 16];
+            unsafe {
+                cncrot_cl_pose(
+                    [0.0; 3].as_ptr(),
+                    [0.3, 0.1, 0.9].as_ptr(),
+                    from.as_mut_ptr(),
+                )
+            };
+            b.time("cncrot_cl_pose_toward", class, &pos, &mut |p| unsafe {
+                cncrot_cl_pose_toward(
+                    [1.0, 2.0, 3.0].as_ptr(),
+                    p.as_ptr(),
+                    from.as_ptr(),
+                    pose16.as_mut_ptr(),
+                )
+            });
             let mut copy = edited;
             b.time("cncrot_machine_seal", class, &[()], &mut |_| unsafe {
                 copy.reserved ^= 1;

@@ -281,7 +281,11 @@ int main(void) {
          * the axes for it, as MATLAB's CL rows take them. */
         double sc = rnd(0.5, 3), tip[3] = {pose[3], pose[7], pose[11]};
         double dir[3] = {pose[2] * sc, pose[6] * sc, pose[10] * sc}, cl[16], cl_back[6];
-        if (cncrot_cl_pose(tip, dir, cl) == 0) {
+        /* Three rotary axes: carried from where the machine stands, as the gateway does. */
+        double before[16];
+        int32_t c = m.count == 3 && cncrot_machine_forward(&m, prev6 + 3, before) == 0 ? cncrot_cl_pose_toward(tip, dir, before, cl)
+                                                                                       : cncrot_cl_pose(tip, dir, cl);
+        if (c == 0) {
           int32_t u = cncrot_machine_tcp_inverse(&m, cl, len, prev6, cl_back);
           if (u >= 0) {
             printf("KL %d", k), hexes(tip, 3), hexes(dir, 3), hexes(&len, 1), hexes(cl, 16), hexes(prev6, 6);

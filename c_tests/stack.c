@@ -414,6 +414,12 @@ static void cl_pose(void) {
   static double pose[16];
   sink += cncrot_cl_pose(tip, dir, pose) + cncrot_cl_pose(tip, along_x, pose);
 }
+static void cl_pose_toward(void) {
+  static const double tip[3] = {1, 2, 3}, dir[3] = {0.3, -0.4, 0.8}, back[3] = {-0.3, 0.4, -0.7};
+  static double pose[16];
+  sink += cncrot_cl_pose(tip, dir, pose);
+  sink += cncrot_cl_pose_toward(tip, dir, pose, pose) + cncrot_cl_pose_toward(tip, back, pose, pose);
+}
 static void machine_seal(void) {
   static cncrot_machine a;
   a = edited(&head3);
@@ -456,7 +462,7 @@ static const struct entry ENTRIES[] = {
     E(machine_add_axis, 1),  E(machine_forward, 1),    E(machine_inverse, 1),
     E(machine_choose, 1),    E(machine_follow, 1),     E(cycle600_position, 1),
     E(program_axes, 1),      E(program_frame_on, 1),   E(machine_tcp_forward, 0), E(machine_tcp_inverse, 0),
-    E(machine_tcp_inverse_rule, 1), E(machine_seal, 1), E(cl_pose, 0), E(tool_path_line, 1), E(tool_path_axes, 1),
+    E(machine_tcp_inverse_rule, 1), E(machine_seal, 1), E(cl_pose, 0), E(cl_pose_toward, 0), E(tool_path_line, 1), E(tool_path_axes, 1),
     E(matrices_from_angles, 0), E(angles_from_matrices, 0), E(convert_many, 0),
 };
 

@@ -521,6 +521,33 @@ static void five_axis_transformation(void) {
   CHECK_STATUS(cncrot_cl_pose(tip10, nan3, clp), CNCROT_STATUS_NOT_FINITE);
   CHECK_STATUS(cncrot_cl_pose(NULL, dir2, clp), CNCROT_STATUS_NULL_POINTER);
   CHECK(is_sentinel(clp, 16), "untouched");
+  /* Carried from that pose to the direction +X: the turn of 60 degrees about +Y takes X'
+   * (sqrt 3 / 2, 0, -1/2) to (0, 0, -1), Y' stays +Y; cncrot_cl_pose would take X' = +Y. */
+  double car[16], xdir[3] = {3, 0, 0};
+  CHECK_STATUS(cncrot_cl_pose(tip10, dir2, clp), CNCROT_STATUS_OK);
+  CHECK_STATUS(cncrot_cl_pose_toward(tip10, xdir, clp, car), CNCROT_STATUS_OK);
+  double carx[3] = {car[0], car[4], car[8]}, cary[3] = {car[1], car[5], car[9]}, carz[3] = {car[2], car[6], car[10]};
+  double mz[3] = {0, 0, -1}, py[3] = {0, 1, 0}, px[3] = {1, 0, 0}, cart[3] = {car[3], car[7], car[11]};
+  CHECK_NEAR(carx, mz, 3, 1e-15);
+  CHECK_NEAR(cary, py, 3, 1e-15);
+  CHECK_NEAR(carz, px, 3, 0);
+  CHECK_NEAR(cart, tip10, 3, 0);
+  /* In place, to its own direction: the pose itself. */
+  double same[16];
+  memcpy(same, clp, sizeof same);
+  CHECK_STATUS(cncrot_cl_pose_toward(tip10, dir2, same, same), CNCROT_STATUS_OK);
+  CHECK_NEAR(same, clp, 16, 1e-15);
+  double bent[16];
+  memcpy(bent, clp, sizeof bent);
+  bent[0] = 2;
+  fill_sentinel(car, 16);
+  CHECK_STATUS(cncrot_cl_pose_toward(tip10, xdir, bent, car), CNCROT_STATUS_NOT_A_ROTATION);
+  bent[0] = clp[0];
+  bent[15] = 2;
+  CHECK_STATUS(cncrot_cl_pose_toward(tip10, xdir, bent, car), CNCROT_STATUS_NOT_A_ROTATION);
+  CHECK_STATUS(cncrot_cl_pose_toward(tip10, zero3, clp, car), CNCROT_STATUS_DEGENERATE);
+  CHECK_STATUS(cncrot_cl_pose_toward(tip10, xdir, NULL, car), CNCROT_STATUS_NULL_POINTER);
+  CHECK(is_sentinel(car, 16), "untouched");
   /* C's direction of travel from 80: up, C 90 is 10 degrees ahead (-90 only 190); down,
    * -90 comes after 170 degrees (90 after 350): the other solution. */
   double up[6], down[6];

@@ -6,7 +6,10 @@
 %                     with three rotary axes the whole rotation is matched;
 %     P N-by-6        CL rows [x y z i j k]: tip and direction (any length, not zero);
 %                     each row's frame has X' along the part of the machine's X (of Y for
-%                     a direction near X) perpendicular to the direction, as cncrot path.
+%                     a direction near X) perpendicular to the direction, as cncrot path;
+%                     with three rotary axes X' is carried from the orientation where the
+%                     machine stands (cncrot_cl_pose(CL, P0)): no jump in the turn about
+%                     the tool.
 %   Each row starts from the row before (the first from PREVIOUS), so the rotary axes move
 %   continuously: whole turns unwound, travel limits kept, and at a pole the free axis
 %   stays where it was.

@@ -3140,7 +3140,15 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
         if k == [0.0; 3] {
             return Err(Failure::new("the tool direction i j k is zero"));
         }
-        let pose = cncrot::kinematics::cl_pose([v[0], v[1], v[2]], k)?;
+        let tip = [v[0], v[1], v[2]];
+        // With three rotary axes the turn about the tool is carried from where the machine
+        // stands (as the program reader carries it): no jump where `cl_pose`'s X' changes.
+        let pose = if machine.axis_count() == cncrot::kinematics::MAX_AXES {
+            let before = machine.forward([previous[3], previous[4], previous[5]])?;
+            cncrot::kinematics::cl_pose_toward(tip, k, &before.rotation)?
+        } else {
+            cncrot::kinematics::cl_pose(tip, k)?
+        };
         let t = machine.tcp_inverse_with(&pose, a.tool_length, previous, rule)?;
         previous = t.axes;
         rule = along(rule);

@@ -1082,6 +1082,61 @@ fn path_worked_example_alignment_and_the_pole() {
     );
 }
 
+/// `path` on three rotary axes (a C table, a B and an A head): CL rows whose `i` passes 0.9
+/// (where a frame built from X alone switches to Y) turn the axes by what the direction
+/// turned, 0.25°, not by tens of degrees; every row reaches its direction (the forward
+/// model's third column, Ry(B)·Rx(A)·e_z turned back by C).
+#[test]
+fn path_three_rotary_axes_is_continuous_across_x_09() {
+    let cl = "0 0 0 0.899 0.1 0.4264\n0 0 0 0.901 0.1 0.4222\n0 0 0 0.95 0.1 0.3\n";
+    let args = [
+        "path",
+        "-",
+        "--axis",
+        "work:0,0,1",
+        "--axis",
+        "tool:0,1,0@0,0,150",
+        "--axis",
+        "tool:1,0,0@0,0,100",
+        "--tool-length",
+        "30",
+        "--decimals",
+        "exact",
+    ];
+    let r = cncrot(&args, cl);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let rows: Vec<Vec<f64>> = r.stdout.lines().map(numbers).collect();
+    assert_eq!(rows.len(), 3, "{}", r.stdout);
+    for (row, line) in rows.iter().zip(cl.lines()) {
+        let (c, b, a) = (
+            row[3].to_radians(),
+            row[4].to_radians(),
+            row[5].to_radians(),
+        );
+        // Head: Ry(b)·Rx(a)·e_z; the table turns the workpiece by c: Rz(-c) of it.
+        let h = [b.sin() * a.cos(), -a.sin(), b.cos() * a.cos()];
+        let d = [
+            c.cos() * h[0] + c.sin() * h[1],
+            -c.sin() * h[0] + c.cos() * h[1],
+            h[2],
+        ];
+        let want = numbers(line);
+        let n = (want[3].powi(2) + want[4].powi(2) + want[5].powi(2)).sqrt();
+        for k in 0..3 {
+            assert!((d[k] - want[3 + k] / n).abs() < 1e-12, "{row:?} {line}");
+        }
+    }
+    for w in rows.windows(2) {
+        let jump = (3..6)
+            .map(|k| (w[1][k] - w[0][k]).abs())
+            .fold(0.0, f64::max);
+        assert!(jump < 12.0, "{:?} -> {:?}", w[0], w[1]);
+    }
+    assert!(
+        (3..6).all(|k| (rows[1][k] - rows[0][k]).abs() < 1.0),
+        "{rows:?}"
+    );
+}
 /// `path` as a user's files and options come (a helper's finds): `--rule inverse` takes the
 /// other solution at the first point and stays on that branch (it swapped branches every
 /// row); a byte-order mark before the first point is no header; a first line with numbers

@@ -109,6 +109,34 @@ fn tcp(m: &cncrot_machine, n: usize, pos: &[f64; 3], current: &[f64; 3], t: &[u8
     } else {
         assert!(junk.iter().all(|x| x.is_finite()));
     }
+    // Carried from the machine's pose to the bytes' direction: the same direction as
+    // `cncrot_cl_pose` gives, an orthonormal frame; to the pose's own direction, the pose's
+    // own rotation (no turn, no turn about the tool).
+    let mut carried = [7.0; 16];
+    let c = unsafe {
+        cncrot_cl_pose_toward(tip.as_ptr(), free.as_ptr(), pose.as_ptr(), carried.as_mut_ptr())
+    };
+    if c < 0 {
+        assert_eq!(carried, [7.0; 16]);
+    } else {
+        assert_eq!(
+            [carried[2], carried[6], carried[10]],
+            [junk[2], junk[6], junk[10]]
+        );
+        for k in 0..3 {
+            let row = [carried[4 * k], carried[4 * k + 1], carried[4 * k + 2]];
+            let n = row.iter().map(|x| x * x).sum::<f64>();
+            assert!((n - 1.0).abs() < 1e-12, "{carried:?}");
+        }
+    }
+    let own = [pose[2], pose[6], pose[10]];
+    let c = unsafe {
+        cncrot_cl_pose_toward(tip.as_ptr(), own.as_ptr(), pose.as_ptr(), carried.as_mut_ptr())
+    };
+    assert_eq!(c, 0);
+    for (a, b) in carried.iter().zip(&pose) {
+        assert!((a - b).abs() < 1e-12, "{carried:?} {pose:?}");
+    }
     let prev = [0.0, 0.0, 0.0, current[0], current[1], current[2]];
     let mut out = [4.0; 6];
     let s = unsafe {

@@ -27,8 +27,13 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     double f[16], ax[6];
     if (cl) {
       double tip[3] = {pd[r], pd[r + n], pd[r + 2 * n]}, dir[3] = {pd[r + 3 * n], pd[r + 4 * n], pd[r + 5 * n]};
-      /* The library's pose of a CL point, as `cncrot path` takes it. */
-      int32_t c = cncrot_cl_pose(tip, dir, f);
+      /* The library's pose of a CL point, as `cncrot path` takes it: with three rotary
+         axes carried from the orientation where the machine stands (the turn about the
+         tool continuous, no jump where cncrot_cl_pose changes its X'). */
+      double before[16];
+      int32_t c = m.count == 3 && cncrot_machine_forward(&m, prev + 3, before) == CNCROT_STATUS_OK
+                      ? cncrot_cl_pose_toward(tip, dir, before, f)
+                      : cncrot_cl_pose(tip, dir, f);
       if (c == CNCROT_STATUS_DEGENERATE) {
         mxDestroyArray(out);
         mxDestroyArray(st);

@@ -653,6 +653,18 @@ function test_cncrot(cases_file)
   check(isequal(Pc(:, :, 1), [eye(3) [10; 20; 5]; 0 0 0 1]) && isequal(Pc(1:3, 3, 2), [-1; 0; 0]) && isequal(Pc(1:3, 1, 2), [0; 1; 0]), ...
         'cl_pose: along Z, and along -X (X'' from Y)');
   expect_message('cncrot:badArgument', @() cncrot_cl_pose([1 2 3 0 0 0]), 'cl_pose: zero direction', 'cncrot_cl_pose', 'must not be zero');
+  % Carried: from the tool tilted 60 degrees about Y to +X, X' turns 60 degrees about Y
+  % with it, (sqrt 3 / 2, 0, -1/2) to (0, 0, -1); the next row, +X again, keeps it.
+  Q = cncrot_cl_pose([1 2 3 3 0 0; 4 5 6 1 0 0], cncrot_cl_pose([0 0 0 1 0 sqrt(3)]));
+  check(max(abs(Q(1:3, 1, 1) - [0; 0; -1])) < 1e-15 && max(max(abs(Q(1:3, 1:3, 2) - Q(1:3, 1:3, 1)))) < 1e-15 && isequal(Q(1:3, 4, 2), [4; 5; 6]), ...
+        'cl_pose: X'' carried from P0, then from the row before');
+  expect_message('cncrot:notARotation', @() cncrot_cl_pose([1 2 3 0 0 1], 2 * eye(4)), 'cl_pose: P0 no rotation', 'cncrot_cl_pose', 'P0');
+  expect_error('cncrot:badSize', @() cncrot_cl_pose([1 2 3 0 0 1], eye(3)), 'cl_pose: P0 of 3-by-3');
+  % Three rotary axes (a C table, a B and an A head): CL rows whose i passes 0.9 turn
+  % every axis a little, not by tens of degrees.
+  three = [1 0 0 1 0 0 0 0 0 0 0 0; 0 0 1 0 0 150 0 0 0 0 0 0; 0 1 0 0 0 100 0 0 0 0 0 0];
+  A3 = cncrot_machine_tcp_inverse(three, [0 0 0 0.899 0.1 0.4264; 0 0 0 0.901 0.1 0.4222], 30);
+  check(max(abs(A3(2, 4:6) - A3(1, 4:6))) < 1, 'tcp: three axes continuous across |i| = 0.9');
   expect_message('cncrot:badArgument', @() cncrot_machine_tcp_inverse(ac, [1 2 3 0 0 0; 1 2 3 0 0 0], 50), 'tcp: zero direction', ...
                  'cncrot_machine_tcp_inverse', 'row 1', 'must not be zero');
   expect_error('cncrot:badSize', @() cncrot_machine_tcp_inverse(ac, [1 2 3 0 0 1], 50, [0 0 0]), 'tcp: previous of 3');
@@ -761,8 +773,14 @@ function test_cncrot(cases_file)
         check(same(reshape(P.', 1, 16), 10) && same(A, 32) && st == str2double(t{38}), ['parity ' line]);
       case 'KL'
         cl = [hv(3, 3), hv(6, 3)];
-        P = cncrot_cl_pose(cl);
-        [A, st] = cncrot_machine_tcp_inverse(machines{str2double(t{2}) + 1}, cl, h(9), hv(26, 6));
+        mk = machines{str2double(t{2}) + 1};
+        if size(mk, 1) == 3
+          prev = hv(26, 6);
+          P = cncrot_cl_pose(cl, cncrot_machine_forward(mk, prev(4:6)));
+        else
+          P = cncrot_cl_pose(cl);
+        end
+        [A, st] = cncrot_machine_tcp_inverse(mk, cl, h(9), hv(26, 6));
         check(same(reshape(P.', 1, 16), 10) && same(A, 32) && st == str2double(t{38}), ['parity ' line]);
       case 'PE'
         [a, F2] = cncrot_probe_edge(reshape(hv(2, 16), 4, 4).', hv(18, 3), hv(21, 3));

@@ -22,7 +22,7 @@ use super::family::{Direct, DirectAxes, PathCommand, PathWords};
 use super::program::{block_of, direct_positions};
 use super::registry::Dialect;
 use super::sinumerik::{orieuler_vector, orirpy_vector};
-use crate::kinematics::{cl_pose, Machine, Rule, Tcp};
+use crate::kinematics::{cl_pose, cl_pose_toward, Machine, Rule, Tcp, MAX_AXES};
 use crate::text::scan::{code_of, past_closing, LineError};
 use crate::Frame;
 use crate::{Error, Vector};
@@ -505,6 +505,17 @@ impl ToolPath {
     ) -> Result<(Frame, [f64; 6], Rule), Error> {
         let [_, _, _, r1, r2, r3] = previous;
         let (rotation, previous, rule) = match self.orientation {
+            // Three rotary axes make the turn about the tool too: the one carried from
+            // where the machine stands, so that a path does not jump where `cl_pose`
+            // changes its X'.
+            Orientation::Direction(d) if machine.axis_count() == MAX_AXES => {
+                let before = machine.forward([r1, r2, r3])?.rotation;
+                (
+                    cl_pose_toward(self.tip, d, &before)?.rotation,
+                    previous,
+                    rule,
+                )
+            }
             Orientation::Direction(d) => (cl_pose(self.tip, d)?.rotation, previous, rule),
             Orientation::Axes(stated) => {
                 let by = Direct {

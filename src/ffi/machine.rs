@@ -1088,8 +1088,9 @@ pub unsafe extern "C" fn cncrot_machine_tcp_inverse_rule(
 /// made a unit vector (any length but zero), X' the component of the workpiece X axis
 /// perpendicular to it (of Y when the direction's x component is 0.9 or more in magnitude),
 /// Y' = Z' x X'. With fewer than three rotary axes a machine matches the direction only, so
-/// this X' does not matter; with three it chooses the turn about the tool. The pose
-/// `cncrot path`, the five-axis program reader and MATLAB's CL rows use.
+/// this X' does not matter; with three it chooses the turn about the tool, and `cncrot
+/// path`, the five-axis program reader and MATLAB's CL rows carry X' from where the machine
+/// stands instead (`cncrot_cl_pose_toward`): this X' switches at 0.9.
 ///
 /// Returns 0, or with `pose` untouched: `CNCROT_STATUS_NULL_POINTER`,
 /// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_DEGENERATE` (a zero direction).
@@ -1113,6 +1114,54 @@ pub unsafe extern "C" fn cncrot_cl_pose(
         let t = read_finite::<3>(tip)?;
         let d = read_finite::<3>(direction)?;
         let f = crate::kinematics::cl_pose(t, d)?;
+        write_frame(pose, &f)?;
+        Ok(cncrot_status::Ok)
+    })
+}
+
+/// The pose of a CL point continuous with `previous` (a 4x4 frame, row-major, whose
+/// rotation is the last point's: the last pose, or `cncrot_machine_tcp_forward` of the
+/// axes the machine stands at): as `cncrot_cl_pose`, but X' is the previous X' carried
+/// along by the smallest turn that takes the previous tool direction to `direction`, so
+/// that the tool does not turn about itself between two points. For machines of three
+/// rotary axes, where X' chooses the turn about the tool: `cncrot_cl_pose`'s X' switches
+/// from X to Y where the direction's x component passes 0.9, and every axis would jump.
+/// A direction 120 degrees or more from the previous one gets `cncrot_cl_pose`'s frame.
+/// Only the rotation of `previous` is read (its translation must be finite).
+///
+/// Returns 0, or with `pose` untouched: `CNCROT_STATUS_NULL_POINTER`,
+/// `CNCROT_STATUS_NOT_FINITE`, `CNCROT_STATUS_DEGENERATE` (a zero direction),
+/// `CNCROT_STATUS_NOT_A_ROTATION` (`previous`, also its last row other than 0 0 0 1).
+///
+/// # Safety
+/// `tip` and `direction` point to 3 doubles, `previous` to 16, `pose` to 16 writable
+/// doubles (it may be `previous` itself).
+///
+/// ```c
+/// double tip[3] = {10, 20, 5}, x[3] = {1, 0, 0}, pose[16];
+/// // From the tool along Z tilted 60 degrees about Y (pose) to the tool along X:
+/// // X' stays in the XZ plane, (0, 0, -1), where cncrot_cl_pose would take Y.
+/// cncrot_cl_pose_toward(tip, x, pose, pose);
+/// ```
+#[cfg_attr(feature = "no-panic-proof", no_panic::no_panic)]
+#[no_mangle]
+pub unsafe extern "C" fn cncrot_cl_pose_toward(
+    tip: *const f64,
+    direction: *const f64,
+    previous: *const f64,
+    pose: *mut f64,
+) -> i32 {
+    guard(|| {
+        non_null(&[
+            tip.is_null(),
+            direction.is_null(),
+            previous.is_null(),
+            pose.is_null(),
+        ])?;
+        let t = read_finite::<3>(tip)?;
+        let d = read_finite::<3>(direction)?;
+        let before = read_frame(previous)?;
+        let f = crate::kinematics::cl_pose_toward(t, d, &before.rotation)?;
         write_frame(pose, &f)?;
         Ok(cncrot_status::Ok)
     })

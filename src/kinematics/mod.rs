@@ -34,7 +34,7 @@ mod tcp;
 pub use choose::{Choice, Rule};
 pub(crate) use solve::VERIFY;
 pub use solve::{Solutions, POLE_SINE};
-pub use tcp::{cl_pose, Tcp, TCP_AXES};
+pub use tcp::{cl_pose, cl_pose_toward, Tcp, TCP_AXES};
 
 use crate::math::{abs, sin_cos_deg4};
 pub(crate) use crate::rotation::{about_axis, about_axis_sc, turn_vector};

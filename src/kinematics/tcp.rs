@@ -27,7 +27,7 @@ use super::{
     MAX_SOLUTIONS, REACH_TOLERANCE, TRAVEL_TOLERANCE,
 };
 use crate::math::{abs, sin_cos_deg4, wrap_deg};
-use crate::vector::dot;
+use crate::vector::{cross, dot};
 use crate::{
     check_rotation, mul, rotate, transpose, Error, Frame, Matrix, Vector, CLOSEST_MAX, IDENTITY,
 };
@@ -71,6 +71,52 @@ pub fn cl_pose(tip: Vector, direction: Vector) -> Result<Frame, Error> {
     Ok(Frame {
         // From `direction` as given: `rotation_from_z_x` makes it a unit vector itself.
         rotation: crate::rotation_from_z_x(direction, hint)?,
+        translation: tip,
+    })
+}
+
+/// The pose of a CL point continuous with a previous pose: as [`cl_pose`], but X' is the
+/// previous pose's X' carried along by the smallest turn that takes the previous tool
+/// direction (the third column of `previous`) to `direction` — no turn about the tool
+/// between two points. What a machine of three rotary axes needs on CL data, which does
+/// not state the turn about the tool: [`cl_pose`]'s X' switches from the workpiece's X to
+/// its Y where the direction's x component passes 0.9, and every axis would jump there.
+/// A direction 120° or more from the previous one (no step of a path; a first point far
+/// from where the machine stands) has no such turn worth keeping: [`cl_pose`]'s frame
+/// \[choice\].
+///
+/// Errors: [`Error::NotARotation`] / [`Error::NotFinite`] (`previous`, as
+/// [`crate::check_rotation`]), [`Error::Degenerate`] (a zero or non-finite `direction`).
+///
+/// ```
+/// use cncrot::kinematics::{cl_pose, cl_pose_toward};
+/// // Along X the plain pose takes Y as X'; carried from the pose along Z tilted 60° about Y,
+/// // X' stays in the XZ plane: (0, 0, -1) for the direction (1, 0, 0).
+/// let s = 60f64.to_radians().sin_cos();
+/// let before = cl_pose([0.0; 3], [s.0, 0.0, s.1]).unwrap();
+/// let p = cl_pose_toward([1.0, 2.0, 3.0], [1.0, 0.0, 0.0], &before.rotation).unwrap();
+/// assert!((p.rotation[2][0] + 1.0).abs() < 1e-15 && p.rotation[1][0].abs() < 1e-15);
+/// assert_eq!(p.translation, [1.0, 2.0, 3.0]);
+/// assert_eq!(cl_pose([0.0; 3], [1.0, 0.0, 0.0]).unwrap().rotation[1][0], 1.0);
+/// ```
+pub fn cl_pose_toward(tip: Vector, direction: Vector, previous: &Matrix) -> Result<Frame, Error> {
+    check_rotation(previous)?;
+    let d = crate::unit_vector(direction)?;
+    let z = [previous[0][2], previous[1][2], previous[2][2]];
+    let x = [previous[0][0], previous[1][0], previous[2][0]];
+    let c = dot(z, d);
+    // Both are finite unit vectors: `c` is a number.
+    if c <= -0.5 {
+        return cl_pose(tip, direction);
+    }
+    // Rodrigues' formula for the turn about k = z × d by the angle between them:
+    // R·x = x + k × x + k × (k × x) / (1 + z·d).
+    let k = cross(z, d);
+    let kx = cross(k, x);
+    let kkx = cross(k, kx);
+    let carried: Vector = core::array::from_fn(|i| x[i] + kx[i] + kkx[i] / (1.0 + c));
+    Ok(Frame {
+        rotation: crate::rotation_from_z_x(direction, carried)?,
         translation: tip,
     })
 }

@@ -1703,6 +1703,58 @@ fn machines() -> Vec<Call> {
             ));
             t.f64s(&pose);
         }),
+        ("cncrot_cl_pose_toward", |t| unsafe {
+            let mut pose = [0.0; 16];
+            cncrot_cl_pose(
+                [0.0; 3].as_ptr(),
+                [0.3, 0.1, 0.9].as_ptr(),
+                pose.as_mut_ptr(),
+            );
+            // Along a path (the previous pose is the last one written, in place), across
+            // the x component 0.9, and back against the previous direction.
+            for dir in [
+                [0.8, 0.1, 0.5],
+                [0.95, 0.1, 0.3],
+                [1.0, 0.0, 0.0],
+                [-1.0, 0.0, 0.0],
+            ] {
+                t.status(cncrot_cl_pose_toward(
+                    [10.0, 20.0, 5.0].as_ptr(),
+                    dir.as_ptr(),
+                    pose.as_ptr(),
+                    pose.as_mut_ptr(),
+                ));
+                t.f64s(&pose);
+            }
+            let mut bad = pose;
+            bad[0] = 2.0;
+            t.status(cncrot_cl_pose_toward(
+                [0.0; 3].as_ptr(),
+                [0.0, 0.0, 1.0].as_ptr(),
+                bad.as_ptr(),
+                pose.as_mut_ptr(),
+            ));
+            bad[15] = f64::NAN;
+            t.status(cncrot_cl_pose_toward(
+                [0.0; 3].as_ptr(),
+                [0.0, 0.0, 1.0].as_ptr(),
+                bad.as_ptr(),
+                pose.as_mut_ptr(),
+            ));
+            t.status(cncrot_cl_pose_toward(
+                [0.0; 3].as_ptr(),
+                [0.0; 3].as_ptr(),
+                IDF.as_ptr(),
+                pose.as_mut_ptr(),
+            ));
+            t.status(cncrot_cl_pose_toward(
+                [0.0; 3].as_ptr(),
+                [0.0, 0.0, 1.0].as_ptr(),
+                null(),
+                pose.as_mut_ptr(),
+            ));
+            t.f64s(&pose);
+        }),
         ("cncrot_machine_tcp_inverse", |t| unsafe {
             let m = head();
             let mut pose = [0.0; 16];
