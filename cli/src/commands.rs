@@ -1338,7 +1338,17 @@ fn moved_to(
         .iter()
         .map(|a| cncrot::dialects::program::axis_letter(a.direction))
         .collect();
-    let mut from = *path;
+    // Only the rotary letters count here: where the tip is, in which frame and with which
+    // offset (which make the reader leave a point unfollowed) moves no rotary axis.
+    let mut from = cncrot::dialects::toolpath::ToolPath {
+        lost: false,
+        framed: false,
+        shifted: false,
+        compensated: false,
+        altered: false,
+        disoriented: false,
+        ..*path
+    };
     for (k, &slot) in slots.iter().enumerate() {
         from.axes[slot] = current[k];
     }

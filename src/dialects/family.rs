@@ -701,6 +701,27 @@ pub(crate) struct PathWords {
     /// Commands that switch the transformation off at the end of their block (Heidenhain
     /// `M129`): a motion block with one is still a point.
     pub(crate) off_after: &'static [PathCommand],
+    /// Moves whose end the reader does not know, with or without coordinate words (a
+    /// contour element other than a line, a cycle or subprogram call, a program end): not
+    /// followed, and the tip lost.
+    pub(crate) loses: &'static [PathCommand],
+    /// Words whose value changes the tip or the orientation in a way the reader does not
+    /// compute (SINUMERIK `LEAD`, `TILT`, the surface normals `A4`…`C5`, the second curve
+    /// `XH YH ZH`): the block is not followed, the tip and the orientation lost.
+    pub(crate) unread: &'static [&'static [u8]],
+    /// Cutter radius compensation on, off.
+    pub(crate) compensation: &'static [PathCommand],
+    /// See `compensation`.
+    pub(crate) compensation_off: &'static [PathCommand],
+    /// Commands that change the coordinates or the orientation's meaning in a way the
+    /// reader does not compute (see `ToolPath::altered`), and the ones that end that.
+    pub(crate) altering: &'static [PathCommand],
+    /// See `altering`.
+    pub(crate) unaltering: &'static [PathCommand],
+    /// Inch coordinates, millimetres.
+    pub(crate) inch: &'static [PathCommand],
+    /// See `inch`.
+    pub(crate) metric: &'static [PathCommand],
 }
 
 /// The ISO dialects' five-axis programs, switched on by `on`, off by `G49`.
@@ -711,7 +732,13 @@ pub(crate) const fn iso_path(on: &'static [PathCommand], vector: [&'static [u8];
         spaced: false,
         ex: false,
         on,
-        off: &[PathCommand::Code(b'G', 490)],
+        // `G43`/`G44` (tool length compensation alone) are of the same group as `G43.4`,
+        // `G43.5` (Haas: `G234`): they end the transformation as `G49` does.
+        off: &[
+            PathCommand::Code(b'G', 490),
+            PathCommand::Code(b'G', 430),
+            PathCommand::Code(b'G', 440),
+        ],
         vector,
         angles: None,
         rpy: &[],
@@ -736,17 +763,20 @@ pub(crate) const fn iso_path(on: &'static [PathCommand], vector: [&'static [u8];
             Code(b'G', 510),
             Code(b'G', 511),
             Code(b'G', 520),
-            Code(b'G', 650),
-            Code(b'G', 660),
-            Code(b'G', 680),
             Code(b'G', 682),
             Code(b'G', 683),
             Code(b'G', 684),
-            Code(b'G', 920),
         ],
-        // Group 01: `G2`/`G3` stay in force until `G0`/`G1`; the canned cycles (group 09,
-        // their X Y the holes, their Z R depths and planes) until `G80` or a group 01 code.
-        circular: &[Code(b'G', 20), Code(b'G', 30)],
+        // Group 01: `G2`/`G3` stay in force until `G0`/`G1`, as do NURBS (`G6.2`) and
+        // three-dimensional circles (`G2.4`/`G3.4`); the canned cycles (group 09, their X Y
+        // the holes, their Z R depths and planes) until `G80` or a group 01 code.
+        circular: &[
+            Code(b'G', 20),
+            Code(b'G', 30),
+            Code(b'G', 62),
+            Code(b'G', 24),
+            Code(b'G', 34),
+        ],
         linear: &[Code(b'G', 0), Code(b'G', 10)],
         canned: &[
             Code(b'G', 730),
@@ -766,6 +796,51 @@ pub(crate) const fn iso_path(on: &'static [PathCommand], vector: [&'static [u8];
         // A dwell: `G04 X1.5` waits 1.5 s.
         still: &[Code(b'G', 40)],
         off_after: &[],
+        // Macro calls, subprogram calls and returns, program ends.
+        loses: &[
+            Code(b'G', 650),
+            Code(b'G', 660),
+            Code(b'G', 661),
+            Code(b'M', 980),
+            Code(b'M', 970),
+            Code(b'M', 1980),
+            Code(b'M', 990),
+            Code(b'M', 20),
+            Code(b'M', 300),
+        ],
+        unread: &[],
+        // `G41`/`G42`, their 3-D forms (`G41.2`…`G42.6`), Haas `G141`.
+        compensation: &[
+            Code(b'G', 410),
+            Code(b'G', 420),
+            Code(b'G', 412),
+            Code(b'G', 422),
+            Code(b'G', 413),
+            Code(b'G', 414),
+            Code(b'G', 415),
+            Code(b'G', 416),
+            Code(b'G', 424),
+            Code(b'G', 425),
+            Code(b'G', 426),
+            Code(b'G', 1410),
+        ],
+        compensation_off: &[Code(b'G', 400)],
+        // Rotation in the plane, scaling, mirroring, a position set; `G10` writes offset
+        // tables (taken as a work offset's, which the coordinates are in).
+        altering: &[
+            Code(b'G', 680),
+            Code(b'G', 510),
+            Code(b'G', 511),
+            Code(b'G', 920),
+        ],
+        unaltering: &[
+            Code(b'G', 690),
+            Code(b'G', 500),
+            Code(b'G', 501),
+            Code(b'G', 921),
+        ],
+        inch: &[Code(b'G', 200)],
+        metric: &[Code(b'G', 210)],
     }
 }
 

@@ -796,31 +796,16 @@ pub(crate) const HEIDENHAIN_PATH: super::family::PathWords = {
         i_prefix: true,
         moves: &[b"L", b"LN"],
         arcs: &[
-            Name(b"C"),
-            Name(b"CR"),
-            Name(b"CT"),
-            Name(b"CP"),
+            // Machine coordinates for the block.
             Code(b'M', 910),
             Code(b'M', 920),
-            // Polar, approach and departure, rounding, chamfer and FK contours: moves whose
-            // end point the reader does not compute.
-            Name(b"LP"),
-            Name(b"APPR"),
-            Name(b"DEP"),
+            // A rounding or a chamfer between two blocks: the corner, not the end point.
             Name(b"RND"),
             Name(b"CHF"),
-            Name(b"FL"),
-            Name(b"FLT"),
-            Name(b"FC"),
-            Name(b"FCT"),
-            Name(b"FPOL"),
-            Phrase(&[b"CYCL", b"CALL"]),
             // What moves the coordinates the points are read in.
             Phrase(&[b"CYCL", b"DEF", b"DATUM"]),
             Phrase(&[b"TRANS", b"DATUM"]),
             Name(b"PLANE"),
-            // Probing: moves of their own, and a datum or basic rotation they may set.
-            Phrase(&[b"TCH", b"PROBE"]),
         ],
         // Every contour block names its kind (`L`, `C`, `CR`): no modal mode.
         circular: &[],
@@ -831,6 +816,46 @@ pub(crate) const HEIDENHAIN_PATH: super::family::PathWords = {
         // "M128 becomes effective at the start of block, M129 at the end of block" (TNC
         // 426/430 user's manual).
         off_after: &[Code(b'M', 1290)],
+        // Circles, polar, approach and departure and FK contours (an end point the reader
+        // does not compute, stated or not), cycle and program calls, the retraction of
+        // `M140`, probing (moves of its own, a datum it may set).
+        loses: &[
+            Name(b"C"),
+            Name(b"CR"),
+            Name(b"CT"),
+            Name(b"CP"),
+            Name(b"LP"),
+            Name(b"APPR"),
+            Name(b"DEP"),
+            Name(b"FL"),
+            Name(b"FLT"),
+            Name(b"FC"),
+            Name(b"FCT"),
+            Name(b"FPOL"),
+            Phrase(&[b"CYCL", b"CALL"]),
+            Code(b'M', 990),
+            Code(b'M', 890),
+            Phrase(&[b"CALL", b"PGM"]),
+            Phrase(&[b"CALL", b"LBL"]),
+            Code(b'M', 1400),
+            Phrase(&[b"TCH", b"PROBE"]),
+            Phrase(&[b"END", b"PGM"]),
+        ],
+        unread: &[],
+        compensation: &[Name(b"RL"), Name(b"RR")],
+        compensation_off: &[Code(b'R', 0)],
+        // Mirror, rotation and scaling cycles (8, 10, 11, 26), a reference point other than
+        // the tip.
+        altering: &[
+            Phrase(&[b"CYCL", b"DEF", b"MIRROR"]),
+            Phrase(&[b"CYCL", b"DEF", b"ROTATION"]),
+            Phrase(&[b"CYCL", b"DEF", b"SCALING"]),
+            Phrase(&[b"REFPNT", b"CENTER-CENTER"]),
+            Phrase(&[b"REFPNT", b"TIP-CENTER"]),
+        ],
+        unaltering: &[],
+        inch: &[Name(b"INCH")],
+        metric: &[Name(b"MM")],
     }
 };
 

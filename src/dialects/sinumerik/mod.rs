@@ -982,14 +982,7 @@ pub(crate) const SINUMERIK_PATH: super::family::PathWords = {
             Name(b"ROTS"),
             Name(b"AROTS"),
             Name(b"CROTS"),
-            Name(b"TOFRAME"),
-            Name(b"TOROT"),
-            Name(b"PAROT"),
             Name(b"PRESETON"),
-            Name(b"SCALE"),
-            Name(b"ASCALE"),
-            Name(b"MIRROR"),
-            Name(b"AMIRROR"),
         ],
         // G group 1: circles and splines stay in force until `G0`/`G1`.
         circular: &[
@@ -1008,6 +1001,41 @@ pub(crate) const SINUMERIK_PATH: super::family::PathWords = {
         // A dwell (`G4 F2`).
         still: &[Code(b'G', 40)],
         off_after: &[],
+        // Program ends and returns, cycle calls (`MCALL`; each `CYCLE…` word, see
+        // `toolpath`), the orientation axes moved to a position (`ORIRESET`).
+        loses: &[
+            Code(b'M', 20),
+            Code(b'M', 300),
+            Code(b'M', 170),
+            Name(b"RET"),
+            Name(b"MCALL"),
+            Name(b"ORIRESET"),
+        ],
+        // The orientation relative to the path (`ORIPATH`'s lead and tilt angles), the
+        // surface normals, the second curve of `ORICURVE`, the rotation about the tool.
+        unread: &[
+            b"LEAD", b"TILT", b"THETA", b"A4", b"B4", b"C4", b"A5", b"B5", b"C5", b"A6", b"B6",
+            b"C6", b"A7", b"B7", b"C7", b"A8", b"B8", b"C8", b"XH", b"YH", b"ZH", b"PO", b"PSI",
+        ],
+        compensation: &[Code(b'G', 410), Code(b'G', 420)],
+        compensation_off: &[Code(b'G', 400)],
+        // Scaling and mirroring (a frame the tilted-plane reader does not compose), other
+        // orientation angles (`ORIVIRT1/2`: machine data).
+        altering: &[
+            // Frames to the tool's orientation or the table's: a rotation of the frame.
+            Name(b"TOFRAME"),
+            Name(b"TOROT"),
+            Name(b"PAROT"),
+            Name(b"SCALE"),
+            Name(b"ASCALE"),
+            Name(b"MIRROR"),
+            Name(b"AMIRROR"),
+            Name(b"ORIVIRT1"),
+            Name(b"ORIVIRT2"),
+        ],
+        unaltering: &[],
+        inch: &[Code(b'G', 700), Code(b'G', 7000)],
+        metric: &[Code(b'G', 710), Code(b'G', 7100)],
     }
 };
 
