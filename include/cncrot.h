@@ -2111,7 +2111,8 @@ int32_t cncrot_program_expected(const struct cncrot_program *program,
  * `current`, and `CNCROT_STATUS_OUT_OF_TRAVEL` where the side it names lies beyond the
  * travel, as the TNC's "Entered angle not permitted". No tilt active: the positions of the identity frame. A direct mode
  * (`active` 2 or 3): the positions it states, mapped onto the machine's axes (by place, or
- * by letter: each axis takes the position of the letter its direction is nearest, A for X,
+ * by letter: each axis takes the position of the letter its direction is nearest (of two
+ * nearest one, the one more nearly along it; the other its next nearest), A for X,
  * B for Y, C for Z), as stated on an axis with travel limits, the turn nearest `current`
  * on a modulo axis. Axes the machine lacks are 0 in `axes` (and must be 0 in `current`).
  *
@@ -2692,7 +2693,8 @@ int32_t cncrot_tool_path_line(struct cncrot_tool_path *path,
  * `point` 1), as `cncrot_machine_tcp_inverse_rule` computes them (`axes`, `previous`,
  * `tool_length`, `rule` and `reference_axis` as there): for a tool direction the rotary
  * solution the rule picks; for rotary positions stated by letter, those positions (each
- * machine axis takes the letter its direction is nearest: A for X, B for Y, C for Z
+ * machine axis takes the letter its direction is nearest: A for X, B for Y, C for Z; of two
+ * axes nearest one letter the one more nearly along it, the other its next nearest letter
  * \[choice: a description carries no axis names\]; `rule` is then not used); with no
  * orientation stated, the rotary axes where `previous` has them. The linear axes put the
  * tip on the point.

@@ -15,14 +15,15 @@
 %   stays where it was.
 %   AXES = cncrot_machine_tcp_inverse(MACHINE, P, L, PREVIOUS) starts from PREVIOUS
 %   (1-by-6, default zeros).
-%   AXES = cncrot_machine_tcp_inverse(MACHINE, P, L, PREVIOUS, RULE, REF) picks each row's
-%   rotary solution by RULE as cncrot_machine_choose does: 'closest' (the default: the one
-%   continuous with the row before), 'minus' / 'plus' with REF a priority axis (1-based:
-%   its lower / higher angle in (-180, 180], as SEQ-/SEQ+ ask), 'master_first' (it turns the
-%   least, then the others: Fanuc's G53.1), 'positive_turn' / 'negative_turn'
-%   (that axis turns only up / only down, as G53.1 P1/P2 ask), 'inverse' (the first row the
-%   other solution than the one continuous with PREVIOUS, the rows after it continuous with
-%   it).
+%   AXES = cncrot_machine_tcp_inverse(MACHINE, P, L, PREVIOUS, RULE, REF) picks the first
+%   row's rotary solution by RULE as cncrot_machine_choose does, the rows after it
+%   continuous with it: 'closest' (the default: the one continuous with PREVIOUS), 'minus' /
+%   'plus' with REF a priority axis (1-based: its lower / higher angle in (-180, 180], as
+%   SEQ-/SEQ+ ask), 'master_first' (it turns the least, then the others: Fanuc's G53.1),
+%   'positive_turn' / 'negative_turn' (that axis turns only up / only down, as G53.1 P1/P2
+%   ask), 'inverse' (the other solution than the one continuous with PREVIOUS). Taken again
+%   at each row, a side or a direction of travel would swap branches where the axis passes
+%   0: one row per call does that.
 %   [AXES, STATUS] = ... also gives each row's status: 0, 2 (a free axis kept), 3 (a Hirth
 %   axis snapped). A row the machine cannot reach raises an error naming the row.
 %

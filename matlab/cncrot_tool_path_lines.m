@@ -16,10 +16,9 @@
 %   a reference move, a value that is not a number: not taken).
 %   With a machine (as in cncrot_machine_forward) and the tool length L (mm): axes is
 %   N-by-6, the machine's X Y Z and rotary positions for each point (as
-%   cncrot_machine_tcp_inverse: each continuous with the point before, from previous, by
-%   rule 'closest', 'minus', 'plus', 'inverse' (the first point's; the points after it
-%   continuous with it), 'positive_turn', 'negative_turn' or 'master_first' with ref), NaN
-%   rows elsewhere.
+%   cncrot_machine_tcp_inverse: the first point's solution by rule 'closest', 'minus',
+%   'plus', 'inverse', 'positive_turn', 'negative_turn' or 'master_first' with ref, from
+%   previous; the points after it continuous with it), NaN rows elsewhere.
 %   Rotary
 %   positions stated by letter go to the machine axis whose direction is nearest (A for X,
 %   B for Y, C for Z).

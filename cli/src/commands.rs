@@ -1333,11 +1333,8 @@ fn moved_to(
     block: &str,
     current: &mut [f64; MAX_AXES],
 ) {
-    let slots: Vec<usize> = machine
-        .axes()
-        .iter()
-        .map(|a| cncrot::dialects::program::axis_letter(a.direction))
-        .collect();
+    let letters = cncrot::dialects::program::axis_letters(machine);
+    let slots = &letters[..machine.axes().len()];
     // Only the rotary letters count here: where the tip is, in which frame and with which
     // offset (which make the reader leave a point unfollowed) moves no rotary axis.
     let mut from = cncrot::dialects::toolpath::ToolPath {
@@ -3041,7 +3038,10 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
     let mut rule = rule(a.rule, n)?;
     // The other solution (`inverse`) is the first point's: the rows after it are continuous
     // with it (taken against each row before, they would swap branches every row).
-    let along = |r: Rule| if r == Rule::Inverse { Rule::Closest } else { r };
+    // Every rule picks the first point's solution; the points after it continue from it
+    // (a priority axis' side or direction of travel, taken again at each point, would swap
+    // branches where that axis passes 0, and the path would jump).
+    let along = |_: Rule| Rule::Closest;
     // The start: the rotary positions, or X,Y,Z and the rotary positions.
     let mut previous = [0.0; 6];
     if let Some(text) = a.current {
@@ -3074,17 +3074,27 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
         if state.spatial {
             return;
         }
-        for (k, a) in machine.axes().iter().enumerate() {
-            state.axes[cncrot::dialects::program::axis_letter(a.direction)] = at[3 + k];
+        let letters = cncrot::dialects::program::axis_letters(&machine);
+        for k in 0..machine.axes().len() {
+            state.axes[letters[k]] = at[3 + k];
         }
     };
     stand(&mut state, &previous);
     run(&common, None, |text| {
         if let Some(dialect) = program {
             use cncrot::dialects::toolpath::PathRemark;
-            let (next, remark) = state
-                .line(dialect, text.as_bytes())
-                .map_err(|e| Failure::at(e.column, input::block_message(text, &e)))?;
+            let (next, remark) = state.line(dialect, text.as_bytes()).map_err(|e| {
+                if e.error == cncrot::Error::BadArgument {
+                    // The reader's one refusal of a block's words: say which.
+                    Failure::at(
+                        e.column,
+                        "the tool direction is zero, or the block states both a tool direction and rotary positions"
+                            .to_string(),
+                    )
+                } else {
+                    Failure::at(e.column, input::block_message(text, &e))
+                }
+            })?;
             // A point the machine does not reach leaves the state as it was: the path goes
             // on from the last point reached, without the refused block's words.
             let reached = state;
@@ -3115,7 +3125,7 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
                     state = reached;
                     return Err(if e == cncrot::Error::BadArgument && stated {
                         Failure::new(
-                            "the block gives a position to a rotary axis the machine does not have, or by a letter two of its axes are nearest (A, B, C go to the machine's axis whose direction is nearest X, Y, Z)",
+                            "the block gives a position to a rotary axis the machine does not have (A, B, C go to the machine's axis whose direction is nearest X, Y, Z)",
                         )
                     } else {
                         e.into()

@@ -1082,6 +1082,50 @@ fn path_worked_example_alignment_and_the_pole() {
     );
 }
 
+/// `path --rule up:1` (a helper's find): the rule picks the first point's solution, the
+/// rows after it continue from it. Taken at every row, C only turning up swung half a turn
+/// (and B changed sign) for a step of 0.1° backwards. And a position stated by letter is
+/// that position, not its round trip through the pose (`B30.` read back exactly).
+#[test]
+fn path_rules_pick_the_first_point_only() {
+    let (s, c) = 30f64.to_radians().sin_cos();
+    let cl: String = [10.0f64, 9.9, 9.8, 10.0]
+        .iter()
+        .map(|az| {
+            let (sa, ca) = az.to_radians().sin_cos();
+            format!("0 0 0 {} {} {}\n", s * ca, s * sa, c)
+        })
+        .collect();
+    let head = [
+        "--axis",
+        "tool:0,0,1",
+        "--axis",
+        "tool:0,1,0@0,0,150",
+        "--tool-length",
+        "50",
+    ];
+    let mut args = vec!["path", "-", "--rule", "up:1", "--decimals", "exact"];
+    args.extend(head);
+    let r = cncrot(&args, &cl);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let rows: Vec<Vec<f64>> = r.stdout.lines().map(numbers).collect();
+    for (row, want) in rows.iter().zip([10.0, 9.9, 9.8, 10.0]) {
+        assert!(
+            (row[3] - want).abs() < 1e-9 && (row[4] - 30.0).abs() < 1e-9,
+            "{row:?}"
+        );
+    }
+    let mut args = vec!["path", "-", "--dialect", "fanuc", "--decimals", "exact"];
+    args.extend(head);
+    let r = cncrot(&args, "G43.4 H1\nG1 X1. Y0. Z0. B30. C10.\nX2.\n");
+    let rows: Vec<Vec<f64>> = r.stdout.lines().skip(1).map(numbers).collect();
+    assert!(
+        rows.iter().all(|r| r[3] == 10.0 && r[4] == 30.0),
+        "{}",
+        r.stdout
+    );
+}
+
 /// `path` on three rotary axes (a C table, a B and an A head): CL rows whose `i` passes 0.9
 /// (where a frame built from X alone switches to Y) turn the axes by what the direction
 /// turned, 0.25°, not by tens of degrees; every row reaches its direction (the forward
@@ -1301,10 +1345,14 @@ fn path_reads_five_axis_programs() {
     // A block that is not a five-axis program's: an error line in place, the exit status 1.
     let mut args = vec!["path", "-", "--dialect", "fanuc"];
     args.extend(AC);
-    let r = cncrot(&args, "G43.5 H1\nG1 X1. I0 J0 K0\nG1 X1. I0 J0 K1.\n");
+    let r = cncrot(
+        &args,
+        "G43.5 H1\nG1 X1. I0 J0 K0\nG1 X1. Y0. Z0. I0 J0 K1.\n",
+    );
     assert_eq!(r.code, 1);
     let lines: Vec<&str> = r.stdout.lines().collect();
     assert!(lines[1].starts_with("error: line 2"), "{}", r.stdout);
+    assert!(lines[1].contains("tool direction"), "{}", r.stdout);
     assert_eq!(numbers(lines[2]).len(), 5, "{}", r.stdout);
 }
 

@@ -62,9 +62,10 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     for (int c = 0; c < 6; c++) o[r + n * c] = ax[c];
     so[r] = s;
     memcpy(prev, ax, sizeof prev);
-    /* The other solution is the first row's; the rows after it continue from it (taken
-       against each row before, they would swap branches every row). */
-    if (rule == CNCROT_CHOOSE_INVERSE) rule = CNCROT_CHOOSE_CLOSEST;
+    /* The rule picks the first row's solution; the rows after it continue from it (a
+       priority axis' side or direction taken again at each row would swap branches where
+       that axis passes 0, and the other solution every row). */
+    rule = CNCROT_CHOOSE_CLOSEST, ref = 0;
   }
   plhs[0] = out;
   if (nlhs > 1)

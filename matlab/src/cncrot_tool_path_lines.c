@@ -10,11 +10,38 @@
    angles, left as the program states them. */
 static void stand(cncrot_tool_path *t, const cncrot_machine *m, const double at[6]) {
   if (t->flags & 4) return;
-  for (int j = 0; j < m->count && j < 3; j++) {
+  /* The library's letters (axis_letters): each axis the one its direction is nearest;
+     where two are nearest one letter, the axis more nearly along it keeps it (the first of
+     equals), the other takes its next nearest free letter. */
+  int n = m->count < 3 ? m->count : 3, order[3] = {0, 1, 2}, taken[3] = {0, 0, 0};
+  double c[3][3], strength[3];
+  for (int j = 0; j < n; j++) {
     const double *v = m->axes[j].direction;
-    double x = fabs(v[0]), y = fabs(v[1]), z = fabs(v[2]);
-    int slot = (x >= y && x >= z) ? 0 : (y >= z ? 1 : 2);
-    t->axes[slot] = at[3 + j];
+    double len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    strength[j] = 0;
+    for (int i = 0; i < 3; i++) {
+      c[j][i] = fabs(v[i]) / len;
+      if (c[j][i] > strength[j]) strength[j] = c[j][i];
+    }
+  }
+  for (int i = 1; i < n; i++)
+    for (int j = i; j > 0 && strength[order[j]] > strength[order[j - 1]]; j--) {
+      int x = order[j];
+      order[j] = order[j - 1], order[j - 1] = x;
+    }
+  for (int q = 0; q < n; q++) {
+    int j = order[q], rank[3] = {0, 1, 2};
+    for (int i = 1; i < 3; i++)
+      for (int r = i; r > 0 && c[j][rank[r]] > c[j][rank[r - 1]]; r--) {
+        int x = rank[r];
+        rank[r] = rank[r - 1], rank[r - 1] = x;
+      }
+    for (int i = 0; i < 3; i++)
+      if (!taken[rank[i]]) {
+        taken[rank[i]] = 1;
+        t->axes[rank[i]] = at[3 + j];
+        break;
+      }
   }
 }
 
@@ -75,7 +102,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
         mxDestroyArray(out);
         mxDestroyArray(kinds);
         fail("cncrot:badArgument",
-             "%s, line %d: the block gives a position to a rotary axis the machine (argument 3) does not have, or by a letter two of its axes are nearest "
+             "%s, line %d: the block gives a position to a rotary axis the machine (argument 3) does not have "
              "(A, B, C go to the machine's axis whose direction is nearest X, Y, Z)",
              label(2, "lines"), (int)k + 1);
       }
@@ -89,8 +116,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
       /* The letters a later block leaves out are where the machine's axes now stand (as
          cncrot path takes them). */
       stand(&t, &m, ax);
-      /* The other solution is the first point's; the points after it continue from it. */
-      if (rule == CNCROT_CHOOSE_INVERSE) rule = CNCROT_CHOOSE_CLOSEST;
+      /* The rule picks the first point's solution; the points after it continue from it. */
+      rule = CNCROT_CHOOSE_CLOSEST, ref = 0;
     } else {
       for (int j = 0; j < 3; j++) o[k + n * j] = t.tip[j];
       if (t.orientation == CNCROT_ORIENTATION_DIRECTION)

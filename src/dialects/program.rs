@@ -445,11 +445,10 @@ pub(crate) fn block_of(dialect: Dialect, text: &[u8]) -> Result<&[u8], LineError
 }
 
 /// The positions of `machine`'s rotary axes that a direct mode states: by place, or by
-/// letter, each machine axis taking the position of the letter its direction is nearest
-/// (A for X, B for Y, C for Z: the largest component, the first of equal ones) \[choice:
-/// a machine description carries no axis names\]. A nonzero position for a letter or a
-/// place the machine lacks, or letters on a machine with two axes nearest the same one:
-/// [`Error::BadArgument`].
+/// letter, each machine axis taking the position of its letter ([`axis_letters`]: the
+/// one its direction is nearest, A for X, B for Y, C for Z) \[choice: a machine
+/// description carries no axis names\]. A nonzero position for a letter or a place the
+/// machine lacks: [`Error::BadArgument`].
 pub(crate) fn direct_positions(
     d: &Direct,
     stated: [f64; 3],
@@ -457,15 +456,12 @@ pub(crate) fn direct_positions(
 ) -> Result<[f64; 3], Error> {
     let mut positions = [0.0; 3];
     let mut taken = 0u8;
-    for (k, axis) in machine.axes().iter().enumerate() {
+    let letters = axis_letters(machine);
+    for k in 0..machine.axes().len() {
         let slot = match d.by {
             DirectAxes::Numbered => k,
-            DirectAxes::Letters => axis_letter(axis.direction),
+            DirectAxes::Letters => letters.get(k).copied().unwrap_or(k),
         };
-        // Two axes nearest the same letter: the letter names neither (both took its value).
-        if d.by == DirectAxes::Letters && taken & (1 << slot) != 0 {
-            return Err(Error::BadArgument);
-        }
         if let (Some(p), Some(v)) = (positions.get_mut(k), stated.get(slot)) {
             *p = *v;
         }
@@ -611,6 +607,63 @@ pub fn axis_letter(direction: crate::Vector) -> usize {
     } else {
         2
     }
+}
+
+/// The letters of `machine`'s rotary axes, in the order they were added (0 for `A`, 1 for
+/// `B`, 2 for `C`; entries beyond its axes 0): each axis the letter its direction is nearest
+/// ([`axis_letter`]); where two are nearest the same letter, the axis more nearly along it
+/// keeps it (the first of equals) and the other takes its next nearest letter no axis has
+/// \[choice: a nutating head measured at (0, −1, 1.0001) on a C table is the B axis it is
+/// called, not a second C\].
+///
+/// ```
+/// use cncrot::dialects::program::axis_letters;
+/// use cncrot::kinematics::{Machine, RotaryAxis, Side};
+/// let m = Machine::new([0.0, 0.0, 1.0]).unwrap()
+///     .with_axis(RotaryAxis::new(Side::Work, [0.0, 0.0, 1.0], [0.0; 3])).unwrap()
+///     .with_axis(RotaryAxis::new(Side::Tool, [0.0, -1.0, 1.0001], [0.0; 3])).unwrap();
+/// assert_eq!(axis_letters(&m), [2, 1, 0]); // C, B
+/// ```
+pub fn axis_letters(machine: &Machine) -> [usize; 3] {
+    let axes = machine.axes();
+    let strength = |k: usize| {
+        axes.get(k).map_or(0.0, |a| {
+            a.direction
+                .iter()
+                .fold(0.0f64, |m, x| m.max(crate::math::abs(*x)))
+        })
+    };
+    // The axes most nearly along a coordinate axis choose first (the first of equals).
+    let mut order = [0usize, 1, 2];
+    for i in 1..3 {
+        let mut j = i;
+        while j > 0 && strength(order[j]) > strength(order[j - 1]) {
+            order.swap(j, j - 1);
+            j -= 1;
+        }
+    }
+    let mut letters = [0usize; 3];
+    let mut taken = [false; 3];
+    for &k in &order {
+        let Some(a) = axes.get(k) else {
+            continue;
+        };
+        let c = a.direction.map(crate::math::abs);
+        // The letters by nearness: the largest component first, the first of equals.
+        let mut rank = [0usize, 1, 2];
+        for i in 1..3 {
+            let mut j = i;
+            while j > 0 && c[rank[j]] > c[rank[j - 1]] {
+                rank.swap(j, j - 1);
+                j -= 1;
+            }
+        }
+        if let Some(&l) = rank.iter().find(|&&l| !taken[l]) {
+            letters[k] = l;
+            taken[l] = true;
+        }
+    }
+    letters
 }
 
 /// The axis a block's choice words refer to when they name none (Heidenhain's master axis,

@@ -628,7 +628,18 @@ impl ToolPath {
         rule: Rule,
     ) -> Result<Tcp, Error> {
         let (pose, previous, rule) = self.pose_on(machine, previous, rule)?;
-        machine.tcp_inverse_with(&pose, tool_length, previous, rule)
+        let mut t = machine.tcp_inverse_with(&pose, tool_length, previous, rule)?;
+        if let Orientation::Axes(_) = self.orientation {
+            // The stated positions themselves, not their round trip through the pose (a
+            // `B10.` read back as 10.000000000000002, and drifting further where a caller
+            // writes the positions back into the state's letters).
+            for (x, &p) in t.axes.iter_mut().zip(&previous).skip(3) {
+                if crate::math::abs(*x - p) < 1e-9 {
+                    *x = p;
+                }
+            }
+        }
+        Ok(t)
     }
 
     /// The pose [`ToolPath::machine_axes`] inverts, with the start and the rule it inverts
@@ -1227,10 +1238,11 @@ mod tests {
     }
 
     /// Positions by letter on a machine with two axes nearest the same letter (a head C
-    /// about Z carrying an axis tilted just past 45° toward Z): `C10.` names neither, and is
-    /// refused rather than given to both.
+    /// about Z carrying an axis tilted just past 45° toward Z, as a nutating head measured
+    /// by a probing cycle is): C is the head's C, the tilted axis is B (its next nearest
+    /// letter), so `C10.` turns C alone (it was given to both, then refused).
     #[test]
-    fn a_letter_two_axes_are_nearest_is_refused() {
+    fn a_letter_two_axes_are_nearest_goes_to_the_nearer() {
         use crate::kinematics::{RotaryAxis, Side};
         let m = Machine::new([0.0, 0.0, 1.0])
             .unwrap()
@@ -1242,12 +1254,16 @@ mod tests {
                 [0.0, 0.0, 100.0],
             ))
             .unwrap();
-        let out = run(Dialect::Fanuc, &["G43.4 H1", "G1 X0 Y0 Z0 C10."]);
-        assert_eq!(out[1].1, PathRemark::Point);
-        assert_eq!(
-            out[1].0.machine_axes(&m, 50.0, [0.0; 6], Rule::Closest),
-            Err(Error::BadArgument)
+        assert_eq!(super::super::program::axis_letters(&m), [2, 1, 0]);
+        let out = run(
+            Dialect::Fanuc,
+            &["G43.4 H1", "G1 X0 Y0 Z0 C10.", "G1 X0 Y0 Z0 B20. C10."],
         );
+        assert_eq!(out[1].1, PathRemark::Point);
+        let t = out[1].0.machine_axes(&m, 50.0, [0.0; 6], Rule::Closest);
+        assert_eq!(t.map(|t| [t.axes[3], t.axes[4]]), Ok([10.0, 0.0]));
+        let t = out[2].0.machine_axes(&m, 50.0, [0.0; 6], Rule::Closest);
+        assert_eq!(t.map(|t| [t.axes[3], t.axes[4]]), Ok([10.0, 20.0]));
     }
 
     /// `G2`/`G3` (group 01) stay in force until `G0`/`G1`, a canned cycle (group 09) until

@@ -673,7 +673,8 @@ pub unsafe extern "C" fn cncrot_program_expected(
 /// `current`, and `CNCROT_STATUS_OUT_OF_TRAVEL` where the side it names lies beyond the
 /// travel, as the TNC's "Entered angle not permitted". No tilt active: the positions of the identity frame. A direct mode
 /// (`active` 2 or 3): the positions it states, mapped onto the machine's axes (by place, or
-/// by letter: each axis takes the position of the letter its direction is nearest, A for X,
+/// by letter: each axis takes the position of the letter its direction is nearest (of two
+/// nearest one, the one more nearly along it; the other its next nearest), A for X,
 /// B for Y, C for Z), as stated on an axis with travel limits, the turn nearest `current`
 /// on a modulo axis. Axes the machine lacks are 0 in `axes` (and must be 0 in `current`).
 ///

@@ -224,7 +224,8 @@ pub unsafe extern "C" fn cncrot_tool_path_line(
 /// `point` 1), as `cncrot_machine_tcp_inverse_rule` computes them (`axes`, `previous`,
 /// `tool_length`, `rule` and `reference_axis` as there): for a tool direction the rotary
 /// solution the rule picks; for rotary positions stated by letter, those positions (each
-/// machine axis takes the letter its direction is nearest: A for X, B for Y, C for Z
+/// machine axis takes the letter its direction is nearest: A for X, B for Y, C for Z; of two
+/// axes nearest one letter the one more nearly along it, the other its next nearest letter
 /// \[choice: a description carries no axis names\]; `rule` is then not used); with no
 /// orientation stated, the rotary axes where `previous` has them. The linear axes put the
 /// tip on the point.
