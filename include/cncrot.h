@@ -1899,7 +1899,9 @@ int32_t cncrot_probe_flange(const double *a1,
  *
  * Returns 0, `CNCROT_STATUS_TURNED` (Z' turned to the tool's side), or with nothing
  * written: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_TOO_FEW` (n < 3),
- * `CNCROT_STATUS_COINCIDENT`, `CNCROT_STATUS_COLLINEAR` (the second extent at most 1e-12
+ * `CNCROT_STATUS_COINCIDENT` (all points equal, or the first two closer than 1e-3 of the
+ * largest distance of a point from the first: X' would be the probe's noise),
+ * `CNCROT_STATUS_COLLINEAR` (the second extent at most 1e-12
  * of the first), `CNCROT_STATUS_DEGENERATE` (n > 3 and the two smallest extents differing
  * by at most 1e-12 of the first, e.g. points spread alike in every direction: no plane is
  * best), `CNCROT_STATUS_NOT_FINITE`,

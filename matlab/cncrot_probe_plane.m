@@ -9,7 +9,8 @@
 %   POINTS (three points then give its rotation). turned: true when Z' was turned from the
 %   side the points' order gave. flatness: the largest minus the smallest distance from the
 %   plane; rms: the root mean square distance.
-%   Errors: cncrot:tooFew, cncrot:coincident, cncrot:collinear, cncrot:degenerate, ...
+%   Errors: cncrot:tooFew, cncrot:coincident (also the first two points closer than 1e-3 of
+%   the points' spread: X' would be the probe's noise), cncrot:collinear, cncrot:degenerate, ...
 %
 %   Example:
 %     [F, flat, rms] = cncrot_probe_plane([0 0 5.01; 100 100 5.01; 0 100 4.99; 100 0 4.99])   % 0.02 0.01

@@ -121,7 +121,8 @@ pub struct Plane {
 /// at most (the rounding of its coordinates tilts it as much). Time linear in the number of
 /// points. Three points give exactly `PLANE POINTS`'s rotation (its own construction: the
 /// plane through three points is exact). Refused: [`Error::TooFew`] (fewer than 3),
-/// [`Error::NotFinite`], [`Error::Coincident`] (all points equal), [`Error::Collinear`]
+/// [`Error::NotFinite`], [`Error::Coincident`] (all points equal, or the first two closer
+/// than [`X_SPACING`] times the points' spread: X' undefined), [`Error::Collinear`]
 /// (all on one line: the second extent, the second singular value, at most [`MIN_SINE`]
 /// times the first), [`Error::Degenerate`] (four or more points whose two smallest extents
 /// differ by at most [`MIN_SINE`] times the largest, e.g. spread equally in every direction:
@@ -143,6 +144,8 @@ pub fn plane(points: &[Vector]) -> Result<Plane, Error> {
     finite(points)?;
     let p1 = points[0];
     let e = extents(points)?;
+    // The first two points apart (else "coincide", not "collinear").
+    x_defined(points)?;
     determined(e.sigma, points.len())?;
     let rotation = if points.len() == 3 {
         // PLANE POINTS refuses a sine at P1 of at most MIN_SINE; for three nearly collinear
@@ -207,6 +210,38 @@ pub fn plane(points: &[Vector]) -> Result<Plane, Error> {
         Ok(out)
     } else {
         Err(Error::OutOfRange)
+    }
+}
+
+/// The share of the points' spread below which the first two points' distance defines no
+/// X' \[choice: a point probed twice, or 2 µm apart on a part of 100 mm,
+/// gave an X' of the probe's noise, turned by any angle\].
+pub const X_SPACING: f64 = 1e-3;
+
+/// Refuses ([`Error::Coincident`]) points whose first two lie closer than [`X_SPACING`]
+/// times the largest distance of a point from the first: X' runs from the first to the
+/// second.
+fn x_defined(points: &[Vector]) -> Result<(), Error> {
+    // Scaled by the largest coordinate, so that no difference overflows.
+    let scale = points
+        .iter()
+        .flatten()
+        .fold(0.0f64, |m, x| m.max(crate::math::abs(*x)));
+    let from =
+        |p: &Vector| -> Vector { core::array::from_fn(|i| p[i] / scale - points[0][i] / scale) };
+    let along = from(&points[1]);
+    let far = points
+        .iter()
+        .map(|p| {
+            let q = from(p);
+            dot(q, q)
+        })
+        .fold(0.0f64, f64::max);
+    // Written so that NaN refuses.
+    if dot(along, along) > X_SPACING * X_SPACING * far {
+        Ok(())
+    } else {
+        Err(Error::Coincident)
     }
 }
 
@@ -737,6 +772,37 @@ mod tests {
         assert!(histogram[3] > 10_000, "{histogram:?}");
     }
 
+    /// X' runs from the first point to the second: closer than [`X_SPACING`] of the
+    /// points' spread (a point probed twice, 2 µm apart on a part of 141 mm) they define
+    /// none, and are refused as coinciding; at 0.2 mm the plane is measured.
+    #[test]
+    fn plane_needs_its_first_two_points_apart() {
+        let rest = [
+            [100.0, 0.0, -10.0],
+            [0.0, 100.0, 0.0],
+            [100.0, 100.0, -10.0],
+        ];
+        let with = |p2: Vector| {
+            let mut v = vec![[0.0; 3], p2];
+            v.extend(rest);
+            plane(&v)
+        };
+        assert_eq!(with([0.0, 0.0, 0.002]).err(), Some(Error::Coincident));
+        assert_eq!(with([0.001, 0.001, 0.0]).err(), Some(Error::Coincident));
+        assert_eq!(with([0.0; 3]).err(), Some(Error::Coincident));
+        let p = with([0.2, 0.0, -0.02]).unwrap();
+        // X' along (1, 0, -0.1) made perpendicular to the fit's normal: in the XZ plane.
+        assert!(
+            p.frame.rotation[1][0].abs() < 1e-9,
+            "{:?}",
+            p.frame.rotation
+        );
+        assert_eq!(
+            plane(&[[0.0; 3], [0.0, 0.0, 1e-4], [100.0, 0.0, 0.0]]).err(),
+            Some(Error::Coincident)
+        );
+    }
+
     #[test]
     fn plane_refusals() {
         let o = [1.0, 2.0, 3.0];
@@ -886,12 +952,13 @@ mod tests {
     /// side of the degenerate threshold, c = 1e-12.
     #[test]
     fn plane_at_min_sine() {
+        // X' from the first point to the second: those two far apart.
         let pairs = |b: f64| {
             [
+                [-1.0, 0.0, 0.0],
+                [1.0, 0.0, 0.0],
                 [0.0, b, 0.0],
                 [0.0, -b, 0.0],
-                [1.0, 0.0, 0.0],
-                [-1.0, 0.0, 0.0],
             ]
         };
         let at = pairs(MIN_SINE);

@@ -450,8 +450,9 @@ fn points_of_file(source: &str) -> Result<Vec<Vector>, Vec<(usize, Failure)>> {
         }
         match input::exactly::<3>(line, "a point") {
             Ok(p) => points.push(p),
-            Err(_)
-                if first && !t.starts_with(|c: char| c.is_ascii_digit() || "+-.".contains(c)) => {}
+            // Column names hold no number ("x y z"): a first line with digits is a point or
+            // an error (`P1 0 0 0`, a labelled point, was skipped as a header in silence).
+            Err(_) if first && !t.bytes().any(|b| b.is_ascii_digit()) => {}
             Err(f) => errors.push((i + 1, f)),
         }
         first = false;
@@ -522,6 +523,14 @@ pub fn probe(
     };
     let (plane, turned) = match probe::plane_toward(&points, toward) {
         Ok(p) => p,
+        Err(cncrot::Error::Coincident) => {
+            eprintln!(
+                "cncrot: {} points: the first two points coincide, or lie closer than {} of the points' spread: X' runs from the first to the second; probe the second farther along the face's X",
+                points.len(),
+                probe::X_SPACING
+            );
+            return Ok(false);
+        }
         Err(e) => {
             eprintln!("cncrot: {} points: {}", points.len(), e.message());
             return Ok(false);

@@ -995,6 +995,44 @@ fn convert_at_gimbal_lock_writes_one_solution() {
     assert!(out.contains("second solution"), "{out}");
 }
 
+/// `probe` (a helper's finds): the first point probed twice, 2 µm apart, gave an X' of the
+/// probe's noise (SPC -180): refused as coinciding; a labelled first point in a file
+/// (`P1 0 0 0`) is an error, not a header skipped in silence.
+#[test]
+fn probe_refuses_an_undefined_x_and_labelled_points() {
+    let r = cncrot(
+        &[
+            "probe",
+            "0,0,0",
+            "0,0,0.002",
+            "100,0,-10",
+            "0,100,0",
+            "100,100,-10",
+        ],
+        "",
+    );
+    assert_eq!(r.code, 1, "{}", r.stdout);
+    assert!(
+        r.stderr.contains("first two points coincide"),
+        "{}",
+        r.stderr
+    );
+    let r = cncrot(&["probe", "0,0,0", "1,0,-0.1", "100,0,-10", "0,100,0"], "");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let r = cncrot(
+        &["probe", "--points", "-"],
+        "P1 0 0 0\n100 0 -10\n100 50 -10\n0 50 0\n",
+    );
+    assert_eq!(r.code, 1, "{}", r.stdout);
+    assert!(r.stderr.contains("line 1"), "{}", r.stderr);
+    let r = cncrot(
+        &["probe", "--points", "-"],
+        "x y z\n0 0 0\n100 0 -10\n100 50 -10\n0 50 0\n",
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(r.stdout.contains("points: 4"), "{}", r.stdout);
+}
+
 /// `probe`: the same corners probed clockwise give the plane the right way up (Z' toward
 /// the machine's +Z) and say it was turned; `--order` keeps the points' order (PLANE
 /// POINTS's rule: upside down here); `--toward` takes another side. The JSON agrees with
