@@ -1,7 +1,8 @@
 % CNCROT_MATRIX  Rotation matrices from angles (degrees).
 %   R = cncrot_matrix(intrinsic, sequence, angles)
-%   intrinsic: 'intrinsic' (or 1) about the rotated workpiece axes, R = R_a1*R_a2*R_a3;
-%   'extrinsic' (or 0) about the fixed machine axes, R = R_a3*R_a2*R_a1.
+%   intrinsic: 'intrinsic' (or 'i', or 1) about the rotated workpiece axes,
+%   R = R_a1*R_a2*R_a3; 'extrinsic' (or 'e', or 0) about the fixed machine axes,
+%   R = R_a3*R_a2*R_a1.
 %   sequence: the axes in rotation order, 'XYZ', 'ZXY', "ZX'Y''" (primes are ignored), with
 %   '0' for a skipped rotation ('X0Z'); or the code a1 + 4*a2 + 16*a3 with X=1, Y=2, Z=3,
 %   none=0 (57 = 'XYZ', 39 = 'ZXY', 49 = 'X0Z'). Names are case-insensitive, char or string;

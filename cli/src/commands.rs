@@ -487,6 +487,11 @@ pub fn probe(
         }
         (Some(source), true) => match points_of_file(source) {
             Ok(p) => p,
+            // The file not read at all (missing, a directory, UTF-16): exit status 2, as
+            // for every command.
+            Err(mut errors) if errors.len() == 1 && errors[0].0 == 0 => {
+                return Err(errors.remove(0).1);
+            }
             Err(errors) => {
                 for (line, f) in errors {
                     let column = f

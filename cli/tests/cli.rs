@@ -1031,6 +1031,9 @@ fn probe_refuses_an_undefined_x_and_labelled_points() {
     );
     assert_eq!(r.code, 0, "{}", r.stderr);
     assert!(r.stdout.contains("points: 4"), "{}", r.stdout);
+    // A file not read at all: exit status 2, as for every command.
+    let r = cncrot(&["probe", "--points", "/nonexistent/points.csv"], "");
+    assert_eq!(r.code, 2, "{}", r.stderr);
 }
 
 /// `probe`: the same corners probed clockwise give the plane the right way up (Z' toward

@@ -362,8 +362,9 @@ static int keyword(const uint32_t *u, size_t n, char *out, size_t cap) {
 
 #define TEXT_CAP 64
 
-/* The convention flag: 'intrinsic' (1, about the rotated axes) or 'extrinsic' (0, about
- * the fixed axes), case-insensitive, as char or string; or 1, 0, true, false of any class. */
+/* The convention flag: 'intrinsic' or 'i' (1, about the rotated axes) or 'extrinsic' or
+ * 'e' (0, about the fixed axes), case-insensitive, as char or string; or 1, 0, true, false
+ * of any class. */
 static int32_t convention_arg(const mxArray *a, int pos, const char *name) {
   static const char *expect = "'intrinsic', 'extrinsic', 1 or 0";
   size_t n = 0;
@@ -373,8 +374,9 @@ static int32_t convention_arg(const mxArray *a, int pos, const char *name) {
     size_t count = code_points(c, n, u, TEXT_CAP);
     char word[16];
     if (keyword(u, count, word, sizeof word)) {
-      if (strcmp(word, "intrinsic") == 0) return 1;
-      if (strcmp(word, "extrinsic") == 0) return 0;
+      /* 'i' and 'e' as the command line takes them (intrinsic:ZXY, e:XYZ). */
+      if (strcmp(word, "intrinsic") == 0 || strcmp(word, "i") == 0) return 1;
+      if (strcmp(word, "extrinsic") == 0 || strcmp(word, "e") == 0) return 0;
     }
     fail("cncrot:badFlag", "%s must be %s; got %s", label(pos, name), expect, quoted(u, count, count < TEXT_CAP ? count : TEXT_CAP));
   }

@@ -649,6 +649,9 @@ function test_cncrot(cases_file)
   low = cncrot_machine_tcp_inverse(ac, [10 0 0 0.5 0 sqrt(3)/2], 50, [0 0 0 20 80 0], 'minus', 1);
   check(abs(low(4) + 30) < 1e-12 && abs(low(5) + 90) < 1e-12, 'tcp: A the priority axis, its lower position');
   expect_error('cncrot:badArgument', @() cncrot_machine_tcp_inverse(ac, [10 0 0 0.5 0 sqrt(3)/2], 50, zeros(1, 6), 'minus', 3), 'tcp: ref beyond the axes');
+  % 'e' and 'i' as the command line takes them.
+  check(isequal(cncrot_convert('e', 'XYZ', [30 45 60], 'i', 'ZXY'), cncrot_convert('extrinsic', 'XYZ', [30 45 60], 'intrinsic', 'ZXY')), ...
+        'convert: e and i abbreviations');
   Pc = cncrot_cl_pose([10 20 5 0 0 2; 1 2 3 -3 0 0]);
   check(isequal(Pc(:, :, 1), [eye(3) [10; 20; 5]; 0 0 0 1]) && isequal(Pc(1:3, 3, 2), [-1; 0; 0]) && isequal(Pc(1:3, 1, 2), [0; 1; 0]), ...
         'cl_pose: along Z, and along -X (X'' from Y)');
