@@ -690,8 +690,8 @@ static void five_axis_programs(void) {
   CHECK_STATUS(cncrot_tool_path_line(&t, CNCROT_DIALECT_FANUC, "X10.", 4), CNCROT_STATUS_NOT_FOLLOWED);
   CHECK_STATUS(cncrot_tool_path_line(&t, CNCROT_DIALECT_FANUC, "G90", 3), CNCROT_STATUS_OK);
   CHECK(t.flags == 32, "G90: flags %d", t.flags);
-  /* X, Y and Z known (flags bits 12 to 14): stated absolutely since the tip was lost. */
-  const int KNOWN = 7 << 12;
+  /* X, Y and Z known (flags bits 14 to 16): stated absolutely since the tip was lost. */
+  const int KNOWN = 7 << 14;
   /* An arc's mode is modal until G1, a canned cycle's until G80: the blocks in them are
      not followed (an arc's I J K are its centre, not the tool); an arc's end point is
      taken, a hole's loses the tip. */
@@ -714,7 +714,7 @@ static void five_axis_programs(void) {
   CHECK_STATUS(cncrot_tool_path_line(&t, CNCROT_DIALECT_FANUC, "G80", 3), CNCROT_STATUS_OK);
   CHECK(t.flags == 32 && t.point == 0, "G80: flags %d", t.flags);
   cncrot_tool_path bad = t;
-  bad.flags = 1 << 15;
+  bad.flags = 1 << 17;
   CHECK_STATUS(cncrot_tool_path_line(&bad, CNCROT_DIALECT_FANUC, "X1", 2), CNCROT_STATUS_BAD_STATE);
   bad = t;
   bad.direction[0] = 2;

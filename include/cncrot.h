@@ -913,20 +913,21 @@ typedef struct cncrot_tool_path {
    * mode (`G2`/`G3`, SINUMERIK `CIP`, `CT`, splines; until `G0`/`G1`); bit 4: an ISO
    * canned cycle's mode (`G73`…`G89`; until `G80` or `G0`…`G3`); bit 5: the tip lost (a
    * move not followed: until a block states `X Y Z` all three absolute, motion blocks are
-   * not followed); bits 6 to 9, while any is set motion blocks are not followed: 6 a tilt
+   * not followed); bits 6 to 11, while any is set motion blocks are not followed: 6 a tilt
    * or frame active (`G68.2`, `PLANE`, `CYCLE800`, `ROT`, `TRANS`, a frame variable; until
-   * its cancel), 7 a datum shift active (`G52`, `CYCL DEF 7`, `TRANS DATUM`; until its
-   * cancel), 8 cutter radius compensation on (`G41`/`G42` and their 3-D forms, `RL`/`RR`;
-   * until `G40`/`R0`), 9 a change of the coordinates or of the angles' meaning not
-   * computed (ISO `G68`, `G51`, `G51.1`, `G92`; SINUMERIK `SCALE`, `MIRROR`, `ORIVIRT1/2`,
-   * `TRAORI` with a base orientation; Heidenhain's mirror, rotation and scaling cycles,
-   * `REFPNT` other than the tip; until ISO `G69`, `G50`, `G50.1`, `G92.1`); bit 10: inch
-   * coordinates (`G20`, `G70`, `G700`, `INCH`: `X Y Z` taken times 25.4, `tip` in mm);
-   * bit 11: the orientation lost (a block not followed stated one, or `ORIRESET`: until
-   * a block states one, motion blocks are not followed); bits 12, 13, 14: `X`, `Y`, `Z`
-   * known (stated absolutely since the start, or since the tip was lost: a zeroed state
-   * knows none, and a motion block with the transformation on is a point only when all
-   * three are).
+   * its cancel), 7, 8, 9 a datum shift active in X, Y, Z (`G52`, `CYCL DEF 7`, `TRANS
+   * DATUM`; until its cancel in that axis), 10 cutter radius compensation on (`G41`/`G42`
+   * and their 3-D forms, `RL`/`RR`; until `G40`/`R0`), 11 a change of the coordinates or
+   * of the angles' meaning not computed (ISO `G51`, `G51.1`, `G92`; SINUMERIK `SCALE`,
+   * `MIRROR`, `TOFRAME`, `ORIVIRT1/2`, `ORIRPY2`, `TRAORI` with a base orientation;
+   * Heidenhain's mirror, rotation and scaling cycles, `REFPNT` other than the tip; until
+   * ISO `G69`, `G50`, `G50.1`, `G92.1`, Heidenhain's `ROT+0`, `SCL1`); bit 12: inch
+   * coordinates (`G20`, `G70`, `G700`, `INCH`: `X Y Z` taken times 25.4, `tip` in mm); bit
+   * 13: the orientation lost (a block not followed stated a direction or angles, or
+   * `ORIRESET`: until a block states one, motion blocks are not followed); bits 14, 15,
+   * 16: `X`, `Y`, `Z` known (stated absolutely since the start, the tip lost, a work
+   * offset selected or the transformation switched: a zeroed state knows none, and a
+   * motion block with the transformation on is a point only when all three are).
    */
   int32_t flags;
   /**
@@ -2660,11 +2661,12 @@ int32_t cncrot_rotate_vector_inverse(const double *matrix, const double *vector,
  * move the reader does not follow: an arc, a block in an arc's or a canned cycle's mode,
  * a reference or machine-coordinate move, a value that is not a number, the start-up move
  * of `G43.4`/`G43.5`/`G234`, a call, a move while the tip or the orientation is lost or in
- * a frame, shift, compensation or change marked by `flags` bits 6 to 9, a frame command —
+ * a frame, shift, compensation or change marked by `flags` bits 6 to 11, a frame command —
  * tilt, shift or cancel — whose words are no move: `tip`, `orientation`, `direction` and
- * `axes` as they were, the modes the block sets taken — `on`, `flags` bits 0 to 4 and 6
- * to 10 — and `flags` bits 5 and 11 set where the block moved the machine or stated an
- * orientation, bits 12 to 14 then cleared, `point` 0; a motion block after which a
+ * `axes` as they were (rotary positions stated by letter taken), the modes the block sets
+ * taken — `on`, `flags` bits 0 to 4 and 6 to 12 — and `flags` bits 5 and 13 set where the
+ * block moved the machine or stated a direction, bits 14 to 16 then cleared, `point` 0; a
+ * motion block after which a
  * coordinate is still not known takes its words — absolute coordinates, the orientation —
  * without a point); or with
  * `*path` untouched: `CNCROT_STATUS_NULL_POINTER`, `CNCROT_STATUS_BAD_STATE` (a state the

@@ -1354,7 +1354,7 @@ fn moved_to(
     let mut from = cncrot::dialects::toolpath::ToolPath {
         lost: false,
         framed: false,
-        shifted: false,
+        shifted: [false; 3],
         compensated: false,
         altered: false,
         disoriented: false,

@@ -114,7 +114,12 @@ fn tcp(m: &cncrot_machine, n: usize, pos: &[f64; 3], current: &[f64; 3], t: &[u8
     // own rotation (no turn, no turn about the tool).
     let mut carried = [7.0; 16];
     let c = unsafe {
-        cncrot_cl_pose_toward(tip.as_ptr(), free.as_ptr(), pose.as_ptr(), carried.as_mut_ptr())
+        cncrot_cl_pose_toward(
+            tip.as_ptr(),
+            free.as_ptr(),
+            pose.as_ptr(),
+            carried.as_mut_ptr(),
+        )
     };
     if c < 0 {
         assert_eq!(carried, [7.0; 16]);
@@ -131,7 +136,12 @@ fn tcp(m: &cncrot_machine, n: usize, pos: &[f64; 3], current: &[f64; 3], t: &[u8
     }
     let own = [pose[2], pose[6], pose[10]];
     let c = unsafe {
-        cncrot_cl_pose_toward(tip.as_ptr(), own.as_ptr(), pose.as_ptr(), carried.as_mut_ptr())
+        cncrot_cl_pose_toward(
+            tip.as_ptr(),
+            own.as_ptr(),
+            pose.as_ptr(),
+            carried.as_mut_ptr(),
+        )
     };
     assert_eq!(c, 0);
     for (a, b) in carried.iter().zip(&pose) {

@@ -319,18 +319,24 @@ fn tool_path(path: &mut cncrot_tool_path, dialect: i32, line: &[u8]) {
     input::assert_known(s);
     if s == cncrot_status::NotFollowed as i32 && as_bytes(path) != as_bytes(&before) {
         // Only the modes the block sets (`on`, flags), whether it lost the tip (bit 5), and
-        // an arc's end point (in an arc's mode, bit 3); a block after which a coordinate
-        // is still not known (bits 12 to 14) takes its words, without a point.
+        // an arc's end point (in an arc's mode, bit 3), the rotary positions it states; a
+        // block after which a coordinate is still not known (bits 14 to 16) takes its words,
+        // without a point.
         let mut moded = before;
         (moded.on, moded.flags, moded.point) = (path.on, path.flags, 0);
         if path.flags & 8 != 0 {
             moded.tip = path.tip;
         }
-        if path.flags & (7 << 12) == 7 << 12 {
+        if path.orientation == CNCROT_ORIENTATION_AXES {
+            moded.orientation = path.orientation;
+            moded.direction = path.direction;
+            moded.axes = path.axes;
+        }
+        if path.flags & (7 << 14) == 7 << 14 {
             assert_eq!(as_bytes(path), as_bytes(&moded), "a block not followed");
         }
         assert_eq!(path.point, 0);
-        assert!((0..1 << 15).contains(&path.flags) && (0..=1).contains(&path.on));
+        assert!((0..1 << 17).contains(&path.flags) && (0..=1).contains(&path.on));
         assert!(path.tip.iter().all(|x| x.is_finite()));
         return;
     }
@@ -347,7 +353,11 @@ fn tool_path(path: &mut cncrot_tool_path, dialect: i32, line: &[u8]) {
     // or the orientation is lost (bits 5, 11), nor in a frame, a shift, a compensation or
     // another change it does not compute (bits 6 to 9).
     if path.point == 1 {
-        assert_eq!(path.flags & (32 | 64 | 128 | 256 | 512 | 2048), 0, "{path:?}");
+        assert_eq!(
+            path.flags & (32 | 64 | 128 | 256 | 512 | 2048),
+            0,
+            "{path:?}"
+        );
     }
     if path.orientation == CNCROT_ORIENTATION_DIRECTION {
         let d = path.direction;

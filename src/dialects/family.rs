@@ -718,6 +718,9 @@ pub(crate) struct PathWords {
     pub(crate) altering: &'static [PathCommand],
     /// See `altering`.
     pub(crate) unaltering: &'static [PathCommand],
+    /// Work-offset selections the ISO and SINUMERIK `G` codes do not cover (Heidenhain's
+    /// datum setting cycle): the coordinates after one are another frame's.
+    pub(crate) offsets: &'static [PathCommand],
     /// Inch coordinates, millimetres.
     pub(crate) inch: &'static [PathCommand],
     /// See `inch`.
@@ -839,6 +842,7 @@ pub(crate) const fn iso_path(on: &'static [PathCommand], vector: [&'static [u8];
             Code(b'G', 501),
             Code(b'G', 921),
         ],
+        offsets: &[],
         inch: &[Code(b'G', 200)],
         metric: &[Code(b'G', 210)],
     }

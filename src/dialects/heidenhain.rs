@@ -837,6 +837,9 @@ pub(crate) const HEIDENHAIN_PATH: super::family::PathWords = {
             Code(b'M', 890),
             Phrase(&[b"CALL", b"PGM"]),
             Phrase(&[b"CALL", b"LBL"]),
+            Phrase(&[b"CALL", b"SELECTED"]),
+            Code(b'M', 20),
+            Code(b'M', 300),
             Code(b'M', 1400),
             Phrase(&[b"TCH", b"PROBE"]),
             Phrase(&[b"END", b"PGM"]),
@@ -854,6 +857,7 @@ pub(crate) const HEIDENHAIN_PATH: super::family::PathWords = {
             Phrase(&[b"REFPNT", b"TIP-CENTER"]),
         ],
         unaltering: &[],
+        offsets: &[Phrase(&[b"CYCL", b"DEF", b"DATUM", b"SETTING"])],
         inch: &[Name(b"INCH")],
         metric: &[Name(b"MM")],
     }

@@ -71,8 +71,8 @@ pub struct ToolPath {
     pub canned: bool,
     /// The tip is no longer known: a move was not followed (an arc, a reference-point
     /// return, a start-up move, a cycle or subprogram call), and the control's position is
-    /// not `tip`. Until a block states `X Y Z` all three absolute, motion blocks are not
-    /// followed.
+    /// not `tip`: `known` is cleared, and until `X Y Z` are each stated absolutely again,
+    /// motion blocks are not followed.
     pub lost: bool,
     /// `X`, `Y`, `Z` each stated absolutely since the program's start (or since the tip was
     /// lost): a motion block with the transformation on is a point only when all three are
@@ -83,9 +83,10 @@ pub struct ToolPath {
     /// coordinates are read in a frame this reader does not compose yet, so motion blocks
     /// are not followed until a cancel of it (`G69`, `PLANE RESET`, `CYCLE800()`, `TRANS`).
     pub framed: bool,
-    /// A datum shift is active (`G52`, `CYCL DEF 7`, `TRANS DATUM`): as `framed`, until
-    /// the shift is cancelled (`G52 X0 Y0 Z0`, `TRANS DATUM RESET`).
-    pub shifted: bool,
+    /// A datum shift is active in `X`, `Y`, `Z` (`G52`, `CYCL DEF 7`, `TRANS DATUM`): as
+    /// `framed`, until the shift is cancelled in each (`G52 X0 Y0 Z0`, `TRANS DATUM
+    /// RESET`; `G52 X0 Y0` keeps a shift in Z).
+    pub shifted: [bool; 3],
     /// Cutter radius compensation is on (`G41`/`G42` and their three-dimensional forms,
     /// Heidenhain `RL`/`RR`): the control offsets the tool from the programmed point by a
     /// radius this reader does not know; motion blocks are not followed until `G40` / `R0`.
@@ -168,6 +169,15 @@ impl<'a> Iterator for Words<'a> {
             }
             if b == b'(' || b == b'"' {
                 self.pos = past_closing(self.text, self.pos);
+                continue;
+            }
+            // An index (`FGREF[C]=100`, `$AA_IM[Z]`) names an axis, moves none.
+            if b == b'[' {
+                let rest = self.text.get(self.pos..).unwrap_or(&[]);
+                self.pos += rest
+                    .iter()
+                    .position(|&c| c == b']')
+                    .map_or(rest.len(), |k| k + 1);
                 continue;
             }
             if !b.is_ascii_alphabetic() && b != b'_' {
@@ -360,24 +370,24 @@ fn frame_block(dialect: Dialect, text: &[u8]) -> FrameBlock {
     use super::program::{Program, Remark};
     let both = Kinds {
         tilt: true,
-        shift: true,
+        shift: [true; 3],
     };
     match Program::default().line(dialect, text) {
         Ok((next, Remark::Applied)) if next.is_active() => {
-            let shift = next.shift != [0.0; 3];
+            let shift = next.shift.map(|x| x != 0.0);
             // A rotation, a direct mode, or an origin beyond the shift (a tilt's, or
             // SINUMERIK's `TRANS`, which is its one frame).
             let tilt = next.frame.rotation != crate::IDENTITY
                 || next.direct.is_some()
                 || next.frame.translation != next.shift;
             FrameBlock::Tilt(Kinds {
-                tilt: tilt || !shift,
+                tilt: tilt || shift == [false; 3],
                 shift,
             })
         }
         // A cancel, or a frame command whose words leave nothing active (`G158 P10157` of
         // zeros, `G269 X0 Y0 Z0`): its coordinates are the command's, not a move.
-        Ok((_, Remark::Applied)) => FrameBlock::Cancel(cancels(dialect, text)),
+        Ok((_, Remark::Applied)) => FrameBlock::Cancel,
         // A SINUMERIK frame variable written (`$P_PFRAME=CROT(Z,90)`, `$P_UIFR[1]=…`).
         Ok((_, Remark::NotFollowed)) if text.windows(3).any(|w| w.eq_ignore_ascii_case(b"$P_")) => {
             FrameBlock::Tilt(both)
@@ -390,11 +400,12 @@ fn frame_block(dialect: Dialect, text: &[u8]) -> FrameBlock {
 }
 
 /// What a block that leaves nothing active cancels, as the tilted-plane reader reads it
-/// after a tilt (`G69` ends a tilt, not a `G52` shift) and after a datum shift (`G52 X0 Y0
-/// Z0` ends the shift, not the tilt); SINUMERIK's `TRANS`, `ROT` end its one frame. Not
-/// inlined: its two states are not on the stack of the block's words (stack bound).
+/// after a tilt (`G69` ends a tilt, not a `G52` shift) and after the datum shift in the
+/// axes `shifted` (`G52 X0 Y0 Z0` ends the shift, not the tilt; `G52 X0 Y0` its X and Y);
+/// SINUMERIK's `TRANS`, `ROT` end its one frame. Not inlined: its two states are not on the
+/// stack of the block's words (stack bound).
 #[inline(never)]
-fn cancels(dialect: Dialect, text: &[u8]) -> Kinds {
+fn cancels(dialect: Dialect, text: &[u8], shifted: [bool; 3]) -> Kinds {
     use super::program::Program;
     let tilted = Program {
         frame: Frame {
@@ -408,17 +419,18 @@ fn cancels(dialect: Dialect, text: &[u8]) -> Kinds {
         n.frame.rotation == crate::IDENTITY && n.direct.is_none() && n.frame.translation == n.shift
     });
     let shifted = Program {
+        // In the axes shifted: `G52 X0 Y0` ends the shift in X and Y, not in Z.
         frame: Frame {
             rotation: crate::IDENTITY,
-            translation: [1.0, 0.0, 0.0],
+            translation: shifted.map(f64::from),
         },
-        shift: [1.0, 0.0, 0.0],
+        shift: shifted.map(f64::from),
         dialect: Some(dialect),
         ..Program::default()
     };
     let shift = shifted
         .line(dialect, text)
-        .is_ok_and(|(n, _)| n.shift == [0.0; 3]);
+        .map_or([false; 3], |(n, _)| n.shift.map(|x| x == 0.0));
     Kinds { tilt, shift }
 }
 
@@ -473,17 +485,19 @@ fn altering_text(text: &[u8]) -> bool {
 enum FrameBlock {
     /// A tilt or shift (which of them it makes active), or a frame command refused (both).
     Tilt(Kinds),
-    /// A frame command that leaves nothing active (which of them it ends).
-    Cancel(Kinds),
+    /// A frame command that leaves nothing active (what it ends depends on what is
+    /// active: [`cancels`]).
+    Cancel,
     /// No frame command.
     None,
 }
 
-/// A tilt (a rotation, a tilt's origin, SINUMERIK's frame), a datum shift.
+/// A tilt (a rotation, a tilt's origin, SINUMERIK's frame), a datum shift in `X`, `Y`,
+/// `Z`.
 #[derive(Clone, Copy, PartialEq, Eq)]
 struct Kinds {
     tilt: bool,
-    shift: bool,
+    shift: [bool; 3],
 }
 
 impl ToolPath {
@@ -500,6 +514,11 @@ impl ToolPath {
                 expected: None,
             });
         };
+        if dialect == Dialect::Heidenhain {
+            if let Some(read) = self.heidenhain_header(text) {
+                return Ok(read);
+            }
+        }
         // A block that tilts or shifts the frame: the coordinates after it are read in a
         // frame this reader does not follow.
         match frame_block(dialect, text) {
@@ -507,16 +526,50 @@ impl ToolPath {
             FrameBlock::Tilt(k) => {
                 let next = ToolPath {
                     framed: self.framed || k.tilt,
-                    shifted: self.shifted || k.shift,
+                    shifted: core::array::from_fn(|i| self.shifted[i] || k.shift[i]),
                     lost: true,
                     known: [false; 3],
                     ..*self
                 };
                 Ok((next, PathRemark::NotFollowed))
             }
-            FrameBlock::Cancel(k) => self.cancel(pw, dialect, text, k),
+            FrameBlock::Cancel => self.cancel(pw, dialect, text),
             FrameBlock::None => self.read(pw, dialect, text),
         }
+    }
+
+    /// Heidenhain's structure comments (`* - TOOL 1/4 INCH BALL`: no word of them is a
+    /// command) and program heads (`BEGIN PGM C MM`: the unit, the program's name no
+    /// word): what they do, or `None` for another block.
+    #[inline(never)]
+    fn heidenhain_header(&self, text: &[u8]) -> Option<(ToolPath, PathRemark)> {
+        let t = text.trim_ascii_start();
+        let t = t
+            .get(t.iter().take_while(|c| c.is_ascii_digit()).count()..)
+            .unwrap_or(&[])
+            .trim_ascii_start();
+        if t.first() == Some(&b'*') {
+            return Some((*self, PathRemark::Passed));
+        }
+        let head = t
+            .get(..9)
+            .is_some_and(|h| h.eq_ignore_ascii_case(b"BEGIN PGM"));
+        if !head {
+            return None;
+        }
+        let last = t
+            .trim_ascii_end()
+            .rsplit(|c| *c == b' ')
+            .next()
+            .unwrap_or(&[]);
+        let inch = last.eq_ignore_ascii_case(b"INCH");
+        let next = ToolPath { inch, ..*self };
+        let remark = if next == *self {
+            PathRemark::Passed
+        } else {
+            PathRemark::Applied
+        };
+        Some((next, remark))
     }
 
     /// [`ToolPath::line`] for a frame command that leaves nothing active: its modes taken,
@@ -528,10 +581,11 @@ impl ToolPath {
         pw: &PathWords,
         dialect: Dialect,
         text: &[u8],
-        ends: Kinds,
     ) -> Result<(ToolPath, PathRemark), LineError> {
+        let ends = cancels(dialect, text, self.shifted);
         let (mut next, mut remark) = self.read(pw, dialect, text)?;
-        let (framed, shifted) = (self.framed && !ends.tilt, self.shifted && !ends.shift);
+        let framed = self.framed && !ends.tilt;
+        let shifted: [bool; 3] = core::array::from_fn(|i| self.shifted[i] && !ends.shift[i]);
         // The coordinates after an end of a frame are read without it: the tip in them
         // is not known.
         let ended = (framed, shifted) != (self.framed, self.shifted);
@@ -727,13 +781,35 @@ impl ToolPath {
             } else if hit(pw.compensation_off) {
                 next.compensated = false;
             }
-            if hit(pw.altering) {
+            // SINUMERIK's other angle definitions (`ORIVIRT1`, `ORIVIRT2`, `ORIRPY2`: the
+            // name and a number, as the words split).
+            let angles_defined = (same(w.name, b"ORIVIRT") && !w.value.is_empty())
+                || (same(w.name, b"ORIRPY") && w.value == b"2");
+            // Heidenhain's rotation and scaling cycles ended (`CYCL DEF 10.1 ROT+0`,
+            // `CYCL DEF 11.1 SCL1`).
+            let ended = pw.i_prefix
+                && ((same(w.name, b"ROT") && number(&w) == Some(0.0))
+                    || (same(w.name, b"SCL") && number(&w) == Some(1.0)));
+            if hit(pw.altering) || angles_defined {
                 // SINUMERIK's `SCALE` or `MIRROR` alone ends them (and the whole frame).
                 let alone = it.clone().next().is_none()
                     && (same(w.name, b"SCALE") || same(w.name, b"MIRROR"));
                 next.altered = !alone;
-            } else if hit(pw.unaltering) {
+            } else if hit(pw.unaltering) || ended {
                 next.altered = false;
+            }
+            // Another work offset: the coordinates after it are another frame's (the
+            // block's own, stated, are known again).
+            let g = same(w.name, b"G").then(|| code_of(w.value)).flatten();
+            let offset = g.is_some_and(|c| {
+                if pw.iso {
+                    (540..=590).contains(&c) && c % 10 == 0 || c == 541
+                } else {
+                    (540..=570).contains(&c) && c % 10 == 0 || (5000..=5990).contains(&c)
+                }
+            }) || hit(pw.offsets);
+            if offset {
+                next.known = [false; 3];
             }
             if hit(pw.inch) {
                 next.inch = true;
@@ -774,6 +850,11 @@ impl ToolPath {
             }
             changed = true;
         }
+        // Switched on or off: the coordinates are the workpiece's or the machine's; the
+        // block's own, stated, are known again.
+        if next.on != self.on {
+            next.known = [false; 3];
+        }
         // A block that is not a straight move: an arc, or a block whose first word the
         // dialect does not move with (Heidenhain's `L`/`LN`).
         let first = words.clone().next();
@@ -789,6 +870,7 @@ impl ToolPath {
         let mut angles = [None; 3];
         let mut first_column = 0;
         let (mut unreadable, mut unread) = (false, false);
+        let lead = words.clone().next().map(|w| w.column);
         for w in words {
             let (name, prefixed) = match w.name {
                 [b'I' | b'i', rest @ ..] if pw.i_prefix && rest.len() == 1 => (rest, true),
@@ -841,7 +923,14 @@ impl ToolPath {
                     Some(v) if v.is_finite() && slot.is_none() => {
                         *slot = Some((v * unit, w.column));
                     }
-                    _ => unreadable = true,
+                    // A rotary position or a direction not read (`C=R1`, `C#100`, `C+Q1`):
+                    // the orientation after it is not known either (Heidenhain's circle
+                    // `C X+5 Y+0`, whose first word is its command, is no axis C).
+                    _ => {
+                        let command = !pw.moves.is_empty() && Some(w.column) == lead;
+                        unread |= letter(b"XYZ").is_none() && !command;
+                        unreadable = true;
+                    }
                 }
             }
         }
@@ -853,18 +942,36 @@ impl ToolPath {
             p
         };
         changed |= (next.circular, next.canned) != (self.circular, self.canned)
-            || (next.compensated, next.altered, next.inch)
-                != (self.compensated, self.altered, self.inch);
+            || (next.compensated, next.altered, next.inch, next.known)
+                != (self.compensated, self.altered, self.inch, self.known);
         // An orientation stated (or turned, `ORIRESET`) by a block not followed is no
         // longer known.
         // (An ISO arc's or hole's `I J K` are its centre or shift, not the tool's.)
         let centre = pw.iso && (arc || next.circular || next.canned);
+        let vectored = vector.iter().any(Option::is_some) && !centre;
+        let lettered = axes.iter().any(Option::is_some);
+        // Rotary positions by letter are where the axes go, followed or not; a direction or
+        // angles (and Heidenhain's spatial letters) in a block not followed are lost.
         let oriented = unread
-            || angles.iter().chain(&axes).any(Option::is_some)
-            || (vector.iter().any(Option::is_some) && !centre)
+            || angles.iter().any(Option::is_some)
+            || vectored
+            || (lettered && next.spatial)
             || (loses && same(first.map_or(&[][..], |w| w.name), b"ORIRESET"));
-        // Not followed: the modes taken, the tip lost where the block moves.
-        let moded = off(next);
+        // Not followed: the modes taken (and the rotary positions stated), the tip lost
+        // where the block moves.
+        let mut moded = off(next);
+        if lettered && !oriented {
+            for ((a, v), inc) in moded.axes.iter_mut().zip(axes).zip(axes_inc) {
+                if let Some((v, _)) = v {
+                    *a = if inc { *a + v } else { v };
+                }
+            }
+            if moded.axes.iter().all(|x| x.is_finite()) {
+                moded.orientation = Orientation::Axes(moded.axes);
+            } else {
+                moded = off(next);
+            }
+        }
         let lost = ToolPath {
             lost: true,
             known: [false; 3],
@@ -892,14 +999,16 @@ impl ToolPath {
         }
         // Coordinates in a frame, or with an offset, this reader does not compute: the
         // block is not followed, and the tip is not known after it.
-        let geometry = next.framed || next.shifted || next.compensated || next.altered;
+        let geometry =
+            next.framed || next.shifted.contains(&true) || next.compensated || next.altered;
         // The start-up block of an ISO transformation (`G43.4 H1 X… Y… Z…`): its move is made
         // with the tool length only, not under the transformation [doc: Fanuc's tool centre
         // point control, "movement to the position specified by the G43.4 block (startup)
         // does not constitute tool center point control"].
         let startup = pw.iso && next.on && !self.on;
         // Each coordinate known after the block: known before, or stated absolutely in it.
-        let mut known = self.known;
+        // (From the modes' state: a work offset or the transformation switched forgets them.)
+        let mut known = next.known;
         for ((k, t), inc) in known.iter_mut().zip(tip).zip(tip_inc) {
             *k |= t.is_some() && !inc;
         }
@@ -960,7 +1069,7 @@ impl ToolPath {
                 let inc = tip_inc.get(k).copied().unwrap_or(false);
                 if !inc {
                     *t = v;
-                } else if self.known.get(k).copied().unwrap_or(false) {
+                } else if next.known.get(k).copied().unwrap_or(false) {
                     *t += v;
                 }
             }
@@ -1046,7 +1155,8 @@ mod tests {
             &[
                 "N10 G1 X0 Y0 Z50",
                 "N20 TRAORI(1)",
-                "N30 X10 A3=0 B3=-1 C3=1",
+                // The transformation switched on: X, Y, Z stated again.
+                "N30 X10 Y0 Z50 A3=0 B3=-1 C3=1",
                 "N40 Y20",
                 "N50 ORIRPY",
                 // Roll 90° about X turns +Z onto −Y.
@@ -1167,13 +1277,13 @@ mod tests {
             // coordinates after it, lost); a cancel of nothing active leaves it as it was.
             let marks = ToolPath {
                 framed: false,
-                shifted: false,
+                shifted: [false; 3],
                 lost: false,
                 altered: false,
                 ..out[1].0
             };
             assert_eq!(marks, out[0].0, "{block}");
-            let marked = out[1].0.framed || out[1].0.shifted || out[1].0.altered;
+            let marked = out[1].0.framed || out[1].0.shifted.contains(&true) || out[1].0.altered;
             assert!(!marked || out[1].0.lost, "{block}");
         }
     }
@@ -1593,11 +1703,11 @@ mod tests {
                 Applied
             ]
         );
-        assert!(iso[2].0.shifted && !iso[2].0.framed && iso[2].0.lost);
-        assert!(!iso[4].0.shifted && iso[4].0.lost);
+        assert!(iso[2].0.shifted == [true, false, false] && !iso[2].0.framed && iso[2].0.lost);
+        assert!(iso[4].0.shifted == [false; 3] && iso[4].0.lost);
         // Fanuc's G68 is the tilted-plane reader's (a rotation in the plane: a tilt).
         assert!(iso[7].0.framed && !iso[9].0.framed);
-        assert!(iso[11].0.framed && !iso[11].0.shifted && !iso[13].0.framed);
+        assert!(iso[11].0.framed && iso[11].0.shifted == [false; 3] && !iso[13].0.framed);
         assert!(iso[14].0.compensated && !iso[16].0.compensated);
         assert!(iso[17].0.lost);
         assert_eq!(iso[20].0.tip, [25.4, 0.0, 0.0]);
@@ -1607,8 +1717,16 @@ mod tests {
             Dialect::Fanuc,
             &["G43.5 H1", "G52 X5.", "G68.2 X0 Y0 Z0 I0 J30. K0", "G69"],
         );
-        assert!(both[2].0.framed && both[2].0.shifted);
-        assert!(!both[3].0.framed && both[3].0.shifted);
+        assert!(both[2].0.framed && both[2].0.shifted[0]);
+        assert!(!both[3].0.framed && both[3].0.shifted[0]);
+        // G52 X0 Y0 ends the shift in X and Y: one in Z stays.
+        let part = run(
+            Dialect::Fanuc,
+            &["G43.4 H1", "G52 X10. Y5. Z2.", "G52 X0 Y0", "G52 Z0"],
+        );
+        assert_eq!(part[1].0.shifted, [true; 3]);
+        assert_eq!(part[2].0.shifted, [false, false, true]);
+        assert_eq!(part[3].0.shifted, [false; 3]);
 
         let h = run(
             Dialect::Heidenhain,
@@ -1645,12 +1763,13 @@ mod tests {
                 NotFollowed,
                 Point,
                 NotFollowed,
-                NotFollowed,
+                Point,
                 Point
             ]
         );
-        assert!(h[6].0.shifted && !h[8].0.shifted && h[9].0.compensated);
-        assert!(h[11].0.disoriented && !h[13].0.disoriented);
+        assert!(h[6].0.shifted[0] && h[8].0.shifted == [false; 3] && h[9].0.compensated);
+        // The cycle call's A+30 is where A goes: taken, the orientation known.
+        assert!(!h[11].0.disoriented && h[11].0.axes[0] == 30.0);
 
         let s = run(
             Dialect::Sinumerik,
@@ -1717,8 +1836,84 @@ mod tests {
         let r: Vec<_> = start.iter().map(|o| o.1).collect();
         assert_eq!(r, [Applied, NotFollowed, Point, Point]);
         assert_eq!(start[3].0.tip, [11.0, 20.0, 5.0]);
-        let off = run(Dialect::Fanuc, &["G0 X1. Y2.", "Z3.", "G43.4 H1", "G1 X4."]);
-        assert!(off[1].0.known == [true; 3] && off[3].1 == Point);
+        // Known with the transformation off; switched on, the coordinates are the
+        // workpiece's: stated again.
+        let off = run(
+            Dialect::Fanuc,
+            &["G0 X1. Y2.", "Z3.", "G43.4 H1", "G1 X4.", "X4. Y2. Z3."],
+        );
+        assert!(off[1].0.known == [true; 3] && off[2].0.known == [false; 3]);
+        assert!(off[3].1 == NotFollowed && off[4].1 == Point);
+
+        // A helper's false alarms and misses: Heidenhain's comments and program head are
+        // no commands; a rotary position by a parameter loses the orientation; ORIVIRT1
+        // marks; EXTCALL loses the tip; G55 forgets X Y Z; ROT+0 ends the rotation cycle;
+        // FGREF[C] names an axis, moves none.
+        let h = run(
+            Dialect::Heidenhain,
+            &[
+                "0 BEGIN PGM C MM",
+                "1 M128",
+                "2 L X+1 Y+0 Z+50 A+0 C+0 R0 FMAX",
+                "3 * - TOOL 1/4 INCH BALL, C CR PLANE",
+                "4 L X+2",
+                "5 CYCL DEF 10.0 ROTATION",
+                "6 CYCL DEF 10.1 ROT+0",
+                "7 L X+3",
+                "8 L X+4 C+Q1",
+                "9 L X+5 Y+0 Z+50",
+            ],
+        );
+        let r: Vec<_> = h.iter().map(|o| o.1).collect();
+        assert_eq!(
+            r,
+            [
+                Passed,
+                Applied,
+                Point,
+                Passed,
+                Point,
+                NotFollowed,
+                Applied,
+                // Its coordinates were the rotated system's: stated again.
+                NotFollowed,
+                NotFollowed,
+                NotFollowed
+            ]
+        );
+        assert!(h[5].0.altered && !h[6].0.altered && h[8].0.disoriented);
+        let s = run(
+            Dialect::Sinumerik,
+            &[
+                "TRAORI",
+                "G1 X0 Y0 Z10 A3=0 B3=0 C3=1",
+                "FGREF[C]=100",
+                "X1",
+                "G55",
+                "X2",
+                "X2 Y0 Z10",
+                "EXTCALL \"FINISH.SPF\"",
+                "X3 Y0 Z10",
+                "ORIVIRT1",
+            ],
+        );
+        let r: Vec<_> = s.iter().map(|o| o.1).collect();
+        assert_eq!(
+            r,
+            [
+                Applied,
+                Point,
+                Passed,
+                Point,
+                Applied,
+                NotFollowed,
+                Point,
+                NotFollowed,
+                Point,
+                NotFollowed
+            ]
+        );
+        assert!(s[9].0.altered);
     }
 
     #[test]

@@ -1009,6 +1009,9 @@ pub(crate) const SINUMERIK_PATH: super::family::PathWords = {
             Code(b'M', 170),
             Name(b"RET"),
             Name(b"MCALL"),
+            Name(b"CALL"),
+            Name(b"PCALL"),
+            Name(b"EXTCALL"),
             Name(b"ORIRESET"),
         ],
         // The orientation relative to the path (`ORIPATH`'s lead and tilt angles), the
@@ -1034,6 +1037,7 @@ pub(crate) const SINUMERIK_PATH: super::family::PathWords = {
             Name(b"ORIVIRT2"),
         ],
         unaltering: &[],
+        offsets: &[],
         inch: &[Code(b'G', 700), Code(b'G', 7000)],
         metric: &[Code(b'G', 710), Code(b'G', 7100)],
     }
