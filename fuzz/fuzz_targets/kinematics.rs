@@ -143,9 +143,15 @@ fn tcp(m: &cncrot_machine, n: usize, pos: &[f64; 3], current: &[f64; 3], t: &[u8
             carried.as_mut_ptr(),
         )
     };
-    assert_eq!(c, 0);
-    for (a, b) in carried.iter().zip(&pose) {
-        assert!((a - b).abs() < 1e-12, "{carried:?} {pose:?}");
+    // (A forged seal's pose need not be a rotation: then refused, as any such previous.)
+    let r: [f64; 9] = core::array::from_fn(|k| pose[4 * (k / 3) + k % 3]);
+    if unsafe { cncrot_check_rotation(r.as_ptr()) } == 0 {
+        assert_eq!(c, 0, "{pose:?}");
+        for (a, b) in carried.iter().zip(&pose) {
+            assert!((a - b).abs() < 1e-12, "{carried:?} {pose:?}");
+        }
+    } else {
+        assert!(c < 0, "{pose:?}");
     }
     let prev = [0.0, 0.0, 0.0, current[0], current[1], current[2]];
     let mut out = [4.0; 6];
