@@ -3050,12 +3050,6 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
         return Err(Failure::new("--tool-length: not a finite number"));
     }
     let mut rule = rule(a.rule, n)?;
-    // The other solution (`inverse`) is the first point's: the rows after it are continuous
-    // with it (taken against each row before, they would swap branches every row).
-    // Every rule picks the first point's solution; the points after it continue from it
-    // (a priority axis' side or direction of travel, taken again at each point, would swap
-    // branches where that axis passes 0, and the path would jump).
-    let along = |_: Rule| Rule::Closest;
     // The start: the rotary positions, or X,Y,Z and the rotary positions.
     let mut previous = [0.0; 6];
     if let Some(text) = a.current {
@@ -3147,7 +3141,10 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
                 }
             };
             previous = t.axes;
-            rule = along(rule);
+            // Every rule picks the first point's solution; the points after it continue
+            // from it (a side or a direction of travel taken again at each point would swap
+            // branches where that axis passes 0, the other solution every point).
+            rule = Rule::Closest;
             // The letters a later block leaves out (`G1 X1 C20` after a direction) are where
             // the machine's axes now stand, not the last ones a block stated.
             stand(&mut state, &previous);
@@ -3185,7 +3182,8 @@ pub fn path(a: &PathArgs, m: &MachineArgs, common: &Common) -> Result<bool, Fail
         };
         let t = machine.tcp_inverse_with(&pose, a.tool_length, previous, rule)?;
         previous = t.axes;
-        rule = along(rule);
+        // As for a program's points: the rule picks the first row's solution.
+        rule = Rule::Closest;
         Ok(path_row(&t, n, d))
     })
 }
