@@ -1160,7 +1160,8 @@ pub unsafe extern "C" fn cncrot_cl_pose_toward(
         ])?;
         let t = read_finite::<3>(tip)?;
         let d = read_finite::<3>(direction)?;
-        let before = read_frame(previous)?;
+        // Its rotation is checked by `cl_pose_toward` (once).
+        let before = read_frame_unchecked(previous)?;
         let f = crate::kinematics::cl_pose_toward(t, d, &before.rotation)?;
         write_frame(pose, &f)?;
         Ok(cncrot_status::Ok)
